@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs the Debian packages freestand builds against, only those missing.
+# Idempotent and silent when everything is already there.
+set -euo pipefail
+packages=(g++ cmake make pkg-config ccache git
+  libeigen3-dev libfftw3-dev libboost-dev libboost-program-options-dev libfmt-dev
+  catch2 libtomlplusplus-dev libmstch-dev nlohmann-json3-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+echo "freestand setup: installing ${missing[*]}" >&2
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

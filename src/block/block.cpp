@@ -1,0 +1,52 @@
+#include "block/block.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "core/units.hpp"
+
+namespace freestand::block {
+
+Block Block::uniform(double half_width_m, double cg_height_m, double mass_kg) {
+    require_positive(half_width_m, {"", 0, "b (half-width, m)"});
+    require_positive(cg_height_m, {"", 0, "h (CG height, m)"});
+    require_positive(mass_kg, {"", 0, "m (mass, kg)"});
+    Block blk;
+    blk.mass_kg = mass_kg;
+    blk.b_left_m = half_width_m;
+    blk.b_right_m = half_width_m;
+    blk.h_m = cg_height_m;
+    blk.inertia_cg_kgm2 = mass_kg * (half_width_m * half_width_m + cg_height_m * cg_height_m) / 3.0;
+    return blk;
+}
+
+Block Block::general(double b_left_m, double b_right_m, double h_m, double mass_kg,
+                     double inertia_cg_kgm2) {
+    require_positive(b_left_m, {"", 0, "b_left (CG to left edge, m)"});
+    require_positive(b_right_m, {"", 0, "b_right (CG to right edge, m)"});
+    require_positive(h_m, {"", 0, "h (CG height, m)"});
+    require_positive(mass_kg, {"", 0, "m (mass, kg)"});
+    require_positive(inertia_cg_kgm2, {"", 0, "I_c (inertia about CG, kg m^2)"});
+    return Block{mass_kg, b_left_m, b_right_m, h_m, inertia_cg_kgm2};
+}
+
+double Block::R_m(Edge e) const { return std::hypot(b(e), h_m); }
+
+double Block::alpha_rad(Edge e) const { return std::atan2(b(e), h_m); }
+
+double Block::inertia_edge_kgm2(Edge e) const {
+    const double r = R_m(e);
+    return inertia_cg_kgm2 + mass_kg * r * r;
+}
+
+double Block::p_radps(Edge e) const {
+    return std::sqrt(mass_kg * units::g_mps2 * R_m(e) / inertia_edge_kgm2(e));
+}
+
+double Block::housner_restitution(Edge e) const {
+    const double r = R_m(e);
+    const double s = std::sin(alpha_rad(e));
+    return 1.0 - 2.0 * mass_kg * r * r * s * s / inertia_edge_kgm2(e);
+}
+
+}  // namespace freestand::block

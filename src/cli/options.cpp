@@ -1,0 +1,82 @@
+#include "cli/options.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "core/errors.hpp"
+
+namespace freestand::cli {
+
+std::optional<po::variables_map> parse_options(const std::string& command, const std::string& usage,
+                                               po::options_description desc,
+                                               const std::vector<std::string>& args,
+                                               const std::vector<std::string>& positional) {
+    desc.add_options()("help,h", "print this help and exit");
+    po::positional_options_description pos;
+    for (const auto& name : positional) pos.add(name.c_str(), 1);
+    po::variables_map vm;
+    try {
+        po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
+        if (vm.count("help")) {
+            std::cout << "usage: freestand " << command << " " << usage << "\n\n" << desc << "\n";
+            return std::nullopt;
+        }
+        po::notify(vm);
+    } catch (const po::error& e) {
+        throw UsageError(fmt::format("freestand {}: {} (see freestand {} --help)", command, e.what(),
+                                     command));
+    }
+    return vm;
+}
+
+double parse_double(const std::string& text, const std::string& option) {
+    double value = 0.0;
+    const char* first = text.data();
+    const char* last = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(first, last, value);
+    if (ec != std::errc() || ptr != last || !std::isfinite(value))
+        throw UsageError(fmt::format("{}: expected a finite number; got \"{}\"", option, text));
+    return value;
+}
+
+std::vector<double> parse_double_list(const std::string& text, const std::string& option) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = text.find(',', start);
+        const std::size_t end = comma == std::string::npos ? text.size() : comma;
+        values.push_back(parse_double(text.substr(start, end - start), option));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return values;
+}
+
+std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,
+                                               const std::vector<std::string>& allowed) {
+    std::map<std::string, double> out;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t comma = text.find(',', start);
+        const std::size_t end = comma == std::string::npos ? text.size() : comma;
+        const std::string item = text.substr(start, end - start);
+        const std::size_t eq = item.find('=');
+        if (eq == std::string::npos)
+            throw UsageError(fmt::format("{}: expected key=value; got \"{}\"", option, item));
+        const std::string key = item.substr(0, eq);
+        bool known = false;
+        for (const auto& a : allowed) known = known || a == key;
+        if (!known)
+            throw UsageError(fmt::format("{}: unknown key \"{}\"; allowed: {}", option, key,
+                                         fmt::join(allowed, ", ")));
+        if (out.count(key)) throw UsageError(fmt::format("{}: key \"{}\" given twice", option, key));
+        out[key] = parse_double(item.substr(eq + 1), option + " " + key);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+}  // namespace freestand::cli
