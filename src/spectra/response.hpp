@@ -21,9 +21,36 @@ struct ResponseSpectra {
 };
 
 /// Computes all oscillators in one pass over the record. Input is piecewise linear between
-/// samples; each oscillator sub-steps so its step is <= T/20.
+/// samples; each oscillator sub-steps so its step is <= T/20. The oscillators start at rest at
+/// the first sample and peaks are taken over the record's duration (no free-vibration tail).
+/// Dampings in [0, 1), frequencies finite and > 0 (any order); throws InputError otherwise.
 ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
                                  const std::vector<double>& frequency_hz);
+
+/// Integration controls of the response computation.
+struct ResponseOptions {
+    /// Each oscillator sub-steps so its step is <= T / min_steps_per_period (METHODS.md s.8:
+    /// T/20, else peaks between samples are missed). 0 turns sub-stepping off: one step per
+    /// sample, exact at the samples but blind between them (for benchmarks and tests only).
+    int min_steps_per_period = 20;
+};
+
+/// As above with explicit integration controls (benchmarks, convergence tests).
+ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
+                                 const std::vector<double>& frequency_hz,
+                                 const ResponseOptions& options);
+
+/// Peak relative displacement of one oscillator and when it happens: what time-domain spectral
+/// matching (RspMatch-style wavelet adjustment) needs.
+struct OscillatorPeak {
+    double sd_m = 0.0;    ///< signed relative displacement at the peak of |u|, m
+    double time_s = 0.0;  ///< time of that peak (a sub-step point), s from the first sample
+};
+
+/// Signed peak displacement and its time for each frequency at one damping (same sub-stepping
+/// as response_spectra). PSA = omega^2 |sd_m| / g.
+std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,
+                                           const std::vector<double>& frequency_hz);
 
 /// PSA only, one damping: the hot path for matching loops.
 std::vector<double> psa_g(const core::Record& record, double damping,

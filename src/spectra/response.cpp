@@ -1,0 +1,293 @@
+#include "spectra/response.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/units.hpp"
+
+namespace freestand::spectra {
+
+namespace {
+
+using Row = std::array<double, 4>;  // coefficients of (u_i, v_i, a_i, a_{i+1})
+
+/// Exact one-sample map of an oscillator u'' + 2 zeta w u' + w^2 u = -a(t), a piecewise linear
+/// (Nigam & Jennings 1969), resolved at n equal sub-points of each sample interval. Row k of
+/// sub_u gives u at sub-point k+1; end_v gives v at the end of the interval.
+struct Stepper {
+    double omega_radps = 0.0;
+    std::vector<Row> sub_u;
+    Row end_v{};
+};
+
+/// 2x2 free-vibration propagator over h and the 2x2 load matrix (columns: a at start and end of
+/// the step). Derived from the particular solution of the linear load, u_p = p0 + p1 t with
+/// p1 = -(a1 - a0) / (h w^2), p0 = -(a0 + 2 zeta w p1) / w^2, plus free vibration from
+/// (u - p0, v - p1); this is algebraically the Nigam-Jennings coefficient set.
+struct StepMatrices {
+    double a11, a12, a21, a22;
+    double b11, b12, b21, b22;
+};
+
+StepMatrices step_matrices(double omega, double zeta, double h) {
+    const double wd = omega * std::sqrt(1.0 - zeta * zeta);
+    const double e = std::exp(-zeta * omega * h);
+    const double c = std::cos(wd * h);
+    const double s = std::sin(wd * h);
+    StepMatrices m{};
+    m.a11 = e * (c + zeta * omega / wd * s);
+    m.a12 = e * s / wd;
+    m.a21 = -e * omega * omega / wd * s;
+    m.a22 = e * (c - zeta * omega / wd * s);
+    const double w2 = omega * omega;
+    // d(p0, p1)/d(a0) and d(p0, p1)/d(a1).
+    const double dp1_da0 = 1.0 / (h * w2);
+    const double dp0_da0 = -1.0 / w2 - 2.0 * zeta / (h * w2 * omega);
+    const double dp1_da1 = -dp1_da0;
+    const double dp0_da1 = 2.0 * zeta / (h * w2 * omega);
+    m.b11 = (1.0 - m.a11) * dp0_da0 + (h - m.a12) * dp1_da0;
+    m.b12 = (1.0 - m.a11) * dp0_da1 + (h - m.a12) * dp1_da1;
+    m.b21 = -m.a21 * dp0_da0 + (1.0 - m.a22) * dp1_da0;
+    m.b22 = -m.a21 * dp0_da1 + (1.0 - m.a22) * dp1_da1;
+    return m;
+}
+
+int substeps(double f_hz, double dt_s, int min_steps_per_period) {
+    if (min_steps_per_period <= 0) return 1;
+    // Step h = dt / n <= T / m  <=>  n >= dt m f.
+    const double need = dt_s * static_cast<double>(min_steps_per_period) * f_hz;
+    return std::max(1, static_cast<int>(std::ceil(need - 1e-12)));
+}
+
+Stepper make_stepper(double f_hz, double zeta, double dt_s, int min_steps_per_period) {
+    const int n = substeps(f_hz, dt_s, min_steps_per_period);
+    const double omega = units::hz_to_radps(f_hz);
+    const StepMatrices m = step_matrices(omega, zeta, dt_s / static_cast<double>(n));
+    Stepper st;
+    st.omega_radps = omega;
+    st.sub_u.resize(static_cast<std::size_t>(n));
+    // Compose the sub-steps symbolically: the state at sub-point k is a linear map of
+    // (u_i, v_i, a_i, a_{i+1}); the load at sub-point k is a_i + (k/n)(a_{i+1} - a_i).
+    Row u{1.0, 0.0, 0.0, 0.0};
+    Row v{0.0, 1.0, 0.0, 0.0};
+    for (int k = 1; k <= n; ++k) {
+        const double r0 = static_cast<double>(k - 1) / static_cast<double>(n);
+        const double r1 = static_cast<double>(k) / static_cast<double>(n);
+        Row nu{}, nv{};
+        for (std::size_t j = 0; j < 4; ++j) {
+            nu[j] = m.a11 * u[j] + m.a12 * v[j];
+            nv[j] = m.a21 * u[j] + m.a22 * v[j];
+        }
+        nu[2] += m.b11 * (1.0 - r0) + m.b12 * (1.0 - r1);
+        nu[3] += m.b11 * r0 + m.b12 * r1;
+        nv[2] += m.b21 * (1.0 - r0) + m.b22 * (1.0 - r1);
+        nv[3] += m.b21 * r0 + m.b22 * r1;
+        u = nu;
+        v = nv;
+        st.sub_u[static_cast<std::size_t>(k - 1)] = u;
+    }
+    st.end_v = v;
+    return st;
+}
+
+/// Peak |u| over the record, from rest, for K oscillators with the same number of sub-steps,
+/// advanced in lockstep: the K recurrences are independent, so the CPU overlaps their latency
+/// chains (one oscillator alone is latency-bound at about 3x the cost per step).
+template <std::size_t K>
+void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a, double* peak) {
+    const std::size_t n = st[0]->sub_u.size();
+    // Structure-of-arrays copies of the coefficients: sub-point k, coefficient j, oscillator o.
+    std::vector<double> cu(n * 4 * K);
+    std::array<std::array<double, K>, 4> cv{};
+    for (std::size_t o = 0; o < K; ++o) {
+        for (std::size_t k = 0; k < n; ++k)
+            for (std::size_t j = 0; j < 4; ++j) cu[(k * 4 + j) * K + o] = st[o]->sub_u[k][j];
+        for (std::size_t j = 0; j < 4; ++j) cv[j][o] = st[o]->end_v[j];
+    }
+    std::array<double, K> u{}, v{}, pk{};
+    const double* c = cu.data();
+    const std::size_t count = a.size();
+    if (n == 1) {
+        // T >= 20 dt: the common case, kept free of the sub-point loop so it stays in registers.
+        std::array<std::array<double, K>, 4> c1{};
+        for (std::size_t j = 0; j < 4; ++j)
+            for (std::size_t o = 0; o < K; ++o) c1[j][o] = c[j * K + o];
+        for (std::size_t i = 1; i < count; ++i) {
+            const double a0 = a[i - 1];
+            const double a1 = a[i];
+            for (std::size_t o = 0; o < K; ++o) {
+                const double un = (c1[0][o] * u[o] + c1[1][o] * v[o]) + (c1[2][o] * a0 + c1[3][o] * a1);
+                v[o] = (cv[0][o] * u[o] + cv[1][o] * v[o]) + (cv[2][o] * a0 + cv[3][o] * a1);
+                u[o] = un;
+                pk[o] = std::max(pk[o], std::abs(un));
+            }
+        }
+        for (std::size_t o = 0; o < K; ++o) peak[o] = pk[o];
+        return;
+    }
+    for (std::size_t i = 1; i < count; ++i) {
+        const double a0 = a[i - 1];
+        const double a1 = a[i];
+        std::array<double, K> un{};
+        for (std::size_t k = 0; k < n; ++k) {
+            const double* r = c + k * 4 * K;
+            for (std::size_t o = 0; o < K; ++o) {
+                un[o] = (r[o] * u[o] + r[K + o] * v[o]) + (r[2 * K + o] * a0 + r[3 * K + o] * a1);
+                pk[o] = std::max(pk[o], std::abs(un[o]));
+            }
+        }
+        for (std::size_t o = 0; o < K; ++o) {
+            v[o] = (cv[0][o] * u[o] + cv[1][o] * v[o]) + (cv[2][o] * a0 + cv[3][o] * a1);
+            u[o] = un[o];
+        }
+    }
+    for (std::size_t o = 0; o < K; ++o) peak[o] = pk[o];
+}
+
+/// Peak |u| of every stepper: groups steppers with equal sub-step counts into batches of 4.
+std::vector<double> peak_displacements_m(const std::vector<Stepper>& steppers,
+                                         const std::vector<double>& a) {
+    std::vector<std::size_t> order(steppers.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+        return steppers[x].sub_u.size() < steppers[y].sub_u.size();
+    });
+    std::vector<double> peaks(steppers.size());
+    constexpr std::size_t batch = 4;
+    std::size_t i = 0;
+    while (i < order.size()) {
+        std::size_t len = 1;
+        while (len < batch && i + len < order.size() &&
+               steppers[order[i + len]].sub_u.size() == steppers[order[i]].sub_u.size())
+            ++len;
+        std::array<const Stepper*, batch> group{};
+        for (std::size_t o = 0; o < len; ++o) group[o] = &steppers[order[i + o]];
+        std::array<double, batch> out{};
+        switch (len) {
+            case 4: peak_displacements_m<4>(group.data(), a, out.data()); break;
+            case 3: peak_displacements_m<3>(group.data(), a, out.data()); break;
+            case 2: peak_displacements_m<2>(group.data(), a, out.data()); break;
+            default: peak_displacements_m<1>(group.data(), a, out.data()); break;
+        }
+        for (std::size_t o = 0; o < len; ++o) peaks[order[i + o]] = out[o];
+        i += len;
+    }
+    return peaks;
+}
+
+void check_inputs(const core::Record& record, const std::vector<double>& dampings,
+                  const std::vector<double>& frequency_hz) {
+    core::validate(record);
+    if (dampings.empty())
+        throw InputError(SourceLocation{"", 0, "damping"}, "no damping given; expected at least one");
+    for (double z : dampings)
+        require_in_range(z, 0.0, 1.0, SourceLocation{"", 0, "damping"}, true, false);
+    if (frequency_hz.empty())
+        throw InputError(SourceLocation{"", 0, "frequency_hz"},
+                         "no frequency given; expected at least one");
+    for (double f : frequency_hz) require_positive(f, SourceLocation{"", 0, "frequency_hz"});
+}
+
+}  // namespace
+
+Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
+    if (damping_index >= dampings.size())
+        throw InputError(SourceLocation{"", 0, "damping_index"},
+                         fmt::format("damping index {} out of range; {} dampings computed",
+                                     damping_index, dampings.size()));
+    for (std::size_t i = 1; i < frequency_hz.size(); ++i) {
+        if (!(frequency_hz[i] > frequency_hz[i - 1]))
+            throw InputError(SourceLocation{"", 0, "frequency_hz"},
+                             "frequencies are not strictly increasing; a Spectrum needs them sorted");
+    }
+    Spectrum s;
+    s.damping = dampings[damping_index];
+    s.frequency_hz = frequency_hz;
+    s.psa_g = psa_g[damping_index];
+    return s;
+}
+
+ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
+                                 const std::vector<double>& frequency_hz,
+                                 const ResponseOptions& options) {
+    check_inputs(record, dampings, frequency_hz);
+    ResponseSpectra out;
+    out.frequency_hz = frequency_hz;
+    out.dampings = dampings;
+    const std::size_t nf = frequency_hz.size();
+    out.psa_g.assign(dampings.size(), std::vector<double>(nf));
+    out.sd_m.assign(dampings.size(), std::vector<double>(nf));
+    out.psv_mps.assign(dampings.size(), std::vector<double>(nf));
+    std::vector<Stepper> steppers;
+    steppers.reserve(dampings.size() * nf);
+    for (double zeta : dampings)
+        for (double f : frequency_hz)
+            steppers.push_back(make_stepper(f, zeta, record.dt_s, options.min_steps_per_period));
+    const std::vector<double> peaks = peak_displacements_m(steppers, record.accel_mps2);
+    for (std::size_t d = 0; d < dampings.size(); ++d) {
+        for (std::size_t i = 0; i < nf; ++i) {
+            const double sd = peaks[d * nf + i];
+            const double w = steppers[d * nf + i].omega_radps;
+            out.sd_m[d][i] = sd;
+            out.psv_mps[d][i] = w * sd;
+            out.psa_g[d][i] = w * w * sd / units::g_mps2;
+        }
+    }
+    return out;
+}
+
+ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
+                                 const std::vector<double>& frequency_hz) {
+    return response_spectra(record, dampings, frequency_hz, ResponseOptions{});
+}
+
+std::vector<double> psa_g(const core::Record& record, double damping,
+                          const std::vector<double>& frequency_hz) {
+    check_inputs(record, {damping}, frequency_hz);
+    std::vector<Stepper> steppers;
+    steppers.reserve(frequency_hz.size());
+    for (double f : frequency_hz)
+        steppers.push_back(make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
+    std::vector<double> out = peak_displacements_m(steppers, record.accel_mps2);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const double w = steppers[i].omega_radps;
+        out[i] *= w * w / units::g_mps2;
+    }
+    return out;
+}
+
+std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,
+                                           const std::vector<double>& frequency_hz) {
+    check_inputs(record, {damping}, frequency_hz);
+    std::vector<OscillatorPeak> out(frequency_hz.size());
+    const auto& a = record.accel_mps2;
+    for (std::size_t i = 0; i < frequency_hz.size(); ++i) {
+        const Stepper st = make_stepper(frequency_hz[i], damping, record.dt_s,
+                                        ResponseOptions{}.min_steps_per_period);
+        const std::size_t n = st.sub_u.size();
+        const double h = record.dt_s / static_cast<double>(n);
+        double u = 0.0, v = 0.0;
+        OscillatorPeak best;
+        for (std::size_t s = 1; s < a.size(); ++s) {
+            double un = 0.0;
+            for (std::size_t k = 0; k < n; ++k) {
+                const Row& r = st.sub_u[k];
+                un = r[0] * u + r[1] * v + (r[2] * a[s - 1] + r[3] * a[s]);
+                if (std::abs(un) > std::abs(best.sd_m)) {
+                    best.sd_m = un;
+                    best.time_s = record.time_s(s - 1) + h * static_cast<double>(k + 1);
+                }
+            }
+            const Row& cv = st.end_v;
+            v = cv[0] * u + cv[1] * v + (cv[2] * a[s - 1] + cv[3] * a[s]);
+            u = un;
+        }
+        out[i] = best;
+    }
+    return out;
+}
+
+}  // namespace freestand::spectra
