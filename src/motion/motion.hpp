@@ -1,0 +1,145 @@
+#pragma once
+/// Spectrum-compatible acceleration histories (METHODS.md s.8): synthetic records from a target
+/// spectrum, time-domain wavelet matching of seed records, baseline correction, and the
+/// SRP 3.7.1 acceptance report. Everything is deterministic for the same inputs and seed.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/record.hpp"
+#include "spectra/spectrum.hpp"
+
+namespace freestand::motion {
+
+/// What one component must match.
+struct Target {
+    spectra::Spectrum psa_5pct;                  ///< acceptance target; damping must be 0.05
+    std::optional<spectra::Spectrum> psa_10pct;  ///< 10%-damped target, reported only
+    /// When set, the PSD is checked against the RG 1.60 horizontal target PSD
+    /// (spectra::rg160_target_psd) at this PGA; unset for targets without a defined PSD.
+    std::optional<double> rg160_psd_pga_g;
+};
+
+/// Horizontal and vertical targets of one design.
+struct TargetSet {
+    std::string label;  ///< e.g. "RG 1.60, PGA 0.3 g"
+    Target horizontal;
+    Target vertical;
+};
+
+/// RG 1.60 horizontal and vertical (5% and 10%), with the RG 1.60 target PSD on horizontals.
+TargetSet rg160_targets(double pga_g);
+
+/// Targets from a horizontal 5% spectrum (and optionally 10%); the vertical is
+/// vertical_ratio times the horizontal (2/3 is common). No target PSD.
+TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5pct,
+                        const std::optional<spectra::Spectrum>& horizontal_10pct,
+                        double vertical_ratio);
+
+/// Throws InputError (field = the spectrum's label) unless the spectrum has >= 2 points,
+/// strictly increasing finite positive frequencies, finite positive PSA, and the damping
+/// expected (tolerance 1e-9).
+void validate_target(const spectra::Spectrum& spectrum, double expected_damping);
+
+/// Strong-motion envelope of the synthetic method: (t / rise)^2 while rising, 1 in the strong
+/// part, then exp(-c (t - rise - strong)) decaying to end_level at the record's end.
+struct Envelope {
+    double rise_s = 2.0;
+    double strong_s = 10.0;
+    double end_level = 0.05;  ///< envelope value at the last sample, in (0, 1]
+};
+
+/// Envelope value at t for a record of total duration duration_s.
+double envelope_at(const Envelope& envelope, double t_s, double duration_s);
+
+/// Controls of the wavelet matching loop.
+struct MatchOptions {
+    double aim = 1.04;            ///< match to aim x target, so sampling noise stays above 1.0
+    double relaxation = 0.7;      ///< fraction of the linearised correction applied per pass
+    int max_iterations = 40;      ///< matching passes per attempt
+    int match_per_decade = 30;    ///< matching frequencies per decade (checks are at 100)
+};
+
+/// Everything the generator needs besides the targets.
+struct GenerateOptions {
+    std::vector<std::string> components{"h1", "h2", "v"};  ///< "h1"/"h2" horizontal, "v" vertical
+    double duration_s = 20.0;  ///< synthetic records only (>= 20 s, SRP 3.7.1)
+    double dt_s = 0.005;       ///< synthetic records only (<= 0.01 s, SRP 3.7.1)
+    std::uint64_t seed = 1;    ///< base seed; each component and attempt derives its own
+    /// Seed records, one per component in order; empty selects the synthetic method.
+    std::vector<core::Record> seed_records;
+    Envelope envelope;
+    MatchOptions match;
+    int max_attempts = 6;  ///< synthetic: seeds tried per component (spectrum or correlation)
+};
+
+/// SRP 3.7.1 Option 1 Approach 2 acceptance of one record against its target.
+struct Acceptance {
+    bool passed = false;
+    std::string reason;            ///< "" when passed, else every failed criterion, "; "-joined
+    std::size_t check_points = 0;  ///< 5% ratio points, >= 100 per decade over 0.1-50 Hz
+    double min_ratio = 0.0;        ///< computed / target over the check band
+    double max_ratio = 0.0;
+    double mean_ratio = 0.0;
+    int max_adjacent_below = 0;    ///< longest run of adjacent points below 1.0 (<= 9)
+    double max_ratio_cap_band = 0.0;  ///< max ratio over 0.2-25 Hz (<= 1.3)
+    std::optional<double> psd_min_ratio;  ///< min of averaged PSD / target PSD, 0.3-24 Hz
+    std::optional<double> ratio_10pct_min;  ///< 10% ratio, informational
+    std::optional<double> ratio_10pct_max;
+    double pga_g = 0.0, pgv_mps = 0.0, pgd_m = 0.0;
+    double d5_75_s = 0.0, d5_95_s = 0.0, duration_s = 0.0, dt_s = 0.0;
+    double final_velocity_mps = 0.0, final_displacement_m = 0.0;
+};
+
+/// Computes the acceptance report with spectra::psa_g at 100 points per decade 0.1-50 Hz.
+/// The PSD S(f) = |X(f)|^2 / (pi T_D), X = dt FFT(a), T_D = D5-75, averaged over +-20% in
+/// frequency, is one-sided per rad/s, the convention of the RG 1.60 target PSD.
+Acceptance check_acceptance(const core::Record& record, const Target& target);
+
+/// One generated or matched component.
+struct GeneratedComponent {
+    core::Record record;      ///< component label set; acceleration in m/s^2
+    Acceptance acceptance;
+    std::string method;       ///< "synthetic+wavelet" or "wavelet (seed <name>)"
+    std::uint64_t seed = 0;   ///< RNG seed actually used (synthetic), else 0
+    int attempts = 0;         ///< seeds tried
+    int iterations = 0;       ///< matching passes of the kept attempt
+    double wall_s = 0.0;      ///< wall time of this component (the only non-deterministic output)
+    std::string stop;         ///< "passed", "iteration limit", "attempt limit", ...
+};
+
+/// Zero-lag Pearson correlation of two components over their common samples.
+struct Correlation {
+    std::string a, b;
+    double rho = 0.0;
+};
+
+struct GeneratedSet {
+    std::vector<GeneratedComponent> components;
+    std::vector<Correlation> correlations;  ///< every pair, in component order
+    bool passed = false;                    ///< every component passed and every |rho| <= 0.16
+    std::vector<std::string> notes;         ///< regenerations and other decisions taken
+};
+
+/// Generates (or matches) every requested component against targets.horizontal / vertical.
+/// Throws InputError on bad targets or requests (dt > 0.01 s, duration < 20 s, seed record count
+/// different from the component count, unknown component names).
+GeneratedSet generate_set(const TargetSet& targets, const GenerateOptions& options);
+
+/// Wavelet-matches one seed record to a target (after scaling it to the target), with the
+/// baseline constraints; returns the matched record and the passes used.
+struct MatchResult {
+    core::Record record;
+    int iterations = 0;
+    bool converged = false;  ///< in-loop criteria met at the matching frequencies
+};
+MatchResult match_record(const core::Record& seed, const Target& target,
+                         const MatchOptions& options);
+
+/// Synthetic stationary random-phase process x envelope, iterated in the frequency domain on
+/// the target/computed PSA ratio (SIMQKE); not yet matched.
+core::Record synthesize(const Target& target, double duration_s, double dt_s,
+                        std::uint64_t seed, const Envelope& envelope);
+
+}  // namespace freestand::motion
