@@ -1,0 +1,47 @@
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/readers.hpp"
+#include "core/text_parse.hpp"
+#include "core/units.hpp"
+
+namespace freestand::core {
+
+Record read_record(const std::filesystem::path& path) {
+    const std::string ext = text::lower(path.extension().string());
+    if (ext == ".at2") return read_at2(path);
+    if (ext == ".v2" || ext == ".v2c") return read_cosmos_v2(path);
+    if (ext == ".csv") return read_csv(path);
+    throw InputError({path.string(), 0, "extension"},
+                     fmt::format("unknown record format \"{}\"; expected .AT2 (PEER NGA), .V2 (COSMOS) or .csv",
+                                 path.extension().string()));
+}
+
+namespace {
+
+/// A label on one comment line: line breaks would start a data line.
+std::string one_line(std::string s) {
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    return s;
+}
+
+}  // namespace
+
+void write_csv_g(const Record& record, const std::filesystem::path& path) {
+    validate(record);
+    std::string out;
+    out.reserve(40 * record.size() + 200);
+    out += "# name: " + one_line(record.name) + "\n";
+    out += "# source: " + one_line(record.source) + "\n";
+    out += "# component: " + one_line(record.component) + "\n";
+    // "{}" prints the shortest text that parses back to the same double (fmt, Ryu-like).
+    out += fmt::format("# dt_s: {}\n", record.dt_s);
+    out += "time_s,accel_g\n";
+    for (std::size_t i = 0; i < record.size(); ++i)
+        fmt::format_to(std::back_inserter(out), "{},{}\n", record.time_s(i), units::mps2_to_g(record.accel_mps2[i]));
+    write_file_atomic(path, out);
+}
+
+}  // namespace freestand::core

@@ -1,0 +1,29 @@
+#pragma once
+/// Small text-parsing helpers shared by the record readers (internal to core).
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace freestand::core::text {
+
+/// Parses a whole token as a double (leading '+' allowed). std::from_chars rejects what strtod
+/// would half-accept ("0.3x"); "nan" and "inf" parse, so callers check std::isfinite.
+bool parse_double(std::string_view token, double& value);
+
+/// Token without leading and trailing blanks (space, tab, CR).
+std::string_view trim(std::string_view s);
+
+/// ASCII lower-case copy.
+std::string lower(std::string_view s);
+
+/// Splits text into lines without their '\n' or "\r\n" and drops a leading UTF-8 BOM.
+/// Line i of the result is line i + 1 of the file.
+std::vector<std::string> split_lines(const std::string& text);
+
+/// True when s starts with prefix, ignoring ASCII case.
+bool istarts_with(std::string_view s, std::string_view prefix);
+
+/// True when s contains needle, ignoring ASCII case.
+bool icontains(std::string_view s, std::string_view needle);
+
+}  // namespace freestand::core::text
