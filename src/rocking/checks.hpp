@@ -1,0 +1,48 @@
+#pragma once
+/// Closed-form rocking and overturning checks (METHODS.md section 5).
+#include <string>
+
+#include "block/block.hpp"
+#include "sliding/initiation.hpp"
+#include "spectra/spectrum.hpp"
+
+namespace freestand::rocking {
+
+/// Peak horizontal acceleration that uplifts edge e, g: tan(alpha) (1 - av_g), with the peak
+/// vertical av_g >= 0 taken downward (the worst case; METHODS.md s.5). 0 <= av_g < 1.
+double uplift_threshold_g(const block::Block& blk, block::Edge e, double av_g);
+
+/// Ishiyama (1982) velocity bound, m/s: a block cannot overturn under harmonic excitation whose
+/// peak base velocity is below V = 0.4 sqrt(8 g R (1 - cos alpha) / (3 cos alpha)). Derived for
+/// uniform blocks; applied with edge e's R and alpha.
+double ishiyama_velocity_mps(const block::Block& blk, block::Edge e);
+
+/// Energy to lift the CG over edge e, per unit mass, J/kg: E_ot / M = g R (1 - cos alpha).
+double overturning_energy_jpkg(const block::Block& blk, block::Edge e);
+
+/// Housner's (1963) energy estimate against a spectral velocity.
+struct HousnerEstimate {
+    double sv_mps = 0.0;               ///< spectral velocity used
+    double alpha_rad = 0.0;            ///< the block's slenderness about the edge
+    /// Slenderness that just survives: sqrt(M R^2 / I_O) S_v / sqrt(g R), rad.
+    double alpha_required_rad = 0.0;
+    double e_ot_jpkg = 0.0;            ///< g R (1 - cos alpha)
+    /// Energy the excitation imparts per unit mass, (1/2) (M R^2 / I_O) S_v^2 (the same
+    /// small-angle balance that gives alpha_required).
+    double e_in_jpkg = 0.0;
+    bool survives = true;              ///< alpha > alpha_required
+};
+
+/// Housner estimate about edge e for sv_mps >= 0.
+HousnerEstimate housner_energy(const block::Block& blk, block::Edge e, double sv_mps);
+
+/// Largest pseudo-velocity PSA g / (2 pi f) over the spectrum's points, m/s (between points the
+/// log-log interpolation makes PSV a power law, so the maximum is at a point).
+double peak_pseudo_velocity_mps(const spectra::Spectrum& s);
+
+/// Warning about accelerations transmitted to the body and what is attached to it, for the
+/// initiating mode: rocking amplifies them through impacts (1.3 to 11 measured on rigid
+/// specimens), sliding attenuates them to about mu / A. Empty for rest.
+std::string amplification_warning(sliding::Mode mode, double mu_s, double A);
+
+}  // namespace freestand::rocking

@@ -1,0 +1,32 @@
+#include "sliding/block_spec.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace freestand::sliding {
+
+block::Block make_block(const BoxSpec& spec) {
+    require_positive(spec.half_width_m, SourceLocation{"", 0, "b (half-width, m)"});
+    require_positive(spec.half_height_m, SourceLocation{"", 0, "h (half-height, m)"});
+    const bool has_cg = spec.cg_offset_m || spec.cg_height_m;
+    if (!has_cg && !spec.inertia_cg_kgm2)
+        return block::Block::uniform(spec.half_width_m, spec.half_height_m, spec.mass_kg.value_or(1.0));
+    if (!spec.inertia_cg_kgm2)
+        throw InputError(SourceLocation{"", 0, "inertia"},
+                         "a CG position away from the box centre needs the inertia I_c about the "
+                         "CG (kg m^2); a uniform-box default would be wrong");
+    if (!spec.mass_kg)
+        throw InputError(SourceLocation{"", 0, "m"},
+                         "an explicit inertia needs the mass m (kg): I_O = I_c + M R^2");
+    const double x = spec.cg_offset_m.value_or(0.0);
+    require_in_range(x, -spec.half_width_m, spec.half_width_m, SourceLocation{"", 0, "cg x"},
+                     false, false);
+    const double h = spec.cg_height_m.value_or(spec.half_height_m);
+    require_positive(h, SourceLocation{"", 0, "cg h"});
+    return block::Block::general(spec.half_width_m + x, spec.half_width_m - x, h, *spec.mass_kg,
+                                 *spec.inertia_cg_kgm2);
+}
+
+}  // namespace freestand::sliding
