@@ -184,7 +184,7 @@ Unit CosmosParser::data_unit(std::size_t data_index, const std::vector<double>& 
     std::string stated_as;
     if (std::regex_search(text, m, re)) {
         stated_as = std::string(text::trim(m[1].str()));
-        if (m[2].matched) stated_as += " " + m[2].str();
+        if (m[2].matched) stated_as = fmt::format("{} {}", stated_as, m[2].str());
         stated = m[3].matched ? unit_from_code(std::stol(m[3].str())) : unit_from_text(m[1].str());
         if (!stated)
             throw InputError(at(data_index, "units"),

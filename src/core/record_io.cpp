@@ -33,9 +33,8 @@ void write_csv_g(const Record& record, const std::filesystem::path& path) {
     validate(record);
     std::string out;
     out.reserve(40 * record.size() + 200);
-    out += "# name: " + one_line(record.name) + "\n";
-    out += "# source: " + one_line(record.source) + "\n";
-    out += "# component: " + one_line(record.component) + "\n";
+    out += fmt::format("# name: {}\n# source: {}\n# component: {}\n", one_line(record.name),
+                       one_line(record.source), one_line(record.component));
     // "{}" prints the shortest text that parses back to the same double (fmt, Ryu-like).
     out += fmt::format("# dt_s: {}\n", record.dt_s);
     out += "time_s,accel_g\n";
