@@ -47,10 +47,12 @@ std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_deca
     const double decades = std::log10(fmax_hz / fmin_hz);
     const auto intervals = static_cast<std::size_t>(
         std::max(1.0, std::ceil(decades * static_cast<double>(per_decade) - 1e-9)));
+    // Exponents on log10 so that whole decades come out exact (10^0 = 1, 10^1 = 10).
+    const double lo = std::log10(fmin_hz);
+    const double step = (std::log10(fmax_hz) - lo) / static_cast<double>(intervals);
     std::vector<double> f(intervals + 1);
     for (std::size_t k = 0; k <= intervals; ++k)
-        f[k] = fmin_hz * std::pow(fmax_hz / fmin_hz,
-                                  static_cast<double>(k) / static_cast<double>(intervals));
+        f[k] = std::pow(10.0, lo + step * static_cast<double>(k));
     f.front() = fmin_hz;
     f.back() = fmax_hz;
     return f;
