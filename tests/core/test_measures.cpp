@@ -153,8 +153,20 @@ TEST_CASE("Measures of the shipped records agree with independent sums", "[core]
         CHECK(gm.final_velocity_mps == Approx(static_cast<double>(v_end)).margin(1e-9));
         CHECK(gm.final_displacement_m == Approx(static_cast<double>(d_end)).margin(1e-8));
         CHECK(gm.arias_mps == Approx(static_cast<double>(ia)).epsilon(1e-10));
-        CHECK(0.0 < gm.d5_75_s);
-        CHECK(gm.d5_75_s < gm.d5_95_s);
+        // Husid crossings from a long-double running sum, interpolated on the crossing segment.
+        std::vector<long double> cum(n, 0.0L);
+        for (std::size_t k = 1; k < n; ++k)
+            cum[k] = cum[k - 1] + 0.5L * dt * (static_cast<long double>(a[k - 1]) * a[k - 1] +
+                                               static_cast<long double>(a[k]) * a[k]);
+        const auto crossing = [&](long double fraction) {
+            const long double level = fraction * cum.back();
+            std::size_t k = 1;
+            while (cum[k] < level) ++k;
+            return static_cast<double>(dt * (static_cast<long double>(k - 1) + (level - cum[k - 1]) / (cum[k] - cum[k - 1])));
+        };
+        CHECK(gm.d5_75_s == Approx(crossing(0.75L) - crossing(0.05L)).epsilon(1e-9));
+        CHECK(gm.d5_95_s == Approx(crossing(0.95L) - crossing(0.05L)).epsilon(1e-9));
+        CHECK(core::significant_duration_s(rec, 0.05, 0.95) == gm.d5_95_s);
         CHECK(gm.d5_95_s < rec.duration_s());
     }
 }
