@@ -91,6 +91,11 @@ struct Options {
     double settle_interval_s = 1e-9;
     double tail_s = 10.0;        ///< simulated time after the excitation ends (stops at rest)
     bool record_series = true;   ///< fill SimulationResult::series
+    /// Initial condition (the base is at rest at t = 0): rotation s theta0 (> 0 on the right
+    /// edge) released with theta' = 0, and slip velocity u'(0).
+    double initial_rotation_rad = 0.0;
+    double initial_slide_velocity_mps = 0.0;
+    double g_mps2 = 9.81;        ///< gravity (METHODS.md: 9.81 unless a case says otherwise)
 };
 
 /// How overturning was decided.
@@ -142,9 +147,18 @@ struct Summary {
     double wall_s = 0.0;             ///< wall-clock time of the integration
 };
 
+/// One impact: theta returned to 0 and rotation passed to the other edge (or a landing).
+struct ImpactEvent {
+    double time_s = 0.0;
+    double omega_before_radps = 0.0;  ///< |theta'| just before
+    double omega_after_radps = 0.0;   ///< theta' about the new edge just after (0 if settled)
+    bool settled = false;             ///< the rebound was below the settling angle
+};
+
 struct SimulationResult {
     Summary summary;
     std::vector<Sample> series;
+    std::vector<ImpactEvent> impact_log;
 };
 
 /// Simulates the block from rest at t = 0 under the excitation, until excitation end + tail

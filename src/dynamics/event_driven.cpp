@@ -1,0 +1,500 @@
+// Event-driven integrator: closed forms for rest, slide and flight on each piecewise-linear
+// input segment; Dormand-Prince 5(4) (Boost.Odeint) with its dense output for rock and
+// slide-rock; every switch located by root finding (TOMS 748) on the closed form or the dense
+// output, never by the next sample.
+#include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
+#include <cmath>
+#include <fmt/format.h>
+#include <functional>
+#include <limits>
+#include <numbers>
+
+#include "core/errors.hpp"
+#include "dynamics/integrators.hpp"
+
+namespace freestand::dynamics::detail {
+
+namespace {
+
+using Vec = std::array<double, 4>;  // u, u', theta, theta'
+using Stepper = boost::numeric::odeint::runge_kutta_dopri5<Vec>;
+constexpr double half_pi = std::numbers::pi / 2.0;
+constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
+constexpr std::size_t burst_fail = 100000;    // ... before giving up
+constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
+
+// Linear base acceleration on the current segment.
+struct Segment {
+    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
+    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
+};
+
+// Rock / slide-rock right-hand side; keeps the accelerations of its last call (the FSAL stage,
+// at the end of an accepted step).
+struct Rhs {
+    const Geometry* g = nullptr;
+    Mode mode = Mode::rock;
+    int s = 1, sigma = 1;
+    Segment seg;
+    mutable Accel last;
+    Accel accel(const Vec& x, double t) const {
+        return mode == Mode::rock ? rock_accel(*g, s, x[2], x[3], seg.at(t))
+                                  : slide_rock_accel(*g, s, sigma, x[2], x[3], seg.at(t));
+    }
+    void operator()(const Vec& x, Vec& dx, double t) const {
+        last = accel(x, t);
+        const bool slip = mode == Mode::slide_rock;
+        dx = {slip ? x[1] : 0.0, slip ? last.u_dd : 0.0, x[3], last.th_dd};
+    }
+};
+
+enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
+
+double toms748_root(const std::function<double(double)>& f, double a, double b, double fa,
+                    double fb) {
+    if (fa == 0.0) return a;
+    if (fb == 0.0) return b;
+    std::uintmax_t iters = 200;
+    const auto r = boost::math::tools::toms748_solve(
+        f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50), iters);
+    return 0.5 * (r.first + r.second);
+}
+
+// Smallest root of c0 + c1 t + c2 t^2 in (tmin, tmax]; +inf if none. c0 == 0 drops t = 0.
+double first_quadratic_root(double c0, double c1, double c2, double tmin, double tmax) {
+    const double inf = std::numeric_limits<double>::infinity();
+    double r1 = inf, r2 = inf;
+    if (c0 == 0.0) {
+        if (c2 != 0.0) r1 = -c1 / c2;
+    } else if (c2 == 0.0) {
+        if (c1 != 0.0) r1 = -c0 / c1;
+    } else {
+        const double disc = c1 * c1 - 4.0 * c2 * c0;
+        if (disc < 0.0) return inf;
+        // Numerically stable pair (Press et al., Numerical Recipes 5.6).
+        const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+        r1 = q / c2;
+        r2 = q != 0.0 ? c0 / q : inf;
+    }
+    double best = inf;
+    for (double r : {r1, r2})
+        if (r > tmin && r <= tmax && r < best) best = r;
+    return best;
+}
+
+class Engine {
+public:
+    Engine(const Geometry& g, const BaseMotion& bm, const Options& o, Recorder& rec, BlockState& st)
+        : g_(g), bm_(bm), o_(o), rec_(rec), st_(st) {}
+
+    // Advances from t towards tb on segment k; returns the time reached (tb or an event).
+    double advance(std::size_t k, double t, double tb) {
+        bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
+        seg_.tk = bm_.t_k(k);
+        tb_ = tb;
+        switch (st_.mode) {
+            case Mode::rest: return advance_rest(t);
+            case Mode::slide: return advance_slide(t);
+            case Mode::rock:
+            case Mode::slide_rock: return advance_contact(t);
+            case Mode::flight: return advance_flight(t);
+        }
+        return tb;
+    }
+
+private:
+    // Base a little after t, to classify a start exactly at a threshold (section 2 uses strict
+    // inequalities, so at the threshold itself the block is still at rest).
+    Base probe(double t) const {
+        const double dt = std::min(1e-9, 0.5 * (tb_ - t));
+        return seg_.at(dt > 0.0 ? t + dt : t);
+    }
+
+    void set_mode(const Start& k, double t) {
+        rec_.transition(st_.mode, k.mode);
+        if (k.mode == Mode::flight && st_.mode != Mode::flight)
+            st_.fl = to_flight(g_, st_.s, st_.u, st_.v, st_.th, st_.om);
+        st_.mode = k.mode;
+        st_.s = k.s;
+        st_.sigma = k.sigma;
+        if (k.mode == Mode::rest) st_.v = 0.0;
+        note_event(t);
+    }
+
+    // Chatter guard: many events inside settle_interval_s settle the block at rest.
+    void note_event(double t) {
+        burst_ = (t - last_event_ < o_.settle_interval_s) ? burst_ + 1 : 0;
+        last_event_ = t;
+        if (burst_ == burst_settle) {
+            rec_.settlement();
+            rec_.transition(st_.mode, Mode::rest);
+            st_.mode = Mode::rest;
+            st_.v = st_.th = st_.om = 0.0;
+        }
+        if (burst_ > burst_fail)
+            throw NumericalError(fmt::format(
+                "event-driven integrator: events accumulate at t = {} s without settling", t));
+    }
+
+    // Flat contact again (after settling or a flat landing): slide if slipping, else from rest.
+    void go_flat(double t) {
+        st_.th = st_.om = 0.0;
+        if (st_.v != 0.0) {
+            set_mode(classify_sliding(g_, st_.v), t);
+        } else {
+            set_mode(classify_from_rest(g_, probe(t)), t);
+        }
+    }
+
+    double advance_rest(double t) {
+        const Base a = seg_.at(t), b = seg_.at(tb_);
+        const double cl = std::min(g_.mu_s, g_.tan_alpha[0]);
+        const double cr = std::min(g_.mu_s, g_.tan_alpha[1]);
+        // Rest holds while every function is <= 0 (section 2); each is linear on the segment.
+        const double ha[3] = {a.ax - cl * a.G, -a.ax - cr * a.G, -a.G};
+        const double hb[3] = {b.ax - cl * b.G, -b.ax - cr * b.G, -b.G};
+        double t_ev = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < 3; ++i) {
+            if (ha[i] > 0.0) t_ev = t;
+            else if (hb[i] > 0.0) t_ev = std::min(t_ev, t + (tb_ - t) * (-ha[i]) / (hb[i] - ha[i]));
+        }
+        if (!(t_ev <= tb_)) {
+            rec_.time_in(Mode::rest, tb_ - t);
+            return tb_;
+        }
+        t_ev = std::clamp(t_ev, t, tb_);
+        rec_.time_in(Mode::rest, t_ev - t);
+        const Start k = classify_from_rest(g_, probe(t_ev));
+        if (k.mode == Mode::rest) return std::min(tb_, t_ev + std::min(1e-9, 0.5 * (tb_ - t_ev)));
+        set_mode(k, t_ev);
+        return t_ev;
+    }
+
+    double advance_slide(double t) {
+        rec_.step();
+        const Base a = seg_.at(t);
+        const double dsig = static_cast<double>(st_.sigma);
+        // u'' = -xg'' - sigma mu_k G is linear in tau on the segment: u is a cubic.
+        const double c0 = -a.ax - dsig * g_.mu_k * a.G;
+        const double c1 = -seg_.ax1 - dsig * g_.mu_k * seg_.G1;
+        const double span = tb_ - t;
+        // Starting from u' = 0 the direction was chosen at the probe time t + delta (the start
+        // may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots before it.
+        const double delta = st_.v == 0.0 ? std::min(1e-9, 0.5 * span) : 0.0;
+        double tau = first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span);
+        Ev ev = tau <= span ? Ev::stop : Ev::none;
+        if (st_.v == 0.0 && !(dsig * (c0 + c1 * delta) > 0.0)) {
+            tau = 0.0;  // pushed against its slip direction: a stop now
+            ev = Ev::stop;
+        }
+        if (seg_.G1 < 0.0) {
+            const double t_fly = -a.G / seg_.G1;
+            if (t_fly >= 0.0 && t_fly < std::min(tau, span)) {
+                tau = t_fly;
+                ev = Ev::lift;
+            }
+        }
+        if (ev == Ev::none) tau = span;
+        st_.u += tau * (st_.v + tau * (0.5 * c0 + tau * c1 / 6.0));
+        st_.v += tau * (c0 + 0.5 * c1 * tau);
+        rec_.time_in(Mode::slide, tau);
+        const double te = ev == Ev::none ? tb_ : t + tau;
+        rec_.observe(st_);
+        if (ev == Ev::stop) {
+            st_.v = 0.0;
+            set_mode(classify_from_rest(g_, probe(te)), te);
+        } else if (ev == Ev::lift) {
+            st_.th = 0.0;
+            set_mode({Mode::flight, 1, 1}, te);
+        }
+        return te;
+    }
+
+    double event_value(Ev e, const Vec& x, const Accel& a) const {
+        switch (e) {
+            case Ev::impact: return x[2];
+            case Ev::overturn: return half_pi - x[2];
+            case Ev::past_alpha:
+                return g_.alpha[static_cast<std::size_t>(Geometry::index(st_.s))] - x[2];
+            case Ev::friction: return g_.mu_s * a.N - std::abs(a.F);
+            case Ev::lift: return a.N;
+            case Ev::stop: return static_cast<double>(st_.sigma) * x[1];
+            case Ev::none: break;
+        }
+        return 1.0;
+    }
+
+    double advance_contact(double t) {
+        const bool tail = t >= bm_.quiet_from_s();
+        const std::size_t ia = static_cast<std::size_t>(Geometry::index(st_.s));
+        if (tail && st_.mode == Mode::rock && st_.th > g_.alpha[ia] && st_.om > 0.0) {
+            rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
+            return t;
+        }
+        Rhs rhs{&g_, st_.mode, st_.s, st_.sigma, seg_, {}};
+        std::array<Ev, 5> events = {Ev::impact, Ev::overturn, Ev::lift, Ev::none, Ev::none};
+        if (st_.mode == Mode::rock) {
+            events[3] = Ev::friction;
+            if (tail) events[4] = Ev::past_alpha;
+        } else {
+            events[3] = Ev::stop;
+        }
+        Vec x = {st_.u, st_.v, st_.th, st_.om}, dx{}, xn{}, dxn{}, xerr{};
+        rhs(x, dx, t);
+        Accel acc0 = rhs.last;
+        Stepper stepper;
+        while (t < tb_) {
+            double h = std::min(h_, tb_ - t);
+            if (tb_ - (t + h) < 1e-12 * h) h = tb_ - t;
+            double err = 0.0;
+            for (;;) {
+                stepper.do_step(std::ref(rhs), x, dx, t, xn, dxn, h, xerr);
+                err = 0.0;
+                for (std::size_t i = 0; i < 4; ++i) {
+                    const double sc = o_.abs_tol + o_.rel_tol * std::max(std::abs(x[i]), std::abs(xn[i]));
+                    err = std::max(err, std::abs(xerr[i]) / sc);
+                }
+                if (err <= 1.0) break;
+                h *= std::max(0.2, 0.9 * std::pow(err, -0.2));
+                if (h < 1e-14)
+                    throw NumericalError(fmt::format(
+                        "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
+                        mode_name(st_.mode)));
+            }
+            rec_.step();
+            const double t1 = (h == tb_ - t) ? tb_ : t + h;
+            const Accel acc1 = rhs.last;
+            // Dense output of the accepted step, for root finding.
+            auto dense = [&](double tt) {
+                Vec y;
+                stepper.calc_state(tt, y, x, dx, t, xn, dxn, t1);
+                return y;
+            };
+            Ev first = Ev::none;
+            double t_ev = t1;
+            for (Ev e : events) {
+                if (e == Ev::none) continue;
+                const double v1 = event_value(e, xn, acc1);
+                if (!(v1 < 0.0)) continue;
+                const double v0 = event_value(e, x, acc0);
+                auto f = [&](double tt) {
+                    const Vec y = dense(tt);
+                    return event_value(e, y, rhs.accel(y, tt));
+                };
+                double ta = t, fa = v0;
+                if (v0 == 0.0) {
+                    // Starting on the boundary: look for the excursion inside the step.
+                    for (int j = 1; j < 8; ++j) {
+                        const double tm = t + (t1 - t) * j / 8.0;
+                        const double fm = f(tm);
+                        if (fm > 0.0) { ta = tm; fa = fm; break; }
+                        if (fm < 0.0) break;
+                    }
+                }
+                const double te = fa < 0.0 ? t : toms748_root(f, ta, t1, fa, v1);
+                if (te < t_ev || first == Ev::none) {
+                    t_ev = te;
+                    first = e;
+                }
+            }
+            // Peak rotation between steps (theta' changes sign from + to -).
+            if (x[3] > 0.0 && xn[3] <= 0.0) {
+                auto w = [&](double tt) { return dense(tt)[3]; };
+                const double tp = toms748_root(w, t, t1, x[3], xn[3]);
+                if (first == Ev::none || tp <= t_ev) {
+                    BlockState peak = st_;
+                    peak.th = dense(tp)[2];
+                    rec_.observe(peak);
+                }
+            }
+            if (first != Ev::none) {
+                const Vec y = t_ev == t1 ? xn : dense(t_ev);
+                rec_.time_in(st_.mode, t_ev - t);
+                st_.u = y[0];
+                st_.v = y[1];
+                st_.th = y[2];
+                st_.om = y[3];
+                rec_.observe(st_);
+                h_ = std::max(h, 1e-6);
+                handle_contact_event(first, t_ev);
+                return t_ev;
+            }
+            rec_.time_in(st_.mode, t1 - t);
+            x = xn;
+            dx = dxn;
+            acc0 = acc1;
+            t = t1;
+            st_.u = x[0];
+            st_.v = x[1];
+            st_.th = x[2];
+            st_.om = x[3];
+            rec_.observe(st_);
+            const double grow = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+            h_ = h * std::clamp(grow, 0.2, 5.0);
+        }
+        return tb_;
+    }
+
+    void handle_contact_event(Ev e, double t) {
+        const Base base = seg_.at(t);
+        switch (e) {
+            case Ev::impact: {
+                st_.th = 0.0;
+                if (!(st_.om < 0.0)) {  // grazing return: it lands without rebound
+                    rec_.settlement();
+                    go_flat(t);
+                    return;
+                }
+                const int s_new = -st_.s;
+                const double w_before = -st_.om;
+                const double w_after =
+                    g_.r_onto[static_cast<std::size_t>(Geometry::index(s_new))] * w_before;
+                if (rebound_angle(g_, s_new, w_after, base.G) < o_.settle_rebound_rad) {
+                    rec_.impact(t, w_before, 0.0, true);
+                    rec_.settlement();
+                    go_flat(t);
+                    return;
+                }
+                rec_.impact(t, w_before, w_after, false);
+                st_.s = s_new;
+                st_.om = w_after;
+                set_mode(classify_on_edge(g_, st_.s, 0.0, st_.om, st_.v, base), t);
+                return;
+            }
+            case Ev::overturn: rec_.overturn(t, OverturnCriterion::angle_half_pi); return;
+            case Ev::past_alpha:
+                rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
+                return;
+            case Ev::friction: {
+                const Accel a = rock_accel(g_, st_.s, st_.th, st_.om, base);
+                set_mode({Mode::slide_rock, st_.s, a.F > 0.0 ? -1 : 1}, t);
+                st_.v = 0.0;
+                return;
+            }
+            case Ev::lift: set_mode({Mode::flight, st_.s, st_.sigma}, t); return;
+            case Ev::stop:
+                st_.v = 0.0;
+                set_mode(classify_on_edge(g_, st_.s, st_.th, st_.om, 0.0, base), t);
+                return;
+            case Ev::none: return;
+        }
+    }
+
+    // Ballistic flight: X'' = -xg'', Y'' = -G (linear on the segment), phi' constant.
+    Flight flight_at(const Flight& f0, double tau, double ax0, double ax1, double G0,
+                     double G1) const {
+        Flight f = f0;
+        const double t2 = tau * tau, t3 = t2 * tau;
+        f.X += f0.Xd * tau - ax0 * t2 / 2.0 - ax1 * t3 / 6.0;
+        f.Xd += -ax0 * tau - ax1 * t2 / 2.0;
+        f.Y += f0.Yd * tau - G0 * t2 / 2.0 - G1 * t3 / 6.0;
+        f.Yd += -G0 * tau - G1 * t2 / 2.0;
+        f.phi += f0.phid * tau;
+        return f;
+    }
+
+    double advance_flight(double t) {
+        rec_.step();
+        const Base a = seg_.at(t);
+        const Flight f0 = st_.fl;
+        const double span = tb_ - t;
+        int s_low = 1;
+        auto height = [&](double tau) {
+            return lowest_corner(g_, flight_at(f0, tau, a.ax, seg_.ax1, a.G, seg_.G1), s_low);
+        };
+        auto tilt = [&](double tau) {
+            return half_pi - std::abs(flight_at(f0, tau, a.ax, seg_.ax1, a.G, seg_.G1).phi);
+        };
+        // Armed once the lowest corner has risen: the lift-off point itself is at height 0.
+        double prev = 0.0, hprev = height(0.0);
+        if (hprev > 0.0) armed_ = true;
+        double tau_ev = -1.0;
+        bool over = false;
+        for (int j = 1; j <= landing_probes; ++j) {
+            const double tau = span * j / landing_probes;
+            const double hj = height(tau);
+            if (tilt(tau) < 0.0) {
+                tau_ev = toms748_root(tilt, prev, tau, tilt(prev), tilt(tau));
+                over = true;
+                break;
+            }
+            if (armed_ && hj < 0.0) {
+                tau_ev = toms748_root(height, prev, tau, hprev, hj);
+                break;
+            }
+            if (hj > 0.0) armed_ = true;
+            prev = tau;
+            hprev = hj;
+        }
+        if (tau_ev < 0.0) {
+            st_.fl = flight_at(f0, span, a.ax, seg_.ax1, a.G, seg_.G1);
+            rec_.time_in(Mode::flight, span);
+            rec_.observe(st_);
+            return tb_;
+        }
+        const double te = t + tau_ev;
+        st_.fl = flight_at(f0, tau_ev, a.ax, seg_.ax1, a.G, seg_.G1);
+        rec_.time_in(Mode::flight, tau_ev);
+        rec_.observe(st_);
+        if (over) {
+            rec_.overturn(te, OverturnCriterion::angle_half_pi);
+            return te;
+        }
+        armed_ = false;
+        const Contact c = land(g_, st_.fl);
+        rec_.impact(te, std::abs(st_.fl.phid), std::abs(c.om), false);
+        st_.u = c.u;
+        st_.v = c.v;
+        st_.s = c.s;
+        st_.th = c.th;
+        st_.om = c.om;
+        if (c.flat) {
+            go_flat(te);
+        } else {
+            set_mode(classify_on_edge(g_, c.s, c.th, c.om, 0.0, seg_.at(te)), te);
+        }
+        return te;
+    }
+
+    const Geometry& g_;
+    const BaseMotion& bm_;
+    const Options& o_;
+    Recorder& rec_;
+    BlockState& st_;
+    Segment seg_;
+    double tb_ = 0.0;
+    double h_ = 1e-3;  // step size carried between phases
+    double last_event_ = -1.0;
+    std::size_t burst_ = 0;
+    bool armed_ = false;
+};
+
+}  // namespace
+
+SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const Options& o) {
+    Recorder rec(g, o, bm.pga_mps2());
+    const std::size_t n_seg = bm.segments(o.tail_s);
+    const Base b0 = bm.at(0, 0.0);
+    BlockState st = initial_state(g, o, b0, bm.at(0, std::min(1e-9, 0.5 * bm.dt())));
+    rec.transition(Mode::rest, st.mode);
+    if (st.mode == Mode::flight) st.fl = to_flight(g, st.s, st.u, st.v, st.th, st.om);
+    rec.observe(st);
+    rec.sample(0.0, st, b0);
+    Engine engine(g, bm, o, rec, st);
+    for (std::size_t k = 0; k < n_seg; ++k) {
+        double t = bm.t_k(k);
+        const double tb = bm.t_k(k + 1);
+        while (t < tb) {
+            t = engine.advance(k, t, tb);
+            if (rec.overturned()) return rec.finish(st, t, integrator_name(Integrator::event));
+        }
+        rec.sample(tb, st, bm.at(k, tb));
+        if (st.mode == Mode::rest && tb >= bm.min_end_s())
+            return rec.finish(st, tb, integrator_name(Integrator::event));
+    }
+    return rec.finish(st, bm.t_k(n_seg), integrator_name(Integrator::event));
+}
+
+}  // namespace freestand::dynamics::detail

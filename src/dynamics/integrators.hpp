@@ -1,0 +1,88 @@
+#pragma once
+/// Internal: state, excitation access and bookkeeping shared by the two integrators.
+#include <cstddef>
+#include <vector>
+
+#include "dynamics/mechanics.hpp"
+
+namespace freestand::dynamics::detail {
+
+/// Piecewise-linear base acceleration; sample i at i dt, zero from sample n on (the base is at
+/// rest after the record).
+class BaseMotion {
+public:
+    BaseMotion(const Excitation& e, double g_mps2);
+    double dt() const { return dt_; }
+    double t_k(std::size_t k) const { return dt_ * static_cast<double>(k); }
+    /// Base acceleration at time t inside segment k = [t_k, t_k+1] (linear interpolation).
+    Base at(std::size_t k, double t) const;
+    /// Value and slope on segment k: ax = ax0 + ax1 (t - t_k), G likewise.
+    void segment(std::size_t k, double& ax0, double& ax1, double& G0, double& G1) const;
+    /// First time from which the base is at rest for good, s.
+    double quiet_from_s() const { return quiet_from_; }
+    /// Time after which the simulation may stop once the block is at rest, s.
+    double min_end_s() const { return duration_ > quiet_from_ ? duration_ : quiet_from_; }
+    /// Number of segments to cover the record and the tail.
+    std::size_t segments(double tail_s) const;
+    double pga_mps2() const { return pga_; }
+
+private:
+    double h(std::size_t i) const { return i < x_.size() ? x_[i] : 0.0; }
+    double v(std::size_t i) const { return i < y_.size() ? y_[i] : 0.0; }
+    double dt_ = 0.0, g_ = 0.0, quiet_from_ = 0.0, duration_ = 0.0, pga_ = 0.0;
+    const std::vector<double>& x_;
+    const std::vector<double>& y_;
+};
+
+/// Block state in every mode. Contact modes use (u, v, theta, omega) on edge s (slip direction
+/// sigma); flight uses fl.
+struct BlockState {
+    Mode mode = Mode::rest;
+    int s = 1, sigma = 1;
+    double u = 0, v = 0, th = 0, om = 0;
+    Flight fl;
+};
+
+/// Contact accelerations and forces of the state in its mode.
+Accel accel_of(const Geometry& g, const BlockState& st, Base base);
+
+/// Summary bookkeeping and the output series.
+class Recorder {
+public:
+    Recorder(const Geometry& g, const Options& o, double pga_mps2);
+    /// Tracks peak slip and rotation of the state.
+    void observe(const BlockState& st);
+    /// A mode change at a transition (counts only changes of Mode).
+    void transition(Mode from, Mode to) {
+        if (from != to) ++summary_.mode_changes;
+    }
+    void time_in(Mode m, double dt_s) { summary_.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s; }
+    void impact(double t_s, double omega_before, double omega_after, bool settled) {
+        ++summary_.impacts;
+        impacts_.push_back({t_s, omega_before, omega_after, settled});
+    }
+    void settlement() { ++summary_.settlements; }
+    void step(std::size_t n = 1) { summary_.steps += n; }
+    void overturn(double t_s, OverturnCriterion c);
+    bool overturned() const { return summary_.overturned; }
+    /// Output sample at time t (also tracks the peak top acceleration).
+    void sample(double t_s, const BlockState& st, Base base);
+    SimulationResult finish(const BlockState& st, double end_time_s, const char* integrator);
+
+private:
+    const Geometry& g_;
+    double g_mps2_ = 9.81;
+    bool record_series_ = true;
+    Summary summary_;
+    std::vector<Sample> series_;
+    std::vector<ImpactEvent> impacts_;
+};
+
+/// Initial mode from Options (initial rotation / slide velocity) or from rest.
+BlockState initial_state(const Geometry& g, const Options& o, Base base0, Base probe);
+
+SimulationResult run_event_driven(const Geometry& g, const BaseMotion& base, const Options& o);
+SimulationResult run_central_difference(const Geometry& g, const BaseMotion& base,
+                                        const Options& o);
+
+}  // namespace freestand::dynamics::detail

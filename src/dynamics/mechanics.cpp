@@ -1,0 +1,234 @@
+#include "dynamics/mechanics.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace freestand::dynamics::detail {
+
+namespace {
+double sgn(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
+}  // namespace
+
+Geometry make_geometry(const BlockModel& model) {
+    const block::Block& blk = model.block;
+    Geometry g;
+    g.M = blk.mass_kg;
+    g.Ic = blk.inertia_cg_kgm2;
+    g.h = blk.h_m;
+    g.top = model.top_height_m;
+    g.mu_s = model.mu_s;
+    g.mu_k = model.mu_k;
+    const block::Edge edges[2] = {block::Edge::left, block::Edge::right};
+    for (int i = 0; i < 2; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        g.b[k] = blk.b(edges[i]);
+        g.R[k] = blk.R_m(edges[i]);
+        g.alpha[k] = blk.alpha_rad(edges[i]);
+        g.sin_alpha[k] = std::sin(g.alpha[k]);
+        g.cos_alpha[k] = std::cos(g.alpha[k]);
+        g.tan_alpha[k] = blk.tan_alpha(edges[i]);
+        g.IO[k] = blk.inertia_edge_kgm2(edges[i]);
+    }
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (model.restitution) {
+            g.r_onto[i] = *model.restitution;
+        } else if (blk.symmetric()) {
+            g.r_onto[i] = blk.housner_restitution(edges[i]);
+        } else {
+            // Angular momentum about the striking edge i, just before (rotation about the other
+            // edge at theta = 0) and after: H = omega (I_c + M (h^2 - b_L b_R)) = I_O,i omega+.
+            // Equals Housner's 1 - 2 M R^2 sin^2(alpha) / I_O when b_L = b_R.
+            g.r_onto[i] = (g.Ic + g.M * (g.h * g.h - g.b[0] * g.b[1])) / g.IO[i];
+        }
+        // A squat block (alpha > ~0.96 rad when uniform) cannot rebound: the impulse stops it.
+        g.r_onto[i] = std::max(0.0, g.r_onto[i]);
+    }
+    return g;
+}
+
+Accel rock_accel(const Geometry& g, int s, double th, double om, Base base) {
+    const auto i = static_cast<std::size_t>(Geometry::index(s));
+    const double ds = static_cast<double>(s);
+    const double R = g.R[i];
+    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
+    Accel a;
+    a.th_dd = -g.M * R * (base.G * sn + ds * base.ax * c) / g.IO[i];
+    const double xdd = ds * R * (c * a.th_dd + sn * om * om);
+    const double ydd = R * (sn * a.th_dd - c * om * om);
+    a.F = g.M * (xdd + base.ax);
+    a.N = g.M * (ydd + base.G);
+    return a;
+}
+
+Accel slide_rock_accel(const Geometry& g, int s, int sigma, double th, double om, Base base) {
+    const auto i = static_cast<std::size_t>(Geometry::index(s));
+    const double ds = static_cast<double>(s), dsig = static_cast<double>(sigma);
+    const double R = g.R[i];
+    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
+    const double w2 = om * om;
+    // Rows: horizontal balance of the CG, vertical balance, moment about the CG (sec. 3).
+    Eigen::Matrix3d A;
+    A << g.M, g.M * ds * R * c, dsig * g.mu_k,
+         0.0, g.M * R * sn, -1.0,
+         0.0, ds * g.Ic, ds * R * sn - dsig * g.mu_k * R * c;
+    Eigen::Vector3d rhs(-g.M * (ds * R * sn * w2 + base.ax), g.M * (R * c * w2 - base.G), 0.0);
+    const Eigen::Vector3d z = A.partialPivLu().solve(rhs);
+    Accel a;
+    a.u_dd = z(0);
+    a.th_dd = z(1);
+    a.N = z(2);
+    a.F = -dsig * g.mu_k * a.N;
+    return a;
+}
+
+Accel slide_accel(const Geometry& g, int sigma, Base base) {
+    const double dsig = static_cast<double>(sigma);
+    Accel a;
+    a.u_dd = -base.ax - dsig * g.mu_k * base.G;
+    a.N = g.M * base.G;
+    a.F = -dsig * g.mu_k * a.N;
+    return a;
+}
+
+bool rest_holds(const Geometry& g, Base base) {
+    // Section 2: |xg''| <= min(mu_s, tan alpha) G for the edge it would tip over (base
+    // accelerating right tips it over the left edge).
+    return base.G >= 0.0 && base.ax <= std::min(g.mu_s, g.tan_alpha[0]) * base.G &&
+           -base.ax <= std::min(g.mu_s, g.tan_alpha[1]) * base.G;
+}
+
+Start classify_sliding(const Geometry& g, double v) {
+    const int sigma = v >= 0.0 ? 1 : -1;
+    Start st;
+    st.sigma = sigma;
+    st.s = sigma;
+    // Friction decelerating the slip lifts the leading edge once mu_k h > b (section 3).
+    st.mode = g.mu_k > g.tan_alpha[static_cast<std::size_t>(Geometry::index(sigma))]
+                  ? Mode::slide_rock
+                  : Mode::slide;
+    return st;
+}
+
+Start classify_from_rest(const Geometry& g, Base base) {
+    Start st;
+    if (rest_holds(g, base)) return st;
+    if (base.G <= 0.0) {
+        st.mode = Mode::flight;
+        return st;
+    }
+    const int s_tip = base.ax > 0.0 ? -1 : 1;
+    const double A = std::abs(base.ax) / base.G;
+    const double tan_a = g.tan_alpha[static_cast<std::size_t>(Geometry::index(s_tip))];
+    if (A > g.mu_s && g.mu_s <= tan_a) return classify_sliding(g, static_cast<double>(s_tip));
+    // A > tan(alpha) < mu_s: pure rock if the friction needed at uplift is available
+    // (the general-block form of Shenton's mu_crit), else slide-rock.
+    const Accel a = rock_accel(g, s_tip, 0.0, 0.0, base);
+    st.s = s_tip;
+    if (std::abs(a.F) <= g.mu_s * a.N) {
+        st.mode = Mode::rock;
+    } else {
+        st.mode = Mode::slide_rock;
+        st.sigma = a.F > 0.0 ? -1 : 1;
+    }
+    return st;
+}
+
+Start classify_on_edge(const Geometry& g, int s, double th, double om, double v, Base base) {
+    Start st;
+    st.s = s;
+    if (v != 0.0) {
+        st.mode = Mode::slide_rock;
+        st.sigma = v > 0.0 ? 1 : -1;
+        return st;
+    }
+    const Accel a = rock_accel(g, s, th, om, base);
+    if (a.N < 0.0) {
+        st.mode = Mode::flight;
+    } else if (std::abs(a.F) <= g.mu_s * a.N) {
+        st.mode = Mode::rock;
+    } else {
+        st.mode = Mode::slide_rock;
+        st.sigma = a.F > 0.0 ? -1 : 1;
+    }
+    return st;
+}
+
+double rebound_angle(const Geometry& g, int s, double om, double G) {
+    const auto i = static_cast<std::size_t>(Geometry::index(s));
+    if (G <= 0.0) return std::numeric_limits<double>::infinity();
+    // 1/2 I_O om^2 = M G R (cos(alpha - theta_max) - cos(alpha)).
+    const double cos_v = g.cos_alpha[i] + g.IO[i] * om * om / (2.0 * g.M * G * g.R[i]);
+    if (cos_v >= 1.0) return std::numeric_limits<double>::infinity();
+    return g.alpha[i] - std::acos(cos_v);
+}
+
+double top_corner_accel(const Geometry& g, double ax_base, double xdd_cg, double phi, double phid,
+                        double phidd) {
+    const double cp = std::cos(phi), sp = std::sin(phi);
+    const double by = g.top - g.h;
+    double best = 0.0;
+    for (double bx : {g.b[1], -g.b[0]}) {
+        const double rx = bx * cp - by * sp, ry = bx * sp + by * cp;
+        const double a = ax_base + xdd_cg - phidd * ry - phid * phid * rx;
+        if (std::abs(a) > std::abs(best)) best = a;
+    }
+    return best;
+}
+
+double cg_xdd(const Geometry& g, int s, double th, double om, const Accel& a) {
+    const auto i = static_cast<std::size_t>(Geometry::index(s));
+    const double ds = static_cast<double>(s);
+    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
+    return a.u_dd + ds * g.R[i] * (c * a.th_dd + sn * om * om);
+}
+
+Flight to_flight(const Geometry& g, int s, double u, double v, double th, double om) {
+    const auto i = static_cast<std::size_t>(Geometry::index(s));
+    const double ds = static_cast<double>(s);
+    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
+    Flight f;
+    f.X = u + ds * g.b[i] - ds * g.R[i] * sn;
+    f.Y = g.R[i] * c;
+    f.phi = -ds * th;
+    f.Xd = v + ds * g.R[i] * c * om;
+    f.Yd = g.R[i] * sn * om;
+    f.phid = -ds * om;
+    return f;
+}
+
+double lowest_corner(const Geometry& g, const Flight& f, int& s_out) {
+    const double sp = std::sin(f.phi), cp = std::cos(f.phi);
+    const double y_right = f.Y + g.b[1] * sp - g.h * cp;
+    const double y_left = f.Y - g.b[0] * sp - g.h * cp;
+    s_out = y_right <= y_left ? 1 : -1;
+    return std::min(y_right, y_left);
+}
+
+Contact land(const Geometry& g, const Flight& f) {
+    Contact c;
+    lowest_corner(g, f, c.s);
+    c.th = std::max(0.0, -static_cast<double>(c.s) * f.phi);
+    const auto i = static_cast<std::size_t>(Geometry::index(c.s));
+    const double ds = static_cast<double>(c.s);
+    const double sn = std::sin(g.alpha[i] - c.th), cs = std::cos(g.alpha[i] - c.th);
+    c.u = f.X - ds * g.b[i] + ds * g.R[i] * sn;
+    if (c.th <= 1e-12) {
+        // Both edges strike together: the vertical velocity stops; friction removes at most
+        // mu_k times the vertical impulse from the horizontal velocity (Coulomb impact).
+        c.flat = true;
+        c.th = 0.0;
+        const double dv = std::min(std::abs(f.Xd), g.mu_k * std::max(0.0, -f.Yd));
+        c.v = f.Xd - sgn(f.Xd) * dv;
+        return c;
+    }
+    // Angular momentum about the striking corner is conserved through the sticking impact.
+    const double rx = -ds * g.R[i] * sn, ry = g.R[i] * cs;  // CG relative to the corner
+    const double H = g.Ic * f.phid + g.M * (rx * f.Yd - ry * f.Xd);
+    c.om = -ds * H / g.IO[i];
+    c.v = 0.0;
+    return c;
+}
+
+}  // namespace freestand::dynamics::detail

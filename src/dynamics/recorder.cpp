@@ -1,0 +1,162 @@
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/integrators.hpp"
+
+namespace freestand::dynamics::detail {
+
+BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
+    : dt_(e.dt_s), g_(g_mps2), x_(e.horizontal_mps2), y_(e.vertical_mps2) {
+    std::size_t last = 0;  // one past the last non-zero sample
+    for (std::size_t i = 0; i < x_.size(); ++i)
+        if (x_[i] != 0.0 || v(i) != 0.0) last = i + 1;
+    for (std::size_t i = 0; i < y_.size(); ++i)
+        if (y_[i] != 0.0) last = std::max(last, i + 1);
+    quiet_from_ = dt_ * static_cast<double>(last);
+    duration_ = e.duration_s();
+    pga_ = e.pga_mps2();
+}
+
+void BaseMotion::segment(std::size_t k, double& ax0, double& ax1, double& G0, double& G1) const {
+    ax0 = h(k);
+    ax1 = (h(k + 1) - ax0) / dt_;
+    G0 = g_ + v(k);
+    G1 = (v(k + 1) - v(k)) / dt_;
+}
+
+Base BaseMotion::at(std::size_t k, double t) const {
+    double ax0, ax1, G0, G1;
+    segment(k, ax0, ax1, G0, G1);
+    const double tau = t - t_k(k);
+    return {ax0 + ax1 * tau, G0 + G1 * tau};
+}
+
+std::size_t BaseMotion::segments(double tail_s) const {
+    const double end = std::max(duration_, quiet_from_) + std::max(0.0, tail_s);
+    return static_cast<std::size_t>(std::ceil(end / dt_ - 1e-9));
+}
+
+Accel accel_of(const Geometry& g, const BlockState& st, Base base) {
+    switch (st.mode) {
+        case Mode::rest: {
+            Accel a;
+            a.N = g.M * base.G;
+            a.F = g.M * base.ax;
+            return a;
+        }
+        case Mode::slide: return slide_accel(g, st.sigma, base);
+        case Mode::rock: return rock_accel(g, st.s, st.th, st.om, base);
+        case Mode::slide_rock: return slide_rock_accel(g, st.s, st.sigma, st.th, st.om, base);
+        case Mode::flight: {
+            Accel a;
+            a.u_dd = -base.ax;
+            return a;
+        }
+    }
+    return {};
+}
+
+Recorder::Recorder(const Geometry& g, const Options& o, double pga_mps2)
+    : g_(g), g_mps2_(o.g_mps2), record_series_(o.record_series) {
+    summary_.pga_g = pga_mps2 / o.g_mps2;
+}
+
+void Recorder::observe(const BlockState& st) {
+    if (st.mode == Mode::flight) {
+        summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.fl.X));
+        return;
+    }
+    summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.u));
+    if (st.th > summary_.rock_max_rad) summary_.rock_max_rad = st.th;
+    const double ratio = st.th / g_.alpha[static_cast<std::size_t>(Geometry::index(st.s))];
+    summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
+}
+
+void Recorder::overturn(double t_s, OverturnCriterion c) {
+    summary_.overturned = true;
+    summary_.overturn_time_s = t_s;
+    summary_.overturn_mode = summary_.impacts > 0 ? 1 : 2;
+    summary_.overturn_criterion = c;
+}
+
+void Recorder::sample(double t_s, const BlockState& st, Base base) {
+    const Accel a = accel_of(g_, st, base);
+    double top = base.ax;
+    switch (st.mode) {
+        case Mode::rest: break;
+        case Mode::slide: top = base.ax + a.u_dd; break;
+        case Mode::rock:
+        case Mode::slide_rock: {
+            const double ds = static_cast<double>(st.s);
+            top = top_corner_accel(g_, base.ax, cg_xdd(g_, st.s, st.th, st.om, a), -ds * st.th,
+                                   -ds * st.om, -ds * a.th_dd);
+            break;
+        }
+        case Mode::flight:
+            top = top_corner_accel(g_, base.ax, -base.ax, st.fl.phi, st.fl.phid, 0.0);
+            break;
+    }
+    summary_.top_accel_max_g = std::max(summary_.top_accel_max_g, std::abs(top) / g_mps2_);
+    if (!record_series_) return;
+    Sample smp;
+    smp.time_s = t_s;
+    smp.mode = st.mode;
+    const double ds = static_cast<double>(st.s);
+    if (st.mode == Mode::flight) {
+        smp.slide_m = st.fl.X;
+        smp.slide_velocity_mps = st.fl.Xd;
+        smp.rotation_rad = -st.fl.phi;
+        smp.angular_velocity_radps = -st.fl.phid;
+    } else {
+        smp.slide_m = st.u;
+        smp.slide_velocity_mps = st.v;
+        smp.rotation_rad = ds * st.th;
+        smp.angular_velocity_radps = ds * st.om;
+    }
+    smp.normal_force_N = a.N;
+    smp.friction_force_N = a.F;
+    smp.top_accel_mps2 = top;
+    series_.push_back(smp);
+}
+
+SimulationResult Recorder::finish(const BlockState& st, double end_time_s, const char* integrator) {
+    summary_.integrator = integrator;
+    summary_.end_time_s = end_time_s;
+    summary_.slide_residual_m = std::abs(st.mode == Mode::flight ? st.fl.X : st.u);
+    summary_.amplification = summary_.pga_g > 0.0 ? summary_.top_accel_max_g / summary_.pga_g : 0.0;
+    SimulationResult r;
+    r.summary = summary_;
+    r.series = std::move(series_);
+    r.impact_log = std::move(impacts_);
+    return r;
+}
+
+BlockState initial_state(const Geometry& g, const Options& o, Base base0, Base probe) {
+    BlockState st;
+    const double th0 = o.initial_rotation_rad, v0 = o.initial_slide_velocity_mps;
+    if (th0 != 0.0) {
+        st.s = th0 > 0.0 ? 1 : -1;
+        st.th = std::abs(th0);
+        st.v = v0;
+        const Start k = classify_on_edge(g, st.s, st.th, 0.0, v0, base0);
+        st.mode = k.mode;
+        st.sigma = k.sigma;
+        if (k.mode == Mode::flight) st.fl = to_flight(g, st.s, 0.0, v0, st.th, 0.0);
+        return st;
+    }
+    if (v0 != 0.0) {
+        const Start k = classify_sliding(g, v0);
+        st.v = v0;
+        st.mode = k.mode;
+        st.s = k.s;
+        st.sigma = k.sigma;
+        return st;
+    }
+    const Start k = classify_from_rest(g, probe);
+    st.mode = k.mode;
+    st.s = k.s;
+    st.sigma = k.sigma;
+    return st;
+}
+
+}  // namespace freestand::dynamics::detail

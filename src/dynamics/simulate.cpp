@@ -1,0 +1,29 @@
+#include <chrono>
+
+#include "core/errors.hpp"
+#include "dynamics/integrators.hpp"
+
+namespace freestand::dynamics {
+
+SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
+                          const Options& options) {
+    require_positive(excitation.dt_s, {"", 0, "excitation dt_s"});
+    if (!excitation.vertical_mps2.empty() &&
+        excitation.vertical_mps2.size() != excitation.horizontal_mps2.size())
+        throw InputError({"", 0, "excitation vertical_mps2"},
+                         "must be empty or as long as the horizontal samples");
+    require_positive(options.cd_dt_s, {"", 0, "--dt"});
+    require_positive(options.rel_tol, {"", 0, "rel_tol"});
+    require_positive(options.abs_tol, {"", 0, "abs_tol"});
+    const auto start = std::chrono::steady_clock::now();
+    const detail::Geometry g = detail::make_geometry(model);
+    const detail::BaseMotion base(excitation, options.g_mps2);
+    SimulationResult r = options.integrator == Integrator::event
+                             ? detail::run_event_driven(g, base, options)
+                             : detail::run_central_difference(g, base, options);
+    r.summary.wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+}  // namespace freestand::dynamics
