@@ -1,0 +1,283 @@
+#include "assess/case.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "assess/materials.hpp"
+#include "assess/toml_reader.hpp"
+#include "core/file_io.hpp"
+#include "core/units.hpp"
+
+namespace freestand::assess {
+
+namespace {
+
+constexpr double max_size_m = 100.0;
+const Range positive_size{0.0, max_size_m, false, true};
+const Range frequency_range{0.0, 1000.0, false, true};
+
+const std::vector<std::string> component_keys{
+    "name", "description", "mass_kg", "cg_height_m", "cg_to_edge_x_m", "cg_to_edge_y_m",
+    "width_m", "depth_m", "height_m", "inertia_cg_x_kgm2", "inertia_cg_y_kgm2", "p_radps",
+    "footprint", "fixed_base_frequency_hz", "free_rocking_band_hz", "base_material", "mu_s",
+    "mu_k", "restitution", "allowable_slide_m", "required_overturn_fs"};
+const std::vector<std::string> site_keys{"design", "pga_g", "vertical_ratio", "sliding_damping",
+                                         "g_mps2"};
+const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
+                                           "simulate"};
+
+const toml::table* subtable(const toml::table& root, const std::string& name,
+                            const std::string& file) {
+    const toml::node* n = root.get(name);
+    if (n == nullptr) return nullptr;
+    if (!n->is_table()) {
+        throw InputError(SourceLocation{file, static_cast<int>(n->source().begin.line), name},
+                         "expected a table [" + name + "]");
+    }
+    return n->as_table();
+}
+
+// Geometry: either CG height and distances to the edges, or a uniform block's box.
+void read_geometry(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
+    const bool box = r.has("width_m") || r.has("depth_m") || r.has("height_m");
+    const bool general = r.has("cg_height_m") || r.has("cg_to_edge_x_m") || r.has("cg_to_edge_y_m");
+    if (box && general) {
+        r.fail(r.has("width_m") ? "width_m" : (r.has("depth_m") ? "depth_m" : "height_m"),
+               "give either width_m/depth_m/height_m (uniform block) or cg_height_m with "
+               "cg_to_edge_x_m/cg_to_edge_y_m, not both");
+    }
+    if (box) {
+        const double w = r.required_number("width_m", positive_size);
+        const double d = r.required_number("depth_m", positive_size);
+        const double h = r.required_number("height_m", positive_size);
+        c.uniform_block = true;
+        c.cg_height_m = h / 2.0;
+        c.x.b_left_m = c.x.b_right_m = w / 2.0;
+        c.y.b_left_m = c.y.b_right_m = d / 2.0;
+        return;
+    }
+    c.cg_height_m = r.required_number("cg_height_m", positive_size);
+    const auto bx = r.numbers("cg_to_edge_x_m", positive_size, 2);
+    if (!bx) r.fail("cg_to_edge_x_m", "missing required key ([left, right] distances in m, each in (0, 100])");
+    const auto by = r.numbers("cg_to_edge_y_m", positive_size, 2);
+    if (!by) r.fail("cg_to_edge_y_m", "missing required key ([left, right] distances in m, each in (0, 100])");
+    c.x.b_left_m = (*bx)[0];
+    c.x.b_right_m = (*bx)[1];
+    c.y.b_left_m = (*by)[0];
+    c.y.b_right_m = (*by)[1];
+    (void)assumptions;
+}
+
+// I_c of a uniform block filling the footprint and twice the CG height (METHODS.md s.1).
+double uniform_inertia(double mass_kg, const PlanarGeometry& g, double h_m) {
+    const double half_width = (g.b_left_m + g.b_right_m) / 2.0;
+    return mass_kg * (half_width * half_width + h_m * h_m) / 3.0;
+}
+
+void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
+    const bool given_i = r.has("inertia_cg_x_kgm2") || r.has("inertia_cg_y_kgm2");
+    if (given_i && r.has("p_radps")) {
+        r.fail("p_radps", "give either p_radps or inertia_cg_x_kgm2/inertia_cg_y_kgm2, not both");
+    }
+    if (given_i) {
+        const Range range{0.0, 1e9, false, true};
+        c.x.inertia_cg_kgm2 = r.required_number("inertia_cg_x_kgm2", range);
+        c.y.inertia_cg_kgm2 = r.required_number("inertia_cg_y_kgm2", range);
+        c.x.inertia_source = c.y.inertia_source = "case file";
+        return;
+    }
+    if (r.has("p_radps")) {
+        // p^2 = M g R / I_O (METHODS.md s.1), so I_O = M g R / p^2 and I_c = I_O - M R^2 must be
+        // > 0: p < sqrt(g / R) about the critical (smaller-alpha) edge of each direction.
+        const block::Block bx0 = c.block(Direction::x);
+        const block::Block by0 = c.block(Direction::y);
+        const double r_max = std::max(bx0.R_m(bx0.critical_edge()), by0.R_m(by0.critical_edge()));
+        const double p_max = std::sqrt(units::g_mps2 / r_max);
+        const double p = *r.number("p_radps", Range{0.0, p_max, false, false});
+        for (PlanarGeometry* g : {&c.x, &c.y}) {
+            const double b = std::min(g->b_left_m, g->b_right_m);
+            const double R2 = b * b + c.cg_height_m * c.cg_height_m;
+            const double i_edge = c.mass_kg * units::g_mps2 * std::sqrt(R2) / (p * p);
+            g->inertia_cg_kgm2 = i_edge - c.mass_kg * R2;
+            g->inertia_source = fmt::format("from p = {} rad/s: I_O = M g R / p^2", p);
+        }
+        return;
+    }
+    for (PlanarGeometry* g : {&c.x, &c.y}) {
+        g->inertia_cg_kgm2 = uniform_inertia(c.mass_kg, *g, c.cg_height_m);
+        g->inertia_source = "uniform block: I_c = M (b^2 + h^2) / 3";
+    }
+    if (!c.uniform_block) {
+        assumptions.push_back(
+            "No inertia or p given: I_c taken as that of a uniform block of the same footprint and "
+            "twice the CG height, I_c = M (b^2 + h^2) / 3.");
+    }
+}
+
+void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
+    const Range mu_range{0.0, 2.0};
+    const Range r_range{0.0, 1.0};
+    if (const auto name = r.string("base_material")) {
+        const Material* m = find_material(*name);
+        if (m == nullptr) {
+            r.fail("base_material", fmt::format("unknown material \"{}\"; expected one of {}", *name,
+                                                material_names()));
+        }
+        c.base.material = m->name;
+        c.base.mu_s = m->mu_s;
+        c.base.restitution = m->restitution;
+        c.base.source = "material table (METHODS.md s.7)";
+    } else if (!r.has("mu_s")) {
+        r.fail("mu_s", fmt::format("missing required key (give base_material, one of {}, or mu_s "
+                                   "in [0, 2])",
+                                   material_names()));
+    } else {
+        c.base.source = "case file";
+    }
+    if (const auto mu = r.number("mu_s", mu_range)) {
+        if (!c.base.material.empty()) c.base.source += "; mu_s from the case file";
+        c.base.mu_s = *mu;
+    }
+    const auto mu_k = r.number("mu_k", Range{0.0, c.base.mu_s});
+    c.base.mu_k = mu_k.value_or(c.base.mu_s);
+    if (!mu_k) assumptions.push_back("mu_k not given: taken equal to mu_s.");
+    if (const auto rest = r.number("restitution", r_range)) c.base.restitution = *rest;
+    if (!c.base.restitution) {
+        assumptions.push_back("No restitution given or tabulated: Housner's r = 1 - 2 M R^2 "
+                              "sin^2(alpha) / I_O (METHODS.md s.1).");
+    }
+}
+
+Component read_component(TableReader& r, std::vector<std::string>& assumptions) {
+    Component c;
+    c.name = r.required_string("name");
+    c.description = r.string("description").value_or("");
+    c.mass_kg = r.required_number("mass_kg", Range{0.0, 1e7, false, true});
+    read_geometry(r, c, assumptions);
+    read_inertia(r, c, assumptions);
+    c.footprint = r.string("footprint").value_or("");
+    c.fixed_base_frequency_hz = r.number("fixed_base_frequency_hz", frequency_range);
+    if (const auto band = r.numbers("free_rocking_band_hz", frequency_range, 2)) {
+        if ((*band)[0] >= (*band)[1]) {
+            r.fail("free_rocking_band_hz",
+                   fmt::format("expected [lo, hi] with lo < hi, got [{}, {}]", (*band)[0], (*band)[1]));
+        }
+        c.free_rocking_band_hz = std::array<double, 2>{(*band)[0], (*band)[1]};
+    }
+    read_base(r, c, assumptions);
+    c.allowable_slide_m = r.required_number("allowable_slide_m", Range{0.0, 10.0, false, true});
+    c.required_overturn_fs = r.number("required_overturn_fs", Range{1.0, 10.0}).value_or(1.5);
+    r.finish(component_keys);
+    return c;
+}
+
+Site read_site(TableReader& r, std::vector<std::string>& assumptions) {
+    Site s;
+    if (const auto design = r.string("design")) {
+        if (*design != "rg1.60") {
+            r.fail("design", fmt::format("unknown design spectrum \"{}\"; expected \"rg1.60\"", *design));
+        }
+        s.design = *design;
+    }
+    const auto pga = r.numbers("pga_g", Range{0.0, 3.0, false, true});
+    if (!pga) r.fail("pga_g", "missing required key (a non-empty array of numbers in (0, 3])");
+    for (std::size_t i = 1; i < pga->size(); ++i) {
+        if ((*pga)[i] <= (*pga)[i - 1]) {
+            r.fail("pga_g", fmt::format("levels must be strictly increasing; {} follows {}",
+                                        (*pga)[i], (*pga)[i - 1]));
+        }
+    }
+    s.pga_g = *pga;
+    const auto ratio = r.number("vertical_ratio", Range{0.0, 1.5});
+    s.vertical_ratio = ratio.value_or(2.0 / 3.0);
+    if (!ratio) assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
+    // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
+    s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
+    s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
+    r.finish(site_keys);
+    return s;
+}
+
+Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
+    Options o;
+    o.histories_per_level = static_cast<int>(r.integer("histories_per_level", 1, 100).value_or(5));
+    o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, 9007199254740991LL).value_or(1));
+    if (const auto records = r.strings("seed_records")) {
+        for (const std::string& rec : *records) {
+            const std::filesystem::path p(rec);
+            o.seed_records.push_back(p.is_absolute() ? p : case_dir / p);
+        }
+    }
+    if (const auto sim = r.string("simulate")) {
+        if (*sim == "auto") {
+            o.simulate = SimulatePolicy::automatic;
+        } else if (*sim == "always") {
+            o.simulate = SimulatePolicy::always;
+        } else if (*sim == "never") {
+            o.simulate = SimulatePolicy::never;
+        } else {
+            r.fail("simulate", fmt::format("unknown value \"{}\"; expected \"auto\", \"always\" or "
+                                           "\"never\"",
+                                           *sim));
+        }
+    }
+    r.finish(option_keys);
+    return o;
+}
+
+}  // namespace
+
+const char* to_string(SimulatePolicy p) {
+    switch (p) {
+        case SimulatePolicy::automatic: return "auto";
+        case SimulatePolicy::always: return "always";
+        case SimulatePolicy::never: return "never";
+    }
+    return "auto";
+}
+
+block::Block Component::block(Direction d) const {
+    const PlanarGeometry& g = plane(d);
+    if (g.inertia_cg_kgm2 > 0.0) {
+        return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg, g.inertia_cg_kgm2);
+    }
+    // Before the inertia is known (while reading p_radps) only R and alpha are used.
+    return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg,
+                                 uniform_inertia(mass_kg, g, cg_height_m));
+}
+
+Case parse_case(const std::string& text, const std::string& file_label) {
+    toml::table root;
+    try {
+        root = toml::parse(text, file_label);
+    } catch (const toml::parse_error& e) {
+        throw InputError(SourceLocation{file_label, static_cast<int>(e.source().begin.line), ""},
+                         fmt::format("TOML syntax error: {}", e.description()));
+    }
+    Case out;
+    out.file = file_label;
+    for (const auto& [k, node] : root) {
+        const std::string key(k.str());
+        if (key != "component" && key != "site" && key != "options") {
+            throw InputError(SourceLocation{file_label, static_cast<int>(node.source().begin.line), key},
+                             "unknown table; allowed tables: [component], [site], [options]");
+        }
+    }
+    const toml::table* comp = subtable(root, "component", file_label);
+    const toml::table* site = subtable(root, "site", file_label);
+    if (comp == nullptr) throw InputError(SourceLocation{file_label, 0, "component"}, "missing required table [component]");
+    if (site == nullptr) throw InputError(SourceLocation{file_label, 0, "site"}, "missing required table [site]");
+    TableReader rc(comp, file_label, "component");
+    out.component = read_component(rc, out.assumptions);
+    TableReader rs(site, file_label, "site");
+    out.site = read_site(rs, out.assumptions);
+    TableReader ro(subtable(root, "options", file_label), file_label, "options");
+    out.options = read_options(ro, std::filesystem::path(file_label).parent_path());
+    return out;
+}
+
+Case read_case(const std::filesystem::path& path) {
+    return parse_case(core::read_text_file(path), path.string());
+}
+
+}  // namespace freestand::assess

@@ -1,0 +1,95 @@
+#pragma once
+/// An assessment case: the component, the site and the run options, read from a TOML file
+/// (issue 6 "Case files"). Values are SI and validated when read; every problem is an
+/// InputError naming file:line:key and the allowed range.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "block/block.hpp"
+
+namespace freestand::assess {
+
+/// Horizontal direction of the component; each is assessed as a planar problem.
+enum class Direction { x, y };
+inline const char* to_string(Direction d) { return d == Direction::x ? "x" : "y"; }
+
+/// Geometry of the component in the vertical plane of one horizontal direction.
+struct PlanarGeometry {
+    double b_left_m = 0.0;         ///< CG to the left rocking edge (or leg), m
+    double b_right_m = 0.0;        ///< CG to the right rocking edge (or leg), m
+    double inertia_cg_kgm2 = 0.0;  ///< I_c about the CG, out of this plane, kg m^2
+    std::string inertia_source;    ///< how I_c was obtained, for the report
+};
+
+/// Base friction and restitution, with where each value came from.
+struct BaseContact {
+    std::string material;  ///< METHODS.md s.7 name, or "" for explicit values
+    double mu_s = 0.0;     ///< static friction coefficient
+    double mu_k = 0.0;     ///< kinetic friction coefficient
+    std::optional<double> restitution;  ///< on angular velocity; Housner's formula when absent
+    std::string source;    ///< e.g. "material table (METHODS.md s.7)" or "case file"
+};
+
+/// The free-standing component (issue 6, [component]).
+struct Component {
+    std::string name;
+    std::string description;
+    double mass_kg = 0.0;
+    double cg_height_m = 0.0;
+    PlanarGeometry x;  ///< rocking in the x-z plane
+    PlanarGeometry y;  ///< rocking in the y-z plane
+    bool uniform_block = false;  ///< given as width/depth/height of a uniform block
+    std::string footprint;       ///< legs or footprint description (free text)
+    std::optional<double> fixed_base_frequency_hz;
+    std::optional<std::array<double, 2>> free_rocking_band_hz;
+    BaseContact base;
+    double allowable_slide_m = 0.0;       ///< clearance / slack the component may slide
+    double required_overturn_fs = 1.5;    ///< required alpha / theta_max (METHODS.md s.5a)
+
+    const PlanarGeometry& plane(Direction d) const { return d == Direction::x ? x : y; }
+    /// The planar rigid block of one direction.
+    block::Block block(Direction d) const;
+};
+
+/// The site's design motion (issue 6, [site]).
+struct Site {
+    std::string design = "rg1.60";    ///< design spectrum name; only RG 1.60 is implemented
+    std::vector<double> pga_g;        ///< horizontal PGA levels, g, strictly increasing
+    double vertical_ratio = 2.0 / 3.0;  ///< vertical PGA / horizontal PGA
+    double sliding_damping = 0.10;    ///< damping of the spectrum the sliding method reads
+    double g_mps2 = 9.81;             ///< gravity used throughout the case
+};
+
+/// When to run the time-history simulation (issue 6, [options] simulate).
+enum class SimulatePolicy { automatic, always, never };
+const char* to_string(SimulatePolicy p);
+
+/// Run options (issue 6, [options]).
+struct Options {
+    int histories_per_level = 5;
+    std::uint64_t seed = 1;
+    std::vector<std::filesystem::path> seed_records;  ///< resolved against the case's folder
+    SimulatePolicy simulate = SimulatePolicy::automatic;
+};
+
+/// A parsed case plus what the report must echo.
+struct Case {
+    std::string file;  ///< path as given
+    Component component;
+    Site site;
+    Options options;
+    std::vector<std::string> assumptions;  ///< defaults the parser applied, in words
+};
+
+/// Parses a case file. Throws IoError if it cannot be read, InputError on any bad content
+/// (syntax, unknown key, missing key, wrong type, out-of-range value), naming file:line:key.
+Case read_case(const std::filesystem::path& path);
+
+/// Parses case text; file_label is used in messages and to resolve relative paths.
+Case parse_case(const std::string& text, const std::string& file_label);
+
+}  // namespace freestand::assess

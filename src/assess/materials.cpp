@@ -1,0 +1,45 @@
+#include "assess/materials.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace freestand::assess {
+
+const std::vector<Material>& materials() {
+    // METHODS.md section 7.
+    static const std::vector<Material> table{
+        {"plywood", 0.15, 0.94},
+        {"PVC sheet on concrete", 0.15, std::nullopt},
+        {"HDPE", 0.32, 0.95},
+        {"aluminium", 0.48, 0.97},
+        {"steel", 0.72, 0.98},
+    };
+    return table;
+}
+
+namespace {
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+}  // namespace
+
+const Material* find_material(const std::string& name) {
+    const std::string key = lower(name);
+    for (const Material& m : materials()) {
+        if (lower(m.name) == key) return &m;
+    }
+    return nullptr;
+}
+
+std::string material_names() {
+    std::string out;
+    for (const Material& m : materials()) {
+        if (!out.empty()) out += ", ";
+        out += "\"" + m.name + "\"";
+    }
+    return out;
+}
+
+}  // namespace freestand::assess

@@ -1,0 +1,25 @@
+#pragma once
+/// Base materials of METHODS.md section 7 (static friction on steel; restitution measured on
+/// steel specimens, absent where the table gives none).
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace freestand::assess {
+
+struct Material {
+    std::string name;
+    double mu_s;
+    std::optional<double> restitution;
+};
+
+/// The library in the table's order (weakest friction first).
+const std::vector<Material>& materials();
+
+/// Looks a material up by name, ignoring case; nullptr when unknown.
+const Material* find_material(const std::string& name);
+
+/// Names joined with ", " for error messages.
+std::string material_names();
+
+}  // namespace freestand::assess

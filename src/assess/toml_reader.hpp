@@ -1,0 +1,66 @@
+#pragma once
+/// Typed, range-checked reading of one TOML table that remembers which keys were read, so
+/// finish() can reject the rest (STYLE.md: unknown keys are errors, as SeisSol's warnUnknown()).
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "core/errors.hpp"
+
+namespace freestand::assess {
+
+/// Allowed interval of a number; bounds inclusive unless stated.
+struct Range {
+    double lo;
+    double hi;
+    bool lo_inclusive = true;
+    bool hi_inclusive = true;
+};
+
+/// Reads keys of one table. Errors name "file:line: table.key: ..." and the allowed range.
+class TableReader {
+public:
+    /// table may be null (the table is absent): every key reads as missing.
+    TableReader(const toml::table* table, std::string file, std::string table_name);
+
+    bool has(const std::string& key) const;
+    /// Location of key (its value's line), or of the table when the key is absent.
+    SourceLocation where(const std::string& key) const;
+
+    /// A number (integer or float) within range, or nullopt when absent.
+    std::optional<double> number(const std::string& key, Range range);
+    /// As number(), but a missing key is an error.
+    double required_number(const std::string& key, Range range);
+    /// An integer within [lo, hi], or nullopt when absent.
+    std::optional<long long> integer(const std::string& key, long long lo, long long hi);
+    /// A string, or nullopt when absent.
+    std::optional<std::string> string(const std::string& key);
+    std::string required_string(const std::string& key);
+    /// An array of numbers, each within range; size must equal exact_size when it is > 0.
+    std::optional<std::vector<double>> numbers(const std::string& key, Range range,
+                                               std::size_t exact_size = 0);
+    std::optional<std::vector<std::string>> strings(const std::string& key);
+
+    /// Throws InputError for the first key (in file order) that was never read, listing the
+    /// allowed keys.
+    void finish(const std::vector<std::string>& allowed) const;
+
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+private:
+    const toml::node* find(const std::string& key);
+    double as_number(const std::string& key, const toml::node& node, Range range) const;
+
+    const toml::table* table_;
+    std::string file_;
+    std::string name_;
+    std::set<std::string> read_;
+};
+
+/// "[lo, hi]" / "(lo, hi]" etc., for messages.
+std::string describe(Range range);
+
+}  // namespace freestand::assess

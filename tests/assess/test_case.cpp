@@ -1,0 +1,182 @@
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <string>
+
+#include "assess/case.hpp"
+#include "core/errors.hpp"
+
+namespace fs = std::filesystem;
+using namespace freestand;
+using namespace freestand::assess;
+
+namespace {
+
+// A minimal valid case; tests replace one line at a time.
+const std::string base_component = R"([component]
+name = "Box"
+mass_kg = 100.0
+cg_height_m = 1.0
+cg_to_edge_x_m = [0.4, 0.5]
+cg_to_edge_y_m = [0.3, 0.3]
+mu_s = 0.3
+allowable_slide_m = 0.05
+)";
+const std::string base_site = R"([site]
+pga_g = [0.1, 0.2]
+)";
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_case(text, "case.toml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("the shipped cases parse", "[assess][case]") {
+    for (const char* name : {"glovebox-single", "glovebox-steel-pads", "glovebox-pair", "block-ts1",
+                             "block-ts2", "block-ts3"}) {
+        INFO(name);
+        const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (std::string(name) + ".toml"));
+        CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
+        CHECK(c.options.histories_per_level == 5);
+    }
+}
+
+TEST_CASE("glove box inertia derived from p reproduces p", "[assess][case]") {
+    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    const block::Block b = c.component.block(Direction::x);
+    // p = 1.97 rad/s is the published value the inertia was derived from (issue 6).
+    CHECK(b.p_radps(block::Edge::right) == Approx(1.97).epsilon(1e-12));
+    // Hand calculation: R = sqrt(0.526^2 + 1.22^2) = 1.32856 m, I_O = 382 * 9.81 * R / 1.97^2
+    // = 1282.9 kg m^2, I_c = I_O - M R^2 = 608.6 kg m^2.
+    CHECK(c.component.x.inertia_cg_kgm2 == Approx(608.6).epsilon(1e-3));
+    CHECK(c.component.base.mu_s == 0.15);
+    CHECK(c.component.base.material == "PVC sheet on concrete");
+    CHECK_FALSE(c.component.base.restitution.has_value());
+    CHECK(c.component.free_rocking_band_hz.has_value());
+}
+
+TEST_CASE("a uniform block from its box and a material from the table", "[assess][case]") {
+    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "block-ts1.toml");
+    CHECK(c.component.uniform_block);
+    CHECK(c.component.cg_height_m == Approx(0.6));
+    CHECK(c.component.x.b_left_m == Approx(0.15));
+    // I_c = M (b^2 + h^2) / 3 = 38 (0.0225 + 0.36) / 3 = 4.845 kg m^2 (METHODS.md s.1).
+    CHECK(c.component.x.inertia_cg_kgm2 == Approx(4.845).epsilon(1e-12));
+    CHECK(c.component.base.mu_s == 0.72);
+    CHECK(c.component.base.restitution.value() == 0.98);
+}
+
+TEST_CASE("defaults are applied and stated", "[assess][case]") {
+    const Case c = parse_case(base_component + base_site, "case.toml");
+    CHECK(c.component.base.mu_k == 0.3);
+    CHECK(c.component.required_overturn_fs == 1.5);
+    CHECK(c.site.vertical_ratio == Approx(2.0 / 3.0));
+    CHECK(c.site.sliding_damping == 0.10);
+    CHECK(c.options.simulate == SimulatePolicy::automatic);
+    CHECK(c.options.seed == 1);
+    CHECK(c.assumptions.size() == 4);  // mu_k, inertia, restitution, vertical ratio
+}
+
+TEST_CASE("case errors name file, line, key and the allowed range", "[assess][case]") {
+    SECTION("TOML syntax") {
+        CHECK(error_of("[component\nname = 1").rfind("case.toml:1: TOML syntax error: ", 0) == 0);
+    }
+    SECTION("unknown key") {
+        const std::string e = error_of(base_component + "mass_lb = 3\n" + base_site);
+        CHECK(e.rfind("case.toml:9: component.mass_lb: unknown key; allowed keys: name, ", 0) == 0);
+    }
+    SECTION("unknown table") {
+        CHECK(error_of(base_component + base_site + "[extra]\n") ==
+              "case.toml:11: extra: unknown table; allowed tables: [component], [site], [options]");
+    }
+    SECTION("missing table") {
+        CHECK(error_of(base_component) == "case.toml: site: missing required table [site]");
+    }
+    SECTION("missing key") {
+        CHECK(error_of("[component]\nname = \"a\"\n" + base_site) ==
+              "case.toml:1: component.mass_kg: missing required key (a number in (0, 10000000])");
+    }
+    SECTION("wrong type") {
+        CHECK(error_of(base_component + base_site + "vertical_ratio = \"high\"\n") ==
+              "case.toml:11: site.vertical_ratio: expected a number in [0, 1.5], got a string");
+    }
+    SECTION("out of range") {
+        CHECK(error_of(base_component + base_site + "sliding_damping = 0.2\n") ==
+              "case.toml:11: site.sliding_damping: value 0.2 is out of range; expected [0.005, 0.1]");
+    }
+    SECTION("array of the wrong size") {
+        std::string text = base_component + base_site;
+        text.replace(text.find("[0.4, 0.5]"), 10, "[0.4]");
+        CHECK(error_of(text) == "case.toml:5: component.cg_to_edge_x_m: expected an array of 2 "
+                                "numbers in (0, 100], got 1 element(s)");
+    }
+    SECTION("levels not increasing") {
+        std::string text = base_component + base_site;
+        text.replace(text.find("[0.1, 0.2]"), 10, "[0.2, 0.1]");
+        CHECK(error_of(text) == "case.toml:10: site.pga_g: levels must be strictly increasing; 0.1 "
+                                "follows 0.2");
+    }
+    SECTION("unknown material") {
+        std::string text = base_component + base_site;
+        text.replace(text.find("mu_s = 0.3"), 10, "base_material = \"rubber\"");
+        CHECK(error_of(text).rfind("case.toml:7: component.base_material: unknown material "
+                                   "\"rubber\"; expected one of \"plywood\", ",
+                                   0) == 0);
+    }
+    SECTION("mu_k above mu_s") {
+        CHECK(error_of(base_component + "mu_k = 0.4\n" + base_site) ==
+              "case.toml:9: component.mu_k: value 0.4 is out of range; expected [0, 0.3]");
+    }
+    SECTION("conflicting geometry") {
+        CHECK(error_of(base_component + "width_m = 1.0\n" + base_site) ==
+              "case.toml:9: component.width_m: give either width_m/depth_m/height_m (uniform "
+              "block) or cg_height_m with cg_to_edge_x_m/cg_to_edge_y_m, not both");
+    }
+    SECTION("p too large for a positive I_c") {
+        const std::string e = error_of(base_component + "p_radps = 5.0\n" + base_site);
+        // p < sqrt(g / R), R the larger critical-edge R: sqrt(0.4^2 + 1) = 1.0770 m -> 3.0180 rad/s.
+        CHECK(e.rfind("case.toml:9: component.p_radps: value 5 is out of range; expected (0, 3.018", 0) == 0);
+    }
+    SECTION("free-rocking band reversed") {
+        CHECK(error_of(base_component + "free_rocking_band_hz = [4.0, 2.0]\n" + base_site) ==
+              "case.toml:9: component.free_rocking_band_hz: expected [lo, hi] with lo < hi, got "
+              "[4, 2]");
+    }
+    SECTION("bad simulate option") {
+        CHECK(error_of(base_component + base_site + "[options]\nsimulate = \"sometimes\"\n") ==
+              "case.toml:12: options.simulate: unknown value \"sometimes\"; expected \"auto\", "
+              "\"always\" or \"never\"");
+    }
+    SECTION("integer option out of range and wrong type") {
+        CHECK(error_of(base_component + base_site + "[options]\nhistories_per_level = 0\n") ==
+              "case.toml:12: options.histories_per_level: value 0 is out of range; expected an "
+              "integer in [1, 100]");
+        CHECK(error_of(base_component + base_site + "[options]\nhistories_per_level = 2.5\n") ==
+              "case.toml:12: options.histories_per_level: expected an integer in [1, 100], got a "
+              "number");
+    }
+    SECTION("unknown design") {
+        CHECK(error_of(base_component + base_site + "design = \"asce7\"\n") ==
+              "case.toml:11: site.design: unknown design spectrum \"asce7\"; expected \"rg1.60\"");
+    }
+    SECTION("no friction at all") {
+        std::string text = base_component + base_site;
+        text.erase(text.find("mu_s = 0.3\n"), 11);
+        CHECK(error_of(text).rfind("case.toml:1: component.mu_s: missing required key (give "
+                                   "base_material, one of \"plywood\"",
+                                   0) == 0);
+    }
+    SECTION("a key that is allowed but unused in this combination") {
+        CHECK(error_of(base_component + "height_m = 2.0\n" + base_site).find("component.height_m") !=
+              std::string::npos);
+    }
+}
+
+TEST_CASE("a missing case file is an IoError", "[assess][case]") {
+    CHECK_THROWS_AS(read_case("/nonexistent/case.toml"), IoError);
+}
