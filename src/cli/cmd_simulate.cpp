@@ -1,0 +1,202 @@
+// `freestand simulate`: rigid-block time history under a record or a sine (src/dynamics).
+#include <fmt/format.h>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/readers.hpp"
+#include "core/units.hpp"
+#include "dynamics/simulate.hpp"
+
+namespace freestand::cli {
+namespace {
+
+const char* const usage =
+    "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] --mu 0.15 [--mu-k MU] "
+    "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--scale S] | --sine 0.8g,2Hz,5s[,ramp=1s]) "
+    "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json]";
+
+// "0.8g" -> 0.8 with suffix "g"; throws UsageError naming the option otherwise.
+double with_suffix(std::string text, const std::string& suffix, const std::string& option) {
+    if (text.size() > suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0)
+        text.resize(text.size() - suffix.size());
+    return parse_double(text, option);
+}
+
+dynamics::Excitation parse_sine(const std::string& text) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (std::size_t c = text.find(','); ; c = text.find(',', start)) {
+        parts.push_back(text.substr(start, c == std::string::npos ? std::string::npos : c - start));
+        if (c == std::string::npos) break;
+        start = c + 1;
+    }
+    if (parts.size() < 3 || parts.size() > 4)
+        throw UsageError(fmt::format("--sine: expected A g,f Hz,T s[,ramp=t s]; got \"{}\"", text));
+    dynamics::SineSpec spec;
+    spec.amplitude_g = with_suffix(parts[0], "g", "--sine amplitude (g)");
+    spec.frequency_hz = with_suffix(parts[1], "Hz", "--sine frequency (Hz)");
+    spec.duration_s = with_suffix(parts[2], "s", "--sine duration (s)");
+    if (parts.size() == 4) {
+        if (parts[3].rfind("ramp=", 0) != 0)
+            throw UsageError(fmt::format("--sine: expected ramp=<s> as 4th item; got \"{}\"", parts[3]));
+        spec.ramp_s = with_suffix(parts[3].substr(5), "s", "--sine ramp (s)");
+    }
+    return dynamics::sine_excitation(spec);
+}
+
+dynamics::Excitation parse_motion(const std::string& text, double scale) {
+    const std::size_t comma = text.find(',');
+    const core::Record h = core::read_record(text.substr(0, comma));
+    if (comma == std::string::npos) return dynamics::excitation_from_record(h, scale);
+    const core::Record v = core::read_record(text.substr(comma + 1));
+    return dynamics::excitation_from_record(h, scale, &v, scale);
+}
+
+block::Block parse_block(const po::variables_map& vm) {
+    const auto kv = parse_key_values(vm["block"].as<std::string>(), "--block", {"b", "h", "m"});
+    for (const char* key : {"b", "h", "m"}) {
+        if (!kv.count(key)) throw UsageError(fmt::format("--block: missing key \"{}\"", key));
+        require_positive(kv.at(key), {"", 0, fmt::format("--block {}", key)});
+    }
+    const double b = kv.at("b"), h = kv.at("h"), m = kv.at("m");
+    if (!vm.count("cg") && !vm.count("inertia")) return block::Block::uniform(b, h, m);
+    // General block: the base is 2b wide; --cg x,y puts the CG x from the left edge, y up.
+    double b_left = b, cg_h = h;
+    if (vm.count("cg")) {
+        const auto xy = parse_double_list(vm["cg"].as<std::string>(), "--cg");
+        if (xy.size() != 2) throw UsageError("--cg: expected x,y (m)");
+        require_in_range(xy[0], 0.0, 2.0 * b, {"", 0, "--cg x (from the left edge, m)"}, false, false);
+        require_positive(xy[1], {"", 0, "--cg y (height, m)"});
+        b_left = xy[0];
+        cg_h = xy[1];
+    }
+    const double ic = vm.count("inertia") ? vm["inertia"].as<double>()
+                                          : m * (b * b + h * h) / 3.0;  // uniform 2b x 2h
+    require_positive(ic, {"", 0, "--inertia (kg m^2)"});
+    return block::Block::general(b_left, 2.0 * b - b_left, cg_h, m, ic);
+}
+
+std::string series_csv(const dynamics::SimulationResult& r, const std::string& label) {
+    std::string out = fmt::format(
+        "# freestand simulate: {} integrator, excitation {}\n"
+        "# units: time s, slide m, slide velocity m/s, rotation rad (+ on the right edge), "
+        "angular velocity rad/s, forces N (base on block), top corner absolute horizontal "
+        "acceleration m/s^2\n"
+        "time_s,slide_m,slide_velocity_mps,rotation_rad,angular_velocity_radps,mode,"
+        "normal_force_N,friction_force_N,top_accel_mps2\n",
+        r.summary.integrator, label);
+    for (const auto& s : r.series)
+        out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}\n", s.time_s,
+                           s.slide_m, s.slide_velocity_mps, s.rotation_rad,
+                           s.angular_velocity_radps, dynamics::mode_name(s.mode),
+                           s.normal_force_N, s.friction_force_N, s.top_accel_mps2);
+    return out;
+}
+
+nlohmann::ordered_json summary_json(const dynamics::Summary& s) {
+    nlohmann::ordered_json j;
+    j["slide_max_m"] = s.slide_max_m;
+    j["slide_residual_m"] = s.slide_residual_m;
+    j["rock_max_rad"] = s.rock_max_rad;
+    j["rock_max_over_alpha"] = s.rock_max_over_alpha;
+    j["overturned"] = s.overturned;
+    j["overturn_time_s"] = s.overturn_time_s ? nlohmann::ordered_json(*s.overturn_time_s) : nullptr;
+    j["overturn_mode"] = s.overturn_mode ? nlohmann::ordered_json(*s.overturn_mode) : nullptr;
+    j["impacts"] = s.impacts;
+    j["mode_changes"] = s.mode_changes;
+    j["top_accel_max_g"] = s.top_accel_max_g;
+    j["amplification"] = s.amplification;
+    j["wall_s"] = s.wall_s;
+    j["integrator"] = s.integrator;
+    j["overturn_criterion"] = dynamics::overturn_criterion_name(s.overturn_criterion);
+    nlohmann::ordered_json t;
+    for (std::size_t m = 0; m < dynamics::mode_count; ++m)
+        t[dynamics::mode_name(static_cast<dynamics::Mode>(m))] = s.time_in_mode_s[m];
+    j["time_in_mode_s"] = t;
+    j["pga_g"] = s.pga_g;
+    j["settlements"] = s.settlements;
+    j["steps"] = s.steps;
+    j["end_time_s"] = s.end_time_s;
+    return j;
+}
+
+void print_text(const dynamics::Summary& s, const dynamics::BlockModel& m) {
+    std::cout << fmt::format(
+        "integrator            {}\n"
+        "peak slide            {:.4g} m (residual {:.4g} m)\n"
+        "peak rotation         {:.4g} rad = {:.3g} alpha\n"
+        "overturned            {}\n"
+        "impacts               {} (settled {})\n"
+        "mode changes          {}\n"
+        "peak top acceleration {:.4g} g = {:.3g} x PGA ({:.4g} g)\n"
+        "friction mu_s/mu_k    {} / {}\n"
+        "wall time             {:.4g} s\n",
+        s.integrator, s.slide_max_m, s.slide_residual_m, s.rock_max_rad, s.rock_max_over_alpha,
+        s.overturned ? fmt::format("yes, at {:.4f} s, mode {} ({})", *s.overturn_time_s,
+                                   *s.overturn_mode,
+                                   dynamics::overturn_criterion_name(s.overturn_criterion))
+                     : std::string("no"),
+        s.impacts, s.settlements, s.mode_changes, s.top_accel_max_g, s.amplification, s.pga_g,
+        m.mu_s, m.mu_k, s.wall_s);
+    std::cout << "time in mode         ";
+    for (std::size_t i = 0; i < dynamics::mode_count; ++i)
+        std::cout << fmt::format(" {} {:.3f} s", dynamics::mode_name(static_cast<dynamics::Mode>(i)),
+                                 s.time_in_mode_s[i]);
+    std::cout << "\n";
+}
+
+int run(const std::vector<std::string>& args) {
+    po::options_description desc("simulate options");
+    desc.add_options()
+        ("block", po::value<std::string>()->required(), "b=half-width,h=CG height,m=mass (m, kg)")
+        ("cg", po::value<std::string>(), "x,y: CG x from the left edge and y above the base (m)")
+        ("inertia", po::value<double>(), "I_c about the CG (kg m^2)")
+        ("mu", po::value<double>()->required(), "static friction coefficient")
+        ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
+        ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
+        ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
+        ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
+        ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
+        ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
+        ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
+        ("out", po::value<std::string>(), "write the time series CSV here")
+        ("json", po::bool_switch(), "print the summary as JSON");
+    const auto vm = parse_options("simulate", usage, desc, args);
+    if (!vm) return 0;
+    if (vm->count("motion") == vm->count("sine"))
+        throw UsageError("simulate: give exactly one of --motion and --sine");
+    const block::Block blk = parse_block(*vm);
+    const double mu = (*vm)["mu"].as<double>();
+    std::optional<double> mu_k, r;
+    if (vm->count("mu-k")) mu_k = (*vm)["mu-k"].as<double>();
+    if (vm->count("restitution")) r = (*vm)["restitution"].as<double>();
+    const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r);
+    dynamics::Options opt;
+    const std::string integ = (*vm)["integrator"].as<std::string>();
+    if (integ == "cd") opt.integrator = dynamics::Integrator::central_difference;
+    else if (integ != "event")
+        throw UsageError(fmt::format("--integrator: expected event or cd; got \"{}\"", integ));
+    opt.cd_dt_s = (*vm)["dt"].as<double>();
+    require_positive(opt.cd_dt_s, {"", 0, "--dt"});
+    opt.record_series = vm->count("out") > 0;
+    const dynamics::Excitation exc =
+        vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())
+                          : parse_motion((*vm)["motion"].as<std::string>(), (*vm)["scale"].as<double>());
+    const dynamics::SimulationResult res = dynamics::simulate(model, exc, opt);
+    if (vm->count("out")) core::write_file_atomic((*vm)["out"].as<std::string>(), series_csv(res, exc.label));
+    if ((*vm)["json"].as<bool>()) {
+        std::cout << summary_json(res.summary).dump(2) << "\n";
+    } else {
+        print_text(res.summary, model);
+    }
+    return 0;
+}
+
+const CommandRegistrar reg{{"simulate", "rigid-block time history (slide, rock, overturn)", &run}};
+
+}  // namespace
+}  // namespace freestand::cli
