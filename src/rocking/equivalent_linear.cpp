@@ -57,10 +57,13 @@ struct Scan {
     }
 
     // First grid angle with demand <= capacity, refined by bisection against the previous one.
+    // The grid is alpha k / n, k = 1..n-1, closed by alpha (1 - 1e-9) so that the last interval
+    // below alpha is not skipped (a demand just inside the block's reach).
     std::optional<double> theta0(int n) const {
         double prev = 0.0;
-        for (int k = 1; k < n; ++k) {
-            const double th = alpha * static_cast<double>(k) / static_cast<double>(n);
+        for (int k = 1; k <= n; ++k) {
+            const double th = k < n ? alpha * static_cast<double>(k) / static_cast<double>(n)
+                                    : alpha * (1.0 - 1e-9);
             if (excess_g(th) <= 0.0) {
                 double lo = prev, hi = th;
                 for (int it = 0; it < 100 && hi - lo > 1e-13 * alpha; ++it) {
