@@ -53,11 +53,14 @@ struct Envelope {
 /// Envelope value at t for a record of total duration duration_s.
 double envelope_at(const Envelope& envelope, double t_s, double duration_s);
 
-/// Controls of the wavelet matching loop.
+/// Controls of the wavelet matching loop. A matching frequency whose ratio (computed / target)
+/// lies in [lower, upper] is held where it is; one outside is pulled to aim.
 struct MatchOptions {
-    double aim = 1.04;            ///< match to aim x target, so sampling noise stays above 1.0
-    double relaxation = 0.7;      ///< fraction of the linearised correction applied per pass
-    int max_iterations = 40;      ///< matching passes per attempt
+    double aim = 1.05;            ///< ratio aimed at, so dips between matching points stay >= 1
+    double lower = 1.02;          ///< in-loop band: ratios at the matching frequencies
+    double upper = 1.18;
+    double relaxation = 1.0;      ///< fraction of the linearised correction applied per pass
+    int max_iterations = 40;      ///< matching passes
     int match_per_decade = 30;    ///< matching frequencies per decade (checks are at 100)
 };
 
@@ -133,6 +136,7 @@ struct MatchResult {
     core::Record record;
     int iterations = 0;
     bool converged = false;  ///< in-loop criteria met at the matching frequencies
+    Acceptance acceptance;   ///< full check of the returned record
 };
 MatchResult match_record(const core::Record& seed, const Target& target,
                          const MatchOptions& options);

@@ -1,0 +1,156 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/measures.hpp"
+#include "core/units.hpp"
+#include "motion/criteria.hpp"
+#include "motion/fft.hpp"
+#include "motion/motion.hpp"
+#include "spectra/design.hpp"
+#include "spectra/response.hpp"
+
+namespace freestand::motion {
+
+double criteria::band_high_for(double dt_s) { return std::min(band_high_hz, 0.5 / dt_s); }
+
+std::vector<double> criteria::check_frequencies(double dt_s) {
+    return spectra::log_frequencies(band_low_hz, band_high_for(dt_s), points_per_decade);
+}
+
+EndWeights end_weights(std::size_t samples, double dt_s) {
+    EndWeights w;
+    w.velocity.assign(samples, dt_s);
+    w.displacement.resize(samples);
+    if (samples == 0) return w;
+    const std::size_t n = samples - 1;
+    for (std::size_t k = 0; k < samples; ++k)
+        w.displacement[k] = dt_s * dt_s * static_cast<double>(n - k);
+    w.velocity.front() = w.velocity.back() = 0.5 * dt_s;
+    w.displacement.front() = dt_s * dt_s * (0.5 * static_cast<double>(n) - 0.25);
+    w.displacement.back() = 0.25 * dt_s * dt_s;
+    if (n == 0) w.velocity.front() = w.displacement.front() = 0.0;
+    return w;
+}
+
+namespace {
+
+constexpr double kPsdResolutionHz = 0.005;
+
+struct RatioStats {
+    double min = 0.0, max = 0.0, mean = 0.0, max_cap_band = 0.0;
+    int longest_below = 0;
+};
+
+RatioStats ratio_stats(const std::vector<double>& f, const std::vector<double>& psa,
+                       const spectra::Spectrum& target) {
+    RatioStats s;
+    s.min = 1e300;
+    s.max = -1e300;
+    int run = 0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        const double r = psa[i] / target.psa_at(f[i]);
+        s.min = std::min(s.min, r);
+        s.max = std::max(s.max, r);
+        s.mean += r / static_cast<double>(f.size());
+        run = r < 1.0 ? run + 1 : 0;
+        s.longest_below = std::max(s.longest_below, run);
+        if (f[i] >= criteria::cap_low_hz - 1e-12 && f[i] <= criteria::cap_high_hz + 1e-12)
+            s.max_cap_band = std::max(s.max_cap_band, r);
+    }
+    return s;
+}
+
+// S(f) = |X(f)|^2 / (pi T_D), X = dt FFT(a): one-sided PSD per rad/s (SRP 3.7.1 App. A),
+// averaged over the FFT bins within f (1 -+ 0.2); min over 100 points per decade in 0.3-24 Hz.
+double psd_min_ratio(const core::Record& record, double td_s, double pga_g) {
+    // Zero-padding samples X(f), the record's continuous transform, densely (<= 0.005 Hz), so the
+    // +-20% band average approximates an integral even at 0.3 Hz, where it spans few 1/T bins.
+    const auto dense = static_cast<std::size_t>(std::ceil(1.0 / (kPsdResolutionHz * record.dt_s)));
+    const std::size_t n = fft_size(std::max(record.size(), dense));
+    RealFft fft(n);
+    const auto x = fft.forward(record.accel_mps2);
+    const double df = 1.0 / (static_cast<double>(n) * record.dt_s);
+    std::vector<double> s(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k)
+        s[k] = std::norm(x[k] * record.dt_s) / (units::pi * td_s);
+    const double top = std::min(criteria::psd_high_hz, 0.5 / record.dt_s / (1.0 + criteria::psd_band_halfwidth));
+    double worst = 1e300;
+    for (double f : spectra::log_frequencies(criteria::psd_low_hz, top, criteria::points_per_decade)) {
+        const auto k0 = static_cast<std::size_t>(std::ceil(f * (1.0 - criteria::psd_band_halfwidth) / df));
+        const auto k1 = std::min(x.size() - 1,
+                                 static_cast<std::size_t>(std::floor(f * (1.0 + criteria::psd_band_halfwidth) / df)));
+        double sum = 0.0;
+        for (std::size_t k = k0; k <= k1; ++k) sum += s[k];
+        const double avg = sum / static_cast<double>(k1 - k0 + 1);
+        worst = std::min(worst, avg / spectra::rg160_target_psd_per_radps(f, pga_g));
+        if (std::getenv("FS_PSD")) std::fprintf(stderr, "psd f %.3f ratio %.3f\n", f, avg / spectra::rg160_target_psd_per_radps(f, pga_g));
+    }
+    return worst;
+}
+
+void add_reason(std::string& reason, const std::string& text) {
+    if (!reason.empty()) reason += "; ";
+    reason += text;
+}
+
+}  // namespace
+
+Acceptance check_acceptance(const core::Record& record, const Target& target) {
+    core::validate(record);
+    Acceptance a;
+    a.dt_s = record.dt_s;
+    a.duration_s = record.duration_s();
+    const core::GroundMotion gm = core::measure(record);
+    a.pga_g = gm.pga_g;
+    a.pgv_mps = gm.pgv_mps;
+    a.pgd_m = gm.pgd_m;
+    a.d5_75_s = gm.d5_75_s;
+    a.d5_95_s = gm.d5_95_s;
+    a.final_velocity_mps = gm.final_velocity_mps;
+    a.final_displacement_m = gm.final_displacement_m;
+
+    const std::vector<double> f = criteria::check_frequencies(record.dt_s);
+    a.check_points = f.size();
+    const RatioStats r5 = ratio_stats(f, spectra::psa_g(record, 0.05, f), target.psa_5pct);
+    a.min_ratio = r5.min;
+    a.max_ratio = r5.max;
+    a.mean_ratio = r5.mean;
+    a.max_adjacent_below = r5.longest_below;
+    a.max_ratio_cap_band = r5.max_cap_band;
+    if (target.psa_10pct) {
+        const RatioStats r10 = ratio_stats(f, spectra::psa_g(record, 0.10, f), *target.psa_10pct);
+        a.ratio_10pct_min = r10.min;
+        a.ratio_10pct_max = r10.max;
+    }
+    if (target.rg160_psd_pga_g && gm.d5_75_s > 0.0)
+        a.psd_min_ratio = psd_min_ratio(record, gm.d5_75_s, *target.rg160_psd_pga_g);
+
+    std::string& why = a.reason;
+    if (a.dt_s > criteria::max_dt_s + 1e-12)
+        add_reason(why, fmt::format("dt {} s > {} s", a.dt_s, criteria::max_dt_s));
+    if (a.duration_s < criteria::min_duration_s - 1e-9)
+        add_reason(why, fmt::format("duration {:.3f} s < {} s", a.duration_s, criteria::min_duration_s));
+    if (a.min_ratio < criteria::floor_ratio)
+        add_reason(why, fmt::format("min ratio {:.4f} < {}", a.min_ratio, criteria::floor_ratio));
+    if (a.max_adjacent_below > criteria::max_adjacent_below)
+        add_reason(why, fmt::format("{} adjacent points below target > {}", a.max_adjacent_below,
+                                    criteria::max_adjacent_below));
+    if (a.max_ratio_cap_band > criteria::cap_ratio)
+        add_reason(why, fmt::format("ratio {:.4f} > {} in {}-{} Hz", a.max_ratio_cap_band, criteria::cap_ratio,
+                                    criteria::cap_low_hz, criteria::cap_high_hz));
+    if (a.psd_min_ratio && *a.psd_min_ratio < criteria::psd_floor_rg160)
+        add_reason(why, fmt::format("PSD ratio {:.4f} < {} in {}-{} Hz", *a.psd_min_ratio,
+                                    criteria::psd_floor_rg160, criteria::psd_low_hz, criteria::psd_high_hz));
+    if (std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps)
+        add_reason(why, fmt::format("final velocity {:.3g} m/s", a.final_velocity_mps));
+    if (std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m)
+        add_reason(why, fmt::format("final displacement {:.3g} m", a.final_displacement_m));
+    a.passed = why.empty();
+    return a;
+}
+
+}  // namespace freestand::motion

@@ -1,0 +1,14 @@
+#pragma once
+/// Faddeeva function w(z) = exp(-z^2) erfc(-i z), needed in closed form for the response of an
+/// oscillator to a Gaussian-tapered cosine wavelet (wavelet.hpp). Hand-written because no
+/// packaged library on the build machine provides a complex error function.
+#include <complex>
+
+namespace freestand::motion {
+
+/// w(z) for Im z >= 0 by Weideman's rational series (SIAM J. Numer. Anal. 31 (1994) 1497,
+/// eq. 3.11, N = 36 terms): relative error below 1e-12 over the closed upper half plane.
+/// Callers reflect with w(-z) = 2 exp(-z^2) - w(z) for Im z < 0.
+std::complex<double> faddeeva_upper(std::complex<double> z);
+
+}  // namespace freestand::motion

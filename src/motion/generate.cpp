@@ -1,0 +1,194 @@
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/units.hpp"
+#include "motion/criteria.hpp"
+#include "motion/internal.hpp"
+#include "spectra/response.hpp"
+
+namespace freestand::motion {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+const Target& target_for(const TargetSet& targets, const std::string& component) {
+    return component == "v" ? targets.vertical : targets.horizontal;
+}
+
+double correlation(const core::Record& a, const core::Record& b) {
+    const std::size_t n = std::min(a.size(), b.size());
+    double ma = 0.0, mb = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        ma += a.accel_mps2[i];
+        mb += b.accel_mps2[i];
+    }
+    ma /= static_cast<double>(n);
+    mb /= static_cast<double>(n);
+    double sab = 0.0, saa = 0.0, sbb = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = a.accel_mps2[i] - ma;
+        const double y = b.accel_mps2[i] - mb;
+        sab += x * y;
+        saa += x * x;
+        sbb += y * y;
+    }
+    return saa > 0.0 && sbb > 0.0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+void check_request(const TargetSet& targets, const GenerateOptions& o) {
+    if (o.components.empty()) throw InputError(SourceLocation{"", 0, "components"}, "no component requested");
+    for (std::size_t i = 0; i < o.components.size(); ++i) {
+        const std::string& c = o.components[i];
+        if (c != "h1" && c != "h2" && c != "v")
+            throw InputError(SourceLocation{"", 0, "components"},
+                             fmt::format("unknown component \"{}\"; expected h1, h2 or v", c));
+        for (std::size_t j = 0; j < i; ++j)
+            if (o.components[j] == c)
+                throw InputError(SourceLocation{"", 0, "components"}, fmt::format("component \"{}\" given twice", c));
+        validate_target(target_for(targets, c).psa_5pct, 0.05);
+    }
+    if (o.seed_records.empty()) {
+        require_positive(o.dt_s, SourceLocation{"", 0, "dt_s"});
+        require_positive(o.duration_s, SourceLocation{"", 0, "duration_s"});
+        if (o.dt_s > criteria::max_dt_s + 1e-12)
+            throw InputError(SourceLocation{"", 0, "dt_s"},
+                             fmt::format("dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s, and the Nyquist "
+                                         "frequency {} Hz is below the {} Hz top of the acceptance band",
+                                         o.dt_s, criteria::max_dt_s, 0.5 / o.dt_s, criteria::band_high_hz));
+        if (o.duration_s < criteria::min_duration_s - 1e-9)
+            throw InputError(SourceLocation{"", 0, "duration_s"},
+                             fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s", o.duration_s,
+                                         criteria::min_duration_s));
+        return;
+    }
+    if (o.seed_records.size() != o.components.size())
+        throw InputError(SourceLocation{"", 0, "seed_records"},
+                         fmt::format("{} seed records for {} components; give one seed record per component",
+                                     o.seed_records.size(), o.components.size()));
+    for (const core::Record& r : o.seed_records) {
+        core::validate(r);
+        const SourceLocation where{r.source, 0, "dt"};
+        if (r.dt_s > criteria::max_dt_s + 1e-12)
+            throw InputError(where, fmt::format("seed record dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s "
+                                                "(Nyquist {} Hz below the {} Hz acceptance band)",
+                                                r.dt_s, criteria::max_dt_s, 0.5 / r.dt_s, criteria::band_high_hz));
+        if (r.duration_s() < criteria::min_duration_s - 1e-9)
+            throw InputError(SourceLocation{r.source, 0, "duration"},
+                             fmt::format("seed record lasts {:.3f} s; SRP 3.7.1 needs >= {} s", r.duration_s(),
+                                         criteria::min_duration_s));
+    }
+}
+
+bool correlated_with_earlier(const std::vector<GeneratedComponent>& done, const core::Record& r) {
+    for (const GeneratedComponent& g : done)
+        if (std::abs(correlation(g.record, r)) > criteria::max_abs_correlation) return true;
+    return false;
+}
+
+GeneratedComponent synthetic_component(const Target& target, const GenerateOptions& o, std::size_t index,
+                                       const std::vector<GeneratedComponent>& done, std::vector<std::string>& notes) {
+    const auto start = Clock::now();
+    GeneratedComponent best;
+    const std::string& name = o.components[index];
+    for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
+        const std::uint64_t seed = derive_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
+        core::Record raw = synthesize(target, o.duration_s, o.dt_s, seed, o.envelope);
+        MatchResult m = match_in_place(std::move(raw), target, o.match);
+        GeneratedComponent g;
+        g.record = std::move(m.record);
+        g.acceptance = std::move(m.acceptance);
+        g.method = "synthetic+wavelet";
+        g.seed = seed;
+        g.attempts = attempt + 1;
+        g.iterations = m.iterations;
+        const bool correlated = correlated_with_earlier(done, g.record);
+        if (g.acceptance.passed && !correlated) {
+            g.stop = "passed";
+            best = std::move(g);
+            break;
+        }
+        notes.push_back(fmt::format("{}: seed {} rejected ({}); trying the next seed", name, seed,
+                                    correlated ? "|rho| > 0.16 with an earlier component" : g.acceptance.reason));
+        if (correlated && g.acceptance.passed) {
+            g.acceptance.passed = false;
+            g.acceptance.reason = "correlated with an earlier component";
+        }
+        g.stop = "attempt limit";
+        if (attempt == 0 || (!best.acceptance.passed && g.acceptance.min_ratio > best.acceptance.min_ratio))
+            best = std::move(g);
+    }
+    best.attempts = std::max(best.attempts, 1);
+    best.record.component = name;
+    best.record.name = name;
+    best.record.source = fmt::format("freestand generate: synthetic, seed {}", best.seed);
+    best.wall_s = seconds_since(start);
+    return best;
+}
+
+}  // namespace
+
+MatchResult match_record(const core::Record& seed, const Target& target, const MatchOptions& options) {
+    core::validate(seed);
+    validate_target(target.psa_5pct, 0.05);
+    // Scale to the target first (geometric mean of the ratio over the band) so the wavelets only
+    // reshape; then match.
+    const std::vector<double> f = spectra::log_frequencies(criteria::band_low_hz,
+                                                           criteria::band_high_for(seed.dt_s), 20);
+    const std::vector<double> psa = spectra::psa_g(seed, 0.05, f);
+    double log_sum = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i) log_sum += std::log(target.psa_5pct.psa_at(f[i]) / psa[i]);
+    core::Record scaled = seed;
+    const double k = std::exp(log_sum / static_cast<double>(f.size()));
+    for (double& a : scaled.accel_mps2) a *= k;
+    return match_in_place(std::move(scaled), target, options);
+}
+
+GeneratedSet generate_set(const TargetSet& targets, const GenerateOptions& o) {
+    check_request(targets, o);
+    GeneratedSet set;
+    for (std::size_t i = 0; i < o.components.size(); ++i) {
+        const std::string& name = o.components[i];
+        const Target& target = target_for(targets, name);
+        if (o.seed_records.empty()) {
+            set.components.push_back(synthetic_component(target, o, i, set.components, set.notes));
+            continue;
+        }
+        const auto start = Clock::now();
+        const core::Record& seed = o.seed_records[i];
+        MatchResult m = match_record(seed, target, o.match);
+        GeneratedComponent g;
+        g.record = std::move(m.record);
+        g.record.component = name;
+        g.record.name = name;
+        g.record.source = fmt::format("freestand generate: wavelet-matched {}", seed.source);
+        g.acceptance = std::move(m.acceptance);
+        g.method = fmt::format("wavelet (seed {})", seed.name);
+        g.attempts = 1;
+        g.iterations = m.iterations;
+        g.stop = g.acceptance.passed ? "passed" : "iteration limit";
+        g.wall_s = seconds_since(start);
+        set.components.push_back(std::move(g));
+    }
+    set.passed = true;
+    for (const GeneratedComponent& g : set.components) set.passed = set.passed && g.acceptance.passed;
+    for (std::size_t i = 0; i < set.components.size(); ++i)
+        for (std::size_t j = i + 1; j < set.components.size(); ++j) {
+            const double rho = correlation(set.components[i].record, set.components[j].record);
+            set.correlations.push_back({set.components[i].record.component, set.components[j].record.component, rho});
+            if (std::abs(rho) > criteria::max_abs_correlation) {
+                set.passed = false;
+                set.notes.push_back(fmt::format("{}-{}: |rho| = {:.3f} > {}", set.components[i].record.component,
+                                                set.components[j].record.component, std::abs(rho),
+                                                criteria::max_abs_correlation));
+            }
+        }
+    return set;
+}
+
+}  // namespace freestand::motion

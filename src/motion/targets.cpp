@@ -1,0 +1,89 @@
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "motion/motion.hpp"
+#include "spectra/design.hpp"
+
+namespace freestand::motion {
+namespace {
+
+// Dense grid plus the RG 1.60 control points, so log-log interpolation (Spectrum::psa_at)
+// reproduces the piecewise log-linear design shape exactly.
+std::vector<double> design_grid(double control_c_hz) {
+    std::vector<double> f = spectra::log_frequencies(0.01, 200.0, 100);
+    for (double c : {0.25, control_c_hz, 9.0, 33.0}) f.push_back(c);
+    std::sort(f.begin(), f.end());
+    f.erase(std::unique(f.begin(), f.end(),
+                        [](double a, double b) { return std::abs(a - b) <= 1e-12 * b; }),
+            f.end());
+    return f;
+}
+
+spectra::Spectrum scaled(const spectra::Spectrum& s, double ratio, const std::string& label) {
+    spectra::Spectrum out = s;
+    for (double& v : out.psa_g) v *= ratio;
+    out.label = label;
+    return out;
+}
+
+}  // namespace
+
+void validate_target(const spectra::Spectrum& s, double expected_damping) {
+    const SourceLocation where{"", 0, s.label.empty() ? std::string("target") : s.label};
+    if (std::abs(s.damping - expected_damping) > 1e-9)
+        throw InputError(where, fmt::format("damping {} but the acceptance criteria (SRP 3.7.1) are "
+                                            "on the {}-damped spectrum; give a {} target",
+                                            s.damping, expected_damping, expected_damping));
+    if (s.frequency_hz.size() < 2 || s.frequency_hz.size() != s.psa_g.size())
+        throw InputError(where, fmt::format("{} frequencies and {} PSA values; expected the same "
+                                            "number, at least 2",
+                                            s.frequency_hz.size(), s.psa_g.size()));
+    for (std::size_t i = 0; i < s.frequency_hz.size(); ++i) {
+        const double f = s.frequency_hz[i];
+        const double a = s.psa_g[i];
+        if (!(std::isfinite(f) && f > 0.0))
+            throw InputError(where, fmt::format("point {}: frequency {} Hz; expected finite > 0", i + 1, f));
+        if (i > 0 && !(f > s.frequency_hz[i - 1]))
+            throw InputError(where, fmt::format("point {}: frequency {} Hz not above the previous {} Hz; "
+                                                "frequencies must be strictly increasing",
+                                                i + 1, f, s.frequency_hz[i - 1]));
+        if (!(std::isfinite(a) && a > 0.0))
+            throw InputError(where, fmt::format("point {}: PSA {} g at {} Hz; expected finite > 0", i + 1, a, f));
+    }
+}
+
+TargetSet rg160_targets(double pga_g) {
+    require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
+    TargetSet t;
+    t.label = fmt::format("RG 1.60, PGA {} g", pga_g);
+    const auto fh = design_grid(2.5);
+    const auto fv = design_grid(3.5);
+    t.horizontal.psa_5pct = spectra::rg160(pga_g, 0.05, false, fh);
+    t.horizontal.psa_10pct = spectra::rg160(pga_g, 0.10, false, fh);
+    t.horizontal.rg160_psd_pga_g = pga_g;
+    t.vertical.psa_5pct = spectra::rg160(pga_g, 0.05, true, fv);
+    t.vertical.psa_10pct = spectra::rg160(pga_g, 0.10, true, fv);
+    return t;
+}
+
+TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5pct,
+                        const std::optional<spectra::Spectrum>& horizontal_10pct,
+                        double vertical_ratio) {
+    validate_target(horizontal_5pct, 0.05);
+    if (horizontal_10pct) validate_target(*horizontal_10pct, 0.10);
+    require_in_range(vertical_ratio, 0.0, 2.0, SourceLocation{"", 0, "vertical_ratio"}, false, true);
+    TargetSet t;
+    t.label = std::move(label);
+    t.horizontal.psa_5pct = horizontal_5pct;
+    t.horizontal.psa_10pct = horizontal_10pct;
+    const std::string vlabel = fmt::format("{} x {}", vertical_ratio, horizontal_5pct.label);
+    t.vertical.psa_5pct = scaled(horizontal_5pct, vertical_ratio, vlabel);
+    if (horizontal_10pct)
+        t.vertical.psa_10pct =
+            scaled(*horizontal_10pct, vertical_ratio, fmt::format("{} x {}", vertical_ratio, horizontal_10pct->label));
+    return t;
+}
+
+}  // namespace freestand::motion

@@ -1,0 +1,97 @@
+#include "motion/wavelet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "core/units.hpp"
+#include "motion/faddeeva.hpp"
+
+namespace freestand::motion {
+namespace {
+
+constexpr double kSupportGammas = 4.0;  // exp(-16) ~ 1e-7
+
+// I(Omega) = int_{-inf}^{T} exp(-p (T - x)) exp(i Omega x) exp(-x^2 / gamma^2) dx, x = s - centre,
+// p = zeta omega - i omega_d. Completing the square with q = p + i Omega:
+//   I = gamma sqrt(pi) / 2 * exp(-p T + q^2 gamma^2 / 4) erfc(z),  z = q gamma / 2 - T / gamma.
+// With erfc(z) = exp(-z^2) w(i z) the exponent simplifies to i Omega T - T^2 / gamma^2, which
+// stays bounded; for Re z < 0 (late times) erfc(z) = 2 - exp(-z^2) w(-i z) keeps w's argument
+// in the upper half plane.
+std::complex<double> half_integral(double omega_signed, double omega, double zeta, double omega_d,
+                                   double gamma, double T) {
+    const std::complex<double> i(0.0, 1.0);
+    const std::complex<double> p(zeta * omega, -omega_d);
+    const std::complex<double> q = p + i * omega_signed;
+    const std::complex<double> z = q * (gamma / 2.0) - T / gamma;
+    const double scale = gamma * std::sqrt(std::numbers::pi) / 2.0;
+    const std::complex<double> tail = std::exp(i * omega_signed * T - T * T / (gamma * gamma));
+    if (z.real() >= 0.0) return scale * tail * faddeeva_upper(i * z);
+    const std::complex<double> full = std::exp(-p * T + q * q * (gamma * gamma / 4.0));
+    return scale * (2.0 * full - tail * faddeeva_upper(-i * z));
+}
+
+}  // namespace
+
+Wavelet Wavelet::at(double frequency_hz, double damping, double t_peak_s) {
+    Wavelet w;
+    w.frequency_hz = frequency_hz;
+    w.damping = damping;
+    const double root = std::sqrt(1.0 - damping * damping);
+    w.omega_d_radps = units::hz_to_radps(frequency_hz) * root;
+    w.gamma_s = 1.178 * std::pow(frequency_hz, -0.93);  // AA2010 eq. 17
+    const double shift = std::atan(root / damping) / w.omega_d_radps;  // AA2010 eq. 14
+    w.centre_s = t_peak_s - shift;
+    return w;
+}
+
+Wavelet Wavelet::for_oscillator(double frequency_hz, double oscillator_hz, double damping,
+                                double t_peak_s) {
+    Wavelet w = at(frequency_hz, damping, t_peak_s);
+    if (oscillator_hz <= frequency_hz) return w;
+    const double r = frequency_hz / oscillator_hz;
+    w.centre_s = t_peak_s - std::atan2(2.0 * damping * r, 1.0 - r * r) / w.omega_d_radps;
+    return w;
+}
+
+Wavelet Wavelet::pulse(double centre_s, double gamma_s) {
+    Wavelet w;
+    w.gamma_s = gamma_s;
+    w.centre_s = centre_s;
+    return w;
+}
+
+double Wavelet::value(double t_s) const {
+    const double x = t_s - centre_s;
+    const double g = x / gamma_s;
+    return std::cos(omega_d_radps * x) * std::exp(-g * g);
+}
+
+double Wavelet::start_s() const { return centre_s - kSupportGammas * gamma_s; }
+double Wavelet::end_s() const { return centre_s + kSupportGammas * gamma_s; }
+
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s) {
+    const double omega = units::hz_to_radps(f_hz);
+    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
+    const double T = t_s - w.centre_s;
+    if (T < -kSupportGammas * w.gamma_s) return 0.0;
+    // cos(Omega x) = Re exp(i Omega x) and Im(A) Re(B) = Im(A B + A conj(B)) / 2.
+    const std::complex<double> sum =
+        half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
+        half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
+    return omega * omega / omega_d * 0.5 * sum.imag();
+}
+
+void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel) {
+    if (accel.empty()) return;
+    const double last_s = static_cast<double>(accel.size() - 1) * dt_s;
+    if (w.end_s() < 0.0 || w.start_s() > last_s) return;
+    const double last = static_cast<double>(accel.size() - 1);
+    const double i0 = std::clamp(std::ceil(w.start_s() / dt_s), 0.0, last);
+    const double i1 = std::clamp(std::floor(w.end_s() / dt_s), 0.0, last);
+    for (auto i = static_cast<std::size_t>(i0); i <= static_cast<std::size_t>(i1); ++i)
+        accel[i] += amplitude * w.value(static_cast<double>(i) * dt_s);
+}
+
+}  // namespace freestand::motion

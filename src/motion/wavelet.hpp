@@ -1,0 +1,48 @@
+#pragma once
+/// The improved tapered cosine wavelet of Al Atik & Abrahamson (2010, Earthquake Spectra 26(3)
+/// 601-617, eqs. 14, 16, 17) and the exact response of a damped oscillator to it.
+#include <cstddef>
+#include <vector>
+
+namespace freestand::motion {
+
+/// Wavelet adjusting the oscillator (f_hz, damping) at its peak time:
+/// w(t) = cos(omega' (t - t_peak + dt_shift)) exp(-((t - t_peak + dt_shift) / gamma)^2), with
+/// omega' = omega sqrt(1 - zeta^2), gamma = 1.178 f^-0.93 s (f in Hz) and
+/// dt_shift = atan(sqrt(1 - zeta^2) / zeta) / omega', so the oscillator's response to it peaks
+/// near t_peak. Symmetric about its centre and of near-zero mean, it adds no velocity or
+/// displacement drift once complete (|integral| / gamma < 1e-5 for f >= 0.1 Hz).
+struct Wavelet {
+    double frequency_hz = 0.0;  ///< oscillator frequency the wavelet carries
+    double damping = 0.05;
+    double omega_d_radps = 0.0;  ///< omega'
+    double gamma_s = 0.0;
+    double centre_s = 0.0;       ///< t_peak - dt_shift
+
+    /// Wavelet placed for a peak at t_peak_s.
+    static Wavelet at(double frequency_hz, double damping, double t_peak_s);
+    /// Wavelet of frequency_hz placed for the peak at t_peak_s of a stiffer oscillator
+    /// (oscillator_hz >= frequency_hz): the shift is the oscillator's phase lag at the
+    /// wavelet's frequency, atan2(2 zeta r, 1 - r^2) / omega', r = frequency / oscillator
+    /// (-> 0 for a rigid oscillator, which follows the wavelet; AA2010's shift at r = 1).
+    static Wavelet for_oscillator(double frequency_hz, double oscillator_hz, double damping,
+                                  double t_peak_s);
+    /// Gaussian acceleration pulse exp(-((t - centre) / gamma)^2) (omega' = 0): a smooth velocity
+    /// step used as baseline-correction basis.
+    static Wavelet pulse(double centre_s, double gamma_s);
+    double value(double t_s) const;
+    /// Times beyond which |w| < 1e-7: centre -+ 4 gamma.
+    double start_s() const;
+    double end_s() const;
+};
+
+/// Pseudo-acceleration response y = -omega^2 u of the oscillator (f_hz, damping), at rest
+/// before the wavelet, to the continuous wavelet, at time t_s:
+/// y(t) = omega^2 / omega_d * int_{-inf}^{t} exp(-zeta omega (t - s)) sin(omega_d (t - s)) w(s) ds,
+/// in closed form through the Faddeeva function (derivation in the source).
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s);
+
+/// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
+void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);
+
+}  // namespace freestand::motion
