@@ -1,0 +1,59 @@
+// `freestand simulate`: JSON keys, CSV output, and errors naming the option.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "support/run_cli.hpp"
+
+using freestand::test::run_cli;
+
+TEST_CASE("simulate --json prints the summary keys in order", "[dynamics][cli]") {
+    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.15 --sine 0.4g,2Hz,3s,ramp=1s --json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::ordered_json::parse(r.out);
+    std::vector<std::string> keys;
+    for (const auto& item : j.items()) keys.push_back(item.key());
+    const std::vector<std::string> first = {"slide_max_m", "slide_residual_m", "rock_max_rad",
+        "rock_max_over_alpha", "overturned", "overturn_time_s", "overturn_mode", "impacts",
+        "mode_changes", "top_accel_max_g", "amplification", "wall_s", "integrator"};
+    REQUIRE(keys.size() >= first.size());
+    CHECK(std::vector<std::string>(keys.begin(), keys.begin() + 13) == first);
+    CHECK(j["slide_max_m"].get<double>() > 0.0);
+    CHECK(j["overturn_time_s"].is_null());
+    CHECK(j["integrator"] == "event");
+}
+
+TEST_CASE("simulate --integrator cd --out writes a CSV with units", "[dynamics][cli]") {
+    const auto out = std::filesystem::temp_directory_path() / "freestand_sim_series.csv";
+    std::filesystem::remove(out);
+    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.8 --motion "
+                           "tests/data/RSN175_IMPVALL.H_H-E12140.AT2 --scale 2 --integrator cd "
+                           "--dt 1e-4 --out '" + out.string() + "'");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("integrator            cd") != std::string::npos);
+    const std::string csv = freestand::test::slurp(out);
+    CHECK(csv.find("# units: time s, slide m") != std::string::npos);
+    CHECK(csv.find("time_s,slide_m,slide_velocity_mps,rotation_rad") != std::string::npos);
+    std::filesystem::remove(out);
+}
+
+TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][errors]") {
+    struct Case { std::string args, expect; int code; };
+    const std::vector<Case> cases = {
+        {"--block b=-0.1,h=0.6,m=38 --mu 0.2 --sine 0.5g,2Hz,1s", "--block b", 3},
+        {"--block b=0.1,h=0.6,m=0 --mu 0.2 --sine 0.5g,2Hz,1s", "--block m", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu -0.2 --sine 0.5g,2Hz,1s", "--mu", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --restitution 1.5 --sine 0.5g,2Hz,1s", "--restitution", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --inertia -1 --sine 0.5g,2Hz,1s", "--inertia", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2", "exactly one of --motion and --sine", 2},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz", "--sine", 2},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz,1s --integrator rk", "--integrator", 2},
+    };
+    for (const auto& c : cases) {
+        INFO(c.args);
+        const auto r = run_cli("simulate " + c.args);
+        CHECK(r.exit_code == c.code);
+        CHECK(r.err.find("freestand simulate: error:") != std::string::npos);
+        CHECK(r.err.find(c.expect) != std::string::npos);
+    }
+}
