@@ -1,6 +1,8 @@
 #include "rocking/checks.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -47,6 +49,14 @@ double peak_pseudo_velocity_mps(const spectra::Spectrum& s) {
     double best = 0.0;
     for (std::size_t i = 0; i < s.frequency_hz.size(); ++i)
         best = std::max(best, s.psa_g[i] * units::g_mps2 / units::hz_to_radps(s.frequency_hz[i]));
+    return best;
+}
+
+double peak_pseudo_velocity_mps(const DampedDemand& d) {
+    std::vector<double> fs = d.lo.frequency_hz;
+    if (d.weight_hi > 0.0) fs.insert(fs.end(), d.hi.frequency_hz.begin(), d.hi.frequency_hz.end());
+    double best = 0.0;
+    for (double f : fs) best = std::max(best, d.psa_g(f) * units::g_mps2 / units::hz_to_radps(f));
     return best;
 }
 

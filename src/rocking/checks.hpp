@@ -3,6 +3,7 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "rocking/demand.hpp"
 #include "sliding/initiation.hpp"
 #include "spectra/spectrum.hpp"
 
@@ -39,6 +40,9 @@ HousnerEstimate housner_energy(const block::Block& blk, block::Edge e, double sv
 /// Largest pseudo-velocity PSA g / (2 pi f) over the spectrum's points, m/s (between points the
 /// log-log interpolation makes PSV a power law, so the maximum is at a point).
 double peak_pseudo_velocity_mps(const spectra::Spectrum& s);
+
+/// Same for a demand at one damping, over the points of the spectra it blends.
+double peak_pseudo_velocity_mps(const DampedDemand& d);
 
 /// Warning about accelerations transmitted to the body and what is attached to it, for the
 /// initiating mode: rocking amplifies them through impacts (1.3 to 11 measured on rigid

@@ -15,8 +15,8 @@ SourceLocation field(const char* name) { return SourceLocation{"", 0, name}; }
 void require_damping(const spectra::Spectrum& s, double damping) {
     if (std::abs(s.damping - damping) > 1e-9)
         throw InputError(field("damping"),
-                         fmt::format("spectrum \"{}\" has damping {}; the ASCE 4 sliding method "
-                                     "reads {}-damped spectra",
+                         fmt::format("spectrum \"{}\" has damping {}; expected {} (ASCE 4 sliding "
+                                     "reads 10%-damped spectra)",
                                      s.label, s.damping, damping));
 }
 
@@ -134,15 +134,17 @@ SlidingEstimate estimate_sliding(const SlidingInput& in, double f_es_hz) {
     return finish(est, in);
 }
 
-SlidingEstimate estimate_sliding(const SlidingInput& in, const spectra::Spectrum& sa_vh10) {
-    require_damping(sa_vh10, asce_sliding_damping);
+SlidingEstimate estimate_sliding(const SlidingInput& in, const spectra::Spectrum& sa_vh10,
+                                 double expected_damping) {
+    require_damping(sa_vh10, expected_damping);
     SlidingEstimate est = start(in);
     if (frictionless(est, in)) return est;
     const Crossing c = lowest_crossing(sa_vh10, est.c_s_mps2 / units::g_mps2);
     est.f_es_hz = c.f_hz;
     if (!c.f_hz)
-        est.f_es_reason = "10% SA_VH never reaches C_s (" + c.reason + "): does not slide (ASCE 4)";
-    est.f_es_source = c.f_hz ? "10% SA_VH, " + c.note : "";
+        est.f_es_reason = fmt::format("{:g}% SA_VH never reaches C_s ({}): does not slide (ASCE 4)",
+                                      100.0 * sa_vh10.damping, c.reason);
+    est.f_es_source = c.f_hz ? fmt::format("{:g}% SA_VH, {}", 100.0 * sa_vh10.damping, c.note) : "";
     return finish(est, in);
 }
 

@@ -67,7 +67,9 @@ SlidingEstimate estimate_sliding(const SlidingInput& in, double f_es_hz);
 
 /// Estimates with f_es found on sa_vh10, the 10%-damped vector horizontal spectrum SA_VH
 /// (see vector_horizontal in sliding/spectrum_input.hpp). InputError (field "damping") when the
-/// spectrum's damping is not 0.10.
-SlidingEstimate estimate_sliding(const SlidingInput& in, const spectra::Spectrum& sa_vh10);
+/// spectrum's damping is not expected_damping. ASCE 4 reads 10%; a case may deliberately choose
+/// another damping, which f_es_source then states.
+SlidingEstimate estimate_sliding(const SlidingInput& in, const spectra::Spectrum& sa_vh10,
+                                 double expected_damping = asce_sliding_damping);
 
 }  // namespace freestand::sliding

@@ -29,4 +29,32 @@ block::Block make_block(const BoxSpec& spec) {
                                  *spec.inertia_cg_kgm2);
 }
 
+namespace {
+
+std::optional<double> key(const std::map<std::string, double>& m, const std::string& k) {
+    const auto it = m.find(k);
+    return it == m.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
+double required_key(const std::map<std::string, double>& m, const std::string& k,
+                    const char* what) {
+    const auto v = key(m, k);
+    if (!v) throw InputError(SourceLocation{"", 0, "block " + k}, fmt::format("missing; expected {}", what));
+    return *v;
+}
+
+}  // namespace
+
+BoxSpec box_spec(const std::map<std::string, double>& box, const std::map<std::string, double>& cg,
+                 std::optional<double> inertia_cg_kgm2) {
+    BoxSpec s;
+    s.half_width_m = required_key(box, "b", "the half-width b=... (m)");
+    s.half_height_m = required_key(box, "h", "the half-height h=... (m)");
+    s.mass_kg = key(box, "m");
+    s.cg_offset_m = key(cg, "x");
+    s.cg_height_m = key(cg, "h");
+    s.inertia_cg_kgm2 = inertia_cg_kgm2;
+    return s;
+}
+
 }  // namespace freestand::sliding

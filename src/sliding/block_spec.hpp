@@ -1,7 +1,9 @@
 #pragma once
 /// A block described as its bounding box plus, optionally, the CG position and inertia: the way
 /// the command line and case files describe equipment (METHODS.md section 1).
+#include <map>
 #include <optional>
+#include <string>
 
 #include "block/block.hpp"
 
@@ -23,5 +25,11 @@ struct BoxSpec {
 /// the mass is required (I_O depends on I_c / M). |cg_offset| < half_width. Throws InputError
 /// naming the field ("cg x", "cg h", "inertia", "m", ...) otherwise.
 block::Block make_block(const BoxSpec& spec);
+
+/// BoxSpec from key=value maps as the command line and case files write them: box keys
+/// b (half-width), h (half-height), m (mass); cg keys x (offset towards the right edge), h
+/// (height). InputError (field "block b", "block h") when b or h is missing.
+BoxSpec box_spec(const std::map<std::string, double>& box, const std::map<std::string, double>& cg,
+                 std::optional<double> inertia_cg_kgm2);
 
 }  // namespace freestand::sliding
