@@ -93,61 +93,73 @@ Stepper make_stepper(double f_hz, double zeta, double dt_s, int min_steps_per_pe
     return st;
 }
 
-/// Peak |u| over the record, from rest, for K oscillators with the same number of sub-steps,
-/// advanced in lockstep: the K recurrences are independent, so the CPU overlaps their latency
-/// chains (one oscillator alone is latency-bound at about 3x the cost per step).
-template <std::size_t K>
+/// Two oscillators side by side (GCC/Clang vector extension: one SSE2/NEON register, and the
+/// compiler falls back to scalar code on targets without one).
+using Pair = double __attribute__((vector_size(16)));
+
+inline Pair pair_max(Pair x, Pair y) { return x > y ? x : y; }
+inline Pair pair_abs(Pair x) { return x < 0.0 ? -x : x; }
+
+/// Peak |u| over the record, from rest, for 2P oscillators with the same number of sub-steps n,
+/// advanced in lockstep. The recurrences are independent, so one oscillator's latency chain
+/// (u -> u_next, three dependent flops per sample) overlaps the others'.
+template <std::size_t P>
 void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a, double* peak) {
     const std::size_t n = st[0]->sub_u.size();
-    // Structure-of-arrays copies of the coefficients: sub-point k, coefficient j, oscillator o.
-    std::vector<double> cu(n * 4 * K);
-    std::array<std::array<double, K>, 4> cv{};
-    for (std::size_t o = 0; o < K; ++o) {
+    // Coefficients packed per pair: cu[(k * 4 + j) * P + p] holds coefficient j of sub-point k
+    // for oscillators 2p and 2p+1; cv[j * P + p] likewise for v at the end of the sample.
+    std::vector<Pair> cu(n * 4 * P);
+    std::array<Pair, 4 * P> cv{};
+    for (std::size_t p = 0; p < P; ++p) {
+        const Stepper& s0 = *st[2 * p];
+        const Stepper& s1 = *st[2 * p + 1];
         for (std::size_t k = 0; k < n; ++k)
-            for (std::size_t j = 0; j < 4; ++j) cu[(k * 4 + j) * K + o] = st[o]->sub_u[k][j];
-        for (std::size_t j = 0; j < 4; ++j) cv[j][o] = st[o]->end_v[j];
+            for (std::size_t j = 0; j < 4; ++j) cu[(k * 4 + j) * P + p] = Pair{s0.sub_u[k][j], s1.sub_u[k][j]};
+        for (std::size_t j = 0; j < 4; ++j) cv[j * P + p] = Pair{s0.end_v[j], s1.end_v[j]};
     }
-    std::array<double, K> u{}, v{}, pk{};
-    const double* c = cu.data();
+    std::array<Pair, P> u{}, v{}, pk{};
     const std::size_t count = a.size();
     if (n == 1) {
-        // T >= 20 dt: the common case, kept free of the sub-point loop so it stays in registers.
-        std::array<std::array<double, K>, 4> c1{};
-        for (std::size_t j = 0; j < 4; ++j)
-            for (std::size_t o = 0; o < K; ++o) c1[j][o] = c[j * K + o];
+        // T >= 20 dt: the common case, free of the sub-point loop so everything stays in registers.
+        std::array<Pair, 4 * P> c1{};
+        for (std::size_t j = 0; j < 4 * P; ++j) c1[j] = cu[j];
         for (std::size_t i = 1; i < count; ++i) {
-            const double a0 = a[i - 1];
-            const double a1 = a[i];
-            for (std::size_t o = 0; o < K; ++o) {
-                const double un = (c1[0][o] * u[o] + c1[1][o] * v[o]) + (c1[2][o] * a0 + c1[3][o] * a1);
-                v[o] = (cv[0][o] * u[o] + cv[1][o] * v[o]) + (cv[2][o] * a0 + cv[3][o] * a1);
-                u[o] = un;
-                pk[o] = std::max(pk[o], std::abs(un));
+            const Pair a0{a[i - 1], a[i - 1]};
+            const Pair a1{a[i], a[i]};
+            for (std::size_t p = 0; p < P; ++p) {
+                const Pair un = (c1[p] * u[p] + c1[P + p] * v[p]) + (c1[2 * P + p] * a0 + c1[3 * P + p] * a1);
+                v[p] = (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
+                u[p] = un;
+                pk[p] = pair_max(pk[p], pair_abs(un));
             }
         }
-        for (std::size_t o = 0; o < K; ++o) peak[o] = pk[o];
-        return;
-    }
-    for (std::size_t i = 1; i < count; ++i) {
-        const double a0 = a[i - 1];
-        const double a1 = a[i];
-        std::array<double, K> un{};
-        for (std::size_t k = 0; k < n; ++k) {
-            const double* r = c + k * 4 * K;
-            for (std::size_t o = 0; o < K; ++o) {
-                un[o] = (r[o] * u[o] + r[K + o] * v[o]) + (r[2 * K + o] * a0 + r[3 * K + o] * a1);
-                pk[o] = std::max(pk[o], std::abs(un[o]));
+    } else {
+        const Pair* c = cu.data();
+        for (std::size_t i = 1; i < count; ++i) {
+            const Pair a0{a[i - 1], a[i - 1]};
+            const Pair a1{a[i], a[i]};
+            std::array<Pair, P> un{};
+            for (std::size_t k = 0; k < n; ++k) {
+                const Pair* r = c + k * 4 * P;
+                for (std::size_t p = 0; p < P; ++p) {
+                    un[p] = (r[p] * u[p] + r[P + p] * v[p]) + (r[2 * P + p] * a0 + r[3 * P + p] * a1);
+                    pk[p] = pair_max(pk[p], pair_abs(un[p]));
+                }
+            }
+            for (std::size_t p = 0; p < P; ++p) {
+                v[p] = (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
+                u[p] = un[p];
             }
         }
-        for (std::size_t o = 0; o < K; ++o) {
-            v[o] = (cv[0][o] * u[o] + cv[1][o] * v[o]) + (cv[2][o] * a0 + cv[3][o] * a1);
-            u[o] = un[o];
-        }
     }
-    for (std::size_t o = 0; o < K; ++o) peak[o] = pk[o];
+    for (std::size_t p = 0; p < P; ++p) {
+        peak[2 * p] = pk[p][0];
+        peak[2 * p + 1] = pk[p][1];
+    }
 }
 
-/// Peak |u| of every stepper: groups steppers with equal sub-step counts into batches of 4.
+/// Peak |u| of every stepper: sorts them by sub-step count and runs batches of up to 8 equal
+/// counts together; a batch with an odd count repeats its last oscillator (result dropped).
 std::vector<double> peak_displacements_m(const std::vector<Stepper>& steppers,
                                          const std::vector<double>& a) {
     std::vector<std::size_t> order(steppers.size());
@@ -156,7 +168,7 @@ std::vector<double> peak_displacements_m(const std::vector<Stepper>& steppers,
         return steppers[x].sub_u.size() < steppers[y].sub_u.size();
     });
     std::vector<double> peaks(steppers.size());
-    constexpr std::size_t batch = 4;
+    constexpr std::size_t batch = 8;
     std::size_t i = 0;
     while (i < order.size()) {
         std::size_t len = 1;
@@ -164,9 +176,9 @@ std::vector<double> peak_displacements_m(const std::vector<Stepper>& steppers,
                steppers[order[i + len]].sub_u.size() == steppers[order[i]].sub_u.size())
             ++len;
         std::array<const Stepper*, batch> group{};
-        for (std::size_t o = 0; o < len; ++o) group[o] = &steppers[order[i + o]];
+        for (std::size_t o = 0; o < batch; ++o) group[o] = &steppers[order[i + std::min(o, len - 1)]];
         std::array<double, batch> out{};
-        switch (len) {
+        switch ((len + 1) / 2) {
             case 4: peak_displacements_m<4>(group.data(), a, out.data()); break;
             case 3: peak_displacements_m<3>(group.data(), a, out.data()); break;
             case 2: peak_displacements_m<2>(group.data(), a, out.data()); break;
