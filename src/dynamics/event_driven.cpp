@@ -242,9 +242,18 @@ private:
             events[3] = Ev::stop;
         }
         Vec x = {st_.u, st_.v, st_.th, st_.om}, dx{}, xn{}, dxn{}, xerr{};
-        rhs(x, dx, t);
-        Accel acc0 = rhs.last;
-        Stepper stepper;
+        Accel acc0;
+        // First same-as-last: the input is continuous at sample times, so the derivative at the
+        // end of the previous segment is the one at the start of this one.
+        if (fsal_ok_ && fsal_t_ == t && fsal_x_ == x) {
+            dx = fsal_dx_;
+            acc0 = fsal_acc_;
+        } else {
+            rhs(x, dx, t);
+            acc0 = rhs.last;
+        }
+        fsal_ok_ = false;
+        Stepper& stepper = stepper_;
         while (t < tb_) {
             double h = std::min(h_, tb_ - t);
             if (tb_ - (t + h) < 1e-12 * h) h = tb_ - t;
@@ -334,6 +343,11 @@ private:
             const double grow = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
             h_ = h * std::clamp(grow, 0.2, 5.0);
         }
+        fsal_ok_ = true;
+        fsal_t_ = tb_;
+        fsal_x_ = x;
+        fsal_dx_ = dx;
+        fsal_acc_ = acc0;
         return tb_;
     }
 
@@ -466,6 +480,11 @@ private:
     Segment seg_;
     double tb_ = 0.0;
     double h_ = 1e-3;  // step size carried between phases
+    Stepper stepper_;
+    bool fsal_ok_ = false;
+    double fsal_t_ = 0.0;
+    Vec fsal_x_{}, fsal_dx_{};
+    Accel fsal_acc_;
     double last_event_ = -1.0;
     std::size_t burst_ = 0;
     bool armed_ = false;
@@ -483,14 +502,21 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
     rec.observe(st);
     rec.sample(0.0, st, b0);
     Engine engine(g, bm, o, rec, st);
+    const double dt = bm.dt();
     for (std::size_t k = 0; k < n_seg; ++k) {
         double t = bm.t_k(k);
         const double tb = bm.t_k(k + 1);
+        // The rest inequalities are linear on a segment: holding at both samples, they hold
+        // throughout (no event possible), so the segment is skipped without the engine.
+        if (st.mode == Mode::rest && rest_holds(g, bm.sample(k)) && rest_holds(g, bm.sample(k + 1))) {
+            rec.time_in(Mode::rest, dt);
+            t = tb;
+        }
         while (t < tb) {
             t = engine.advance(k, t, tb);
             if (rec.overturned()) return rec.finish(st, t, integrator_name(Integrator::event));
         }
-        rec.sample(tb, st, bm.at(k, tb));
+        rec.sample(tb, st, bm.sample(k + 1));
         if (st.mode == Mode::rest && tb >= bm.min_end_s())
             return rec.finish(st, tb, integrator_name(Integrator::event));
     }

@@ -14,10 +14,22 @@ public:
     BaseMotion(const Excitation& e, double g_mps2);
     double dt() const { return dt_; }
     double t_k(std::size_t k) const { return dt_ * static_cast<double>(k); }
+    /// Base acceleration at sample i.
+    Base sample(std::size_t i) const { return {h(i), g_ + v(i)}; }
     /// Base acceleration at time t inside segment k = [t_k, t_k+1] (linear interpolation).
-    Base at(std::size_t k, double t) const;
+    Base at(std::size_t k, double t) const {
+        double ax0, ax1, G0, G1;
+        segment(k, ax0, ax1, G0, G1);
+        const double tau = t - t_k(k);
+        return {ax0 + ax1 * tau, G0 + G1 * tau};
+    }
     /// Value and slope on segment k: ax = ax0 + ax1 (t - t_k), G likewise.
-    void segment(std::size_t k, double& ax0, double& ax1, double& G0, double& G1) const;
+    void segment(std::size_t k, double& ax0, double& ax1, double& G0, double& G1) const {
+        ax0 = h(k);
+        ax1 = (h(k + 1) - ax0) * inv_dt_;
+        G0 = g_ + v(k);
+        G1 = (v(k + 1) - v(k)) * inv_dt_;
+    }
     /// First time from which the base is at rest for good, s.
     double quiet_from_s() const { return quiet_from_; }
     /// Time after which the simulation may stop once the block is at rest, s.
@@ -29,7 +41,7 @@ public:
 private:
     double h(std::size_t i) const { return i < x_.size() ? x_[i] : 0.0; }
     double v(std::size_t i) const { return i < y_.size() ? y_[i] : 0.0; }
-    double dt_ = 0.0, g_ = 0.0, quiet_from_ = 0.0, duration_ = 0.0, pga_ = 0.0;
+    double dt_ = 0.0, inv_dt_ = 0.0, g_ = 0.0, quiet_from_ = 0.0, duration_ = 0.0, pga_ = 0.0;
     const std::vector<double>& x_;
     const std::vector<double>& y_;
 };

@@ -6,29 +6,15 @@
 namespace freestand::dynamics::detail {
 
 BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
-    : dt_(e.dt_s), g_(g_mps2), x_(e.horizontal_mps2), y_(e.vertical_mps2) {
+    : dt_(e.dt_s), inv_dt_(1.0 / e.dt_s), g_(g_mps2), x_(e.horizontal_mps2), y_(e.vertical_mps2) {
     std::size_t last = 0;  // one past the last non-zero sample
     for (std::size_t i = 0; i < x_.size(); ++i)
-        if (x_[i] != 0.0 || v(i) != 0.0) last = i + 1;
+        if (x_[i] != 0.0) last = i + 1;
     for (std::size_t i = 0; i < y_.size(); ++i)
         if (y_[i] != 0.0) last = std::max(last, i + 1);
     quiet_from_ = dt_ * static_cast<double>(last);
     duration_ = e.duration_s();
-    pga_ = e.pga_mps2();
-}
-
-void BaseMotion::segment(std::size_t k, double& ax0, double& ax1, double& G0, double& G1) const {
-    ax0 = h(k);
-    ax1 = (h(k + 1) - ax0) / dt_;
-    G0 = g_ + v(k);
-    G1 = (v(k + 1) - v(k)) / dt_;
-}
-
-Base BaseMotion::at(std::size_t k, double t) const {
-    double ax0, ax1, G0, G1;
-    segment(k, ax0, ax1, G0, G1);
-    const double tau = t - t_k(k);
-    return {ax0 + ax1 * tau, G0 + G1 * tau};
+    for (double a : x_) pga_ = std::max(pga_, std::abs(a));
 }
 
 std::size_t BaseMotion::segments(double tail_s) const {
@@ -80,6 +66,18 @@ void Recorder::overturn(double t_s, OverturnCriterion c) {
 }
 
 void Recorder::sample(double t_s, const BlockState& st, Base base) {
+    if (st.mode == Mode::rest) {  // carried by the base: the hot path of long records
+        summary_.top_accel_max_g = std::max(summary_.top_accel_max_g, std::abs(base.ax) / g_mps2_);
+        if (!record_series_) return;
+        Sample smp;
+        smp.time_s = t_s;
+        smp.slide_m = st.u;
+        smp.normal_force_N = g_.M * base.G;
+        smp.friction_force_N = g_.M * base.ax;
+        smp.top_accel_mps2 = base.ax;
+        series_.push_back(smp);
+        return;
+    }
     const Accel a = accel_of(g_, st, base);
     double top = base.ax;
     switch (st.mode) {
