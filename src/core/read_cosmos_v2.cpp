@@ -12,6 +12,7 @@
 // (1 = acceleration), #3 units code (2 = g, 4 = cm/s/s, 10 = gal); real #62 sampling interval in
 // ms of the processed series, #34 sampling interval in s (of the raw record, used only when #62
 // is unknown). Only the first acceleration channel of a file is read.
+#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
@@ -79,6 +80,7 @@ private:
     Unit data_unit(std::size_t data_index, const std::vector<double>& ints) const;
     double time_step_s(std::size_t real_index, const std::vector<double>& reals) const;
     std::vector<double> data_values(std::size_t data_index, const FortranFormat& format) const;
+    std::size_t count(const std::string& digits, std::size_t index, const std::string& field) const;
     bool known(double v) const { return v != unknown_real_; }
     bool known_int(double v) const { return v != unknown_int_; }
 
@@ -93,6 +95,16 @@ const std::string& CosmosParser::line(std::size_t index, const std::string& what
     if (index >= lines_.size())
         throw InputError(at(index, ""), "file ends where " + what + " was expected");
     return lines_[index];
+}
+
+// Regex-matched digit strings; from_chars keeps absurd lengths an InputError, not std::out_of_range.
+std::size_t CosmosParser::count(const std::string& digits, std::size_t index, const std::string& field) const {
+    constexpr std::size_t max_count = 100'000'000;
+    std::size_t value = 0;
+    const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (ec != std::errc() || ptr != digits.data() + digits.size() || value > max_count)
+        throw InputError(at(index, field), fmt::format("count \"{}\" is not a whole number up to {}", digits, max_count));
+    return value;
 }
 
 std::smatch CosmosParser::block_header(std::size_t index, const std::regex& re, const std::string& what,
@@ -110,7 +122,7 @@ FortranFormat CosmosParser::format_of(std::size_t index) const {
     if (!std::regex_search(lines_[index], m, re))
         throw InputError(at(index, "Format"),
                          fmt::format("expected a Fortran format such as \"Format=(8F10.5)\"; got \"{}\"", lines_[index]));
-    FortranFormat f{std::stoul(m[1].str()), std::stoul(m[2].str()), m[0].str()};
+    FortranFormat f{count(m[1].str(), index, "Format"), count(m[2].str(), index, "Format"), m[0].str()};
     if (f.per_line == 0 || f.width == 0)
         throw InputError(at(index, "Format"), "expected a positive count and field width in \"" + f.spec + "\"");
     return f;
@@ -145,15 +157,15 @@ std::vector<double> CosmosParser::header_values(std::size_t header_index, const 
         block_header(header_index, re, what, "100 " + what + " values follow on 10 lines, Format= (10I8)");
     if (!text::icontains(m[2].str(), what.substr(0, what.find('-'))))
         throw InputError(at(header_index, what), "expected the " + what + " block here; got \"" + lines_[header_index] + "\"");
-    const std::size_t count = std::stoul(m[1].str());
-    const std::size_t n_lines = std::stoul(m[3].str());
+    const std::size_t n_values = count(m[1].str(), header_index, what);
+    const std::size_t n_lines = count(m[3].str(), header_index, what);
     const FortranFormat format = format_of(header_index);
     std::vector<double> values;
     for (std::size_t i = header_index + 1; i <= header_index + n_lines; ++i)
         cut_fields(line(i, "a " + what + " line"), format, at(i, what), values);
-    if (values.size() != count)
+    if (values.size() != n_values)
         throw InputError(at(header_index, what),
-                         fmt::format("header says {} values on {} lines but they hold {}", count, n_lines, values.size()));
+                         fmt::format("header says {} values on {} lines but they hold {}", n_values, n_lines, values.size()));
     next_ = header_index + n_lines + 1;
     return values;
 }
@@ -185,7 +197,7 @@ Unit CosmosParser::data_unit(std::size_t data_index, const std::vector<double>& 
     if (std::regex_search(text, m, re)) {
         stated_as = std::string(text::trim(m[1].str()));
         if (m[2].matched) stated_as = fmt::format("{} {}", stated_as, m[2].str());
-        stated = m[3].matched ? unit_from_code(std::stol(m[3].str())) : unit_from_text(m[1].str());
+        stated = m[3].matched ? unit_from_code(static_cast<long>(count(m[3].str(), data_index, "units"))) : unit_from_text(m[1].str());
         if (!stated)
             throw InputError(at(data_index, "units"),
                              fmt::format("unsupported units \"{}\"; expected g (code 2) or cm/s/s (code 4 or 10)",
@@ -244,7 +256,7 @@ Record CosmosParser::parse() {
     if (!text::icontains(lines_[0], "corrected acceleration") || text::icontains(lines_[0], "uncorrected"))
         throw InputError(at(0, "data type"), "expected a processed (V2) record starting \"Corrected acceleration\"; "
                                              "got \"" + lines_[0] + "\"");
-    const std::size_t n_text = std::stoul(m[1].str());
+    const std::size_t n_text = count(m[1].str(), 0, "format");
     read_unknown_sentinel(n_text);
 
     const std::vector<double> ints = header_values(n_text, "Integer-header");
@@ -259,12 +271,15 @@ Record CosmosParser::parse() {
         throw InputError(at(real_index, "Real-header"), "expected at least 62 real-header values");
 
     static const std::regex comments(R"(^\s*(\d+)\s+comment\s+line)", std::regex::icase);
-    const std::size_t n_comments = std::stoul(block_header(next_, comments, "comments",
-                                                           "2 Comment line(s) follow, each starting with a \"|\":")[1].str());
+    const std::size_t n_comments = count(block_header(next_, comments, "comments",
+                                                      "2 Comment line(s) follow, each starting with a \"|\":")[1].str(),
+                                         next_, "comments");
     const std::size_t data_index = next_ + n_comments + 1;
     static const std::regex data_header(R"(^\s*(\d+)\s+acceleration\s+(pts|points)\b)", std::regex::icase);
-    const long npts = std::stol(block_header(data_index, data_header, "data header",
-                                             "2000 acceleration pts, approx 20 secs, units=cm/sec2 (04), Format=(8F10.5)")[1].str());
+    const std::size_t npts = count(block_header(data_index, data_header, "data header",
+                                                "2000 acceleration pts, approx 20 secs, units=cm/sec2 (04), "
+                                                "Format=(8F10.5)")[1].str(),
+                                   data_index, "NPTS");
 
     Record rec;
     rec.name = std::filesystem::path(file_).stem().string();
@@ -276,7 +291,7 @@ Record CosmosParser::parse() {
     rec.accel_mps2 = data_values(data_index, format_of(data_index));
     if (rec.accel_mps2.empty())
         throw InputError(at(data_index, ""), "no acceleration values after the data header");
-    if (static_cast<long>(rec.accel_mps2.size()) != npts)
+    if (rec.accel_mps2.size() != npts)
         throw InputError(at(data_index, "NPTS"), fmt::format("data header says {} acceleration pts but the data "
                                                              "block holds {} values", npts, rec.accel_mps2.size()));
     for (double& a : rec.accel_mps2) a *= unit.to_mps2;
