@@ -12,17 +12,26 @@ namespace freestand::core {
 /// "NPTS= n, DT= dt SEC"), then values in g. NPTS must equal the number of values.
 Record read_at2(const std::filesystem::path& path);
 
-/// COSMOS V2 processed record (acceleration in cm/s^2 or g as the header states).
+/// COSMOS Strong Motion Data Format v1.20 processed record (line 1 "Corrected acceleration ...
+/// (Format v01.20 with N text lines)"); the first acceleration channel is read. Units from the
+/// data header ("units=cm/sec2 (04)" or "units=g (02)") and/or integer-header #3, which must
+/// agree; dt from real-header #62 (ms), else #34 (s). The data header's point count must equal
+/// the number of values. Also used for .V2C files.
 Record read_cosmos_v2(const std::filesystem::path& path);
 
 /// CSV: header "time_s,accel_<unit>" with two columns, or one column "accel_<unit>" preceded
-/// by a "# dt_s: <value>" line. <unit> is one of g, mps2, cmps2. '#' lines are comments.
+/// by a "# dt_s: <value>" line. <unit> is one of g, mps2, cmps2. '#' lines are comments; blank
+/// lines are skipped. Time steps must agree to 1e-6 relative; dt is their mean, and the first row
+/// becomes t = 0. Optional "# name:" and "# component:" comments set those labels.
 Record read_csv(const std::filesystem::path& path);
 
-/// Picks the reader from the extension: .AT2/.at2, .V2/.v2, .csv. Throws InputError otherwise.
+/// Picks the reader from the extension, ignoring case: .AT2, .V2 or .V2C, .csv. Throws
+/// InputError (field "extension") otherwise.
 Record read_record(const std::filesystem::path& path);
 
-/// Writes "time_s,accel_g" CSV (atomically), with '#' comment lines for name, source, component.
+/// Writes "time_s,accel_g" CSV (atomically), with '#' comment lines for name, source, component
+/// and dt_s. Numbers use the shortest text that parses back to the same double, so read_csv
+/// returns the values to about 1 ulp. Throws InputError if the record fails core::validate.
 void write_csv_g(const Record& record, const std::filesystem::path& path);
 
 }  // namespace freestand::core
