@@ -1,7 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -87,7 +85,6 @@ double psd_min_ratio(const core::Record& record, double td_s, double pga_g) {
         for (std::size_t k = k0; k <= k1; ++k) sum += s[k];
         const double avg = sum / static_cast<double>(k1 - k0 + 1);
         worst = std::min(worst, avg / spectra::rg160_target_psd_per_radps(f, pga_g));
-        if (std::getenv("FS_PSD")) std::fprintf(stderr, "psd f %.3f ratio %.3f\n", f, avg / spectra::rg160_target_psd_per_radps(f, pga_g));
     }
     return worst;
 }

@@ -6,8 +6,9 @@
 
 namespace freestand::motion {
 
-/// w(z) for Im z >= 0 by Weideman's rational series (SIAM J. Numer. Anal. 31 (1994) 1497,
-/// eq. 3.11, N = 36 terms): relative error below 1e-12 over the closed upper half plane.
+/// w(z) for Im z >= 0: Weideman's rational series (SIAM J. Numer. Anal. 31 (1994) 1497,
+/// eq. 3.11, N = 36 terms) for |z| < 8, the asymptotic series (Abramowitz & Stegun 7.1.23,
+/// six terms) beyond; relative error below 1e-8 over the closed upper half plane.
 /// Callers reflect with w(-z) = 2 exp(-z^2) - w(z) for Im z < 0.
 std::complex<double> faddeeva_upper(std::complex<double> z);
 

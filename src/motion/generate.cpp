@@ -131,6 +131,43 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
     return best;
 }
 
+// Matching settings tried in turn on a seed record: gentler steps and a higher aim.
+MatchOptions seed_attempt_options(MatchOptions base, int attempt) {
+    base.relaxation *= std::pow(0.7, attempt);
+    base.aim += 0.01 * attempt;
+    base.lower += 0.01 * attempt;
+    return base;
+}
+
+GeneratedComponent seed_component(const Target& target, const GenerateOptions& o, std::size_t index,
+                                  std::vector<std::string>& notes) {
+    const auto start = Clock::now();
+    const std::string& name = o.components[index];
+    const core::Record& seed = o.seed_records[index];
+    GeneratedComponent best;
+    for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
+        MatchResult m = match_record(seed, target, seed_attempt_options(o.match, attempt));
+        const bool better = attempt == 0 || m.acceptance.passed ||
+                            m.acceptance.min_ratio > best.acceptance.min_ratio;
+        if (better) {
+            best.record = std::move(m.record);
+            best.acceptance = std::move(m.acceptance);
+            best.iterations = m.iterations;
+        }
+        best.attempts = attempt + 1;
+        if (best.acceptance.passed) break;
+        notes.push_back(fmt::format("{}: matching {} (setting {}) failed ({}); trying gentler steps", name,
+                                    seed.name, attempt + 1, best.acceptance.reason));
+    }
+    best.record.component = name;
+    best.record.name = name;
+    best.record.source = fmt::format("freestand generate: wavelet-matched {}", seed.source);
+    best.method = fmt::format("wavelet (seed {})", seed.name);
+    best.stop = best.acceptance.passed ? "passed" : "attempt limit";
+    best.wall_s = seconds_since(start);
+    return best;
+}
+
 }  // namespace
 
 MatchResult match_record(const core::Record& seed, const Target& target, const MatchOptions& options) {
@@ -159,21 +196,7 @@ GeneratedSet generate_set(const TargetSet& targets, const GenerateOptions& o) {
             set.components.push_back(synthetic_component(target, o, i, set.components, set.notes));
             continue;
         }
-        const auto start = Clock::now();
-        const core::Record& seed = o.seed_records[i];
-        MatchResult m = match_record(seed, target, o.match);
-        GeneratedComponent g;
-        g.record = std::move(m.record);
-        g.record.component = name;
-        g.record.name = name;
-        g.record.source = fmt::format("freestand generate: wavelet-matched {}", seed.source);
-        g.acceptance = std::move(m.acceptance);
-        g.method = fmt::format("wavelet (seed {})", seed.name);
-        g.attempts = 1;
-        g.iterations = m.iterations;
-        g.stop = g.acceptance.passed ? "passed" : "iteration limit";
-        g.wall_s = seconds_since(start);
-        set.components.push_back(std::move(g));
+        set.components.push_back(seed_component(target, o, i, set.notes));
     }
     set.passed = true;
     for (const GeneratedComponent& g : set.components) set.passed = set.passed && g.acceptance.passed;

@@ -7,8 +7,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -24,8 +22,11 @@ constexpr double kDamping = 0.05;
 // Tikhonov weight relative to the mean squared (column-normalised) entry: only a guard against
 // near-identical rows (rigid-range oscillators peaking at the same instant).
 constexpr double kRegularisation = 1e-2;
+// In-loop upper ratio outside the cap band.
+constexpr double kUncappedUpper = 1.4;
 // Band raise after a full check fails although every matching frequency is inside the band.
 constexpr double kRaise = 0.02;
+constexpr int kMaxRaises = 2;
 // Wavelets are kept at >= 10 samples per cycle: coarser ones are poorly represented by their
 // samples (and the closed-form Jacobian no longer describes them); near-rigid oscillators above
 // that frequency respond quasi-statically to the lower-frequency wavelet placed at their peak.
@@ -62,6 +63,7 @@ struct Matcher {
     std::vector<double> f;       // matching frequencies
     std::vector<double> f_wave;  // wavelet frequencies, sampled at >= 10 points per cycle
     std::vector<double> q;       // target PSA, m/s^2
+    std::vector<double> upper;   // in-loop upper ratio: opt.upper inside the 1.3-cap band
     EndWeights ends;
     std::array<Wavelet, 2> pulses;
     std::array<double, 2> pulse_v{}, pulse_d{};
@@ -72,6 +74,10 @@ struct Matcher {
         for (double fi : f) {
             f_wave.push_back(std::min(fi, kWaveletSamplesPerCycle_inv / rec.dt_s));
             q.push_back(target.psa_5pct.psa_at(fi) * units::g_mps2);
+            // No cap outside 0.2-25 Hz: holding a tight band there only makes competing peaks of
+            // the long-period oscillators alternate.
+            const bool capped = fi >= criteria::cap_low_hz && fi <= criteria::cap_high_hz;
+            upper.push_back(capped ? opt.upper : kUncappedUpper);
         }
         ends = end_weights(rec.size(), rec.dt_s);
         const double T = rec.duration_s();
@@ -86,7 +92,6 @@ struct Matcher {
     struct Peaks {
         std::vector<double> r, sign, t;
         double worst = -1.0;  // largest distance of a ratio outside [lower, upper], < 0 inside
-        std::size_t wi = 0;
     };
 
     Peaks peaks() const {
@@ -98,16 +103,13 @@ struct Matcher {
             out.sign.push_back(p[i].sd_m > 0.0 ? -1.0 : 1.0);  // y = -omega^2 u
             out.t.push_back(p[i].time_s);
             const double ratio = out.r.back() / q[i];
-            const double miss = std::max(opt.lower - ratio, ratio - opt.upper);
-            if (miss > out.worst) {
-                out.worst = miss;
-                out.wi = i;
-            }
+            const double miss = std::max(opt.lower - ratio, ratio - upper[i]);
+            out.worst = std::max(out.worst, miss);
         }
         return out;
     }
 
-    // One linearised correction; returns false if the system could not be solved.
+    // One linearised correction: C b = dR with the two baseline rows, then add the wavelets.
     void pass(const Peaks& pk) {
         const std::size_t m = f.size();
         const std::size_t n = m + 2;
@@ -124,7 +126,8 @@ struct Matcher {
                 c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(m + k)) =
                     wavelet_response(pulses[k], f[i], kDamping, pk.t[i]);
             const double ratio = pk.r[i] / q[i];
-            const double want = ratio >= opt.lower && ratio <= opt.upper ? pk.r[i] : opt.aim * q[i];
+            const bool inside = ratio >= opt.lower && ratio <= upper[i];
+            const double want = inside ? pk.r[i] : opt.aim * q[i];
             rhs(static_cast<Eigen::Index>(i)) = (want - pk.r[i]) * pk.sign[i];
         }
         const auto mv = static_cast<Eigen::Index>(m);
@@ -139,10 +142,6 @@ struct Matcher {
         rhs(mv) = -dot(ends.velocity, rec.accel_mps2);
         rhs(mv + 1) = -dot(ends.displacement, rec.accel_mps2);
         const Eigen::VectorXd b = solve_regularised(c, rhs);
-        if (std::getenv("FS_DEBUG2")) {
-            for (std::size_t j = 0; j < m; ++j) std::fprintf(stderr, "  f %.2f fw %.2f t %.3f R/q %.3f b %.4g diag %.4g\n", f[j], f_wave[j], pk.t[j], pk.r[j]/q[j], b(static_cast<Eigen::Index>(j)), c(static_cast<Eigen::Index>(j),static_cast<Eigen::Index>(j)));
-            std::fprintf(stderr, "  pulses %.4g %.4g  v %.4g d %.4g\n", b(mv), b(mv+1), rhs(mv), rhs(mv+1));
-        }
         for (std::size_t j = 0; j < m; ++j)
             add_wavelet(waves[j], opt.relaxation * b(static_cast<Eigen::Index>(j)), rec.dt_s, rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
@@ -165,7 +164,7 @@ struct Matcher {
             else col(j) = 1.0;
         }
         Eigen::MatrixXd normal = c.transpose() * c;
-        const double lambda2 = (std::getenv("FS_LAM") ? std::atof(std::getenv("FS_LAM")) : kRegularisation) * normal.trace() / static_cast<double>(normal.rows());
+        const double lambda2 = kRegularisation * normal.trace() / static_cast<double>(normal.rows());
         normal.diagonal().array() += lambda2;
         Eigen::VectorXd x = normal.ldlt().solve(c.transpose() * rhs);
         return x.cwiseQuotient(col);
@@ -190,21 +189,32 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
     MatchResult res;
     res.record = std::move(record);
     Matcher m(target, options, res.record);
+    int raises = 0;
+    // The iterate closest to the band, kept in case the limit is reached.
+    std::vector<double> best = res.record.accel_mps2;
+    double best_worst = 1e300;
     for (int it = 1; it <= options.max_iterations; ++it) {
         const Matcher::Peaks pk = m.peaks();
-        if (std::getenv("FS_DEBUG")) std::fprintf(stderr, "it %d worst %.4f at %.2f Hz ratio %.3f t %.3f\n", it, pk.worst, m.f[pk.wi], pk.r[pk.wi]/m.q[pk.wi], pk.t[pk.wi]);
+        if (pk.worst < best_worst) {
+            best_worst = pk.worst;
+            best = res.record.accel_mps2;
+        }
         if (pk.worst <= 0.0) {
             m.zero_baseline();
             res.acceptance = check_acceptance(res.record, target);
             res.iterations = it - 1;
             res.converged = true;
             if (res.acceptance.passed) return res;
-            // Dips between the matching frequencies or a PSD gap: raise the band a little.
+            // Dips between the matching frequencies: raise the band a little, a few times; a PSD
+            // gap or a cap breach is not cured that way, so the caller tries another setting.
+            if (++raises > kMaxRaises) return res;
             m.opt.lower += kRaise;
             m.opt.aim += kRaise;
+            best_worst = 1e300;
         }
         m.pass(pk);
     }
+    res.record.accel_mps2 = best;
     m.zero_baseline();
     res.iterations = options.max_iterations;
     res.acceptance = check_acceptance(res.record, target);

@@ -12,6 +12,7 @@ namespace freestand::motion {
 namespace {
 
 constexpr double kSupportGammas = 4.0;  // exp(-16) ~ 1e-7
+constexpr double kDecayed = 20.0;       // exp(-20) ~ 2e-9
 
 // I(Omega) = int_{-inf}^{T} exp(-p (T - x)) exp(i Omega x) exp(-x^2 / gamma^2) dx, x = s - centre,
 // p = zeta omega - i omega_d. Completing the square with q = p + i Omega:
@@ -76,6 +77,9 @@ double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_
     const double omega_d = omega * std::sqrt(1.0 - damping * damping);
     const double T = t_s - w.centre_s;
     if (T < -kSupportGammas * w.gamma_s) return 0.0;
+    // Long after the wavelet the free vibration has decayed below exp(-kDecayed) of its size.
+    if (T > kSupportGammas * w.gamma_s && damping * omega * (T - kSupportGammas * w.gamma_s) > kDecayed)
+        return 0.0;
     // cos(Omega x) = Re exp(i Omega x) and Im(A) Re(B) = Im(A B + A conj(B)) / 2.
     const std::complex<double> sum =
         half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
