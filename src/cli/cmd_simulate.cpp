@@ -15,7 +15,7 @@ namespace freestand::cli {
 namespace {
 
 const char* const usage =
-    "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] --mu 0.15 [--mu-k MU] "
+    "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
     "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--scale S] | --sine 0.8g,2Hz,5s[,ramp=1s]) "
     "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json]";
 
@@ -155,6 +155,7 @@ int run(const std::vector<std::string>& args) {
         ("block", po::value<std::string>()->required(), "b=half-width,h=CG height,m=mass (m, kg)")
         ("cg", po::value<std::string>(), "x,y: CG x from the left edge and y above the base (m)")
         ("inertia", po::value<double>(), "I_c about the CG (kg m^2)")
+        ("top", po::value<double>(), "height of the top corners for top_accel (m; default 2 h)")
         ("mu", po::value<double>()->required(), "static friction coefficient")
         ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
         ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
@@ -174,7 +175,9 @@ int run(const std::vector<std::string>& args) {
     std::optional<double> mu_k, r;
     if (vm->count("mu-k")) mu_k = (*vm)["mu-k"].as<double>();
     if (vm->count("restitution")) r = (*vm)["restitution"].as<double>();
-    const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r);
+    std::optional<double> top;
+    if (vm->count("top")) top = (*vm)["top"].as<double>();
+    const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     dynamics::Options opt;
     const std::string integ = (*vm)["integrator"].as<std::string>();
     if (integ == "cd") opt.integrator = dynamics::Integrator::central_difference;

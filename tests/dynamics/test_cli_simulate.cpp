@@ -45,6 +45,7 @@ TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][erro
         {"--block b=0.1,h=0.6,m=3 --mu -0.2 --sine 0.5g,2Hz,1s", "--mu", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --restitution 1.5 --sine 0.5g,2Hz,1s", "--restitution", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --inertia -1 --sine 0.5g,2Hz,1s", "--inertia", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --top 0.3 --sine 0.5g,2Hz,1s", "--top", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2", "exactly one of --motion and --sine", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz", "--sine", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz,1s --integrator rk", "--integrator", 2},
