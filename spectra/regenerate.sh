@@ -1,10 +1,10 @@
 #!/bin/sh
 # Regenerates the shipped target spectra from the library (review the diff, never hand-edit):
-#   spectra/regenerate.sh [path/to/freestand]     (default: build/release/freestand)
+#   spectra/regenerate.sh [path/to/freestand]     (default: build/default/freestand)
 # Files are at 1.0 g (RG 1.60, EC8, IS 1893) or the stated SDS/SD1; 301 points 0.1-100 Hz.
 set -eu
 cd "$(dirname "$0")"
-exe=${1:-../build/release/freestand}
+exe=${1:-../build/default/freestand}
 for pct in 0.5 2 5 7 10; do
   d=$(awk "BEGIN{print $pct/100}")
   "$exe" target --design rg1.60 --pga 1 --damping "$d" --output "rg160-h-${pct}pct-1g.csv"
