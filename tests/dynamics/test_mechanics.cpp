@@ -92,3 +92,17 @@ TEST_CASE("overturning: criteria and modes", "[dynamics][mechanics]") {
     CHECK(r.overturn_criterion == dynamics::OverturnCriterion::angle_half_pi);
     CHECK(r.rock_max_rad == Approx(std::numbers::pi / 2).epsilon(1e-12));
 }
+
+TEST_CASE("asymmetric block uplifts over the edge with the smaller alpha", "[dynamics][mechanics]") {
+    // tan(alpha_L) = 0.2, tan(alpha_R) = 0.4; a base accelerating right tips it over the left
+    // edge (METHODS.md s.3 sign convention), so 0.3 g uplifts it one way only.
+    const auto blk = block::Block::general(0.1, 0.2, 0.5, 30.0, 1.5);
+    const auto model = dynamics::make_block_model(blk, 1.0);
+    for (auto integ : {dynamics::Integrator::event, dynamics::Integrator::central_difference}) {
+        const auto right = dynamics::simulate(model, test::samples(0.01, std::vector<double>(30, 0.3 * 9.81)), test::opts(integ));
+        CHECK(right.summary.rock_max_rad > 0.0);
+        CHECK(right.series[5].rotation_rad < 0.0);  // on the left edge
+        const auto left = dynamics::simulate(model, test::samples(0.01, std::vector<double>(30, -0.3 * 9.81)), test::opts(integ));
+        CHECK(left.summary.mode_changes == 0);
+    }
+}
