@@ -82,7 +82,7 @@ void spectral_checks(const Block& blk, const RockingInput& in, RockingChecks& ou
     fi.fixed_base_hz = in.fixed_base_hz;
     fi.rock_band_lo_hz = in.rock_band_lo_hz;
     fi.rock_band_hi_hz = in.rock_band_hi_hz;
-    fi.uplift_threshold_g = out.governing().uplift_a_g;
+    fi.uplift_threshold_g = std::min(out.left.uplift_a_g, out.right.uplift_a_g);
     fi.pga_h_g = out.pga_h_g.value_or(0.0);
     spectra::Spectrum s5 = d5.lo;
     // The screen reads psa_at on a spectrum: rebuild the 5% demand on its own points.
