@@ -44,7 +44,11 @@ Record read_at2(const std::filesystem::path& path) {
     if (!std::regex_search(header[3], m, npts_dt))
         throw InputError({file, 4, "NPTS/DT"},
                          "expected \"NPTS= n, DT= dt SEC\"; got \"" + header[3] + "\"");
-    const long npts = std::stol(m[1].str());
+    long npts = 0;
+    const std::string npts_text = m[1].str();
+    const auto npts_parse = std::from_chars(npts_text.data(), npts_text.data() + npts_text.size(), npts);
+    if (npts_parse.ec != std::errc() || npts <= 0 || npts > 100'000'000)
+        throw InputError({file, 4, "NPTS"}, "expected a point count between 1 and 1e8; got \"" + npts_text + "\"");
     double dt_s = 0.0;
     if (!parse_double(m[2].str(), dt_s) || !std::isfinite(dt_s) || dt_s <= 0.0)
         throw InputError({file, 4, "DT"}, "expected a time step > 0 s; got \"" + m[2].str() + "\"");
