@@ -10,8 +10,9 @@ namespace freestand::motion {
 /// w(t) = cos(omega' (t - t_peak + dt_shift)) exp(-((t - t_peak + dt_shift) / gamma)^2), with
 /// omega' = omega sqrt(1 - zeta^2), gamma = 1.178 f^-0.93 s (f in Hz) and
 /// dt_shift = atan(sqrt(1 - zeta^2) / zeta) / omega', so the oscillator's response to it peaks
-/// near t_peak. Symmetric about its centre and of near-zero mean, it adds no velocity or
-/// displacement drift once complete (|integral| / gamma < 1e-5 for f >= 0.1 Hz).
+/// near t_peak. Symmetric about its centre, its integral is gamma sqrt(pi) exp(-(omega' gamma/2)^2)
+/// (< 1e-4 gamma for f >= 0.1 Hz), so it adds almost no velocity or displacement drift; the
+/// matcher's two baseline rows remove the rest exactly.
 struct Wavelet {
     double frequency_hz = 0.0;  ///< oscillator frequency the wavelet carries
     double damping = 0.05;

@@ -1,0 +1,132 @@
+// Closed forms behind the matcher: Faddeeva function, wavelet response, end weights, RNG.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <complex>
+#include <random>
+
+#include "core/measures.hpp"
+#include "motion/criteria.hpp"
+#include "motion/faddeeva.hpp"
+#include "motion/internal.hpp"
+#include "motion/wavelet.hpp"
+
+using namespace freestand;
+using namespace freestand::motion;
+
+TEST_CASE("Faddeeva function against real closed forms", "[motion][faddeeva]") {
+    // w(iy) = exp(y^2) erfc(y) (real) and Re w(x) = exp(-x^2) on the real axis
+    // (Abramowitz & Stegun 7.1.3, 7.1.29); tolerance 1e-8 relative (stated accuracy).
+    for (double y : {0.0, 0.1, 0.5, 1.0, 2.0, 5.0, 7.9, 8.1, 20.0}) {
+        const std::complex<double> w = faddeeva_upper({0.0, y});
+        const double ref = std::exp(y * y) * std::erfc(y);  // erfc(20) ~ 5e-176, no underflow
+        CHECK(w.real() == Approx(ref).epsilon(1e-8));
+        CHECK(std::abs(w.imag()) < 1e-12);
+    }
+    for (double x : {0.0, 0.3, 1.0, 2.5, 4.0}) CHECK(faddeeva_upper({x, 0.0}).real() == Approx(std::exp(-x * x)).margin(1e-9));
+    // Dawson's function: Im w(x) = 2/sqrt(pi) F(x); F(1) = 0.5380795069127684 (A&S Table 7.5).
+    CHECK(faddeeva_upper({1.0, 0.0}).imag() == Approx(2.0 / std::sqrt(M_PI) * 0.5380795069127684).epsilon(1e-9));
+}
+
+namespace {
+// Direct midpoint quadrature of y(t) = w^2/wd int exp(-z w (t-s)) sin(wd (t-s)) a(s) ds.
+double brute_response(const Wavelet& w, double f_hz, double zeta, double t) {
+    const double om = 2 * M_PI * f_hz, wd = om * std::sqrt(1 - zeta * zeta), h = 2e-5;
+    double s = 0.0;
+    for (double x = w.start_s() - w.gamma_s; x < t; x += h) {
+        const double m = x + h / 2;
+        s += std::exp(-zeta * om * (t - m)) * std::sin(wd * (t - m)) * w.value(m) * h;
+    }
+    return om * om / wd * s;
+}
+}  // namespace
+
+TEST_CASE("closed-form wavelet response equals direct convolution", "[motion][wavelet]") {
+    // Tolerance 1e-6 of the peak response: the quadrature error at h = 2e-5 s.
+    for (double fw : {0.3, 2.0, 12.0})
+        for (double fo : {0.3, 2.0, 12.0, 40.0}) {
+            const Wavelet w = Wavelet::for_oscillator(fw, std::max(fw, fo), 0.05, 5.0);
+            const double scale = std::abs(wavelet_response(w, fw, 0.05, 5.0));
+            for (double t : {3.0, 4.9, 5.0, 5.2, 7.0}) {
+                INFO("fw " << fw << " fo " << fo << " t " << t);
+                CHECK(wavelet_response(w, fo, 0.05, t) == Approx(brute_response(w, fo, 0.05, t)).margin(1e-6 * scale));
+            }
+        }
+}
+
+TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual", "[motion][wavelet]") {
+    for (double f : {0.5, 2.0, 10.0}) {
+        const Wavelet w = Wavelet::at(f, 0.05, 10.0);
+        const double at_peak = wavelet_response(w, f, 0.05, 10.0);
+        // AA2010: the shift puts the oscillator's peak at t_peak, within a few % of a period.
+        double best = 0.0, best_t = 0.0;
+        for (double t = 10.0 - 0.3 / f; t <= 10.0 + 0.3 / f; t += 0.002 / f) {
+            const double y = std::abs(wavelet_response(w, f, 0.05, t));
+            if (y > best) { best = y; best_t = t; }
+        }
+        CHECK(std::abs(best_t - 10.0) * f < 0.06);
+        CHECK(at_peak > 0.98 * best);
+        // Velocity and displacement at the end of a 20 s record holding the whole wavelet.
+        core::Record r;
+        r.dt_s = 0.005;
+        r.accel_mps2.assign(4001 + static_cast<std::size_t>(8.0 * w.gamma_s / 0.005), 0.0);
+        add_wavelet(w, 1.0, r.dt_s, r.accel_mps2);
+        const core::GroundMotion gm = core::measure(r);
+        // int cos(W x) exp(-x^2/g^2) dx = g sqrt(pi) exp(-(W g / 2)^2); the displacement at the end
+        // is (T - centre) times that. 2% covers sampling and the +-4 gamma truncation.
+        const double v_ref = w.gamma_s * std::sqrt(M_PI) * std::exp(-std::pow(w.omega_d_radps * w.gamma_s / 2, 2));
+        INFO("f " << f << " pgv " << gm.pgv_mps);
+        // At 2 and 10 Hz the residual (< 3e-7) is of the size of the trapezoidal sampling error.
+        if (f < 1.0) {
+            CHECK(gm.final_velocity_mps == Approx(v_ref).epsilon(0.02));
+            CHECK(gm.final_displacement_m == Approx(v_ref * (r.duration_s() - w.centre_s)).epsilon(0.02));
+        }
+        CHECK(std::abs(gm.final_velocity_mps) < 1e-4 * gm.pgv_mps);
+    }
+}
+
+TEST_CASE("end weights reproduce the trapezoidal final velocity and displacement", "[motion][baseline]") {
+    core::Record r;
+    r.dt_s = 0.01;
+    std::mt19937_64 rng(7);
+    for (int i = 0; i < 1001; ++i) r.accel_mps2.push_back(uniform01(rng()) - 0.5);
+    const EndWeights w = end_weights(r.size(), r.dt_s);
+    double v = 0.0, d = 0.0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        v += w.velocity[i] * r.accel_mps2[i];
+        d += w.displacement[i] * r.accel_mps2[i];
+    }
+    const core::GroundMotion gm = core::measure(r);
+    CHECK(v == Approx(gm.final_velocity_mps).epsilon(1e-12));
+    CHECK(d == Approx(gm.final_displacement_m).epsilon(1e-10));
+}
+
+TEST_CASE("portable uniform transform and seed derivation", "[motion][rng]") {
+    CHECK(uniform01(0) == 0.0);
+    CHECK(uniform01(~0ull) == Approx(1.0 - 0x1.0p-53).epsilon(0));
+    CHECK(uniform01(~0ull) < 1.0);
+    // mt19937_64's 10000th output from the default seed is fixed by the standard (C++ [rand.predef]).
+    std::mt19937_64 g;
+    g.discard(9999);
+    CHECK(g() == 9981545732273789042ull);
+    CHECK(derive_seed(1, 0, 0) != derive_seed(1, 1, 0));
+    CHECK(derive_seed(1, 0, 0) != derive_seed(1, 0, 1));
+    CHECK(derive_seed(1, 2, 3) == derive_seed(1, 2, 3));
+}
+
+TEST_CASE("envelope: quadratic rise, flat strong part, exponential decay to end level", "[motion][envelope]") {
+    const Envelope e{};  // 2 s rise, 10 s strong, 0.05 at the end
+    CHECK(envelope_at(e, 0.0, 20.0) == 0.0);
+    CHECK(envelope_at(e, 1.0, 20.0) == Approx(0.25));
+    CHECK(envelope_at(e, 7.0, 20.0) == 1.0);
+    CHECK(envelope_at(e, 20.0, 20.0) == Approx(0.05));
+    CHECK(envelope_at(e, 16.0, 20.0) == Approx(std::sqrt(0.05)));
+}
+
+TEST_CASE("check band follows Nyquist and SRP point density", "[motion][criteria]") {
+    CHECK(criteria::band_high_for(0.005) == 50.0);
+    CHECK(criteria::band_high_for(0.02) == 25.0);
+    const auto f = criteria::check_frequencies(0.005);
+    CHECK(f.front() == 0.1);
+    CHECK(f.back() == 50.0);
+    CHECK(static_cast<double>(f.size() - 1) >= 100.0 * std::log10(500.0) - 1e-9);
+}
