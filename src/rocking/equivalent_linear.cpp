@@ -31,18 +31,25 @@ struct Scan {
 
     // f_e with gravity g (1 - 0.4 SA_V(f_e)): p scales with sqrt(g), so f_e solves
     // f = f_g sqrt(q(f)). Residual f - f_g sqrt(q(f)) is >= 0 at f_g (q <= 1) and < 0 as f -> 0
-    // (psa_at -> 0 there, q -> 1), so bisection on (0, f_g] brackets a root.
+    // (psa_at -> 0 there, q -> 1), so (0, f_g] brackets a root. Safeguarded fixed-point
+    // iteration: the image f_g sqrt(q(f)) is taken when it falls inside the bracket and the
+    // bracket halved at least every other step; otherwise bisection (a steep SA_V makes the map
+    // expansive).
     double frequency_hz(double theta) const {
         const double fg = rocking_frequency_hz(p_radps, alpha, theta);
         if (!has_vertical()) return fg;
-        auto q = [&](double f) { return std::max(0.0, 1.0 - 0.4 * sa_v_g(f)); };
-        if (q(fg) == 1.0) return fg;
-        double lo = 0.0, hi = fg;
-        for (int it = 0; it < 200 && hi - lo > 1e-13 * fg; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (mid - fg * std::sqrt(q(mid)) < 0.0 ? lo : hi) = mid;
+        auto image = [&](double f) { return fg * std::sqrt(std::max(0.0, 1.0 - 0.4 * sa_v_g(f))); };
+        double lo = 0.0, hi = fg, f = fg, width = fg;
+        for (int it = 0; it < 200; ++it) {
+            const double next = image(f);
+            if (std::abs(next - f) <= 1e-13 * fg) return next;
+            (f - next < 0.0 ? lo : hi) = f;
+            const bool shrunk = hi - lo <= 0.5 * width;
+            if (shrunk) width = hi - lo;
+            f = (next > lo && next < hi && (shrunk || it % 2 == 0)) ? next : 0.5 * (lo + hi);
+            if (hi - lo <= 1e-13 * fg) return f;
         }
-        return hi;
+        return f;
     }
 
     // Demand minus capacity, g.

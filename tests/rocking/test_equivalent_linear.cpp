@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -168,6 +169,35 @@ TEST_CASE("vertical spectrum lowers the effective gravity and the rocking freque
     CHECK(rr.pga_v_g == 0.25);
     CHECK(*rr.theta0_rad == Approx(theta0).epsilon(1e-9));
     CHECK(*rr.f_e_hz < fg);
+}
+
+TEST_CASE("effective frequency solves its equation for a steep vertical spectrum",
+          "[rocking][el]") {
+    // SA_V = 0.5 (f / 2)^6 g: the map f -> f_g sqrt(1 - 0.4 SA_V(f)) is expansive near 2 Hz, so
+    // the solver must fall back on its bracket. Whatever path it takes, f_e must satisfy
+    // f_e = f_g(theta0) sqrt(1 - 0.4 SA_V(f_e)); theta0 is unchanged (constant-SD demand).
+    Spectrum sv;
+    sv.damping = 0.05;
+    sv.label = "steep vertical";
+    for (double f : {0.5, 1.0, 2.0, 4.0}) {
+        sv.frequency_hz.push_back(f);
+        sv.psa_g.push_back(0.5 * std::pow(f / 2.0, 6));
+    }
+    const double d = 0.05;
+    const double a = steel.alpha_rad(Edge::left);
+    const double theta0 = a - std::asin(std::sin(a) - d / steel.R_m(Edge::left));
+    VerticalDemand v;
+    v.spectra = any_damping(sv);
+    ElOptions o;
+    o.pga_h_g = 0.5;
+    o.pga_v_g = 0.1;
+    const ElResult r = equivalent_linear_rocking(steel, Edge::left, any_damping(constant_sd(d)), v, o);
+    REQUIRE(r.theta0_rad);
+    CHECK(*r.theta0_rad == Approx(theta0).epsilon(1e-9));
+    const double fg = rocking_frequency_hz(steel.p_radps(Edge::left), a, *r.theta0_rad);
+    const double fe = *r.f_e_hz;
+    CHECK(fe < fg);
+    CHECK(fe == Approx(fg * std::sqrt(std::max(0.0, 1.0 - 0.4 * sv.psa_at(fe)))).epsilon(1e-10));
 }
 
 TEST_CASE("restitution: Housner's by default, a measured one overrides it", "[rocking][el]") {
