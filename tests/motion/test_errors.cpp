@@ -1,0 +1,72 @@
+// Every user-reachable error path of the motion stage: type and message.
+#include <catch2/catch.hpp>
+
+#include "core/errors.hpp"
+#include "core/readers.hpp"
+#include "motion/motion.hpp"
+
+using namespace freestand;
+using Catch::Contains;
+
+namespace {
+spectra::Spectrum good() {
+    spectra::Spectrum s;
+    s.damping = 0.05;
+    s.frequency_hz = {0.1, 1.0, 10.0, 50.0};
+    s.psa_g = {0.02, 0.5, 0.6, 0.2};
+    s.label = "user target";
+    return s;
+}
+motion::TargetSet targets() { return motion::ratio_targets("t", good(), std::nullopt, 2.0 / 3.0); }
+}  // namespace
+
+TEST_CASE("bad targets are InputErrors naming the point", "[motion][errors]") {
+    auto s = good();
+    s.psa_g[2] = 0.0;
+    CHECK_THROWS_MATCHES(motion::validate_target(s, 0.05), InputError, Catch::Message("user target: point 3: PSA 0 g at 10 Hz; expected finite > 0"));
+    s = good();
+    s.frequency_hz[2] = 1.0;
+    CHECK_THROWS_MATCHES(motion::validate_target(s, 0.05), InputError,
+                         Catch::Message("user target: point 3: frequency 1 Hz not above the previous 1 Hz; frequencies must be strictly increasing"));
+    s = good();
+    s.damping = 0.02;
+    CHECK_THROWS_WITH(motion::validate_target(s, 0.05), Contains("user target: damping 0.02"));
+    CHECK_THROWS_WITH(motion::validate_target(s, 0.05), Contains("give a 0.05 target"));
+    s = good();
+    s.psa_g.pop_back();
+    CHECK_THROWS_AS(motion::validate_target(s, 0.05), InputError);
+    CHECK_THROWS_WITH(motion::ratio_targets("t", good(), std::nullopt, 0.0), Contains("vertical_ratio"));
+}
+
+TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[motion][errors]") {
+    motion::GenerateOptions o;
+    o.components = {"h1"};
+    o.dt_s = 0.02;
+    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
+                         Catch::Message("dt_s: dt 0.02 s is too coarse: SRP 3.7.1 needs dt <= 0.01 s, and the Nyquist "
+                                        "frequency 25 Hz is below the 50 Hz top of the acceptance band"));
+    o.dt_s = 0.005;
+    o.duration_s = 10.0;
+    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
+                         Catch::Message("duration_s: duration 10 s is too short: SRP 3.7.1 needs >= 20 s"));
+    o.duration_s = 20.0;
+    o.components = {"h1", "x"};
+    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
+                         Catch::Message("components: unknown component \"x\"; expected h1, h2 or v"));
+    o.components = {"h1", "h1"};
+    CHECK_THROWS_WITH(motion::generate_set(targets(), o), Contains("given twice"));
+    o.components = {"h1", "h2"};
+    o.seed_records = {core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2")};
+    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
+                         Catch::Message("seed_records: 1 seed records for 2 components; give one seed record per component"));
+    core::Record short_rec = o.seed_records[0];
+    short_rec.accel_mps2.resize(2000);  // 10 s
+    short_rec.source = "short.AT2";
+    o.components = {"h1"};
+    o.seed_records = {short_rec};
+    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
+                         Catch::Message("short.AT2: duration: seed record lasts 9.995 s; SRP 3.7.1 needs >= 20 s"));
+    motion::Envelope e;
+    e.strong_s = 30.0;
+    CHECK_THROWS_WITH(motion::synthesize(targets().horizontal, 20.0, 0.005, 1, e), Contains("exceed the duration 20 s"));
+}
