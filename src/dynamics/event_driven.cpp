@@ -84,6 +84,16 @@ double first_quadratic_root(double c0, double c1, double c2, double tmin, double
     return best;
 }
 
+// False only if sigma (v + c0 t + c1 t^2 / 2) > 0 on all of (0, span]: the end value and, when
+// the vertex t = -c0/c1 lies inside, the extremum are on the slip side. Saves the root solve
+// on most segments.
+bool may_stop(double v, double c0, double c1, double span, double sigma) {
+    if (v == 0.0 || sigma * v <= 0.0) return true;
+    if (sigma * (v + span * (c0 + 0.5 * c1 * span)) <= 0.0) return true;
+    const bool vertex_inside = c0 * c1 < 0.0 && std::abs(c0) < std::abs(c1) * span;
+    return vertex_inside && sigma * (v - c0 * c0 / (2.0 * c1)) <= 0.0;
+}
+
 class Engine {
 public:
     Engine(const Geometry& g, const BaseMotion& bm, const Options& o, Recorder& rec, BlockState& st)
@@ -150,8 +160,7 @@ private:
 
     double advance_rest(double t) {
         const Base a = seg_.at(t), b = seg_.at(tb_);
-        const double cl = std::min(g_.mu_s, g_.tan_alpha[0]);
-        const double cr = std::min(g_.mu_s, g_.tan_alpha[1]);
+        const double cl = g_.c_rest[0], cr = g_.c_rest[1];
         // Rest holds while every function is <= 0 (section 2); each is linear on the segment.
         const double ha[3] = {a.ax - cl * a.G, -a.ax - cr * a.G, -a.G};
         const double hb[3] = {b.ax - cl * b.G, -b.ax - cr * b.G, -b.G};
@@ -183,7 +192,9 @@ private:
         // Starting from u' = 0 the direction was chosen at the probe time t + delta (the start
         // may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots before it.
         const double delta = st_.v == 0.0 ? std::min(1e-9, 0.5 * span) : 0.0;
-        double tau = first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span);
+        double tau = may_stop(st_.v, c0, c1, span, dsig)
+                         ? first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span)
+                         : std::numeric_limits<double>::infinity();
         Ev ev = tau <= span ? Ev::stop : Ev::none;
         if (st_.v == 0.0 && !(dsig * (c0 + c1 * delta) > 0.0)) {
             tau = 0.0;  // pushed against its slip direction: a stop now
@@ -502,16 +513,29 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
     rec.observe(st);
     rec.sample(0.0, st, b0);
     Engine engine(g, bm, o, rec, st);
-    const double dt = bm.dt();
+    const double dt = bm.dt(), min_end = bm.min_end_s();
     for (std::size_t k = 0; k < n_seg; ++k) {
+        // The rest inequalities are linear on a segment: holding at both samples, they hold
+        // throughout, so whole runs of such segments are passed without the engine.
+        if (st.mode == Mode::rest && rest_holds(g, bm.sample(k))) {
+            // Last segment end the run may reach: the first sample at or after min_end.
+            const auto j_max = std::min<std::size_t>(
+                n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(std::ceil(min_end / dt - 1e-9))));
+            std::size_t j = k;
+            double peak = 0.0;
+            for (; j < j_max; ++j) {
+                const Base b = bm.sample(j + 1);
+                if (!rest_holds(g, b)) break;
+                peak = std::max(peak, std::abs(b.ax));
+            }
+            rec.rest_samples(bm, k + 1, j + 1, st, peak);
+            rec.time_in(Mode::rest, dt * static_cast<double>(j - k));
+            if (j == n_seg || (j > k && bm.t_k(j) >= min_end))
+                return rec.finish(st, bm.t_k(j), integrator_name(Integrator::event));
+            k = j;
+        }
         double t = bm.t_k(k);
         const double tb = bm.t_k(k + 1);
-        // The rest inequalities are linear on a segment: holding at both samples, they hold
-        // throughout (no event possible), so the segment is skipped without the engine.
-        if (st.mode == Mode::rest && rest_holds(g, bm.sample(k)) && rest_holds(g, bm.sample(k + 1))) {
-            rec.time_in(Mode::rest, dt);
-            t = tb;
-        }
         while (t < tb) {
             t = engine.advance(k, t, tb);
             if (rec.overturned()) return rec.finish(st, t, integrator_name(Integrator::event));

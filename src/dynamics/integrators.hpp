@@ -79,6 +79,10 @@ public:
     bool overturned() const { return summary_.overturned; }
     /// Output sample at time t (also tracks the peak top acceleration).
     void sample(double t_s, const BlockState& st, Base base);
+    /// Samples i0 <= i < i1 of a block at rest (the hot path of long records); peak_ax_mps2 is
+    /// the largest |xg''| among them.
+    void rest_samples(const BaseMotion& bm, std::size_t i0, std::size_t i1, const BlockState& st,
+                      double peak_ax_mps2);
     SimulationResult finish(const BlockState& st, double end_time_s, const char* integrator);
 
 private:

@@ -30,6 +30,7 @@ Geometry make_geometry(const BlockModel& model) {
         g.cos_alpha[k] = std::cos(g.alpha[k]);
         g.tan_alpha[k] = blk.tan_alpha(edges[i]);
         g.IO[k] = blk.inertia_edge_kgm2(edges[i]);
+        g.c_rest[k] = std::min(g.mu_s, g.tan_alpha[k]);
     }
     for (std::size_t i = 0; i < 2; ++i) {
         if (model.restitution) {
@@ -90,13 +91,6 @@ Accel slide_accel(const Geometry& g, int sigma, Base base) {
     a.N = g.M * base.G;
     a.F = -dsig * g.mu_k * a.N;
     return a;
-}
-
-bool rest_holds(const Geometry& g, Base base) {
-    // Section 2: |xg''| <= min(mu_s, tan alpha) G for the edge it would tip over (base
-    // accelerating right tips it over the left edge).
-    return base.G >= 0.0 && base.ax <= std::min(g.mu_s, g.tan_alpha[0]) * base.G &&
-           -base.ax <= std::min(g.mu_s, g.tan_alpha[1]) * base.G;
 }
 
 Start classify_sliding(const Geometry& g, double v) {

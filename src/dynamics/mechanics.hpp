@@ -19,6 +19,8 @@ struct Geometry {
     std::array<double, 2> b{}, R{}, alpha{}, sin_alpha{}, cos_alpha{}, tan_alpha{}, IO{};
     /// Restitution for an impact that lands on edge [i] (rotation leaves the other edge).
     std::array<double, 2> r_onto{};
+    /// Rest limit on |xg''| / G towards edge [i]: min(mu_s, tan(alpha_i)) (section 2).
+    std::array<double, 2> c_rest{};
 
     static int index(int s) { return s > 0 ? 1 : 0; }
 };
@@ -55,8 +57,12 @@ struct Start {
 };
 Start classify_from_rest(const Geometry& g, Base base);
 
-/// True if the block at rest satisfies the rest inequalities of section 2.
-bool rest_holds(const Geometry& g, Base base);
+/// True if the block at rest satisfies the rest inequalities of section 2: |xg''| <= min(mu_s,
+/// tan(alpha)) G for the edge it would tip over (a base accelerating right tips it over the left
+/// edge) and G >= 0.
+inline bool rest_holds(const Geometry& g, Base base) {
+    return base.G >= 0.0 && base.ax <= g.c_rest[0] * base.G && -base.ax <= g.c_rest[1] * base.G;
+}
 
 /// Contact mode for a block rocking on edge s with slip velocity v (after an impact or a lift
 /// from flat): slide-rock if v != 0, else rock if the friction it needs is available, else

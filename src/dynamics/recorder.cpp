@@ -8,13 +8,15 @@ namespace freestand::dynamics::detail {
 BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
     : dt_(e.dt_s), inv_dt_(1.0 / e.dt_s), g_(g_mps2), x_(e.horizontal_mps2), y_(e.vertical_mps2) {
     std::size_t last = 0;  // one past the last non-zero sample
-    for (std::size_t i = 0; i < x_.size(); ++i)
-        if (x_[i] != 0.0) last = i + 1;
+    for (std::size_t i = 0; i < x_.size(); ++i) {
+        const double a = std::abs(x_[i]);
+        pga_ = std::max(pga_, a);
+        if (a != 0.0) last = i + 1;
+    }
     for (std::size_t i = 0; i < y_.size(); ++i)
         if (y_[i] != 0.0) last = std::max(last, i + 1);
     quiet_from_ = dt_ * static_cast<double>(last);
     duration_ = e.duration_s();
-    for (double a : x_) pga_ = std::max(pga_, std::abs(a));
 }
 
 std::size_t BaseMotion::segments(double tail_s) const {
@@ -53,6 +55,7 @@ void Recorder::observe(const BlockState& st) {
         return;
     }
     summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.u));
+    if (st.th <= 0.0) return;
     if (st.th > summary_.rock_max_rad) summary_.rock_max_rad = st.th;
     const double ratio = st.th / g_.alpha[static_cast<std::size_t>(Geometry::index(st.s))];
     summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
@@ -115,6 +118,13 @@ void Recorder::sample(double t_s, const BlockState& st, Base base) {
     smp.friction_force_N = a.F;
     smp.top_accel_mps2 = top;
     series_.push_back(smp);
+}
+
+void Recorder::rest_samples(const BaseMotion& bm, std::size_t i0, std::size_t i1,
+                            const BlockState& st, double peak_ax_mps2) {
+    summary_.top_accel_max_g = std::max(summary_.top_accel_max_g, peak_ax_mps2 / g_mps2_);
+    if (!record_series_) return;
+    for (std::size_t i = i0; i < i1; ++i) sample(bm.t_k(i), st, bm.sample(i));
 }
 
 SimulationResult Recorder::finish(const BlockState& st, double end_time_s, const char* integrator) {
