@@ -84,7 +84,7 @@ struct Rocking {
     double restitution = 0.0;
     double uplift_a_g = 0.0;          ///< A at which uplift starts, g
     double ishiyama_v_mps = 0.0;      ///< velocity bound below which it cannot overturn
-    double pgv_mps = 0.0;             ///< peak ground velocity compared with it
+    std::optional<double> pgv_mps;    ///< mean PGV of the histories, when they were generated
     bool gate_passed = false;         ///< s.5a gate: PGA > (1 - 0.4 A_v) tan(alpha)
     std::optional<double> theta_rad;  ///< s.5a estimate; absent when gated out or overturning
     bool overturn_predicted = false;  ///< s.5a found no theta below alpha

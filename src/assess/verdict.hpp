@@ -17,20 +17,21 @@ struct SimulationNeed {
     std::string reason;
 };
 
-/// Policy "auto": rest -> no; slide -> only when the larger closed-form estimate lies in
-/// (allowable / 2, allowable] (the simulation can only raise the governing value, which is the
-/// largest estimate) or when no closed form applies although the block slides; rock and
-/// slide-rock -> always (the s.5a estimate is a screen, the simulation the reference).
+/// Policy "auto": rest -> no; slide -> only when the ASCE 4 and energy estimates straddle the
+/// allowable (one within, one beyond) or no closed form applies although the block slides;
+/// rock and slide-rock -> always (the s.5a estimate is a screen, the simulation the reference).
 /// "always" / "never" override. Reads only initiation, sliding and rocking of `closed`.
 SimulationNeed simulation_need(const LevelResult& closed, double allowable_slide_m,
                                SimulatePolicy policy);
 
 /// Verdict of one level with the case's own base. Sliding (modes slide, slide-rock, or any
-/// simulated slip >= 1 mm) governs by the largest of the ASCE 4, energy, simulated peak and
-/// simulated residual slip against allowable_slide_m; failing it gives upgrade_material (material
-/// left empty until the search). Rocking (rock, slide-rock) is decided by the simulation when
-/// run (any overturned history, or alpha / theta_max below required_fs, fails), otherwise by
-/// the s.5a factor of safety; failing it gives anchor. The worse of the two is returned.
+/// simulated slip >= 1 mm) against allowable_slide_m: with a simulation, the larger of its peak
+/// and residual slip (max over histories) governs (the reference, METHODS.md s.4); without, the
+/// closed forms: the larger governs, except that when both exceed the allowable the smaller
+/// decides the failure. Failing gives upgrade_material (material set after the search).
+/// Rocking (rock, slide-rock) is decided by the simulation when run (any overturned history,
+/// or alpha / theta_max below required_fs, fails), otherwise by the s.5a factor of safety;
+/// failing gives anchor. The more severe of the two is returned.
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs);
 
 /// True for acceptable and acceptable_with_clearance.

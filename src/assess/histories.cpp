@@ -1,0 +1,102 @@
+#include "assess/histories.hpp"
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/measures.hpp"
+#include "core/readers.hpp"
+#include "spectra/design.hpp"
+
+namespace freestand::assess {
+
+namespace {
+
+// Target spectra are tabulated over 0.05-100 Hz, covering the acceptance band 0.1-50 Hz.
+std::vector<double> target_frequencies() { return spectra::log_frequencies(0.05, 100.0, 100); }
+
+motion::TargetSet unit_targets(const Site& site) {
+    const auto f = target_frequencies();
+    motion::TargetSet t = motion::ratio_targets(
+        fmt::format("RG 1.60 horizontal, vertical {:.4f} x horizontal, PGA 1 g", site.vertical_ratio),
+        spectra::rg160(1.0, 0.05, false, f), spectra::rg160(1.0, 0.10, false, f),
+        site.vertical_ratio);
+    t.horizontal.rg160_psd_pga_g = 1.0;  // the RG 1.60 target PSD applies to the horizontals
+    return t;
+}
+
+}  // namespace
+
+HistoryBank::HistoryBank(const Case& c) : case_(&c) {}
+
+std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
+    // splitmix64 (Steele, Lea & Flood 2014) of the pair.
+    std::uint64_t z = case_seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k + 1);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+const std::vector<HistorySet>& HistoryBank::sets() {
+    if (generated_) return sets_;
+    const Options& opt = case_->options;
+    const std::size_t n = static_cast<std::size_t>(opt.histories_per_level);
+    if (!opt.seed_records.empty() && opt.seed_records.size() != 3 * n) {
+        throw InputError(SourceLocation{case_->file, 0, "options.seed_records"},
+                         fmt::format("expected 3 records (h1, h2, v) per history, {} in all for "
+                                     "histories_per_level = {}, got {}",
+                                     3 * n, n, opt.seed_records.size()));
+    }
+    const motion::TargetSet targets = unit_targets(case_->site);
+    for (std::size_t k = 0; k < n; ++k) {
+        motion::GenerateOptions go;
+        go.seed = history_seed(opt.seed, static_cast<int>(k));
+        for (std::size_t j = 0; j < 3 && !opt.seed_records.empty(); ++j) {
+            go.seed_records.push_back(core::read_record(opt.seed_records[3 * k + j]));
+        }
+        const motion::GeneratedSet g = motion::generate_set(targets, go);
+        HistorySet s;
+        s.h1 = g.components.at(0).record;
+        s.h2 = g.components.at(1).record;
+        s.v = g.components.at(2).record;
+        for (const auto& comp : g.components) s.acceptance.push_back(comp.acceptance);
+        s.correlations = g.correlations;
+        s.passed = g.passed;
+        s.method = g.components.at(0).method;
+        const core::GroundMotion gx = core::measure(s.h1);
+        const core::GroundMotion gy = core::measure(s.h2);
+        unit_pgd_x_m_.push_back(gx.pgd_m);
+        unit_pgd_y_m_.push_back(gy.pgd_m);
+        unit_pgv_x_mps_.push_back(gx.pgv_mps);
+        unit_pgv_y_mps_.push_back(gy.pgv_mps);
+        sets_.push_back(std::move(s));
+    }
+    generated_ = true;
+    return sets_;
+}
+
+core::Record HistoryBank::scaled(const core::Record& unit, double pga_g) {
+    core::Record r = unit;
+    for (double& a : r.accel_mps2) a *= pga_g;
+    return r;
+}
+
+namespace {
+// Peak measures are linear in the scale of the record.
+double scaled_mean(const std::vector<double>& unit, double pga_g) {
+    double sum = 0.0;
+    for (double v : unit) sum += v;
+    return pga_g * sum / static_cast<double>(unit.size());
+}
+}  // namespace
+
+double HistoryBank::mean_pgd_m(Direction d, double pga_g) {
+    sets();
+    return scaled_mean(d == Direction::x ? unit_pgd_x_m_ : unit_pgd_y_m_, pga_g);
+}
+
+double HistoryBank::mean_pgv_mps(Direction d, double pga_g) {
+    sets();
+    return scaled_mean(d == Direction::x ? unit_pgv_x_mps_ : unit_pgv_y_mps_, pga_g);
+}
+
+}  // namespace freestand::assess

@@ -1,0 +1,58 @@
+#pragma once
+/// Spectrum-compatible histories of a case, generated once on first use and shared by every
+/// level, direction and material trial. RG 1.60 with a vertical ratio is linear in the PGA, so
+/// the sets are matched at 1 g and scaled: a scaled record matches the scaled target with the
+/// same ratios (response spectra are linear in the input).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "assess/case.hpp"
+#include "core/record.hpp"
+#include "motion/motion.hpp"
+
+namespace freestand::assess {
+
+/// One three-component history at the reference PGA of 1 g.
+struct HistorySet {
+    core::Record h1;  ///< applied along x
+    core::Record h2;  ///< applied along y
+    core::Record v;   ///< vertical, positive up
+    std::vector<motion::Acceptance> acceptance;  ///< h1, h2, v at 1 g (ratios scale-free)
+    std::vector<motion::Correlation> correlations;
+    bool passed = false;
+    std::string method;
+};
+
+class HistoryBank {
+public:
+    /// Nothing is generated until sets() is first called.
+    explicit HistoryBank(const Case& c);
+
+    /// The options.histories_per_level sets at 1 g, generating them on first call. Throws
+    /// InputError when options.seed_records is not three records (h1, h2, v) per history.
+    const std::vector<HistorySet>& sets();
+    bool generated() const { return generated_; }
+
+    /// The horizontal record of a direction scaled to pga_g, in m/s^2.
+    static core::Record scaled(const core::Record& unit, double pga_g);
+    /// Mean peak ground displacement of the direction's horizontal records at pga_g, m.
+    double mean_pgd_m(Direction d, double pga_g);
+    /// Mean peak ground velocity of the direction's horizontal records at pga_g, m/s.
+    double mean_pgv_mps(Direction d, double pga_g);
+
+    /// The seed of history k derived from the case seed (splitmix64, so nearby case seeds give
+    /// unrelated streams).
+    static std::uint64_t history_seed(std::uint64_t case_seed, int k);
+
+private:
+    const Case* case_;
+    bool generated_ = false;
+    std::vector<HistorySet> sets_;
+    std::vector<double> unit_pgd_x_m_;
+    std::vector<double> unit_pgd_y_m_;
+    std::vector<double> unit_pgv_x_mps_;
+    std::vector<double> unit_pgv_y_mps_;
+};
+
+}  // namespace freestand::assess

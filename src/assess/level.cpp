@@ -1,0 +1,250 @@
+#include "assess/level.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "assess/verdict.hpp"
+#include "core/measures.hpp"
+#include "core/units.hpp"
+#include "rocking/checks.hpp"
+#include "rocking/equivalent_linear.hpp"
+#include "rocking/flexible.hpp"
+#include "sliding/asce.hpp"
+#include "sliding/initiation.hpp"
+#include "sliding/spectrum_input.hpp"
+#include "spectra/design.hpp"
+
+namespace freestand::assess {
+
+namespace {
+
+// RG 1.60 tabulates these dampings (METHODS.md s.8).
+constexpr std::array<double, 5> rg160_dampings{0.005, 0.02, 0.05, 0.07, 0.10};
+
+Mode to_mode(sliding::Mode m) {
+    switch (m) {
+        case sliding::Mode::rest: return Mode::rest;
+        case sliding::Mode::slide: return Mode::slide;
+        case sliding::Mode::rock: return Mode::rock;
+        case sliding::Mode::slide_rock: return Mode::slide_rock;
+    }
+    return Mode::rest;
+}
+
+spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
+    const spectra::Spectrum h = spectra::rg160(pga_g, damping, false, design_frequencies());
+    // Both horizontals follow the same RG 1.60 target: SA_VH = sqrt(1 + 0.16) SA_H.
+    return sliding::vector_horizontal({h, h}, damping);
+}
+
+FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, const LevelDemand& dem) {
+    FlexibleFlag out;
+    const block::Edge e = blk.critical_edge();
+    out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
+    if (!comp.fixed_base_frequency_hz && !comp.free_rocking_band_hz) {
+        out.reason = "no fixed-base frequency or free-rocking band given: treated as rigid";
+        return out;
+    }
+    rocking::FlexibleInput in;
+    in.fixed_base_hz = comp.fixed_base_frequency_hz;
+    if (comp.free_rocking_band_hz) {
+        in.rock_band_lo_hz = (*comp.free_rocking_band_hz)[0];
+        in.rock_band_hi_hz = (*comp.free_rocking_band_hz)[1];
+    }
+    in.uplift_threshold_g = out.uplift_a_g;
+    in.pga_h_g = dem.pga_g;
+    const rocking::FlexibleScreen s = rocking::flexible_screen(dem.h5, in);
+    out.raised = s.flagged;
+    out.band_lo_hz = s.band_lo_hz;
+    out.band_hi_hz = s.band_hi_hz;
+    out.peak_psa_in_band_g = s.peak_psa_g;
+    out.reason = s.reason;
+    std::vector<std::string> basis;
+    if (comp.fixed_base_frequency_hz) basis.push_back(fmt::format("fixed-base {:.2f} Hz", *comp.fixed_base_frequency_hz));
+    if (comp.free_rocking_band_hz) {
+        basis.push_back(fmt::format("free-rocking band {:.2f}-{:.2f} Hz", (*comp.free_rocking_band_hz)[0],
+                                    (*comp.free_rocking_band_hz)[1]));
+    }
+    out.basis = fmt::format("{}", fmt::join(basis, "; "));
+    return out;
+}
+
+Sliding closed_form_sliding(const Case& c, const BaseContact& base, Direction d, Mode mode,
+                            const LevelDemand& dem, HistoryBank& bank) {
+    Sliding out;
+    out.mu_e = sliding::effective_friction(base.mu_s, dem.pga_v_g);
+    out.c_s_mps2 = 2.0 * out.mu_e * units::g_mps2;
+    if (mode == Mode::rest || mode == Mode::rock) {
+        out.reason = mode == Mode::rest ? "at rest: the sliding methods do not apply"
+                                        : "the block rocks with friction holding: no sliding";
+        return out;
+    }
+    const sliding::Crossing cross = sliding::lowest_crossing(dem.sa_vh_slide, out.c_s_mps2 / units::g_mps2);
+    if (!cross.f_hz) {
+        out.reason = "ASCE 4: " + cross.reason;
+        return out;
+    }
+    // DeltaD of the energy method is the table (ground) displacement of the matched histories,
+    // as in METHODS.md s.4's worked example (DeltaD = 0.040 m at 0.2 g).
+    out.pgd_m = bank.mean_pgd_m(d, dem.pga_g);
+    out.pgd_source = fmt::format("mean PGD of the {} matched {} histories", c.options.histories_per_level,
+                                 d == Direction::x ? "h1" : "h2");
+    sliding::SlidingInput in;
+    in.mu_s = base.mu_s;
+    in.av_g = dem.pga_v_g;
+    in.pgd_m = out.pgd_m;
+    in.pga_h_g = dem.pga_g;
+    const sliding::SlidingEstimate est = sliding::estimate_sliding(in, *cross.f_hz);
+    out.f_es_hz = est.f_es_hz;
+    out.slide_asce_m = est.slide_asce_m;
+    out.slide_energy_m = est.slide_energy_m;
+    std::vector<std::string> reasons;
+    if (!est.slide_asce_m) reasons.push_back("ASCE 4: " + est.slide_asce_reason);
+    if (!est.slide_energy_m) reasons.push_back("energy: " + est.slide_energy_reason);
+    out.reason = fmt::format("{}", fmt::join(reasons, "; "));
+    return out;
+}
+
+rocking::ElBlockResult equivalent_linear(const Case& c, const BaseContact& base,
+                                         const block::Block& blk, Direction d,
+                                         const LevelDemand& dem) {
+    auto& cached = dem.el_cache[d == Direction::x ? 0 : 1];
+    const bool cacheable = base.restitution == c.component.base.restitution;
+    if (cacheable && cached) return *cached;
+    rocking::ElOptions opt;
+    opt.pga_h_g = dem.pga_g;
+    opt.pga_v_g = dem.pga_v_g;
+    opt.restitution = base.restitution;
+    opt.fs_required = c.component.required_overturn_fs;
+    rocking::VerticalDemand vertical;
+    vertical.ratio = c.site.vertical_ratio;
+    rocking::ElBlockResult result = rocking::equivalent_linear_rocking(blk, dem.sa_vh_damped, vertical, opt);
+    if (cacheable) cached = result;
+    return result;
+}
+
+// The s.5a estimate is computed only for the rocking modes: at rest or sliding the verdict does
+// not read it, and it dominates the closed-form cost.
+Rocking closed_form_rocking(const Case& c, const BaseContact& base, const block::Block& blk,
+                            Direction d, Mode mode, double mu_s, const LevelDemand& dem) {
+    Rocking out;
+    const block::Edge e = blk.critical_edge();
+    out.alpha_rad = blk.alpha_rad(e);
+    out.R_m = blk.R_m(e);
+    out.p_radps = blk.p_radps(e);
+    out.restitution = base.restitution.value_or(blk.housner_restitution(e));
+    out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
+    out.ishiyama_v_mps = rocking::ishiyama_velocity_mps(blk, e);
+    const double A = dem.pga_g / (1.0 - dem.pga_v_g);
+    if (mode == Mode::rock || mode == Mode::slide_rock) {
+        const rocking::ElBlockResult el = equivalent_linear(c, base, blk, d, dem);
+        const rocking::ElResult& g = el.governing();
+        out.gate_passed = g.gate_exceeded;
+        out.theta_rad = g.theta0_rad;
+        out.overturn_predicted = g.overturning_predicted;
+        out.overturn_fs = g.fs;
+        out.spectral_margin = g.spectral_margin;
+    }
+    if (mode == Mode::rest) out.amplification_estimate = 1.0;
+    // Sliding caps the block's acceleration at about mu g (METHODS.md s.5).
+    if (mode == Mode::slide) out.amplification_estimate = std::min(1.0, mu_s / A);
+    return out;
+}
+
+}  // namespace
+
+std::vector<double> design_frequencies() { return spectra::log_frequencies(0.05, 100.0, 100); }
+
+LevelDemand level_demand(const Site& site, double pga_g) {
+    std::vector<spectra::Spectrum> damped;
+    for (double d : rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
+    return LevelDemand{pga_g, site.vertical_ratio * pga_g,
+                       spectra::rg160(pga_g, 0.05, false, design_frequencies()),
+                       vector_horizontal_target(pga_g, site.sliding_damping),
+                       rocking::DampedSpectra(std::move(damped)), {}};
+}
+
+dynamics::BlockModel block_model(const Component& comp, const BaseContact& base, Direction d) {
+    const block::Block blk = comp.block(d);
+    // Top corners at twice the CG height: the uniform-block default of the simulator.
+    return dynamics::make_block_model(blk, base.mu_s, base.mu_k, base.restitution);
+}
+
+dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g) {
+    const core::Record& h = d == Direction::x ? set.h1 : set.h2;
+    return dynamics::excitation_from_record(h, pga_g, &set.v, pga_g);
+}
+
+Simulation simulate_level(const Case& c, const BaseContact& base, Direction d, double pga_g,
+                          HistoryBank& bank, Mode mode) {
+    const dynamics::BlockModel model = block_model(c.component, base, d);
+    dynamics::Options opt;
+    opt.record_series = false;
+    opt.g_mps2 = c.site.g_mps2;
+    Simulation sim;
+    const auto& sets = bank.sets();
+    sim.histories = static_cast<int>(sets.size());
+    int standing = 0;
+    double worst = -1.0;
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+        const dynamics::Summary s = dynamics::simulate(model, excitation(sets[k], d, pga_g), opt).summary;
+        sim.slide_max_mean_m += s.slide_max_m;
+        sim.slide_max_max_m = std::max(sim.slide_max_max_m, s.slide_max_m);
+        sim.slide_residual_mean_m += s.slide_residual_m;
+        sim.slide_residual_max_m = std::max(sim.slide_residual_max_m, s.slide_residual_m);
+        sim.amplification_mean += s.amplification;
+        sim.amplification_max = std::max(sim.amplification_max, s.amplification);
+        if (s.overturned) {
+            sim.overturned_fraction += 1.0;
+        } else {
+            ++standing;
+            sim.rock_max_over_alpha_mean += s.rock_max_over_alpha;
+            sim.rock_max_over_alpha_max = std::max(sim.rock_max_over_alpha_max, s.rock_max_over_alpha);
+        }
+        // Governing history: an overturned one, else the largest rocking (rocking modes) or slip.
+        const bool rocking = mode == Mode::rock || mode == Mode::slide_rock;
+        const double score = s.overturned ? 1e9 : (rocking ? s.rock_max_over_alpha : s.slide_max_m);
+        if (score > worst) {
+            worst = score;
+            sim.governing_history = static_cast<int>(k);
+        }
+    }
+    const double n = static_cast<double>(sets.size());
+    sim.slide_max_mean_m /= n;
+    sim.slide_residual_mean_m /= n;
+    sim.amplification_mean /= n;
+    sim.overturned_fraction /= n;
+    if (standing > 0) sim.rock_max_over_alpha_mean /= static_cast<double>(standing);
+    return sim;
+}
+
+LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
+                           const LevelDemand& demand, HistoryBank& bank) {
+    LevelResult r;
+    r.pga_g = demand.pga_g;
+    r.pga_v_g = demand.pga_v_g;
+    r.direction = d;
+    const block::Block blk = c.component.block(d);
+    const sliding::PeakInitiation peak = sliding::classify_peak(blk, base.mu_s, demand.pga_g, demand.pga_v_g);
+    const sliding::Initiation& gi = peak.governing();
+    r.initiation.mode = to_mode(gi.mode);
+    r.initiation.a_ratio = gi.A;
+    r.initiation.mu_s = base.mu_s;
+    r.initiation.tan_alpha = gi.tan_alpha;
+    r.initiation.mu_crit = gi.mu_crit;
+    r.flexible = screen_flexible(c.component, blk, demand);
+    r.sliding = closed_form_sliding(c, base, d, r.initiation.mode, demand, bank);
+    r.rocking = closed_form_rocking(c, base, blk, d, r.initiation.mode, base.mu_s, demand);
+    const SimulationNeed need = simulation_need(r, c.component.allowable_slide_m, c.options.simulate);
+    r.simulation_reason = need.reason;
+    if (need.run) {
+        r.simulation = simulate_level(c, base, d, demand.pga_g, bank, r.initiation.mode);
+    }
+    if (bank.generated()) r.rocking.pgv_mps = bank.mean_pgv_mps(d, demand.pga_g);
+    r.verdict = decide_level(r, c.component.allowable_slide_m, c.component.required_overturn_fs);
+    return r;
+}
+
+}  // namespace freestand::assess

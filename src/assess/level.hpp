@@ -1,0 +1,51 @@
+#pragma once
+/// One PGA level in one direction: classification, closed forms, and (when needed) the
+/// simulation over the level's histories (METHODS.md s.6 steps 1-4).
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "assess/case.hpp"
+#include "assess/histories.hpp"
+#include "assess/result.hpp"
+#include "dynamics/simulate.hpp"
+#include "rocking/demand.hpp"
+#include "rocking/equivalent_linear.hpp"
+#include "spectra/spectrum.hpp"
+
+namespace freestand::assess {
+
+/// The design demand at one PGA level (both horizontal directions share the RG 1.60 target).
+struct LevelDemand {
+    double pga_g = 0.0;
+    double pga_v_g = 0.0;
+    spectra::Spectrum h5;           ///< 5%-damped horizontal target
+    spectra::Spectrum sa_vh_slide;  ///< SA_VH at the sliding damping (METHODS.md s.4)
+    rocking::DampedSpectra sa_vh_damped;  ///< SA_VH at any damping (METHODS.md s.5a)
+    /// Equivalent-linear rocking per direction (x, y), computed on first need. It does not
+    /// depend on the friction, so the material trials reuse it (they keep the restitution).
+    mutable std::array<std::optional<rocking::ElBlockResult>, 2> el_cache;
+};
+
+/// Builds the demand of a level from the site.
+LevelDemand level_demand(const Site& site, double pga_g);
+
+/// Frequencies the design spectra are tabulated on, Hz.
+std::vector<double> design_frequencies();
+
+/// Evaluates one level and direction with the given base contact (the case's, or a trial
+/// material's). Histories are generated through bank only when a check needs them.
+LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
+                           const LevelDemand& demand, HistoryBank& bank);
+
+/// The simulator's model of the component in direction d on the given base.
+dynamics::BlockModel block_model(const Component& comp, const BaseContact& base, Direction d);
+
+/// The excitation of history k in direction d at the demand's PGA (horizontal and vertical).
+dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g);
+
+/// Simulates every history; also returns the index of the governing one.
+Simulation simulate_level(const Case& c, const BaseContact& base, Direction d, double pga_g,
+                          HistoryBank& bank, Mode mode);
+
+}  // namespace freestand::assess

@@ -1,0 +1,21 @@
+#pragma once
+/// The assessment pipeline (METHODS.md s.6, issue 6 "model only what the scene needs"):
+/// per PGA level and direction, classify; stop at rest; else closed-form sliding and rocking;
+/// generate histories and simulate only where the closed forms leave the verdict open; then the
+/// base-material search and the overall verdict.
+#include <vector>
+
+#include "assess/case.hpp"
+#include "assess/result.hpp"
+
+namespace freestand::assess {
+
+/// Runs the whole assessment of a case. Deterministic: the same case gives the same result.
+/// Throws InputError for bad seed records, NumericalError if a stage fails to converge.
+AssessmentResult assess(const Case& c);
+
+/// Returns the case with its PGA levels replaced (the command line's --pga). Levels must be in
+/// (0, 3] g and strictly increasing: InputError with field "--pga" otherwise.
+Case with_pga_levels(Case c, const std::vector<double>& pga_g);
+
+}  // namespace freestand::assess

@@ -1,0 +1,91 @@
+// `freestand regress`: re-run every case and compare with the committed result.json goldens.
+#include <algorithm>
+#include <fmt/format.h>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "report/regress.hpp"
+#include "report/run.hpp"
+
+namespace freestand::cli {
+namespace {
+
+namespace fs = std::filesystem;
+const char* const usage = "[REPORTS_DIR] [--cases DIR] [--update] [--rtol 1e-6]";
+constexpr std::size_t max_listed = 20;
+
+std::vector<fs::path> case_files(const fs::path& dir) {
+    if (!fs::is_directory(dir)) throw IoError(dir.string() + ": not a folder of case files");
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        if (e.is_regular_file() && e.path().extension() == ".toml") out.push_back(e.path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// Compares one case; returns true when it matches its golden.
+bool check(const fs::path& golden_file, const report::CaseRun& run, double rtol) {
+    const std::string name = golden_file.parent_path().filename().string();
+    if (!fs::exists(golden_file)) {
+        std::cout << fmt::format("MISSING {}: no golden {}\n", name, golden_file.string());
+        return false;
+    }
+    nlohmann::ordered_json golden;
+    try {
+        golden = nlohmann::ordered_json::parse(core::read_text_file(golden_file));
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError(SourceLocation{golden_file.string(), 0, ""}, std::string("not valid JSON: ") + e.what());
+    }
+    const auto fresh = nlohmann::ordered_json::parse(run.rendered.json);
+    const auto diffs = report::compare_results(golden, fresh, rtol);
+    if (diffs.empty()) {
+        std::cout << fmt::format("ok      {}: {}\n", name, fresh.at("verdict").get<std::string>());
+        return true;
+    }
+    std::cout << fmt::format("CHANGED {}: {} difference(s)\n", name, diffs.size());
+    if (golden.value("verdict", "") != fresh.at("verdict").get<std::string>()) {
+        std::cout << fmt::format("  verdict: {} -> {}\n", golden.value("verdict", "(none)"),
+                                 fresh.at("verdict").get<std::string>());
+    }
+    for (std::size_t i = 0; i < std::min(diffs.size(), max_listed); ++i) {
+        std::cout << fmt::format("  {}: {} -> {}\n", diffs[i].path, diffs[i].golden, diffs[i].fresh);
+    }
+    if (diffs.size() > max_listed) std::cout << fmt::format("  ... and {} more\n", diffs.size() - max_listed);
+    return false;
+}
+
+int run(const std::vector<std::string>& args) {
+    po::options_description desc("options");
+    desc.add_options()("reports", po::value<std::string>()->default_value("reports"), "folder of golden reports")(
+        "cases", po::value<std::string>()->default_value("cases"), "folder of case files")(
+        "update", po::bool_switch(), "rewrite the goldens (report.md, report.html, result.json, figures)")(
+        "rtol", po::value<std::string>()->default_value("1e-6"), "relative tolerance for numbers");
+    const auto vm = parse_options("regress", usage, desc, args, {"reports"});
+    if (!vm) return 0;
+    const double rtol = parse_double((*vm)["rtol"].as<std::string>(), "--rtol");
+    if (rtol < 0.0) throw UsageError(fmt::format("--rtol: expected a number >= 0; got {}", rtol));
+    const fs::path reports = (*vm)["reports"].as<std::string>();
+    const bool update = (*vm)["update"].as<bool>();
+    bool all_ok = true;
+    for (const fs::path& case_file : case_files((*vm)["cases"].as<std::string>())) {
+        const report::CaseRun run = report::run_case(case_file, std::nullopt, FREESTAND_COMMIT);
+        const fs::path dir = reports / case_file.stem();
+        if (update) {
+            report::write_report(dir, run.rendered);
+            std::cout << fmt::format("updated {}: {}\n", dir.string(), report::verdict_line(run.result));
+        } else {
+            all_ok = check(dir / "result.json", run, rtol) && all_ok;
+        }
+    }
+    return all_ok ? 0 : static_cast<int>(ExitCode::failure);
+}
+
+const CommandRegistrar reg{{"regress", "re-run every case and compare with the golden result.json files", &run}};
+
+}  // namespace
+}  // namespace freestand::cli

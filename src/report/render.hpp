@@ -1,0 +1,33 @@
+#pragma once
+/// Markdown and HTML reports rendered with mstch from templates/report.{md,html}.mustache
+/// (compiled in), plus result.json and the figures. Reports only read the result.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "assess/result.hpp"
+#include "report/json.hpp"
+#include "report/plots.hpp"
+
+namespace freestand::report {
+
+/// Every output file's contents.
+struct Rendered {
+    std::string markdown;
+    std::string html;      ///< self-contained: inline CSS and SVG, no external resources
+    std::string json;      ///< result.json, 2-space indented, trailing newline
+    std::vector<Figure> figures;  ///< also written as SVG files for the Markdown report
+};
+
+/// Renders all outputs. Case text is escaped: HTML-escaped in the HTML report; in Markdown,
+/// HTML-escaped and Markdown punctuation backslash-escaped, newlines folded to spaces.
+Rendered render(const assess::AssessmentResult& r, const Stamp& stamp);
+
+/// Writes report.md, report.html, result.json and the figures into dir, each atomically
+/// (core::write_file_atomic). Throws IoError naming the file that failed.
+void write_report(const std::filesystem::path& dir, const Rendered& rendered);
+
+/// Escapes text for a Markdown document (see render()).
+std::string markdown_escape(const std::string& text);
+
+}  // namespace freestand::report

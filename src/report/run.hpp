@@ -1,0 +1,27 @@
+#pragma once
+/// One case end to end: read, assess, render (what `assess` and `regress` share).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assess/result.hpp"
+#include "report/render.hpp"
+
+namespace freestand::report {
+
+struct CaseRun {
+    assess::AssessmentResult result;
+    Rendered rendered;
+};
+
+/// Reads the case file (its bytes are hashed into the stamp), optionally replaces its PGA levels,
+/// assesses and renders. commit is the build's commit for the stamp. Errors propagate
+/// (IoError, InputError, NumericalError).
+CaseRun run_case(const std::filesystem::path& case_file,
+                 const std::optional<std::vector<double>>& pga_g, const std::string& commit);
+
+/// The one-line verdict the commands print: "<name>: <verdict> (governing ..., margin ..., by ...)".
+std::string verdict_line(const assess::AssessmentResult& r);
+
+}  // namespace freestand::report

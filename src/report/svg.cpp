@@ -1,0 +1,216 @@
+#include "report/svg.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace freestand::report {
+
+namespace {
+
+constexpr double margin_left = 70.0;
+constexpr double margin_right = 20.0;
+constexpr double margin_top = 34.0;
+constexpr double margin_bottom = 48.0;
+constexpr double legend_row_px = 16.0;
+
+struct Scale {
+    double lo = 0.0;
+    double hi = 1.0;
+    bool log = false;
+    double px0 = 0.0;  // pixel of lo
+    double px1 = 1.0;  // pixel of hi
+
+    double operator()(double v) const {
+        const double t = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo))
+                             : (v - lo) / (hi - lo);
+        return px0 + t * (px1 - px0);
+    }
+    bool contains(double v) const {
+        return std::isfinite(v) && (!log || v > 0.0);
+    }
+};
+
+// A "nice" step of 1, 2 or 5 x 10^k giving about `target` intervals.
+double nice_step(double span, int target) {
+    const double raw = span / target;
+    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0, 10.0}) {
+        if (m * mag >= raw) return m * mag;
+    }
+    return 10.0 * mag;
+}
+
+Scale make_scale(const Axis& axis, std::vector<double> values, double px0, double px1) {
+    Scale s;
+    s.log = axis.log;
+    s.px0 = px0;
+    s.px1 = px1;
+    values.erase(std::remove_if(values.begin(), values.end(),
+                                [&](double v) { return !std::isfinite(v) || (axis.log && v <= 0.0); }),
+                 values.end());
+    double lo = values.empty() ? (axis.log ? 0.1 : 0.0) : *std::min_element(values.begin(), values.end());
+    double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+    if (axis.log) {
+        lo = std::pow(10.0, std::floor(std::log10(lo)));
+        hi = std::pow(10.0, std::ceil(std::log10(hi)));
+        if (hi <= lo) hi = lo * 10.0;
+    } else {
+        if (hi <= lo) {
+            hi = lo + 1.0;
+            lo -= 1.0;
+        }
+        const double step = nice_step(hi - lo, 5);
+        lo = std::floor(lo / step) * step;
+        hi = std::ceil(hi / step) * step;
+    }
+    s.lo = axis.min.value_or(lo);
+    s.hi = axis.max.value_or(hi);
+    return s;
+}
+
+std::vector<double> ticks(const Scale& s) {
+    std::vector<double> out;
+    if (s.log) {
+        for (double v = s.lo; v <= s.hi * 1.0000001; v *= 10.0) out.push_back(v);
+        return out;
+    }
+    const double step = nice_step(s.hi - s.lo, 5);
+    for (double v = std::ceil(s.lo / step - 1e-9) * step; v <= s.hi + step * 1e-9; v += step) {
+        out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+    }
+    return out;
+}
+
+std::string tick_label(double v) {
+    if (v == 0.0) return "0";
+    const double a = std::abs(v);
+    if (a >= 1e4 || a < 1e-3) return fmt::format("{:.0e}", v);
+    std::string s = fmt::format("{:.4f}", v);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
+
+std::string points_attr(const std::vector<double>& x, const std::vector<double>& y, const Scale& sx,
+                        const Scale& sy) {
+    std::string out;
+    const std::size_t n = std::min(x.size(), y.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!sx.contains(x[i]) || !sy.contains(y[i])) continue;
+        // Clamp to the frame so off-scale points do not leave the picture.
+        const double px = std::clamp(sx(x[i]), std::min(sx.px0, sx.px1), std::max(sx.px0, sx.px1));
+        const double py = std::clamp(sy(y[i]), std::min(sy.px0, sy.px1), std::max(sy.px0, sy.px1));
+        out += fmt::format("{}{:.1f},{:.1f}", out.empty() ? "" : " ", px, py);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string xml_escape(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&#39;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string render_svg(const Plot& plot) {
+    const double w = plot.width_px;
+    const std::size_t legend_rows = plot.lines.size() + plot.regions.size();
+    const double h = plot.height_px + legend_row_px * static_cast<double>(legend_rows);
+    const double frame_bottom = plot.height_px - margin_bottom;
+    std::vector<double> xs, ys;
+    for (const Line& l : plot.lines) {
+        xs.insert(xs.end(), l.x.begin(), l.x.end());
+        ys.insert(ys.end(), l.y.begin(), l.y.end());
+    }
+    for (const Region& r : plot.regions) {
+        for (const auto& p : r.polygon) {
+            xs.push_back(p[0]);
+            ys.push_back(p[1]);
+        }
+    }
+    for (const Marker& m : plot.markers) {
+        xs.push_back(m.x);
+        ys.push_back(m.y);
+    }
+    const Scale sx = make_scale(plot.x, xs, margin_left, w - margin_right);
+    const Scale sy = make_scale(plot.y, ys, frame_bottom, margin_top);
+    std::string out = fmt::format(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 0 "
+        "{:.0f} {:.0f}\" font-family=\"sans-serif\" font-size=\"11\">\n",
+        w, h, w, h);
+    out += fmt::format("<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n",
+                       xml_escape(plot.title));
+    out += fmt::format("<text x=\"{:.1f}\" y=\"18\" font-size=\"13\" font-weight=\"bold\">{}</text>\n",
+                       margin_left, xml_escape(plot.title));
+    for (const Region& r : plot.regions) {
+        std::vector<double> rx, ry;
+        for (const auto& p : r.polygon) {
+            rx.push_back(p[0]);
+            ry.push_back(p[1]);
+        }
+        out += fmt::format("<polygon points=\"{}\" fill=\"{}\" stroke=\"none\"/>\n",
+                           points_attr(rx, ry, sx, sy), r.fill);
+    }
+    for (double t : ticks(sx)) {
+        const double px = sx(t);
+        out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#dddddd\"/>\n"
+                           "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>\n",
+                           px, margin_top, frame_bottom, frame_bottom + 14.0, tick_label(t));
+    }
+    for (double t : ticks(sy)) {
+        const double py = sy(t);
+        out += fmt::format("<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\" stroke=\"#dddddd\"/>\n"
+                           "<text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\">{5}</text>\n",
+                           py, margin_left, w - margin_right, margin_left - 4.0, py + 4.0, tick_label(t));
+    }
+    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
+                       "stroke=\"#333333\"/>\n",
+                       margin_left, margin_top, w - margin_right - margin_left, frame_bottom - margin_top);
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
+                       (margin_left + w - margin_right) / 2.0, frame_bottom + 32.0, xml_escape(plot.x.label));
+    out += fmt::format("<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
+                       (margin_top + frame_bottom) / 2.0, xml_escape(plot.y.label));
+    for (const Line& l : plot.lines) {
+        out += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}/>\n",
+                           points_attr(l.x, l.y, sx, sy), l.color, l.width,
+                           l.dashed ? " stroke-dasharray=\"5 3\"" : "");
+    }
+    for (const Marker& m : plot.markers) {
+        if (!sx.contains(m.x) || !sy.contains(m.y)) continue;
+        out += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"{}\"/>\n"
+                           "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+                           sx(m.x), sy(m.y), m.color, sx(m.x) + 6.0, sy(m.y) - 6.0, xml_escape(m.label));
+    }
+    double row_y = plot.height_px + 4.0;
+    for (const Region& r : plot.regions) {
+        out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"10\" fill=\"{}\"/>"
+                           "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+                           margin_left, row_y, r.fill, margin_left + 20.0, row_y + 9.0, xml_escape(r.label));
+        row_y += legend_row_px;
+    }
+    for (const Line& l : plot.lines) {
+        out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
+                           "stroke-width=\"2\"{}/><text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+                           margin_left, row_y + 5.0, margin_left + 14.0, row_y + 5.0, l.color,
+                           l.dashed ? " stroke-dasharray=\"5 3\"" : "", margin_left + 20.0, row_y + 9.0,
+                           xml_escape(l.label));
+        row_y += legend_row_px;
+    }
+    out += "</svg>\n";
+    return out;
+}
+
+}  // namespace freestand::report
