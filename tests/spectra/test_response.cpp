@@ -193,7 +193,9 @@ TEST_CASE("sub-stepping to T/20 catches peaks between samples", "[spectra][respo
     for (std::size_t i = 0; i < f.size(); ++i) {
         err20 = std::max(err20, std::abs(t20.psa_g[0][i] / ref.psa_g[0][i] - 1.0));
         err_none = std::max(err_none, std::abs(none.psa_g[0][i] / ref.psa_g[0][i] - 1.0));
-        CHECK(t20.psa_g[0][i] <= ref.psa_g[0][i] * (1.0 + 1e-12));  // a sampled peak never exceeds
+        // A sampled peak never exceeds the true one, which is within 1 - cos(pi/2000) = 1.2e-6
+        // of the reference.
+        CHECK(t20.psa_g[0][i] <= ref.psa_g[0][i] * (1.0 + 2e-6));
     }
     CHECK(err20 < 0.005);
     CHECK(err_none > 0.015);
