@@ -43,10 +43,9 @@ double Block::p_radps(Edge e) const {
     return std::sqrt(mass_kg * units::g_mps2 * R_m(e) / inertia_edge_kgm2(e));
 }
 
-double Block::housner_restitution(Edge e) const {
-    const double r = R_m(e);
-    const double s = std::sin(alpha_rad(e));
-    return 1.0 - 2.0 * mass_kg * r * r * s * s / inertia_edge_kgm2(e);
+double Block::housner_restitution(Edge impact_edge) const {
+    return (inertia_cg_kgm2 + mass_kg * (h_m * h_m - b_left_m * b_right_m)) /
+           inertia_edge_kgm2(impact_edge);
 }
 
 }  // namespace freestand::block

@@ -35,9 +35,12 @@ struct Block {
     double inertia_edge_kgm2(Edge e) const;
     /// Frequency parameter p = sqrt(M g R / I_O), rad/s.
     double p_radps(Edge e) const;
-    /// Housner restitution on angular velocity for an impact that transfers rotation onto
-    /// edge e's opposite: r = 1 - 2 M R^2 sin^2(alpha) / I_O (METHODS.md section 1).
-    double housner_restitution(Edge e) const;
+    /// Restitution on angular velocity when the block, rocking about the other edge, strikes
+    /// the floor with edge `impact_edge` and goes on rotating about it. Angular momentum about
+    /// the impact edge is conserved: r = (I_c + M (h^2 - b_L b_R)) / I_O(impact_edge), which for a
+    /// symmetric block is Housner's 1 - 2 M R^2 sin^2(alpha) / I_O (METHODS.md section 1).
+    /// Negative for very squat blocks (no rebound); callers clamp at 0 where they need to.
+    double housner_restitution(Edge impact_edge) const;
     /// Edge with the smaller alpha: the one the block tips over first.
     Edge critical_edge() const { return b_left_m < b_right_m ? Edge::left : Edge::right; }
     bool symmetric() const { return b_left_m == b_right_m; }

@@ -37,3 +37,15 @@ TEST_CASE("bad block dimensions are input errors naming the field", "[block]") {
     CHECK_THROWS_AS(Block::general(0.1, 0.1, 1.0, 1.0, 0.0), freestand::InputError);
     CHECK_THROWS_WITH(Block::uniform(std::nan(""), 0.6), Catch::Contains("finite"));
 }
+
+TEST_CASE("restitution of an asymmetric block conserves angular momentum about the impact edge",
+          "[block]") {
+    // Rocking about the left edge with omega, CG velocity omega x (b_L, h) = omega (-h, b_L).
+    // Angular momentum about the right edge (at (b_R, 0) from the CG foot): I_c omega +
+    // M ((-b_R) (omega b_L) - h (-omega h)) = omega (I_c + M (h^2 - b_L b_R)); after the impact
+    // it is I_O,R omega+. With b_L = 0.2, b_R = 0.4, h = 1, M = 100, I_c = 20:
+    // r = (20 + 100 (1 - 0.08)) / (20 + 100 (0.16 + 1)) = 112 / 136.
+    const Block blk = Block::general(0.2, 0.4, 1.0, 100.0, 20.0);
+    CHECK(blk.housner_restitution(Edge::right) == Approx(112.0 / 136.0).epsilon(1e-14));
+    CHECK(blk.housner_restitution(Edge::left) == Approx(112.0 / (20.0 + 100.0 * 1.04)).epsilon(1e-14));
+}
