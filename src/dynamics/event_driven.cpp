@@ -352,7 +352,10 @@ private:
             st_.om = x[3];
             rec_.observe(st_);
             const double grow = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
-            h_ = h * std::clamp(grow, 0.2, 5.0);
+            // A step cut short to land on the sample time says little about the step the
+            // error allows: keep the larger proposal then.
+            const double proposal = h * std::clamp(grow, 0.2, 5.0);
+            h_ = (t1 == tb_ && h < h_) ? std::max(h_, proposal) : proposal;
         }
         fsal_ok_ = true;
         fsal_t_ = tb_;

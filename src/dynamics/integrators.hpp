@@ -1,5 +1,7 @@
 #pragma once
 /// Internal: state, excitation access and bookkeeping shared by the two integrators.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -63,7 +65,17 @@ class Recorder {
 public:
     Recorder(const Geometry& g, const Options& o, double pga_mps2);
     /// Tracks peak slip and rotation of the state.
-    void observe(const BlockState& st);
+    void observe(const BlockState& st) {
+        if (st.mode == Mode::flight) {
+            summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.fl.X));
+            return;
+        }
+        summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.u));
+        if (st.th <= 0.0) return;
+        summary_.rock_max_rad = std::max(summary_.rock_max_rad, st.th);
+        const double ratio = st.th / g_.alpha[static_cast<std::size_t>(Geometry::index(st.s))];
+        summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
+    }
     /// A mode change at a transition (counts only changes of Mode).
     void transition(Mode from, Mode to) {
         if (from != to) ++summary_.mode_changes;
@@ -88,6 +100,7 @@ public:
 private:
     const Geometry& g_;
     double g_mps2_ = 9.81;
+    double top_peak_ = 0.0;  ///< peak |top acceleration|, m/s^2
     bool record_series_ = true;
     Summary summary_;
     std::vector<Sample> series_;

@@ -31,6 +31,7 @@ Geometry make_geometry(const BlockModel& model) {
         g.tan_alpha[k] = blk.tan_alpha(edges[i]);
         g.IO[k] = blk.inertia_edge_kgm2(edges[i]);
         g.c_rest[k] = std::min(g.mu_s, g.tan_alpha[k]);
+        g.k_rock[k] = g.M * g.R[k] / g.IO[k];
     }
     for (std::size_t i = 0; i < 2; ++i) {
         if (model.restitution) {
@@ -55,7 +56,7 @@ Accel rock_accel(const Geometry& g, int s, double th, double om, Base base) {
     const double R = g.R[i];
     const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
     Accel a;
-    a.th_dd = -g.M * R * (base.G * sn + ds * base.ax * c) / g.IO[i];
+    a.th_dd = -g.k_rock[i] * (base.G * sn + ds * base.ax * c);
     const double xdd = ds * R * (c * a.th_dd + sn * om * om);
     const double ydd = R * (sn * a.th_dd - c * om * om);
     a.F = g.M * (xdd + base.ax);

@@ -21,6 +21,8 @@ struct Geometry {
     std::array<double, 2> r_onto{};
     /// Rest limit on |xg''| / G towards edge [i]: min(mu_s, tan(alpha_i)) (section 2).
     std::array<double, 2> c_rest{};
+    /// M R / I_O of edge [i] (the rocking equation's factor, precomputed: no division per call).
+    std::array<double, 2> k_rock{};
 
     static int index(int s) { return s > 0 ? 1 : 0; }
 };

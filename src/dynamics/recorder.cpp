@@ -7,14 +7,15 @@ namespace freestand::dynamics::detail {
 
 BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
     : dt_(e.dt_s), inv_dt_(1.0 / e.dt_s), g_(g_mps2), x_(e.horizontal_mps2), y_(e.vertical_mps2) {
-    std::size_t last = 0;  // one past the last non-zero sample
-    for (std::size_t i = 0; i < x_.size(); ++i) {
-        const double a = std::abs(x_[i]);
-        pga_ = std::max(pga_, a);
-        if (a != 0.0) last = i + 1;
+    std::size_t last = x_.size();  // one past the last non-zero sample
+    while (last > 0 && x_[last - 1] == 0.0) --last;
+    std::size_t last_v = y_.size();
+    while (last_v > 0 && y_[last_v - 1] == 0.0) --last_v;
+    last = std::max(last, last_v);
+    for (double a : x_) {
+        const double m = std::abs(a);
+        pga_ = m > pga_ ? m : pga_;
     }
-    for (std::size_t i = 0; i < y_.size(); ++i)
-        if (y_[i] != 0.0) last = std::max(last, i + 1);
     quiet_from_ = dt_ * static_cast<double>(last);
     duration_ = e.duration_s();
 }
@@ -49,18 +50,6 @@ Recorder::Recorder(const Geometry& g, const Options& o, double pga_mps2)
     summary_.pga_g = pga_mps2 / o.g_mps2;
 }
 
-void Recorder::observe(const BlockState& st) {
-    if (st.mode == Mode::flight) {
-        summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.fl.X));
-        return;
-    }
-    summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.u));
-    if (st.th <= 0.0) return;
-    if (st.th > summary_.rock_max_rad) summary_.rock_max_rad = st.th;
-    const double ratio = st.th / g_.alpha[static_cast<std::size_t>(Geometry::index(st.s))];
-    summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
-}
-
 void Recorder::overturn(double t_s, OverturnCriterion c) {
     summary_.overturned = true;
     summary_.overturn_time_s = t_s;
@@ -70,7 +59,7 @@ void Recorder::overturn(double t_s, OverturnCriterion c) {
 
 void Recorder::sample(double t_s, const BlockState& st, Base base) {
     if (st.mode == Mode::rest) {  // carried by the base: the hot path of long records
-        summary_.top_accel_max_g = std::max(summary_.top_accel_max_g, std::abs(base.ax) / g_mps2_);
+        top_peak_ = std::max(top_peak_, std::abs(base.ax));
         if (!record_series_) return;
         Sample smp;
         smp.time_s = t_s;
@@ -97,7 +86,7 @@ void Recorder::sample(double t_s, const BlockState& st, Base base) {
             top = top_corner_accel(g_, base.ax, -base.ax, st.fl.phi, st.fl.phid, 0.0);
             break;
     }
-    summary_.top_accel_max_g = std::max(summary_.top_accel_max_g, std::abs(top) / g_mps2_);
+    top_peak_ = std::max(top_peak_, std::abs(top));
     if (!record_series_) return;
     Sample smp;
     smp.time_s = t_s;
@@ -122,13 +111,14 @@ void Recorder::sample(double t_s, const BlockState& st, Base base) {
 
 void Recorder::rest_samples(const BaseMotion& bm, std::size_t i0, std::size_t i1,
                             const BlockState& st, double peak_ax_mps2) {
-    summary_.top_accel_max_g = std::max(summary_.top_accel_max_g, peak_ax_mps2 / g_mps2_);
+    top_peak_ = std::max(top_peak_, peak_ax_mps2);
     if (!record_series_) return;
     for (std::size_t i = i0; i < i1; ++i) sample(bm.t_k(i), st, bm.sample(i));
 }
 
 SimulationResult Recorder::finish(const BlockState& st, double end_time_s, const char* integrator) {
     summary_.integrator = integrator;
+    summary_.top_accel_max_g = top_peak_ / g_mps2_;
     summary_.end_time_s = end_time_s;
     summary_.slide_residual_m = std::abs(st.mode == Mode::flight ? st.fl.X : st.u);
     summary_.amplification = summary_.pga_g > 0.0 ? summary_.top_accel_max_g / summary_.pga_g : 0.0;
