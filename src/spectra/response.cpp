@@ -100,11 +100,35 @@ using Pair = double __attribute__((vector_size(16)));
 inline Pair pair_max(Pair x, Pair y) { return x > y ? x : y; }
 inline Pair pair_abs(Pair x) { return x < 0.0 ? -x : x; }
 
-/// Peak |u| over the record, from rest, for 2P oscillators with the same number of sub-steps n,
+/// Peak of one oscillator: |u| max, the signed u there, and its sub-point index
+/// (time = index * dt / n; the first sub-point at or after which the maximum was reached).
+struct Peak {
+    double abs_m = 0.0;
+    double signed_m = 0.0;
+    double index = 0.0;
+};
+
+/// Running peak of a pair of oscillators. With Track, also the signed value and the sub-point
+/// index of the first maximum (strict >, as a scalar loop would keep it).
+template <bool Track>
+struct PairPeak {
+    Pair abs_m{}, signed_m{}, index{};
+    void update(Pair un, double at) {
+        const Pair m = pair_abs(un);
+        if constexpr (Track) {
+            const auto larger = m > abs_m;
+            signed_m = larger ? un : signed_m;
+            index = larger ? Pair{at, at} : index;
+        }
+        abs_m = pair_max(abs_m, m);
+    }
+};
+
+/// Peaks over the record, from rest, of 2P oscillators with the same number of sub-steps n,
 /// advanced in lockstep. The recurrences are independent, so one oscillator's latency chain
 /// (u -> u_next, three dependent flops per sample) overlaps the others'.
-template <std::size_t P>
-void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a, double* peak) {
+template <std::size_t P, bool Track>
+void run_batch(const Stepper* const* st, const std::vector<double>& a, Peak* peak) {
     const std::size_t n = st[0]->sub_u.size();
     // Coefficients packed per pair: cu[(k * 4 + j) * P + p] holds coefficient j of sub-point k
     // for oscillators 2p and 2p+1; cv[j * P + p] likewise for v at the end of the sample.
@@ -117,7 +141,8 @@ void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a
             for (std::size_t j = 0; j < 4; ++j) cu[(k * 4 + j) * P + p] = Pair{s0.sub_u[k][j], s1.sub_u[k][j]};
         for (std::size_t j = 0; j < 4; ++j) cv[j * P + p] = Pair{s0.end_v[j], s1.end_v[j]};
     }
-    std::array<Pair, P> u{}, v{}, pk{};
+    std::array<Pair, P> u{}, v{};
+    std::array<PairPeak<Track>, P> pk{};
     const std::size_t count = a.size();
     if (n == 1) {
         // T >= 20 dt: the common case, free of the sub-point loop so everything stays in registers.
@@ -130,7 +155,7 @@ void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a
                 const Pair un = (c1[p] * u[p] + c1[P + p] * v[p]) + (c1[2 * P + p] * a0 + c1[3 * P + p] * a1);
                 v[p] = (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
                 u[p] = un;
-                pk[p] = pair_max(pk[p], pair_abs(un));
+                pk[p].update(un, static_cast<double>(i));
             }
         }
     } else {
@@ -141,9 +166,10 @@ void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a
             std::array<Pair, P> un{};
             for (std::size_t k = 0; k < n; ++k) {
                 const Pair* r = c + k * 4 * P;
+                const double at = static_cast<double>((i - 1) * n + k + 1);
                 for (std::size_t p = 0; p < P; ++p) {
                     un[p] = (r[p] * u[p] + r[P + p] * v[p]) + (r[2 * P + p] * a0 + r[3 * P + p] * a1);
-                    pk[p] = pair_max(pk[p], pair_abs(un[p]));
+                    pk[p].update(un[p], at);
                 }
             }
             for (std::size_t p = 0; p < P; ++p) {
@@ -153,21 +179,21 @@ void peak_displacements_m(const Stepper* const* st, const std::vector<double>& a
         }
     }
     for (std::size_t p = 0; p < P; ++p) {
-        peak[2 * p] = pk[p][0];
-        peak[2 * p + 1] = pk[p][1];
+        for (std::size_t lane = 0; lane < 2; ++lane)
+            peak[2 * p + lane] = Peak{pk[p].abs_m[lane], pk[p].signed_m[lane], pk[p].index[lane]};
     }
 }
 
-/// Peak |u| of every stepper: sorts them by sub-step count and runs batches of up to 8 equal
+/// Peaks of every stepper: sorts them by sub-step count and runs batches of up to 8 equal
 /// counts together; a batch with an odd count repeats its last oscillator (result dropped).
-std::vector<double> peak_displacements_m(const std::vector<Stepper>& steppers,
-                                         const std::vector<double>& a) {
+template <bool Track>
+std::vector<Peak> peaks_of(const std::vector<Stepper>& steppers, const std::vector<double>& a) {
     std::vector<std::size_t> order(steppers.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
         return steppers[x].sub_u.size() < steppers[y].sub_u.size();
     });
-    std::vector<double> peaks(steppers.size());
+    std::vector<Peak> peaks(steppers.size());
     constexpr std::size_t batch = 8;
     std::size_t i = 0;
     while (i < order.size()) {
@@ -177,12 +203,12 @@ std::vector<double> peak_displacements_m(const std::vector<Stepper>& steppers,
             ++len;
         std::array<const Stepper*, batch> group{};
         for (std::size_t o = 0; o < batch; ++o) group[o] = &steppers[order[i + std::min(o, len - 1)]];
-        std::array<double, batch> out{};
+        std::array<Peak, batch> out{};
         switch ((len + 1) / 2) {
-            case 4: peak_displacements_m<4>(group.data(), a, out.data()); break;
-            case 3: peak_displacements_m<3>(group.data(), a, out.data()); break;
-            case 2: peak_displacements_m<2>(group.data(), a, out.data()); break;
-            default: peak_displacements_m<1>(group.data(), a, out.data()); break;
+            case 4: run_batch<4, Track>(group.data(), a, out.data()); break;
+            case 3: run_batch<3, Track>(group.data(), a, out.data()); break;
+            case 2: run_batch<2, Track>(group.data(), a, out.data()); break;
+            default: run_batch<1, Track>(group.data(), a, out.data()); break;
         }
         for (std::size_t o = 0; o < len; ++o) peaks[order[i + o]] = out[o];
         i += len;
@@ -238,10 +264,10 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
     for (double zeta : dampings)
         for (double f : frequency_hz)
             steppers.push_back(make_stepper(f, zeta, record.dt_s, options.min_steps_per_period));
-    const std::vector<double> peaks = peak_displacements_m(steppers, record.accel_mps2);
+    const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
     for (std::size_t d = 0; d < dampings.size(); ++d) {
         for (std::size_t i = 0; i < nf; ++i) {
-            const double sd = peaks[d * nf + i];
+            const double sd = peaks[d * nf + i].abs_m;
             const double w = steppers[d * nf + i].omega_radps;
             out.sd_m[d][i] = sd;
             out.psv_mps[d][i] = w * sd;
@@ -263,10 +289,11 @@ std::vector<double> psa_g(const core::Record& record, double damping,
     steppers.reserve(frequency_hz.size());
     for (double f : frequency_hz)
         steppers.push_back(make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
-    std::vector<double> out = peak_displacements_m(steppers, record.accel_mps2);
+    const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
+    std::vector<double> out(peaks.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         const double w = steppers[i].omega_radps;
-        out[i] *= w * w / units::g_mps2;
+        out[i] = w * w * peaks[i].abs_m / units::g_mps2;
     }
     return out;
 }
@@ -274,30 +301,15 @@ std::vector<double> psa_g(const core::Record& record, double damping,
 std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,
                                            const std::vector<double>& frequency_hz) {
     check_inputs(record, {damping}, frequency_hz);
-    std::vector<OscillatorPeak> out(frequency_hz.size());
-    const auto& a = record.accel_mps2;
-    for (std::size_t i = 0; i < frequency_hz.size(); ++i) {
-        const Stepper st = make_stepper(frequency_hz[i], damping, record.dt_s,
-                                        ResponseOptions{}.min_steps_per_period);
-        const std::size_t n = st.sub_u.size();
-        const double h = record.dt_s / static_cast<double>(n);
-        double u = 0.0, v = 0.0;
-        OscillatorPeak best;
-        for (std::size_t s = 1; s < a.size(); ++s) {
-            double un = 0.0;
-            for (std::size_t k = 0; k < n; ++k) {
-                const Row& r = st.sub_u[k];
-                un = r[0] * u + r[1] * v + (r[2] * a[s - 1] + r[3] * a[s]);
-                if (std::abs(un) > std::abs(best.sd_m)) {
-                    best.sd_m = un;
-                    best.time_s = record.time_s(s - 1) + h * static_cast<double>(k + 1);
-                }
-            }
-            const Row& cv = st.end_v;
-            v = cv[0] * u + cv[1] * v + (cv[2] * a[s - 1] + cv[3] * a[s]);
-            u = un;
-        }
-        out[i] = best;
+    std::vector<Stepper> steppers;
+    steppers.reserve(frequency_hz.size());
+    for (double f : frequency_hz)
+        steppers.push_back(make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
+    const std::vector<Peak> peaks = peaks_of<true>(steppers, record.accel_mps2);
+    std::vector<OscillatorPeak> out(peaks.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const double h = record.dt_s / static_cast<double>(steppers[i].sub_u.size());
+        out[i] = OscillatorPeak{peaks[i].signed_m, peaks[i].index * h};
     }
     return out;
 }

@@ -50,6 +50,12 @@ TEST_CASE("undamped SDOF under a step peaks at 2 a / w^2 at t = T/2", "[spectra]
     CHECK(peaks[0].time_s == Approx(0.5).margin(1e-12));
     const auto rs = spectra::response_spectra(rec, {0.0}, {1.0});
     CHECK(rs.psa_g[0][0] == Approx(2.0 * step_a / units::g_mps2).epsilon(1e-10));
+    // f = 10 Hz: T = 10 dt, so 2 sub-steps per sample; the peak t = 0.05 s lies on sub-point 10.
+    const double w10 = 20.0 * pi;
+    const auto sub = spectra::peak_responses(rec, 0.0, {10.0, 1.0});
+    CHECK(sub[0].sd_m == Approx(-2.0 * step_a / (w10 * w10)).epsilon(1e-10));
+    CHECK(sub[0].time_s == Approx(0.05).margin(1e-12));
+    CHECK(sub[1].time_s == Approx(0.5).margin(1e-12));
     CHECK(rs.psv_mps[0][0] == Approx(2.0 * step_a / w).epsilon(1e-10));
 }
 
