@@ -35,14 +35,9 @@ constexpr int kCheckEvery = 3;
 // that frequency respond quasi-statically to the lower-frequency wavelet placed at their peak.
 constexpr double kWaveletSamplesPerCycle_inv = 0.1;
 
-double dot_support(const Wavelet& w, const std::vector<double>& weights, double dt_s) {
-    const double last_s = static_cast<double>(weights.size() - 1) * dt_s;
-    if (w.end_s() < 0.0 || w.start_s() > last_s) return 0.0;
-    const auto i0 = static_cast<std::size_t>(std::max(0.0, std::ceil(w.start_s() / dt_s)));
-    const auto i1 = static_cast<std::size_t>(std::min(static_cast<double>(weights.size() - 1),
-                                                      std::floor(w.end_s() / dt_s)));
+double dot_support(const SampledWavelet& w, const std::vector<double>& weights) {
     double s = 0.0;
-    for (std::size_t i = i0; i <= i1; ++i) s += weights[i] * w.value(static_cast<double>(i) * dt_s);
+    for (std::size_t k = 0; k < w.values.size(); ++k) s += weights[w.first + k] * w.values[k];
     return s;
 }
 
@@ -69,6 +64,7 @@ struct Matcher {
     std::vector<double> upper;   // in-loop upper ratio: opt.upper inside the 1.3-cap band
     EndWeights ends;
     std::array<Wavelet, 2> pulses;
+    std::array<SampledWavelet, 2> pulse_samples;
     std::array<double, 2> pulse_v{}, pulse_d{};
 
     Matcher(const Target& t, const MatchOptions& o, core::Record& r) : target(t), opt(o), rec(r) {
@@ -87,8 +83,9 @@ struct Matcher {
         const double gamma = std::min(T / 12.0, 2.0);
         pulses = {Wavelet::pulse(T / 3.0, gamma), Wavelet::pulse(2.0 * T / 3.0, gamma)};
         for (std::size_t k = 0; k < 2; ++k) {
-            pulse_v[k] = dot_support(pulses[k], ends.velocity, rec.dt_s);
-            pulse_d[k] = dot_support(pulses[k], ends.displacement, rec.dt_s);
+            pulse_samples[k] = sample_wavelet(pulses[k], rec.dt_s, rec.size());
+            pulse_v[k] = dot_support(pulse_samples[k], ends.velocity);
+            pulse_d[k] = dot_support(pulse_samples[k], ends.displacement);
         }
     }
 
@@ -134,9 +131,12 @@ struct Matcher {
             rhs(static_cast<Eigen::Index>(i)) = (want - pk.r[i]) * pk.sign[i];
         }
         const auto mv = static_cast<Eigen::Index>(m);
+        std::vector<SampledWavelet> sampled;
+        sampled.reserve(m);
         for (std::size_t j = 0; j < m; ++j) {
-            c(mv, static_cast<Eigen::Index>(j)) = dot_support(waves[j], ends.velocity, rec.dt_s);
-            c(mv + 1, static_cast<Eigen::Index>(j)) = dot_support(waves[j], ends.displacement, rec.dt_s);
+            sampled.push_back(sample_wavelet(waves[j], rec.dt_s, rec.size()));
+            c(mv, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.velocity);
+            c(mv + 1, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.displacement);
         }
         for (std::size_t k = 0; k < 2; ++k) {
             c(mv, mv + static_cast<Eigen::Index>(k)) = pulse_v[k];
@@ -146,9 +146,9 @@ struct Matcher {
         rhs(mv + 1) = -dot(ends.displacement, rec.accel_mps2);
         const Eigen::VectorXd b = solve_regularised(c, rhs);
         for (std::size_t j = 0; j < m; ++j)
-            add_wavelet(waves[j], relaxation * b(static_cast<Eigen::Index>(j)), rec.dt_s, rec.accel_mps2);
+            add_wavelet(sampled[j], relaxation * b(static_cast<Eigen::Index>(j)), rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
-            add_wavelet(pulses[k], relaxation * b(mv + static_cast<Eigen::Index>(k)), rec.dt_s, rec.accel_mps2);
+            add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)), rec.accel_mps2);
     }
 
     // Rows scaled to unit max, columns to unit norm, then min |C x - r|^2 + lambda^2 |x|^2.
@@ -180,8 +180,8 @@ struct Matcher {
         const double det = pulse_v[0] * pulse_d[1] - pulse_v[1] * pulse_d[0];
         const double b0 = (-v * pulse_d[1] + d * pulse_v[1]) / det;
         const double b1 = (-d * pulse_v[0] + v * pulse_d[0]) / det;
-        add_wavelet(pulses[0], b0, r.dt_s, r.accel_mps2);
-        add_wavelet(pulses[1], b1, r.dt_s, r.accel_mps2);
+        add_wavelet(pulse_samples[0], b0, r.accel_mps2);
+        add_wavelet(pulse_samples[1], b1, r.accel_mps2);
     }
 };
 

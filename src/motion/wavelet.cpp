@@ -87,15 +87,40 @@ double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_
     return omega * omega / omega_d * 0.5 * sum.imag();
 }
 
+SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples) {
+    SampledWavelet out;
+    if (samples == 0) return out;
+    const double last_s = static_cast<double>(samples - 1) * dt_s;
+    if (w.end_s() < 0.0 || w.start_s() > last_s) return out;
+    const double last = static_cast<double>(samples - 1);
+    const auto i0 = static_cast<std::size_t>(std::clamp(std::ceil(w.start_s() / dt_s), 0.0, last));
+    const auto i1 = static_cast<std::size_t>(std::clamp(std::floor(w.end_s() / dt_s), 0.0, last));
+    out.first = i0;
+    out.values.resize(i1 - i0 + 1);
+    // x_k = (i0 + k) dt - centre; exp(i W x) rotates by exp(i W dt); the Gaussian ratio
+    // g_{k+1} / g_k = exp(-(2 x_k dt + dt^2) / gamma^2) itself changes by exp(-2 dt^2 / gamma^2).
+    const double x0 = static_cast<double>(i0) * dt_s - w.centre_s;
+    const double g2 = w.gamma_s * w.gamma_s;
+    const std::complex<double> step = std::polar(1.0, w.omega_d_radps * dt_s);
+    std::complex<double> phase = std::polar(1.0, w.omega_d_radps * x0);
+    double gauss = std::exp(-x0 * x0 / g2);
+    double ratio = std::exp(-(2.0 * x0 * dt_s + dt_s * dt_s) / g2);
+    const double ratio_step = std::exp(-2.0 * dt_s * dt_s / g2);
+    for (double& v : out.values) {
+        v = phase.real() * gauss;
+        phase *= step;
+        gauss *= ratio;
+        ratio *= ratio_step;
+    }
+    return out;
+}
+
+void add_wavelet(const SampledWavelet& w, double amplitude, std::vector<double>& accel) {
+    for (std::size_t k = 0; k < w.values.size(); ++k) accel[w.first + k] += amplitude * w.values[k];
+}
+
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel) {
-    if (accel.empty()) return;
-    const double last_s = static_cast<double>(accel.size() - 1) * dt_s;
-    if (w.end_s() < 0.0 || w.start_s() > last_s) return;
-    const double last = static_cast<double>(accel.size() - 1);
-    const double i0 = std::clamp(std::ceil(w.start_s() / dt_s), 0.0, last);
-    const double i1 = std::clamp(std::floor(w.end_s() / dt_s), 0.0, last);
-    for (auto i = static_cast<std::size_t>(i0); i <= static_cast<std::size_t>(i1); ++i)
-        accel[i] += amplitude * w.value(static_cast<double>(i) * dt_s);
+    add_wavelet(sample_wavelet(w, dt_s, accel.size()), amplitude, accel);
 }
 
 }  // namespace freestand::motion

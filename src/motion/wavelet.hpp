@@ -43,7 +43,17 @@ struct Wavelet {
 /// in closed form through the Faddeeva function (derivation in the source).
 double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s);
 
+/// The wavelet sampled at i * dt_s over its support inside a record of `samples` samples:
+/// values[k] = w((first + k) dt). Computed by exact rotation / Gaussian-ratio recurrences
+/// (relative drift ~1e-13 over 10^4 samples) instead of a cos and an exp per sample.
+struct SampledWavelet {
+    std::size_t first = 0;
+    std::vector<double> values;
+};
+SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples);
+
 /// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);
+void add_wavelet(const SampledWavelet& w, double amplitude, std::vector<double>& accel);
 
 }  // namespace freestand::motion
