@@ -87,7 +87,8 @@ struct Options {
     /// Settling (Zeno) rule: after an impact whose rebound would lift the block by less than
     /// this angle (free-rocking energy estimate), the block is set flat with theta = theta' = 0.
     double settle_rebound_rad = 1e-7;
-    /// Settling rule for chatter: more than 64 events within this time settle the block.
+    /// Settling rule for chatter: 64 consecutive events each within this time of the previous
+    /// one set the block at rest (100000 throw NumericalError).
     double settle_interval_s = 1e-9;
     double tail_s = 10.0;        ///< simulated time after the excitation ends (stops at rest)
     bool record_series = true;   ///< fill SimulationResult::series
@@ -115,7 +116,9 @@ const char* overturn_criterion_name(OverturnCriterion criterion);
 /// One output sample (at the excitation's sample times, continued through the tail).
 struct Sample {
     double time_s = 0.0;
-    double slide_m = 0.0;            ///< slip u of the contact point relative to the base
+    /// Slip u of the contact point relative to the base (the block's slip when flat); in flight
+    /// the CG's horizontal displacement relative to the base.
+    double slide_m = 0.0;
     double slide_velocity_mps = 0.0; ///< u'
     double rotation_rad = 0.0;       ///< s theta: > 0 rocking on the right edge
     double angular_velocity_radps = 0.0;  ///< s theta'
