@@ -29,6 +29,7 @@ constexpr double kRaise = 0.02;
 constexpr int kMaxRaises = 2;
 // Misfit below which the full acceptance check is tried on a copy, at most every kCheckEvery passes.
 constexpr double kNearBand = 0.04;
+constexpr double kTaper_s = 0.5;
 constexpr int kCheckEvery = 3;
 // Wavelets are kept at >= 10 samples per cycle: coarser ones are poorly represented by their
 // samples (and the closed-form Jacobian no longer describes them); near-rigid oscillators above
@@ -173,8 +174,17 @@ struct Matcher {
         return x.cwiseQuotient(col);
     }
 
-    // Zeroes the final velocity and displacement exactly with the two pulses (2x2 solve).
+    // Cosine taper of the first and last kTaper_s (long wavelets do not vanish at the record's
+    // ends: without it the record would start with a jump), then zero the final velocity and
+    // displacement exactly with the two pulses (2x2 solve; the pulses are < 1e-7 at the ends).
     void zero_baseline(core::Record& r) const {
+        const std::size_t n = r.size();
+        const auto taper = std::min(n / 4, static_cast<std::size_t>(kTaper_s / r.dt_s));
+        for (std::size_t k = 0; k < taper; ++k) {
+            const double w = 0.5 * (1.0 - std::cos(units::pi * static_cast<double>(k) / static_cast<double>(taper)));
+            r.accel_mps2[k] *= w;
+            r.accel_mps2[n - 1 - k] *= w;
+        }
         const double v = dot(ends.velocity, r.accel_mps2);
         const double d = dot(ends.displacement, r.accel_mps2);
         const double det = pulse_v[0] * pulse_d[1] - pulse_v[1] * pulse_d[0];
