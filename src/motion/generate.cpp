@@ -13,6 +13,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+constexpr int kQuickPasses = 12;
+
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -99,7 +101,11 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
     for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
         const std::uint64_t seed = derive_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
         core::Record raw = synthesize(target, o.duration_s, o.dt_s, seed, o.envelope);
-        MatchResult m = match_in_place(std::move(raw), target, o.match);
+        // A fresh seed usually converges in a few passes where a stubborn one needs dozens:
+        // cap the passes of all but the last attempt.
+        MatchOptions mo = o.match;
+        if (attempt + 1 < o.max_attempts) mo.max_iterations = std::min(mo.max_iterations, kQuickPasses);
+        MatchResult m = match_in_place(std::move(raw), target, mo);
         GeneratedComponent g;
         g.record = std::move(m.record);
         g.acceptance = std::move(m.acceptance);
