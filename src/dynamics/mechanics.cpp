@@ -106,6 +106,22 @@ Start classify_sliding(const Geometry& g, double v) {
     return st;
 }
 
+namespace {
+// Slide-rock from theta = theta' = 0 needs theta'' > 0 under kinetic friction. When
+// mu_k < tan(alpha) < mu_s < mu_crit(A), static friction could lift the edge but the sliding
+// contact cannot (a case section 2 does not list): the block slides flat instead.
+Start slide_rock_or_slide(const Geometry& g, int s, int sigma, Base base) {
+    if (slide_rock_accel(g, s, sigma, 0.0, 0.0, base).th_dd > 0.0) {
+        Start st;
+        st.mode = Mode::slide_rock;
+        st.s = s;
+        st.sigma = sigma;
+        return st;
+    }
+    return classify_sliding(g, static_cast<double>(sigma));
+}
+}  // namespace
+
 Start classify_from_rest(const Geometry& g, Base base) {
     Start st;
     if (rest_holds(g, base)) return st;
@@ -123,11 +139,9 @@ Start classify_from_rest(const Geometry& g, Base base) {
     st.s = s_tip;
     if (std::abs(a.F) <= g.mu_s * a.N) {
         st.mode = Mode::rock;
-    } else {
-        st.mode = Mode::slide_rock;
-        st.sigma = a.F > 0.0 ? -1 : 1;
+        return st;
     }
-    return st;
+    return slide_rock_or_slide(g, s_tip, a.F > 0.0 ? -1 : 1, base);
 }
 
 Start classify_on_edge(const Geometry& g, int s, double th, double om, double v, Base base) {
@@ -143,6 +157,8 @@ Start classify_on_edge(const Geometry& g, int s, double th, double om, double v,
         st.mode = Mode::flight;
     } else if (std::abs(a.F) <= g.mu_s * a.N) {
         st.mode = Mode::rock;
+    } else if (th == 0.0 && om == 0.0) {
+        return slide_rock_or_slide(g, s, a.F > 0.0 ? -1 : 1, base);
     } else {
         st.mode = Mode::slide_rock;
         st.sigma = a.F > 0.0 ? -1 : 1;

@@ -106,3 +106,24 @@ TEST_CASE("asymmetric block uplifts over the edge with the smaller alpha", "[dyn
         CHECK(left.summary.mode_changes == 0);
     }
 }
+
+TEST_CASE("mu_k < tan(alpha) < mu_s < mu_crit: the block slides flat", "[dynamics][mechanics]") {
+    // Found by a randomized run (events piled up at one instant): static friction could lift
+    // the right edge but the slipping contact cannot (slide-rock gives theta'' < 0 at theta = 0),
+    // so the consistent motion is flat sliding (mu_k h < b_R: no uplift while sliding).
+    const auto blk = block::Block::general(0.1442629869839388, 0.11351712022040122,
+                                           0.99121111720226718, 72.115090827907579,
+                                           30.795168046729575);
+    const auto model = dynamics::make_block_model(blk, 0.12820233747383283, 0.10962314963478123);
+    const Geometry g = make_geometry(model);
+    const Base base{-2.971549, 9.81};
+    CHECK(rock_accel(g, 1, 0.0, 0.0, base).th_dd > 0.0);
+    CHECK(slide_rock_accel(g, 1, 1, 0.0, 0.0, base).th_dd < 0.0);
+    const Start st = classify_from_rest(g, base);
+    CHECK(st.mode == Mode::slide);
+    CHECK(st.sigma == 1);
+    const auto r = dynamics::simulate(model, test::samples(0.005, std::vector<double>(100, base.ax)),
+                                      test::opts());
+    CHECK(r.summary.rock_max_rad == 0.0);
+    CHECK(r.summary.slide_max_m > 0.0);
+}
