@@ -3,12 +3,13 @@
 /// several runs) and the largest relative PSA error against a reference with sub-steps <= T/200,
 /// with the T/20 rule (the default) and without sub-stepping.
 ///   usage: bench_spectrum [RECORD.AT2] [runs]
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
-#include <fmt/format.h>
 #include <functional>
 #include <string>
 #include <vector>
@@ -34,8 +35,8 @@ Timing time_runs(const core::Record& rec, const std::vector<double>& dampings,
     for (int r = 0; r < runs; ++r) {
         const auto start = std::chrono::steady_clock::now();
         const std::clock_t cpu_start = std::clock();
-        t.result = spectra::response_spectra(rec, dampings, f,
-                                             spectra::ResponseOptions{steps_per_period});
+        t.result =
+            spectra::response_spectra(rec, dampings, f, spectra::ResponseOptions{steps_per_period});
         const std::clock_t cpu_stop = std::clock();
         const auto stop = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
@@ -66,8 +67,8 @@ double max_rel_error(const spectra::ResponseSpectra& a, const spectra::ResponseS
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string path = argc > 1 ? argv[1]
-                                      : std::string(FREESTAND_TEST_DATA) + "/RSN1546_CHICHI_TCU122-N.AT2";
+    const std::string path =
+        argc > 1 ? argv[1] : std::string(FREESTAND_TEST_DATA) + "/RSN1546_CHICHI_TCU122-N.AT2";
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 9;
     const core::Record rec = core::read_at2(path);
     const std::vector<double> f = spectra::log_frequencies(0.1, 100.0, 100);
@@ -79,8 +80,8 @@ int main(int argc, char** argv) {
                rec.name, rec.size(), rec.dt_s, f.size(), dampings.size());
     const Timing ref = time_runs(rec, dampings, f, 200, 1);
     fmt::print("reference: sub-steps <= T/200, {:.1f} ms\n\n", ref.median_ms);
-    fmt::print("{:<22} {:>10} {:>10} {:>14} {:>14} {:>8}\n", "sub-stepping", "wall ms",
-               "cpu ms", "cpu ns/osc-smp", "max rel error", "at Hz");
+    fmt::print("{:<22} {:>10} {:>10} {:>14} {:>14} {:>8}\n", "sub-stepping", "wall ms", "cpu ms",
+               "cpu ns/osc-smp", "max rel error", "at Hz");
     for (const auto& [label, m] : {std::pair<const char*, int>{"T/20 (default)", 20},
                                    std::pair<const char*, int>{"none (1 per sample)", 0},
                                    std::pair<const char*, int>{"T/10", 10}}) {
@@ -93,21 +94,25 @@ int main(int argc, char** argv) {
     // The matching loops' entry points, one damping (5%), same record and frequencies.
     fmt::print("\n{:<22} {:>10} {:>10}\n", "one damping (5%)", "wall ms", "cpu ms");
     for (const auto& [label, fn] :
-         {std::pair<const char*, std::function<void()>>{"psa_g", [&] { (void)spectra::psa_g(rec, 0.05, f); }},
-          std::pair<const char*, std::function<void()>>{"peak_responses",
-                                                        [&] { (void)spectra::peak_responses(rec, 0.05, f); }}}) {
+         {std::pair<const char*, std::function<void()>>{
+              "psa_g", [&] { (void)spectra::psa_g(rec, 0.05, f); }},
+          std::pair<const char*, std::function<void()>>{
+              "peak_responses", [&] { (void)spectra::peak_responses(rec, 0.05, f); }}}) {
         std::vector<double> ms, cpu_ms;
         for (int r = 0; r < runs; ++r) {
             const auto start = std::chrono::steady_clock::now();
             const std::clock_t cpu_start = std::clock();
             fn();
             const std::clock_t cpu_stop = std::clock();
-            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
             cpu_ms.push_back(1000.0 * static_cast<double>(cpu_stop - cpu_start) / CLOCKS_PER_SEC);
         }
         std::sort(ms.begin(), ms.end());
         std::sort(cpu_ms.begin(), cpu_ms.end());
-        fmt::print("{:<22} {:>10.2f} {:>10.2f}\n", label, ms[ms.size() / 2], cpu_ms[cpu_ms.size() / 2]);
+        fmt::print("{:<22} {:>10.2f} {:>10.2f}\n", label, ms[ms.size() / 2],
+                   cpu_ms[cpu_ms.size() / 2]);
     }
     return 0;
 }

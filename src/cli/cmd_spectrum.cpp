@@ -17,7 +17,8 @@ int run_spectrum(const std::vector<std::string>& args) {
     desc.add_options()("record", po::value<std::string>()->required(),
                        "acceleration record: .AT2 (PEER), .V2 (COSMOS) or .csv")(
         "json", po::bool_switch(), "print one JSON object instead of CSV");
-    add_spectrum_grid_options(desc, "0.05", "damping ratios in (0, 1), comma-separated, e.g. 0.05,0.10");
+    add_spectrum_grid_options(desc, "0.05",
+                              "damping ratios in (0, 1), comma-separated, e.g. 0.05,0.10");
     const auto vm = parse_options("spectrum", "RECORD [options]", desc, args, {"record"});
     if (!vm) return 0;
 
@@ -51,8 +52,8 @@ int run_spectrum(const std::vector<std::string>& args) {
     return 0;
 }
 
-const CommandRegistrar reg{{"spectrum", "response spectrum (PSA, SD, PSV) of an acceleration record",
-                            &run_spectrum}};
+const CommandRegistrar reg{
+    {"spectrum", "response spectrum (PSA, SD, PSV) of an acceleration record", &run_spectrum}};
 
 }  // namespace
 }  // namespace freestand::cli

@@ -2,6 +2,7 @@
 /// Command-line pieces shared by `freestand spectrum` and `freestand target`: the frequency grid
 /// and damping options, and printing PSA tables as CSV or JSON.
 #include <fmt/format.h>
+
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -15,27 +16,29 @@
 namespace freestand::cli {
 
 /// Adds --fmin, --fmax, --per-decade, --frequencies and --damping (default text given).
-inline void add_spectrum_grid_options(po::options_description& desc, const std::string& damping_default,
+inline void add_spectrum_grid_options(po::options_description& desc,
+                                      const std::string& damping_default,
                                       const std::string& damping_help) {
-    desc.add_options()
-        ("damping", po::value<std::string>()->default_value(damping_default), damping_help.c_str())
-        ("fmin", po::value<std::string>()->default_value("0.1"), "lowest frequency, Hz (> 0)")
-        ("fmax", po::value<std::string>()->default_value("100"), "highest frequency, Hz (> fmin)")
-        ("per-decade", po::value<std::string>()->default_value("100"),
-         "log-spaced points per decade (integer >= 1)")
-        ("frequencies", po::value<std::string>(),
-         "explicit frequency list, Hz, comma-separated, strictly increasing (instead of "
-         "--fmin/--fmax/--per-decade)");
+    desc.add_options()("damping", po::value<std::string>()->default_value(damping_default),
+                       damping_help.c_str())("fmin", po::value<std::string>()->default_value("0.1"),
+                                             "lowest frequency, Hz (> 0)")(
+        "fmax", po::value<std::string>()->default_value("100"), "highest frequency, Hz (> fmin)")(
+        "per-decade", po::value<std::string>()->default_value("100"),
+        "log-spaced points per decade (integer >= 1)")(
+        "frequencies", po::value<std::string>(),
+        "explicit frequency list, Hz, comma-separated, strictly increasing (instead of "
+        "--fmin/--fmax/--per-decade)");
 }
 
 /// Dampings from --damping: each in (0, 1), no repeats.
 inline std::vector<double> dampings_from(const po::variables_map& vm) {
-    const std::vector<double> d = parse_double_list(vm["damping"].as<std::string>(), "--damping");
+    std::vector<double> d = parse_double_list(vm["damping"].as<std::string>(), "--damping");
     for (std::size_t i = 0; i < d.size(); ++i) {
         require_in_range(d[i], 0.0, 1.0, SourceLocation{"", 0, "--damping"}, false, false);
         for (std::size_t j = 0; j < i; ++j)
             if (d[j] == d[i])
-                throw UsageError(fmt::format("--damping: {} given twice; expected distinct values", d[i]));
+                throw UsageError(
+                    fmt::format("--damping: {} given twice; expected distinct values", d[i]));
     }
     return d;
 }
@@ -45,14 +48,16 @@ inline std::vector<double> frequencies_from(const po::variables_map& vm) {
     if (vm.count("frequencies")) {
         for (const char* opt : {"fmin", "fmax", "per-decade"})
             if (!vm[opt].defaulted())
-                throw UsageError(fmt::format("--frequencies and --{} exclude each other; give one", opt));
-        const auto f = parse_double_list(vm["frequencies"].as<std::string>(), "--frequencies");
+                throw UsageError(
+                    fmt::format("--frequencies and --{} exclude each other; give one", opt));
+        auto f = parse_double_list(vm["frequencies"].as<std::string>(), "--frequencies");
         for (std::size_t i = 0; i < f.size(); ++i) {
             require_positive(f[i], SourceLocation{"", 0, "--frequencies"});
             if (i > 0 && !(f[i] > f[i - 1]))
-                throw InputError(SourceLocation{"", 0, "--frequencies"},
-                                 fmt::format("{} Hz follows {} Hz; expected strictly increasing values",
-                                             f[i], f[i - 1]));
+                throw InputError(
+                    SourceLocation{"", 0, "--frequencies"},
+                    fmt::format("{} Hz follows {} Hz; expected strictly increasing values", f[i],
+                                f[i - 1]));
         }
         return f;
     }
@@ -74,7 +79,8 @@ inline std::vector<double> frequencies_from(const po::variables_map& vm) {
 inline std::string damping_key(double damping) { return fmt::format("{}", damping); }
 
 /// CSV: frequency_hz, then psa_g_<damping> per damping.
-inline void print_psa_csv(const std::vector<double>& frequency_hz, const std::vector<double>& dampings,
+inline void print_psa_csv(const std::vector<double>& frequency_hz,
+                          const std::vector<double>& dampings,
                           const std::vector<std::vector<double>>& psa_g) {
     std::string out = "frequency_hz";
     for (double d : dampings) out += ",psa_g_" + damping_key(d);

@@ -1,9 +1,10 @@
 #include "spectra/design.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
 #include <string>
 
 #include "core/errors.hpp"
@@ -15,13 +16,15 @@ namespace {
 
 void check_frequencies(const std::vector<double>& f) {
     if (f.empty())
-        throw InputError(SourceLocation{"", 0, "frequency_hz"}, "no frequency given; expected at least one");
+        throw InputError(SourceLocation{"", 0, "frequency_hz"},
+                         "no frequency given; expected at least one");
     for (std::size_t i = 0; i < f.size(); ++i) {
         require_positive(f[i], SourceLocation{"", 0, "frequency_hz"});
         if (i > 0 && !(f[i] > f[i - 1]))
-            throw InputError(SourceLocation{"", 0, "frequency_hz"},
-                             fmt::format("frequency {} Hz follows {} Hz; expected strictly increasing",
-                                         f[i], f[i - 1]));
+            throw InputError(
+                SourceLocation{"", 0, "frequency_hz"},
+                fmt::format("frequency {} Hz follows {} Hz; expected strictly increasing", f[i],
+                            f[i - 1]));
     }
 }
 
@@ -61,7 +64,8 @@ double loglog(double x, double x0, double y0, double x1, double y1) {
 }  // namespace
 
 Rg160Factors rg160_factors(double damping, bool vertical) {
-    require_in_range(damping, rg_damping.front(), rg_damping.back(), SourceLocation{"", 0, "damping"});
+    require_in_range(damping, rg_damping.front(), rg_damping.back(),
+                     SourceLocation{"", 0, "damping"});
     const auto& table = vertical ? rg_vertical : rg_horizontal;
     std::size_t hi = 1;
     while (hi + 1 < rg_damping.size() && damping > rg_damping[hi]) ++hi;
@@ -73,7 +77,8 @@ Rg160Factors rg160_factors(double damping, bool vertical) {
             mix(table[lo].c, table[hi].c), mix(table[lo].d, table[hi].d)};
 }
 
-Spectrum rg160(double pga_g, double damping, bool vertical, const std::vector<double>& frequency_hz) {
+Spectrum rg160(double pga_g, double damping, bool vertical,
+               const std::vector<double>& frequency_hz) {
     require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
     const Rg160Factors k = rg160_factors(damping, vertical);
     const double fa = 33.0, fb = 9.0, fc = vertical ? 3.5 : 2.5, fd = 0.25;
@@ -81,8 +86,9 @@ Spectrum rg160(double pga_g, double damping, bool vertical, const std::vector<do
     // D multiplies the ground displacement; as PSA at 0.25 Hz: omega^2 SD / g.
     const double psa_d = k.d * rg_ground_displacement_m_per_g * pga_g * wd * wd / units::g_mps2;
     const double psa_a = k.a * pga_g, psa_b = k.b * pga_g, psa_c = k.c * pga_g;
-    const std::string label = fmt::format("RG 1.60 {}, PGA {} g, {}% damping",
-                                          vertical ? "vertical" : "horizontal", pga_g, 100.0 * damping);
+    const std::string label =
+        fmt::format("RG 1.60 {}, PGA {} g, {}% damping", vertical ? "vertical" : "horizontal",
+                    pga_g, 100.0 * damping);
     return tabulate(damping, label, frequency_hz, [=](double period_s) {
         const double f = 1.0 / period_s;
         if (f >= fa) return psa_a;
@@ -102,7 +108,8 @@ Spectrum asce7(double sds_g, double sd1_g, double tl_s, const std::vector<double
     if (!(tl_s > ts))
         throw InputError(SourceLocation{"", 0, "tl_s"},
                          fmt::format("TL {} s must exceed TS = SD1/SDS = {} s", tl_s, ts));
-    const std::string label = fmt::format("ASCE 7, SDS {} g, SD1 {} g, TL {} s, 5% damping", sds_g, sd1_g, tl_s);
+    const std::string label =
+        fmt::format("ASCE 7, SDS {} g, SD1 {} g, TL {} s, 5% damping", sds_g, sd1_g, tl_s);
     return tabulate(0.05, label, frequency_hz, [=](double t) {
         if (t < t0) return sds_g * (0.4 + 0.6 * t / t0);
         if (t <= ts) return sds_g;
@@ -132,12 +139,14 @@ Spectrum ec8(double ag_g, Ec8Type type, char ground, double damping,
     if (ground < 'A' || ground > 'E')
         throw InputError(SourceLocation{"", 0, "ground"},
                          fmt::format("ground type '{}'; expected one of A, B, C, D, E", ground));
-    const Ground g = (type == Ec8Type::type1 ? type1 : type2)[static_cast<std::size_t>(ground - 'A')];
+    const Ground g =
+        (type == Ec8Type::type1 ? type1 : type2)[static_cast<std::size_t>(ground - 'A')];
     // EN 1998-1 eq. (3.6), xi in percent.
     const double eta = std::max(0.55, std::sqrt(10.0 / (5.0 + 100.0 * damping)));
     const double plateau = ag_g * g.s * eta * 2.5;
-    const std::string label = fmt::format("EC8 Type {}, ground {}, ag {} g, {}% damping",
-                                          type == Ec8Type::type1 ? 1 : 2, ground, ag_g, 100.0 * damping);
+    const std::string label =
+        fmt::format("EC8 Type {}, ground {}, ag {} g, {}% damping", type == Ec8Type::type1 ? 1 : 2,
+                    ground, ag_g, 100.0 * damping);
     // EN 1998-1 eqs. (3.2)-(3.5).
     return tabulate(damping, label, frequency_hz, [=](double t) {
         if (t <= g.tb) return ag_g * g.s * (1.0 + t / g.tb * (eta * 2.5 - 1.0));
@@ -152,14 +161,20 @@ Spectrum is1893(double pga_g, Is1893Soil soil, const std::vector<double>& freque
     // IS 1893 (Part 1) 2016 eq. for Sa/g: corner period and the 1/T coefficient per soil.
     const double tc = soil == Is1893Soil::rock ? 0.40 : soil == Is1893Soil::medium ? 0.55 : 0.67;
     const double k = soil == Is1893Soil::rock ? 1.0 : soil == Is1893Soil::medium ? 1.36 : 1.67;
-    const char* name = soil == Is1893Soil::rock ? "rock" : soil == Is1893Soil::medium ? "medium" : "soft";
+    const char* name = soil == Is1893Soil::rock     ? "rock"
+                       : soil == Is1893Soil::medium ? "medium"
+                                                    : "soft";
     const std::string label = fmt::format("IS 1893 {} soil, PGA {} g, 5% damping", name, pga_g);
     return tabulate(0.05, label, frequency_hz, [=](double t) {
         double sa = 0.0;
-        if (t < 0.1) sa = 1.0 + 15.0 * t;
-        else if (t <= tc) sa = 2.5;
-        else if (t <= 4.0) sa = k / t;
-        else sa = k / 4.0;
+        if (t < 0.1)
+            sa = 1.0 + 15.0 * t;
+        else if (t <= tc)
+            sa = 2.5;
+        else if (t <= 4.0)
+            sa = k / t;
+        else
+            sa = k / 4.0;
         return pga_g * sa;
     });
 }
@@ -169,10 +184,14 @@ double rg160_target_psd_per_radps(double f_hz, double pga_g) {
     require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
     // SRP 3.7.1 Appendix A, per 1 g, m^2/s^3; scales with PGA^2.
     double s1 = 0.0;
-    if (f_hz <= 2.5) s1 = 0.419 * std::pow(f_hz / 2.5, 0.2);
-    else if (f_hz <= 9.0) s1 = 0.419 * std::pow(2.5 / f_hz, 1.8);
-    else if (f_hz <= 16.0) s1 = 0.0418 * std::pow(9.0 / f_hz, 3.0);
-    else s1 = 0.00742 * std::pow(16.0 / f_hz, 8.0);
+    if (f_hz <= 2.5)
+        s1 = 0.419 * std::pow(f_hz / 2.5, 0.2);
+    else if (f_hz <= 9.0)
+        s1 = 0.419 * std::pow(2.5 / f_hz, 1.8);
+    else if (f_hz <= 16.0)
+        s1 = 0.0418 * std::pow(9.0 / f_hz, 3.0);
+    else
+        s1 = 0.00742 * std::pow(16.0 / f_hz, 8.0);
     return s1 * pga_g * pga_g;
 }
 

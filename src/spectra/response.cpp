@@ -1,9 +1,10 @@
 #include "spectra/response.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -138,7 +139,8 @@ void run_batch(const Stepper* const* st, const std::vector<double>& a, Peak* pea
         const Stepper& s0 = *st[2 * p];
         const Stepper& s1 = *st[2 * p + 1];
         for (std::size_t k = 0; k < n; ++k)
-            for (std::size_t j = 0; j < 4; ++j) cu[(k * 4 + j) * P + p] = Pair{s0.sub_u[k][j], s1.sub_u[k][j]};
+            for (std::size_t j = 0; j < 4; ++j)
+                cu[(k * 4 + j) * P + p] = Pair{s0.sub_u[k][j], s1.sub_u[k][j]};
         for (std::size_t j = 0; j < 4; ++j) cv[j * P + p] = Pair{s0.end_v[j], s1.end_v[j]};
     }
     std::array<Pair, P> u{}, v{};
@@ -152,8 +154,10 @@ void run_batch(const Stepper* const* st, const std::vector<double>& a, Peak* pea
             const Pair a0{a[i - 1], a[i - 1]};
             const Pair a1{a[i], a[i]};
             for (std::size_t p = 0; p < P; ++p) {
-                const Pair un = (c1[p] * u[p] + c1[P + p] * v[p]) + (c1[2 * P + p] * a0 + c1[3 * P + p] * a1);
-                v[p] = (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
+                const Pair un =
+                    (c1[p] * u[p] + c1[P + p] * v[p]) + (c1[2 * P + p] * a0 + c1[3 * P + p] * a1);
+                v[p] =
+                    (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
                 u[p] = un;
                 pk[p].update(un, static_cast<double>(i));
             }
@@ -168,12 +172,14 @@ void run_batch(const Stepper* const* st, const std::vector<double>& a, Peak* pea
                 const Pair* r = c + k * 4 * P;
                 const double at = static_cast<double>((i - 1) * n + k + 1);
                 for (std::size_t p = 0; p < P; ++p) {
-                    un[p] = (r[p] * u[p] + r[P + p] * v[p]) + (r[2 * P + p] * a0 + r[3 * P + p] * a1);
+                    un[p] =
+                        (r[p] * u[p] + r[P + p] * v[p]) + (r[2 * P + p] * a0 + r[3 * P + p] * a1);
                     pk[p].update(un[p], at);
                 }
             }
             for (std::size_t p = 0; p < P; ++p) {
-                v[p] = (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
+                v[p] =
+                    (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
                 u[p] = un[p];
             }
         }
@@ -202,13 +208,22 @@ std::vector<Peak> peaks_of(const std::vector<Stepper>& steppers, const std::vect
                steppers[order[i + len]].sub_u.size() == steppers[order[i]].sub_u.size())
             ++len;
         std::array<const Stepper*, batch> group{};
-        for (std::size_t o = 0; o < batch; ++o) group[o] = &steppers[order[i + std::min(o, len - 1)]];
+        for (std::size_t o = 0; o < batch; ++o)
+            group[o] = &steppers[order[i + std::min(o, len - 1)]];
         std::array<Peak, batch> out{};
         switch ((len + 1) / 2) {
-            case 4: run_batch<4, Track>(group.data(), a, out.data()); break;
-            case 3: run_batch<3, Track>(group.data(), a, out.data()); break;
-            case 2: run_batch<2, Track>(group.data(), a, out.data()); break;
-            default: run_batch<1, Track>(group.data(), a, out.data()); break;
+            case 4:
+                run_batch<4, Track>(group.data(), a, out.data());
+                break;
+            case 3:
+                run_batch<3, Track>(group.data(), a, out.data());
+                break;
+            case 2:
+                run_batch<2, Track>(group.data(), a, out.data());
+                break;
+            default:
+                run_batch<1, Track>(group.data(), a, out.data());
+                break;
         }
         for (std::size_t o = 0; o < len; ++o) peaks[order[i + o]] = out[o];
         i += len;
@@ -220,7 +235,8 @@ void check_inputs(const core::Record& record, const std::vector<double>& damping
                   const std::vector<double>& frequency_hz) {
     core::validate(record);
     if (dampings.empty())
-        throw InputError(SourceLocation{"", 0, "damping"}, "no damping given; expected at least one");
+        throw InputError(SourceLocation{"", 0, "damping"},
+                         "no damping given; expected at least one");
     for (double z : dampings)
         require_in_range(z, 0.0, 1.0, SourceLocation{"", 0, "damping"}, true, false);
     if (frequency_hz.empty())
@@ -238,8 +254,9 @@ Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
                                      damping_index, dampings.size()));
     for (std::size_t i = 1; i < frequency_hz.size(); ++i) {
         if (!(frequency_hz[i] > frequency_hz[i - 1]))
-            throw InputError(SourceLocation{"", 0, "frequency_hz"},
-                             "frequencies are not strictly increasing; a Spectrum needs them sorted");
+            throw InputError(
+                SourceLocation{"", 0, "frequency_hz"},
+                "frequencies are not strictly increasing; a Spectrum needs them sorted");
     }
     Spectrum s;
     s.damping = dampings[damping_index];
@@ -288,7 +305,8 @@ std::vector<double> psa_g(const core::Record& record, double damping,
     std::vector<Stepper> steppers;
     steppers.reserve(frequency_hz.size());
     for (double f : frequency_hz)
-        steppers.push_back(make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
+        steppers.push_back(
+            make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
     const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
     std::vector<double> out(peaks.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -304,7 +322,8 @@ std::vector<OscillatorPeak> peak_responses(const core::Record& record, double da
     std::vector<Stepper> steppers;
     steppers.reserve(frequency_hz.size());
     for (double f : frequency_hz)
-        steppers.push_back(make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
+        steppers.push_back(
+            make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
     const std::vector<Peak> peaks = peaks_of<true>(steppers, record.accel_mps2);
     std::vector<OscillatorPeak> out(peaks.size());
     for (std::size_t i = 0; i < out.size(); ++i) {

@@ -1,9 +1,10 @@
 #include "spectra/spectrum.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fmt/format.h>
 #include <string_view>
 
 #include "core/errors.hpp"
@@ -13,10 +14,11 @@ namespace freestand::spectra {
 
 double Spectrum::psa_at(double f_hz) const {
     if (frequency_hz.empty() || frequency_hz.size() != psa_g.size())
-        throw InputError(SourceLocation{"", 0, "spectrum"},
-                         fmt::format("spectrum \"{}\" has {} frequencies and {} PSA values; expected "
-                                     "the same number, at least one",
-                                     label, frequency_hz.size(), psa_g.size()));
+        throw InputError(
+            SourceLocation{"", 0, "spectrum"},
+            fmt::format("spectrum \"{}\" has {} frequencies and {} PSA values; expected "
+                        "the same number, at least one",
+                        label, frequency_hz.size(), psa_g.size()));
     if (!(std::isfinite(f_hz) && f_hz > 0.0))
         throw InputError(SourceLocation{"", 0, "f_hz"},
                          fmt::format("frequency {} Hz must be finite and > 0", f_hz));
@@ -29,7 +31,8 @@ double Spectrum::psa_at(double f_hz) const {
     const auto hi = static_cast<std::size_t>(
         std::upper_bound(frequency_hz.begin(), frequency_hz.end(), f_hz) - frequency_hz.begin());
     const std::size_t lo = hi - 1;
-    const double t = std::log(f_hz / frequency_hz[lo]) / std::log(frequency_hz[hi] / frequency_hz[lo]);
+    const double t =
+        std::log(f_hz / frequency_hz[lo]) / std::log(frequency_hz[hi] / frequency_hz[lo]);
     return psa_g[lo] * std::pow(psa_g[hi] / psa_g[lo], t);
 }
 
@@ -37,8 +40,9 @@ std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_deca
     require_positive(fmin_hz, SourceLocation{"", 0, "fmin_hz"});
     require_positive(fmax_hz, SourceLocation{"", 0, "fmax_hz"});
     if (!(fmax_hz > fmin_hz))
-        throw InputError(SourceLocation{"", 0, "fmax_hz"},
-                         fmt::format("fmax {} Hz must be greater than fmin {} Hz", fmax_hz, fmin_hz));
+        throw InputError(
+            SourceLocation{"", 0, "fmax_hz"},
+            fmt::format("fmax {} Hz must be greater than fmin {} Hz", fmax_hz, fmin_hz));
     if (per_decade < 1)
         throw InputError(SourceLocation{"", 0, "per_decade"},
                          fmt::format("{} points per decade; expected an integer >= 1", per_decade));
@@ -91,7 +95,8 @@ void read_comment(std::string_view body, const std::string& file, int line, Read
     const std::string_view value = trim(b.substr(colon + 1));
     if (key == "damping") {
         const SourceLocation where{file, line, "damping"};
-        if (st.have_damping) throw InputError(where, "damping given twice; expected one \"# damping:\" line");
+        if (st.have_damping)
+            throw InputError(where, "damping given twice; expected one \"# damping:\" line");
         st.s.damping = parse_number(value, where, "a damping ratio in (0, 1), e.g. 0.05");
         require_in_range(st.s.damping, 0.0, 1.0, where, false, false);
         st.have_damping = true;
@@ -103,17 +108,19 @@ void read_comment(std::string_view body, const std::string& file, int line, Read
 void read_row(std::string_view text, const std::string& file, int line, ReadState& st) {
     const auto comma = text.find(',');
     if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
-        throw InputError(SourceLocation{file, line, ""},
-                         fmt::format("expected two columns \"frequency_hz,psa_g\"; got \"{}\"", text));
+        throw InputError(
+            SourceLocation{file, line, ""},
+            fmt::format("expected two columns \"frequency_hz,psa_g\"; got \"{}\"", text));
     const SourceLocation at_f{file, line, "frequency_hz"};
     const SourceLocation at_psa{file, line, "psa_g"};
     const double f = parse_number(text.substr(0, comma), at_f, "a frequency in Hz");
     const double psa = parse_number(text.substr(comma + 1), at_psa, "a PSA in g");
     if (!(f > 0.0)) throw InputError(at_f, fmt::format("frequency {} Hz must be > 0", f));
     if (!st.s.frequency_hz.empty() && !(f > st.s.frequency_hz.back()))
-        throw InputError(at_f, fmt::format("frequency {} Hz does not increase (previous row {} Hz); "
-                                           "expected strictly increasing frequencies",
-                                           f, st.s.frequency_hz.back()));
+        throw InputError(at_f,
+                         fmt::format("frequency {} Hz does not increase (previous row {} Hz); "
+                                     "expected strictly increasing frequencies",
+                                     f, st.s.frequency_hz.back()));
     if (!(psa > 0.0)) throw InputError(at_psa, fmt::format("PSA {} g must be > 0", psa));
     st.s.frequency_hz.push_back(f);
     st.s.psa_g.push_back(psa);
@@ -149,8 +156,9 @@ Spectrum read_spectrum_csv(const std::filesystem::path& path) {
                                  "no \"# damping: <ratio>\" line before the header; expected one, "
                                  "e.g. \"# damping: 0.05\"");
             if (raw != "frequency_hz,psa_g")
-                throw InputError(SourceLocation{file, line, "header"},
-                                 fmt::format("expected the header \"frequency_hz,psa_g\"; got \"{}\"", raw));
+                throw InputError(
+                    SourceLocation{file, line, "header"},
+                    fmt::format("expected the header \"frequency_hz,psa_g\"; got \"{}\"", raw));
             st.have_header = true;
             continue;
         }
@@ -163,17 +171,19 @@ Spectrum read_spectrum_csv(const std::filesystem::path& path) {
         throw InputError(SourceLocation{file, line, "header"},
                          "no header line; expected \"frequency_hz,psa_g\" after the comments");
     if (st.s.frequency_hz.size() < 2)
-        throw InputError(SourceLocation{file, line, ""},
-                         fmt::format("{} data rows; expected at least 2", st.s.frequency_hz.size()));
+        throw InputError(
+            SourceLocation{file, line, ""},
+            fmt::format("{} data rows; expected at least 2", st.s.frequency_hz.size()));
     return st.s;
 }
 
 void write_spectrum_csv(const Spectrum& s, const std::filesystem::path& path,
                         const std::vector<std::string>& comments) {
     if (s.frequency_hz.size() != s.psa_g.size() || s.frequency_hz.size() < 2)
-        throw InputError(SourceLocation{path.string(), 0, "spectrum"},
-                         fmt::format("{} frequencies and {} PSA values; expected the same number, >= 2",
-                                     s.frequency_hz.size(), s.psa_g.size()));
+        throw InputError(
+            SourceLocation{path.string(), 0, "spectrum"},
+            fmt::format("{} frequencies and {} PSA values; expected the same number, >= 2",
+                        s.frequency_hz.size(), s.psa_g.size()));
     std::string out;
     for (const auto& c : comments) out += "# " + c + "\n";
     if (!s.label.empty()) out += "# label: " + s.label + "\n";

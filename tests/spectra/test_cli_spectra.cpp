@@ -1,7 +1,8 @@
 // `freestand spectrum` and `freestand target`: output shape, values, and every bad option.
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -33,7 +34,8 @@ TEST_CASE("spectrum --json prints one object with the record measures and PSA pe
     REQUIRE(r.exit_code == 0);
     CHECK(r.err.empty());
     const auto j = nlohmann::json::parse(r.out);
-    for (const char* key : {"record", "dt_s", "pga_g", "pgv_mps", "pgd_m", "frequencies_hz", "psa_g", "sd_m", "psv_mps"})
+    for (const char* key : {"record", "dt_s", "pga_g", "pgv_mps", "pgd_m", "frequencies_hz",
+                            "psa_g", "sd_m", "psv_mps"})
         CHECK(j.contains(key));
     CHECK(j["record"] == "RSN175_IMPVALL.H_H-E12140");
     CHECK(j["dt_s"].get<double>() == Approx(0.005));
@@ -44,11 +46,13 @@ TEST_CASE("spectrum --json prints one object with the record measures and PSA pe
     REQUIRE(j["psa_g"].contains("0.1"));
     CHECK(j["psa_g"]["0.05"].size() == 301);
     // Rigid limit at 100 Hz: PSA close to PGA.
-    CHECK(j["psa_g"]["0.05"].back().get<double>() == Approx(j["pga_g"].get<double>()).epsilon(0.01));
+    CHECK(j["psa_g"]["0.05"].back().get<double>() ==
+          Approx(j["pga_g"].get<double>()).epsilon(0.01));
 }
 
 TEST_CASE("spectrum prints CSV: frequency_hz then psa_g_<damping> per damping", "[spectra][cli]") {
-    const auto r = run_cli("spectrum " + el_centro + " --damping 0.02,0.05 --fmin 0.5 --fmax 50 --per-decade 10");
+    const auto r = run_cli("spectrum " + el_centro +
+                           " --damping 0.02,0.05 --fmin 0.5 --fmax 50 --per-decade 10");
     REQUIRE(r.exit_code == 0);
     const auto l = lines(r.out);
     REQUIRE(l.size() == 22);  // header + 2 decades * 10 + 1
@@ -62,7 +66,8 @@ TEST_CASE("spectrum prints CSV: frequency_hz then psa_g_<damping> per damping", 
 
 TEST_CASE("target rg1.60 prints the RG 1.60 spectrum; --output writes the spectrum file format",
           "[spectra][cli]") {
-    const auto r = run_cli("target --design rg1.60 --pga 0.3 --damping 0.05 --frequencies 0.25,2.5,9,33 --json");
+    const auto r = run_cli(
+        "target --design rg1.60 --pga 0.3 --damping 0.05 --frequencies 0.25,2.5,9,33 --json");
     REQUIRE(r.exit_code == 0);
     const auto j = nlohmann::json::parse(r.out);
     CHECK(j["design"] == "rg1.60");
@@ -75,18 +80,23 @@ TEST_CASE("target rg1.60 prints the RG 1.60 spectrum; --output writes the spectr
     CHECK(lines(v.out)[1] == fmt::format("3.5,{}", 2.98 * 0.3));
 
     const fs::path out = fs::temp_directory_path() / "freestand_cli_target_out.csv";
-    const auto w = run_cli("target --design ec8 --ag 0.2 --type 1 --ground B --damping 0.1 --output '" + out.string() + "'");
+    const auto w =
+        run_cli("target --design ec8 --ag 0.2 --type 1 --ground B --damping 0.1 --output '" +
+                out.string() + "'");
     REQUIRE(w.exit_code == 0);
     const auto s = spectra::read_spectrum_csv(out);
     CHECK(s.damping == 0.1);
-    CHECK(s.psa_g == spectra::ec8(0.2, spectra::Ec8Type::type1, 'B', 0.1, spectra::log_frequencies(0.1, 100, 100)).psa_g);
+    CHECK(s.psa_g == spectra::ec8(0.2, spectra::Ec8Type::type1, 'B', 0.1,
+                                  spectra::log_frequencies(0.1, 100, 100))
+                         .psa_g);
 }
 
 TEST_CASE("target asce7, ec8 and is1893 take their own parameters", "[spectra][cli]") {
     const auto a = run_cli("target --design asce7 --sds 1.0 --sd1 0.6 --tl 8 --frequencies 1");
     REQUIRE(a.exit_code == 0);
     CHECK(lines(a.out)[1] == "1,0.6");
-    const auto e = run_cli("target --design ec8 --ag 0.25 --type 2 --ground A --damping 0.05,0.1 --frequencies 5");
+    const auto e = run_cli(
+        "target --design ec8 --ag 0.25 --type 2 --ground A --damping 0.05,0.1 --frequencies 5");
     REQUIRE(e.exit_code == 0);
     CHECK(lines(e.out)[0] == "frequency_hz,psa_g_0.05,psa_g_0.1");
     const auto i = run_cli("target --design is1893 --pga 0.2 --soil soft --frequencies 0.5");
@@ -103,31 +113,45 @@ TEST_CASE("bad options exit 2 (usage) or 3 (value) and name the option", "[spect
     const Case cases[] = {
         {"spectrum", 2, "the option '--record' is required"},
         {"spectrum " + el_centro + " --bogus", 2, "unrecognised option '--bogus'"},
-        {"spectrum " + el_centro + " --damping 1.5", 3, "--damping: value 1.5 is out of range; expected (0, 1)"},
-        {"spectrum " + el_centro + " --damping 0", 3, "--damping: value 0 is out of range; expected (0, 1)"},
-        {"spectrum " + el_centro + " --damping 0.05,abc", 2, "--damping: expected a finite number; got \"abc\""},
+        {"spectrum " + el_centro + " --damping 1.5", 3,
+         "--damping: value 1.5 is out of range; expected (0, 1)"},
+        {"spectrum " + el_centro + " --damping 0", 3,
+         "--damping: value 0 is out of range; expected (0, 1)"},
+        {"spectrum " + el_centro + " --damping 0.05,abc", 2,
+         "--damping: expected a finite number; got \"abc\""},
         {"spectrum " + el_centro + " --damping 0.05,0.05", 2, "--damping: 0.05 given twice"},
-        {"spectrum " + el_centro + " --fmin 10 --fmax 1", 3, "--fmax: 1 Hz must be greater than --fmin 10 Hz"},
+        {"spectrum " + el_centro + " --fmin 10 --fmax 1", 3,
+         "--fmax: 1 Hz must be greater than --fmin 10 Hz"},
         {"spectrum " + el_centro + " --fmin -1", 3, "--fmin: value -1 must be a finite number > 0"},
-        {"spectrum " + el_centro + " --per-decade 0", 3, "--per-decade: 0; expected an integer in [1, 100000]"},
-        {"spectrum " + el_centro + " --per-decade 2.5", 3, "--per-decade: 2.5; expected an integer"},
-        {"spectrum " + el_centro + " --frequencies 1,2 --fmin 0.5", 2, "--frequencies and --fmin exclude each other"},
+        {"spectrum " + el_centro + " --per-decade 0", 3,
+         "--per-decade: 0; expected an integer in [1, 100000]"},
+        {"spectrum " + el_centro + " --per-decade 2.5", 3,
+         "--per-decade: 2.5; expected an integer"},
+        {"spectrum " + el_centro + " --frequencies 1,2 --fmin 0.5", 2,
+         "--frequencies and --fmin exclude each other"},
         {"spectrum " + el_centro + " --frequencies 2,1", 3, "--frequencies: 1 Hz follows 2 Hz"},
         {"spectrum tests/data/no_such.AT2", 5, "no_such.AT2: cannot open file for reading"},
         {"target", 2, "the option '--design' is required"},
         {"target --design rg1.70 --pga 0.3", 2, "--design: unknown design \"rg1.70\""},
         {"target --design rg1.60", 2, "--design rg1.60 needs --pga"},
         {"target --design rg1.60 --pga 0", 3, "--pga: value 0 must be a finite number > 0"},
-        {"target --design rg1.60 --pga 0.3 --damping 0.2", 3, "--damping: value 0.2 is out of range; expected [0.005, 0.1]"},
+        {"target --design rg1.60 --pga 0.3 --damping 0.2", 3,
+         "--damping: value 0.2 is out of range; expected [0.005, 0.1]"},
         {"target --design rg1.60 --pga 0.3 --sds 1", 2, "--sds does not apply to --design rg1.60"},
-        {"target --design asce7 --sds 1 --sd1 0.6 --tl 8 --vertical", 2, "--vertical does not apply to --design asce7"},
+        {"target --design asce7 --sds 1 --sd1 0.6 --tl 8 --vertical", 2,
+         "--vertical does not apply to --design asce7"},
         {"target --design asce7 --sds 1 --sd1 0.6", 2, "--design asce7 needs --tl"},
-        {"target --design asce7 --sds 1 --sd1 0.6 --tl 8 --damping 0.1", 3, "--design asce7 is defined at 5% only"},
+        {"target --design asce7 --sds 1 --sd1 0.6 --tl 8 --damping 0.1", 3,
+         "--design asce7 is defined at 5% only"},
         {"target --design asce7 --sds 1 --sd1 0.6 --tl 0.3", 3, "tl_s: TL 0.3 s must exceed TS"},
-        {"target --design ec8 --ag 0.3 --type 3 --ground A", 2, "--type: \"3\"; --design ec8 needs --type 1 or 2"},
-        {"target --design ec8 --ag 0.3 --type 1 --ground F", 2, "--ground: \"F\"; --design ec8 needs --ground A, B, C, D or E"},
-        {"target --design is1893 --pga 0.3 --soil clay", 2, "--soil: \"clay\"; --design is1893 needs --soil rock, medium or soft"},
-        {"target --design rg1.60 --pga 0.3 --damping 0.05,0.1 --output x.csv", 2, "--output writes one spectrum"},
+        {"target --design ec8 --ag 0.3 --type 3 --ground A", 2,
+         "--type: \"3\"; --design ec8 needs --type 1 or 2"},
+        {"target --design ec8 --ag 0.3 --type 1 --ground F", 2,
+         "--ground: \"F\"; --design ec8 needs --ground A, B, C, D or E"},
+        {"target --design is1893 --pga 0.3 --soil clay", 2,
+         "--soil: \"clay\"; --design is1893 needs --soil rock, medium or soft"},
+        {"target --design rg1.60 --pga 0.3 --damping 0.05,0.1 --output x.csv", 2,
+         "--output writes one spectrum"},
     };
     for (const auto& c : cases) {
         INFO(c.args);

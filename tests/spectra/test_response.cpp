@@ -36,7 +36,8 @@ double step_load(double) { return step_a; }
 double step_response_m(double a, double w, double z, double t) {
     const double wd = w * std::sqrt(1.0 - z * z);
     return -(a / (w * w)) *
-           (1.0 - std::exp(-z * w * t) * (std::cos(wd * t) + z / std::sqrt(1.0 - z * z) * std::sin(wd * t)));
+           (1.0 - std::exp(-z * w * t) *
+                      (std::cos(wd * t) + z / std::sqrt(1.0 - z * z) * std::sin(wd * t)));
 }
 
 }  // namespace
@@ -59,7 +60,8 @@ TEST_CASE("undamped SDOF under a step peaks at 2 a / w^2 at t = T/2", "[spectra]
     CHECK(rs.psv_mps[0][0] == Approx(2.0 * step_a / w).epsilon(1e-10));
 }
 
-TEST_CASE("damped SDOF under a step follows the closed form before its first peak", "[spectra][response]") {
+TEST_CASE("damped SDOF under a step follows the closed form before its first peak",
+          "[spectra][response]") {
     // zeta = 0.05 and f chosen so the damped half period pi / wd is exactly 0.5 s (sample 50).
     const double z = 0.05;
     const double f = 1.0 / std::sqrt(1.0 - z * z);
@@ -81,8 +83,8 @@ TEST_CASE("damped SDOF under a step follows the closed form before its first pea
 
 namespace {
 
-constexpr double sine_amp = 3.0;                // m/s^2
-constexpr double sine_omega = 2.0 * pi * 0.8;   // rad/s
+constexpr double sine_amp = 3.0;               // m/s^2
+constexpr double sine_omega = 2.0 * pi * 0.8;  // rad/s
 double sine_load(double t) { return sine_amp * std::sin(sine_omega * t); }
 
 /// u'' + 2 z w u' + w^2 u = -A sin(W t) from rest: steady state C sin Wt + D cos Wt with
@@ -102,7 +104,8 @@ double sine_response_m(double w, double z, double t) {
 
 }  // namespace
 
-TEST_CASE("SDOF under a sine matches the exact steady plus transient solution", "[spectra][response]") {
+TEST_CASE("SDOF under a sine matches the exact steady plus transient solution",
+          "[spectra][response]") {
     // Input sampled at dt = 2e-4 s: the piecewise-linear error in the load is ~(W dt)^2 / 8 =
     // 1.6e-7 relative; sub-steps of T/2000 resolve the peak to 1 - cos(pi/2000) = 1.2e-6.
     const double dt = 2e-4;
@@ -113,7 +116,8 @@ TEST_CASE("SDOF under a sine matches the exact steady plus transient solution", 
             double exact = 0.0;
             for (int i = 0; i <= 1000000; ++i)
                 exact = std::max(exact, std::abs(sine_response_m(w, z, 1e-5 * i)));
-            const auto rs = spectra::response_spectra(rec, {z}, {f}, spectra::ResponseOptions{2000});
+            const auto rs =
+                spectra::response_spectra(rec, {z}, {f}, spectra::ResponseOptions{2000});
             INFO("zeta " << z << ", f " << f << " Hz");
             CHECK(rs.sd_m[0][0] == Approx(exact).epsilon(1e-5));
         }
@@ -122,10 +126,13 @@ TEST_CASE("SDOF under a sine matches the exact steady plus transient solution", 
 
 namespace {
 
-const char* const shipped_records[] = {"RSN175_IMPVALL.H_H-E12140.AT2", "RSN175_IMPVALL.H_H-E12230.AT2",
+const char* const shipped_records[] = {"RSN175_IMPVALL.H_H-E12140.AT2",
+                                       "RSN175_IMPVALL.H_H-E12230.AT2",
                                        "RSN1546_CHICHI_TCU122-N.AT2"};
 
-core::Record shipped(const char* name) { return core::read_at2(fs::path(FREESTAND_TEST_DATA) / name); }
+core::Record shipped(const char* name) {
+    return core::read_at2(fs::path(FREESTAND_TEST_DATA) / name);
+}
 
 /// Second method: classical RK4 on the same piecewise-linear input, with steps <= T/400, peak
 /// |u| taken at the same points the Nigam-Jennings code uses (n equal sub-points per sample,
@@ -146,8 +153,10 @@ double rk4_peak_m(const core::Record& rec, double f_hz, double zeta) {
         for (int k = 0; k < n * m; ++k) {
             const double t = h * k;
             const double k1u = v, k1v = acc(t, u, v);
-            const double k2u = v + 0.5 * h * k1v, k2v = acc(t + 0.5 * h, u + 0.5 * h * k1u, v + 0.5 * h * k1v);
-            const double k3u = v + 0.5 * h * k2v, k3v = acc(t + 0.5 * h, u + 0.5 * h * k2u, v + 0.5 * h * k2v);
+            const double k2u = v + 0.5 * h * k1v,
+                         k2v = acc(t + 0.5 * h, u + 0.5 * h * k1u, v + 0.5 * h * k1v);
+            const double k3u = v + 0.5 * h * k2v,
+                         k3v = acc(t + 0.5 * h, u + 0.5 * h * k2u, v + 0.5 * h * k2v);
             const double k4u = v + h * k3v, k4v = acc(t + h, u + h * k3u, v + h * k3v);
             u += h / 6.0 * (k1u + 2.0 * k2u + 2.0 * k3u + k4u);
             v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
@@ -224,21 +233,28 @@ TEST_CASE("psa_g, response_spectra and peak_responses agree; SD, PSV, PSA are co
         CHECK(rs.psv_mps[0][i] == Approx(w * rs.sd_m[0][i]).epsilon(1e-14));
         CHECK(rs.psa_g[0][i] == Approx(w * w * rs.sd_m[0][i] / units::g_mps2).epsilon(1e-14));
     }
-    CHECK_THROWS_WITH(rs.spectrum(0), Catch::Contains("frequency_hz: frequencies are not strictly increasing"));
-    CHECK_THROWS_WITH(rs.spectrum(2), Catch::Contains("damping_index: damping index 2 out of range"));
+    CHECK_THROWS_WITH(rs.spectrum(0),
+                      Catch::Contains("frequency_hz: frequencies are not strictly increasing"));
+    CHECK_THROWS_WITH(rs.spectrum(2),
+                      Catch::Contains("damping_index: damping index 2 out of range"));
 }
 
 TEST_CASE("response spectra reject bad dampings, frequencies and records", "[spectra][response]") {
     const auto rec = make_record(0.01, 10, step_load);
     CHECK_THROWS_AS(spectra::psa_g(rec, 1.0, {1.0}), InputError);
-    CHECK_THROWS_WITH(spectra::psa_g(rec, -0.1, {1.0}), Catch::Contains("damping: value -0.1 is out of range; expected [0, 1)"));
-    CHECK_THROWS_WITH(spectra::psa_g(rec, 0.05, {0.0}), Catch::Contains("frequency_hz: value 0 must be a finite number > 0"));
-    CHECK_THROWS_WITH(spectra::psa_g(rec, 0.05, {}), Catch::Contains("frequency_hz: no frequency given"));
-    CHECK_THROWS_WITH(spectra::response_spectra(rec, {}, {1.0}), Catch::Contains("damping: no damping given"));
+    CHECK_THROWS_WITH(spectra::psa_g(rec, -0.1, {1.0}),
+                      Catch::Contains("damping: value -0.1 is out of range; expected [0, 1)"));
+    CHECK_THROWS_WITH(spectra::psa_g(rec, 0.05, {0.0}),
+                      Catch::Contains("frequency_hz: value 0 must be a finite number > 0"));
+    CHECK_THROWS_WITH(spectra::psa_g(rec, 0.05, {}),
+                      Catch::Contains("frequency_hz: no frequency given"));
+    CHECK_THROWS_WITH(spectra::response_spectra(rec, {}, {1.0}),
+                      Catch::Contains("damping: no damping given"));
     core::Record empty = rec;
     empty.accel_mps2.clear();
     CHECK_THROWS_WITH(spectra::psa_g(empty, 0.05, {1.0}), Catch::Contains("record has no samples"));
     core::Record nan = rec;
     nan.accel_mps2[3] = std::nan("");
-    CHECK_THROWS_WITH(spectra::psa_g(nan, 0.05, {1.0}), Catch::Contains("sample 3 is not a finite number"));
+    CHECK_THROWS_WITH(spectra::psa_g(nan, 0.05, {1.0}),
+                      Catch::Contains("sample 3 is not a finite number"));
 }

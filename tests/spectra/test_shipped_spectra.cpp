@@ -21,27 +21,40 @@ using Maker = std::function<spectra::Spectrum(const std::vector<double>&)>;
 
 std::map<std::string, Maker> expected_files() {
     std::map<std::string, Maker> m;
-    const std::map<std::string, double> pct{{"0.5", 0.005}, {"2", 0.02}, {"5", 0.05}, {"7", 0.07}, {"10", 0.10}};
+    const std::map<std::string, double> pct{
+        {"0.5", 0.005}, {"2", 0.02}, {"5", 0.05}, {"7", 0.07}, {"10", 0.10}};
     for (const auto& [p, d] : pct) {
         const double damping = d;
-        m["rg160-h-" + p + "pct-1g.csv"] = [damping](const auto& f) { return spectra::rg160(1.0, damping, false, f); };
-        m["rg160-v-" + p + "pct-1g.csv"] = [damping](const auto& f) { return spectra::rg160(1.0, damping, true, f); };
+        m["rg160-h-" + p + "pct-1g.csv"] = [damping](const auto& f) {
+            return spectra::rg160(1.0, damping, false, f);
+        };
+        m["rg160-v-" + p + "pct-1g.csv"] = [damping](const auto& f) {
+            return spectra::rg160(1.0, damping, true, f);
+        };
     }
-    m["asce7-sds1.0-sd1-0.6-tl8.csv"] = [](const auto& f) { return spectra::asce7(1.0, 0.6, 8.0, f); };
+    m["asce7-sds1.0-sd1-0.6-tl8.csv"] = [](const auto& f) {
+        return spectra::asce7(1.0, 0.6, 8.0, f);
+    };
     for (int type : {1, 2}) {
         for (char ground : std::string("ABCDE")) {
             for (const auto& [p, d] : std::map<std::string, double>{{"5", 0.05}, {"10", 0.10}}) {
                 const double damping = d;
                 const auto t = type == 1 ? spectra::Ec8Type::type1 : spectra::Ec8Type::type2;
-                const std::string name = "ec8-type" + std::to_string(type) + "-ground" + std::string(1, ground) +
-                                         "-" + p + "pct-1g.csv";
+                const std::string name = "ec8-type" + std::to_string(type) + "-ground" +
+                                         std::string(1, ground) + "-" + p + "pct-1g.csv";
                 m[name] = [=](const auto& f) { return spectra::ec8(1.0, t, ground, damping, f); };
             }
         }
     }
-    m["is1893-rock-5pct-1g.csv"] = [](const auto& f) { return spectra::is1893(1.0, spectra::Is1893Soil::rock, f); };
-    m["is1893-medium-5pct-1g.csv"] = [](const auto& f) { return spectra::is1893(1.0, spectra::Is1893Soil::medium, f); };
-    m["is1893-soft-5pct-1g.csv"] = [](const auto& f) { return spectra::is1893(1.0, spectra::Is1893Soil::soft, f); };
+    m["is1893-rock-5pct-1g.csv"] = [](const auto& f) {
+        return spectra::is1893(1.0, spectra::Is1893Soil::rock, f);
+    };
+    m["is1893-medium-5pct-1g.csv"] = [](const auto& f) {
+        return spectra::is1893(1.0, spectra::Is1893Soil::medium, f);
+    };
+    m["is1893-soft-5pct-1g.csv"] = [](const auto& f) {
+        return spectra::is1893(1.0, spectra::Is1893Soil::soft, f);
+    };
     return m;
 }
 
