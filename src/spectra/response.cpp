@@ -101,8 +101,8 @@ using Pair = double __attribute__((vector_size(16)));
 inline Pair pair_max(Pair x, Pair y) { return x > y ? x : y; }
 inline Pair pair_abs(Pair x) { return x < 0.0 ? -x : x; }
 
-/// Peak of one oscillator: |u| max, the signed u there, and its sub-point index
-/// (time = index * dt / n; the first sub-point at or after which the maximum was reached).
+/// Peak of one oscillator: max |u|, the signed u there, and the index of the first sub-point
+/// reaching it, counted from the first sample (time = index * dt / n).
 struct Peak {
     double abs_m = 0.0;
     double signed_m = 0.0;
