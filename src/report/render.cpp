@@ -75,7 +75,9 @@ mstch::map level_row(const LevelResult& l) {
         amp = "1.3-11 (rocking, measured range)";
     }
     std::string el_fs = none;
-    if (l.rocking.overturn_predicted) {
+    if (l.initiation.mode != Mode::rock && l.initiation.mode != Mode::slide_rock) {
+        el_fs = "not rocking";
+    } else if (l.rocking.overturn_predicted) {
         el_fs = "overturns";
     } else if (l.rocking.overturn_fs) {
         el_fs = fixed(*l.rocking.overturn_fs, 2);
@@ -135,9 +137,12 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
     const LevelResult* gov = r.levels.empty() ? nullptr : &r.levels[r.governing_level];
     mstch::array trials;
     for (const MaterialTrial& t : r.upgrade.trials) {
+        const std::string failing = t.verdict.kind == VerdictKind::anchor
+                                        ? "does not pass: rocking / overturning"
+                                        : "does not pass: slides beyond the allowable";
         trials.push_back(mstch::map{{"material", t.material},
                                     {"mu_s", fixed(t.mu_s, 2)},
-                                    {"verdict", verdict_text(t.verdict)},
+                                    {"verdict", passes(t.verdict) ? verdict_text(t.verdict) : failing},
                                     {"margin", margin_text(t.verdict)},
                                     {"decided_by", std::string(to_string(t.verdict.decided_by))}});
     }
@@ -150,7 +155,8 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"description", r.input.component.description},
         {"verdict", verdict_text(r.overall)},
         {"verdict_kind", std::string(to_string(r.overall.kind))},
-        {"verdict_margin", margin_text(r.overall)},
+        {"verdict_margin", margin_text(r.overall) +
+                               (r.overall.material.empty() ? "" : " with " + r.overall.material)},
         {"verdict_margin_basis", r.overall.margin_basis},
         {"verdict_decided_by", std::string(to_string(r.overall.decided_by))},
         {"governing", gov ? fmt::format("PGA {:.3f} g, direction {}", gov->pga_g, to_string(gov->direction)) : none},

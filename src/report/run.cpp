@@ -25,8 +25,9 @@ std::string verdict_line(const assess::AssessmentResult& r) {
         const auto& g = r.levels[r.governing_level];
         where = fmt::format("governing PGA {:.3f} g, direction {}, ", g.pga_g, assess::to_string(g.direction));
     }
-    return fmt::format("{}: {} ({}margin {}, decided by {})", r.input.component.name,
-                       assess::verdict_text(r.overall), where,
+    const std::string with = r.overall.material.empty() ? "" : " with " + r.overall.material;
+    return fmt::format("{}: {} ({}margin{} {}, decided by {})", r.input.component.name,
+                       assess::verdict_text(r.overall), where, with,
                        r.overall.margin ? fmt::format("{:.2f}", *r.overall.margin) : "unbounded",
                        assess::to_string(r.overall.decided_by));
 }
