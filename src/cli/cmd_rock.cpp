@@ -149,22 +149,39 @@ std::optional<double> opt_number(const po::variables_map& vm, const char* option
     return parse_double(vm[option].as<std::string>(), std::string("--") + option);
 }
 
+// An optional number in [lo, hi) (hi = inf: [lo, inf)); range errors name the option the user
+// typed rather than the library's field.
+std::optional<double> opt_in_range(const po::variables_map& vm, const char* option, double lo,
+                                   double hi, bool lo_inclusive) {
+    const std::optional<double> v = opt_number(vm, option);
+    if (v)
+        require_in_range(*v, lo, hi, SourceLocation{"", 0, std::string("--") + option},
+                         lo_inclusive, false);
+    return v;
+}
+
 rocking::RockingInput read_input(const po::variables_map& vm) {
     rocking::RockingInput in;
     in.horizontal = read_set(vm, "spectrum");
     in.vertical.spectra = read_set(vm, "spectrum-v");
-    in.vertical.ratio = opt_number(vm, "v-ratio").value_or(0.0);
-    in.pga_h_g = opt_number(vm, "pga-g");
-    in.pga_v_g = opt_number(vm, "av-g");
-    in.pgv_mps = opt_number(vm, "pgv-mps");
-    in.mu_s = opt_number(vm, "mu");
-    if (in.mu_s) require_in_range(*in.mu_s, 0.0, HUGE_VAL, SourceLocation{"", 0, "--mu"}, true, false);
+    in.vertical.ratio = opt_in_range(vm, "v-ratio", 0.0, HUGE_VAL, true).value_or(0.0);
+    in.pga_h_g = opt_in_range(vm, "pga-g", 0.0, HUGE_VAL, true);
+    in.pga_v_g = opt_in_range(vm, "av-g", 0.0, 1.0, true);
+    in.pgv_mps = opt_in_range(vm, "pgv-mps", 0.0, HUGE_VAL, true);
+    in.mu_s = opt_in_range(vm, "mu", 0.0, HUGE_VAL, true);
     in.restitution = opt_number(vm, "restitution");
-    in.fs_required = opt_number(vm, "fs-required").value_or(1.5);
-    in.fixed_base_hz = opt_number(vm, "fn-hz");
+    if (in.restitution)
+        require_in_range(*in.restitution, 0.0, 1.0, SourceLocation{"", 0, "--restitution"}, false,
+                         true);
+    // FS = alpha / theta0 >= 1 whenever theta0 < alpha, so a requirement below 1 checks nothing.
+    in.fs_required = opt_in_range(vm, "fs-required", 1.0, HUGE_VAL, true).value_or(1.5);
+    in.fixed_base_hz = opt_in_range(vm, "fn-hz", 0.0, HUGE_VAL, false);
     if (vm.count("rock-band-hz")) {
         const auto band = parse_double_list(vm["rock-band-hz"].as<std::string>(), "--rock-band-hz");
         if (band.size() != 2) throw UsageError("--rock-band-hz: expected LO,HI in Hz");
+        if (!(band[0] > 0.0 && band[1] > band[0]))
+            throw InputError(SourceLocation{"", 0, "--rock-band-hz"},
+                             fmt::format("{},{} Hz; expected 0 < LO < HI", band[0], band[1]));
         in.rock_band_lo_hz = band[0];
         in.rock_band_hi_hz = band[1];
     }

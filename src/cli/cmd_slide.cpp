@@ -69,11 +69,23 @@ int run_slide(const std::vector<std::string>& args) {
     require_in_range(in.mu_s, 0.0, HUGE_VAL, SourceLocation{"", 0, "--mu"}, true, false);
     in.av_g = parse_double((*vm)["av-g"].as<std::string>(), "--av-g");
     require_in_range(in.av_g, 0.0, 2.5, SourceLocation{"", 0, "--av-g"}, true, false);
-    if (vm->count("pgd-m")) in.pgd_m = parse_double((*vm)["pgd-m"].as<std::string>(), "--pgd-m");
-    if (vm->count("pga-g")) in.pga_h_g = parse_double((*vm)["pga-g"].as<std::string>(), "--pga-g");
+    // Range checks here so the message names the option the user typed, not the library field.
+    if (vm->count("pgd-m")) {
+        in.pgd_m = parse_double((*vm)["pgd-m"].as<std::string>(), "--pgd-m");
+        require_in_range(*in.pgd_m, 0.0, HUGE_VAL, SourceLocation{"", 0, "--pgd-m"}, true, false);
+    }
+    if (vm->count("pga-g")) {
+        in.pga_h_g = parse_double((*vm)["pga-g"].as<std::string>(), "--pga-g");
+        require_in_range(*in.pga_h_g, 0.0, HUGE_VAL, SourceLocation{"", 0, "--pga-g"}, true, false);
+    }
+    std::optional<double> fes_hz;
+    if (vm->count("fes-hz")) {
+        fes_hz = parse_double((*vm)["fes-hz"].as<std::string>(), "--fes-hz");
+        require_positive(*fes_hz, SourceLocation{"", 0, "--fes-hz"});
+    }
     const sliding::SlidingEstimate e =
-        vm->count("fes-hz")
-            ? sliding::estimate_sliding(in, parse_double((*vm)["fes-hz"].as<std::string>(), "--fes-hz"))
+        fes_hz
+            ? sliding::estimate_sliding(in, *fes_hz)
             : sliding::estimate_sliding(
                   in, sliding::vector_horizontal_from_files(
                           split_paths((*vm)["spectrum10"].as<std::string>()),

@@ -108,3 +108,29 @@ TEST_CASE("rock: out-of-range input is a clear error", "[rocking][cli]") {
     CHECK(r.exit_code != 0);
     CHECK(r.err.find("x.csv") != std::string::npos);
 }
+
+TEST_CASE("rock: range errors name the option as typed", "[rocking][cli]") {
+    struct Case {
+        const char* option;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"--pga-g -1", "--pga-g: value -1 is out of range; expected [0, inf)"},
+        {"--av-g -0.5", "--av-g: value -0.5 is out of range; expected [0, 1)"},
+        {"--av-g 1", "--av-g: value 1 is out of range; expected [0, 1)"},
+        {"--pgv-mps -1", "--pgv-mps: value -1 is out of range; expected [0, inf)"},
+        {"--v-ratio -0.1", "--v-ratio: value -0.1 is out of range; expected [0, inf)"},
+        {"--restitution 0", "--restitution: value 0 is out of range; expected (0, 1]"},
+        {"--fs-required 0.5", "--fs-required: value 0.5 is out of range; expected [1, inf)"},
+        {"--fn-hz 0", "--fn-hz: value 0 is out of range; expected (0, inf)"},
+        {"--rock-band-hz 5,1", "--rock-band-hz: 5,1 Hz; expected 0 < LO < HI"},
+        {"--rock-band-hz -1,2", "--rock-band-hz: -1,2 Hz; expected 0 < LO < HI"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.option);
+        const auto r = run_cli(std::string("rock --block b=0.15,h=0.6 ") + c.option);
+        CHECK(r.exit_code == 3);
+        CHECK(r.out.empty());
+        CHECK(r.err.find(c.message) != std::string::npos);
+    }
+}

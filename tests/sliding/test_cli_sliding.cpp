@@ -145,10 +145,18 @@ TEST_CASE("slide: bad spectra and options are clear errors", "[sliding][cli]") {
     r = run_cli("slide --mu -0.15 --fes-hz 1");
     CHECK(r.exit_code == 3);
     CHECK(r.err.find("--mu") != std::string::npos);
+    // Range errors name the option as typed, with the allowed range.
     r = run_cli("slide --mu 0.15 --fes-hz 0");
     CHECK(r.exit_code == 3);
-    CHECK(r.err.find("f_es_hz") != std::string::npos);
+    CHECK(r.err.find("--fes-hz: value 0 must be a finite number > 0") != std::string::npos);
     r = run_cli("slide --mu 0.15 --fes-hz 1 --pgd-m -1");
     CHECK(r.exit_code == 3);
-    CHECK(r.err.find("pgd_m") != std::string::npos);
+    CHECK(r.err.find("--pgd-m: value -1 is out of range; expected [0, inf)") != std::string::npos);
+    r = run_cli("slide --mu 0.15 --fes-hz 1 --pga-g -0.2");
+    CHECK(r.exit_code == 3);
+    CHECK(r.err.find("--pga-g: value -0.2 is out of range; expected [0, inf)") != std::string::npos);
+    r = run_cli("slide --mu 0.15 --fes-hz nan");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--fes-hz: expected a finite number; got \"nan\"") != std::string::npos);
+    CHECK(r.out.empty());
 }
