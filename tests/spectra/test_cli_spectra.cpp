@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -158,6 +159,47 @@ TEST_CASE("bad options exit 2 (usage) or 3 (value) and name the option", "[spect
         const auto r = run_cli(c.args);
         CHECK(r.exit_code == c.code);
         CHECK(r.out.empty());
+        CHECK_THAT(r.err, Catch::Contains(c.message));
+    }
+}
+
+TEST_CASE("spectrum on a bad record exits 3 naming file, line and what was expected",
+          "[spectra][cli]") {
+    // Issue 2: each bad-input case is a clear error with a non-zero exit code through the CLI,
+    // not only in the reader (the reader tests in tests/core check the same cases in detail).
+    const fs::path dir = fs::temp_directory_path() / "freestand_cli_bad_records";
+    fs::create_directories(dir);
+    const auto write = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name, std::ios::binary) << text;
+        return (dir / name).string();
+    };
+    std::string at2 = "PEER header\nevent\nACCELERATION TIME SERIES IN UNITS OF G\n"
+                      "NPTS=    5, DT=   .0100 SEC\n  0.1 0.2 0.3\n";
+    struct Case {
+        std::string file;
+        const char* message;
+    };
+    const Case cases[] = {
+        {write("empty.csv", ""), "empty.csv:1: empty file; expected a header"},
+        {write("malformed.csv", "time_s,accel_g\n0,0.1\n0.01,0.2;x\n"),
+         "malformed.csv:3: column 2 (accel_g): expected a number; got \"0.2;x\""},
+        {write("nonuniform.csv", "time_s,accel_g\n0,0.1\n0.01,0.2\n0.03,0.1\n"),
+         "nonuniform.csv:4: column 1 (time_s): non-uniform time step"},
+        {write("nan.csv", "time_s,accel_g\n0,0.1\n0.01,nan\n"),
+         "nan.csv:3: column 2 (accel_g): value \"nan\" is not finite; expected a finite number"},
+        {write("inf.csv", "time_s,accel_g\n0,0.1\n0.01,-inf\n"),
+         "inf.csv:3: column 2 (accel_g): value \"-inf\" is not finite"},
+        {write("nounit.csv", "time_s,accel\n0,0.1\n0.01,0.2\n"),
+         "nounit.csv:1: header: column \"accel\" has no recognised unit"},
+        {write("npts.AT2", at2), "npts.AT2:4: NPTS: header says NPTS= 5 but the file holds 3 values"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.file);
+        const auto r = run_cli("spectrum '" + c.file + "' --json");
+        CHECK(r.exit_code == 3);
+        CHECK(r.out.empty());
+        CHECK_THAT(r.err, Catch::Contains(std::string("freestand spectrum: error: ") +
+                                          (dir / "").string()));
         CHECK_THAT(r.err, Catch::Contains(c.message));
     }
 }
