@@ -1,6 +1,9 @@
 #include "assess/histories.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <future>
+#include <thread>
 
 #include "core/errors.hpp"
 #include "core/measures.hpp"
@@ -22,6 +25,24 @@ motion::TargetSet unit_targets(const Site& site) {
         site.vertical_ratio);
     t.horizontal.rg160_psd_pga_g = 1.0;  // the RG 1.60 target PSD applies to the horizontals
     return t;
+}
+
+HistorySet generate_one(const Case& c, const motion::TargetSet& targets, std::size_t k) {
+    motion::GenerateOptions go;
+    go.seed = HistoryBank::history_seed(c.options.seed, static_cast<int>(k));
+    for (std::size_t j = 0; j < 3 && !c.options.seed_records.empty(); ++j) {
+        go.seed_records.push_back(core::read_record(c.options.seed_records[3 * k + j]));
+    }
+    const motion::GeneratedSet g = motion::generate_set(targets, go);
+    HistorySet s;
+    s.h1 = g.components.at(0).record;
+    s.h2 = g.components.at(1).record;
+    s.v = g.components.at(2).record;
+    for (const auto& comp : g.components) s.acceptance.push_back(comp.acceptance);
+    s.correlations = g.correlations;
+    s.passed = g.passed;
+    s.method = g.components.at(0).method;
+    return s;
 }
 
 }  // namespace
@@ -47,28 +68,24 @@ const std::vector<HistorySet>& HistoryBank::sets() {
                                      3 * n, n, opt.seed_records.size()));
     }
     const motion::TargetSet targets = unit_targets(case_->site);
-    for (std::size_t k = 0; k < n; ++k) {
-        motion::GenerateOptions go;
-        go.seed = history_seed(opt.seed, static_cast<int>(k));
-        for (std::size_t j = 0; j < 3 && !opt.seed_records.empty(); ++j) {
-            go.seed_records.push_back(core::read_record(opt.seed_records[3 * k + j]));
-        }
-        const motion::GeneratedSet g = motion::generate_set(targets, go);
-        HistorySet s;
-        s.h1 = g.components.at(0).record;
-        s.h2 = g.components.at(1).record;
-        s.v = g.components.at(2).record;
-        for (const auto& comp : g.components) s.acceptance.push_back(comp.acceptance);
-        s.correlations = g.correlations;
-        s.passed = g.passed;
-        s.method = g.components.at(0).method;
+    // The sets are independent (own seeds); generating them on all cores keeps the result
+    // identical, since each lands in its own slot (the motion stage serialises FFTW planning).
+    sets_.resize(n);
+    const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(n, std::thread::hardware_concurrency()));
+    std::vector<std::future<void>> jobs;
+    for (std::size_t w = 0; w < workers; ++w) {
+        jobs.push_back(std::async(std::launch::async, [&, w] {
+            for (std::size_t k = w; k < n; k += workers) sets_[k] = generate_one(*case_, targets, k);
+        }));
+    }
+    for (auto& job : jobs) job.get();  // rethrows the first failure
+    for (const HistorySet& s : sets_) {
         const core::GroundMotion gx = core::measure(s.h1);
         const core::GroundMotion gy = core::measure(s.h2);
         unit_pgd_x_m_.push_back(gx.pgd_m);
         unit_pgd_y_m_.push_back(gy.pgd_m);
         unit_pgv_x_mps_.push_back(gx.pgv_mps);
         unit_pgv_y_mps_.push_back(gy.pgv_mps);
-        sets_.push_back(std::move(s));
     }
     generated_ = true;
     return sets_;
