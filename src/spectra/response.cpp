@@ -245,6 +245,18 @@ void check_inputs(const core::Record& record, const std::vector<double>& damping
     for (double f : frequency_hz) require_positive(f, SourceLocation{"", 0, "frequency_hz"});
 }
 
+/// Validated inputs, then one stepper per (damping, frequency), damping-major.
+std::vector<Stepper> steppers_for(const core::Record& record, const std::vector<double>& dampings,
+                                  const std::vector<double>& frequency_hz, int min_steps_per_period) {
+    check_inputs(record, dampings, frequency_hz);
+    std::vector<Stepper> steppers;
+    steppers.reserve(dampings.size() * frequency_hz.size());
+    for (double zeta : dampings)
+        for (double f : frequency_hz)
+            steppers.push_back(make_stepper(f, zeta, record.dt_s, min_steps_per_period));
+    return steppers;
+}
+
 }  // namespace
 
 Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
@@ -268,7 +280,8 @@ Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
 ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
                                  const std::vector<double>& frequency_hz,
                                  const ResponseOptions& options) {
-    check_inputs(record, dampings, frequency_hz);
+    const std::vector<Stepper> steppers =
+        steppers_for(record, dampings, frequency_hz, options.min_steps_per_period);
     ResponseSpectra out;
     out.frequency_hz = frequency_hz;
     out.dampings = dampings;
@@ -276,11 +289,6 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
     out.psa_g.assign(dampings.size(), std::vector<double>(nf));
     out.sd_m.assign(dampings.size(), std::vector<double>(nf));
     out.psv_mps.assign(dampings.size(), std::vector<double>(nf));
-    std::vector<Stepper> steppers;
-    steppers.reserve(dampings.size() * nf);
-    for (double zeta : dampings)
-        for (double f : frequency_hz)
-            steppers.push_back(make_stepper(f, zeta, record.dt_s, options.min_steps_per_period));
     const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
     for (std::size_t d = 0; d < dampings.size(); ++d) {
         for (std::size_t i = 0; i < nf; ++i) {
@@ -301,12 +309,8 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
 
 std::vector<double> psa_g(const core::Record& record, double damping,
                           const std::vector<double>& frequency_hz) {
-    check_inputs(record, {damping}, frequency_hz);
-    std::vector<Stepper> steppers;
-    steppers.reserve(frequency_hz.size());
-    for (double f : frequency_hz)
-        steppers.push_back(
-            make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
+    const std::vector<Stepper> steppers =
+        steppers_for(record, {damping}, frequency_hz, ResponseOptions{}.min_steps_per_period);
     const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
     std::vector<double> out(peaks.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -318,12 +322,8 @@ std::vector<double> psa_g(const core::Record& record, double damping,
 
 std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,
                                            const std::vector<double>& frequency_hz) {
-    check_inputs(record, {damping}, frequency_hz);
-    std::vector<Stepper> steppers;
-    steppers.reserve(frequency_hz.size());
-    for (double f : frequency_hz)
-        steppers.push_back(
-            make_stepper(f, damping, record.dt_s, ResponseOptions{}.min_steps_per_period));
+    const std::vector<Stepper> steppers =
+        steppers_for(record, {damping}, frequency_hz, ResponseOptions{}.min_steps_per_period);
     const std::vector<Peak> peaks = peaks_of<true>(steppers, record.accel_mps2);
     std::vector<OscillatorPeak> out(peaks.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
