@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <string_view>
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/text_parse.hpp"
 
 namespace freestand::spectra {
 
@@ -64,18 +64,12 @@ std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_deca
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-    const auto first = s.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos) return {};
-    const auto last = s.find_last_not_of(" \t\r");
-    return s.substr(first, last - first + 1);
-}
+using core::text::trim;
 
 double parse_number(std::string_view text, const SourceLocation& where, const char* expected) {
     const std::string_view t = trim(text);
     double value = 0.0;
-    const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-    if (t.empty() || ec != std::errc() || ptr != t.data() + t.size() || !std::isfinite(value))
+    if (!core::text::parse_double(t, value) || !std::isfinite(value))
         throw InputError(where, fmt::format("expected {}; got \"{}\"", expected, t));
     return value;
 }
