@@ -20,7 +20,7 @@ const std::vector<std::string> component_keys{
     "name", "description", "mass_kg", "cg_height_m", "cg_to_edge_x_m", "cg_to_edge_y_m",
     "width_m", "depth_m", "height_m", "inertia_cg_x_kgm2", "inertia_cg_y_kgm2", "p_radps",
     "footprint", "fixed_base_frequency_hz", "free_rocking_band_hz", "base_material", "mu_s",
-    "mu_k", "restitution", "allowable_slide_m", "required_overturn_fs"};
+    "mu_k", "restitution", "allowable_slide_m", "required_overturn_fs", "assumptions"};
 const std::vector<std::string> site_keys{"design", "pga_g", "vertical_ratio", "sliding_damping",
                                          "g_mps2"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
@@ -150,6 +150,10 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
 
 Component read_component(TableReader& r, std::vector<std::string>& assumptions) {
     Component c;
+    // The case's own assumptions (data not published, chosen by the author) come first.
+    for (const std::string& a : r.strings("assumptions").value_or(std::vector<std::string>{})) {
+        assumptions.push_back("Case: " + a);
+    }
     c.name = r.required_string("name");
     c.description = r.string("description").value_or("");
     c.mass_kg = r.required_number("mass_kg", Range{0.0, 1e7, false, true});

@@ -60,6 +60,14 @@ TEST_CASE("glove box inertia derived from p reproduces p", "[assess][case]") {
     CHECK(c.component.free_rocking_band_hz.has_value());
 }
 
+TEST_CASE("the case's own assumptions are kept for the report, first", "[assess][case]") {
+    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair.toml");
+    REQUIRE(c.assumptions.size() >= 4);
+    CHECK(c.assumptions.front().rfind("Case: boxes side by side along x", 0) == 0);
+    CHECK(error_of(base_component + "assumptions = [1]\n" + base_site) ==
+          "case.toml:9: component.assumptions: expected an array of strings, got an integer element");
+}
+
 TEST_CASE("a uniform block from its box and a material from the table", "[assess][case]") {
     const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "block-ts1.toml");
     CHECK(c.component.uniform_block);
