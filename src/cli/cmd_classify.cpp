@@ -37,8 +37,8 @@ void print_text(const sliding::PeakInitiation& p, double mu, double a_g, double 
                              sliding::to_string(g.mode), edge_name(g.edge));
     std::cout << fmt::format("A = {:.6g} / (1 - {:.6g}) = {:.6g}, mu_s = {:.6g}, tan(alpha) = {:.6g}\n",
                              a_g, av_g, g.A, mu, g.tan_alpha);
-    std::cout << fmt::format("mu_crit(A) = {}\n",
-                             g.mu_crit ? fmt::format("{:.6g}", *g.mu_crit) : g.mu_crit_reason);
+    std::cout << (g.mu_crit ? fmt::format("mu_crit(A) = {:.6g}\n", *g.mu_crit)
+                            : fmt::format("mu_crit(A): n/a ({})\n", g.mu_crit_reason));
     std::cout << fmt::format("decided by: {}\n", sliding::describe(g.decided_by));
     for (const auto* i : {&p.left, &p.right})
         std::cout << fmt::format("  {} edge: {} (tan(alpha) = {:.6g})\n", edge_name(i->edge),

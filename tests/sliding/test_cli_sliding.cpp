@@ -53,6 +53,8 @@ TEST_CASE("classify: text output, rest with a null mu_crit and its reason", "[sl
     const auto r = run_cli("classify --block b=0.15,h=0.6 --mu 0.32 --a-g 0.2");
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("mode: rest") != std::string::npos);
+    CHECK(r.out.find("mu_crit(A): n/a (A = 0.2 <= tan(alpha) = 0.25: no uplift demanded)") !=
+          std::string::npos);
     const auto j = json::parse(run_cli("classify --block b=0.15,h=0.6 --mu 0.32 --a-g 0.2 --json").out);
     CHECK(j["mu_crit"].is_null());
     CHECK(j["mu_crit_reason"].get<std::string>().find("no uplift") != std::string::npos);
