@@ -102,9 +102,9 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
         const std::uint64_t seed = derive_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
         core::Record raw = synthesize(target, o.duration_s, o.dt_s, seed, o.envelope);
         // A fresh seed usually converges in a few passes where a stubborn one needs dozens:
-        // cap the passes of all but the last attempt.
+        // cap the passes of the first half of the attempts; hard targets get full ones after.
         MatchOptions mo = o.match;
-        if (attempt + 1 < o.max_attempts) mo.max_iterations = std::min(mo.max_iterations, kQuickPasses);
+        if (2 * (attempt + 1) <= o.max_attempts) mo.max_iterations = std::min(mo.max_iterations, kQuickPasses);
         MatchResult m = match_in_place(std::move(raw), target, mo);
         GeneratedComponent g;
         g.record = std::move(m.record);
@@ -137,11 +137,13 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
     return best;
 }
 
-// Matching settings tried in turn on a seed record: gentler steps and a higher aim.
+// Matching settings tried in turn on a seed record: gentler steps, and a higher aim (more
+// energy, for a PSD just short of the floor, e.g. a long record whose D5-75 is large).
 MatchOptions seed_attempt_options(MatchOptions base, int attempt) {
-    base.relaxation *= std::pow(0.7, attempt);
-    base.aim += 0.01 * attempt;
-    base.lower += 0.01 * attempt;
+    base.relaxation *= std::pow(0.8, attempt);
+    base.aim += 0.025 * attempt;
+    base.lower += 0.025 * attempt;
+    base.upper = std::max(base.upper, base.lower + 0.06);
     return base;
 }
 

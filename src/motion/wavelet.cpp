@@ -72,19 +72,44 @@ double Wavelet::value(double t_s) const {
 double Wavelet::start_s() const { return centre_s - kSupportGammas * gamma_s; }
 double Wavelet::end_s() const { return centre_s + kSupportGammas * gamma_s; }
 
-double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s) {
-    const double omega = units::hz_to_radps(f_hz);
+namespace {
+
+struct State {
+    double y = 0.0;     // pseudo-acceleration -omega^2 u
+    double ydot = 0.0;  // its time derivative
+};
+
+// y and dy/dt of the oscillator driven by the whole (untruncated) wavelet. With
+// S = I(Omega') + I(-Omega'): y = k Im S and dy/dt = k (omega_d Re S - zeta omega Im S),
+// k = omega^2 / (2 omega_d) (differentiate exp(-zeta w tau) sin(w_d tau) under the integral).
+State full_state(const Wavelet& w, double omega, double damping, double t_s) {
     const double omega_d = omega * std::sqrt(1.0 - damping * damping);
     const double T = t_s - w.centre_s;
-    if (T < -kSupportGammas * w.gamma_s) return 0.0;
+    if (T < -kSupportGammas * w.gamma_s) return {};
     // Long after the wavelet the free vibration has decayed below exp(-kDecayed) of its size.
     if (T > kSupportGammas * w.gamma_s && damping * omega * (T - kSupportGammas * w.gamma_s) > kDecayed)
-        return 0.0;
+        return {};
     // cos(Omega x) = Re exp(i Omega x) and Im(A) Re(B) = Im(A B + A conj(B)) / 2.
-    const std::complex<double> sum =
-        half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
-        half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
-    return omega * omega / omega_d * 0.5 * sum.imag();
+    const std::complex<double> sum = half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
+                                     half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
+    const double k = omega * omega / (2.0 * omega_d);
+    return {k * sum.imag(), k * (omega_d * sum.real() - damping * omega * sum.imag())};
+}
+
+}  // namespace
+
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s) {
+    const double omega = units::hz_to_radps(f_hz);
+    const double full = full_state(w, omega, damping, t_s).y;
+    if (w.start_s() >= 0.0 || t_s < 0.0) return full;
+    // The record starts at rest at t = 0: remove the free vibration left at t = 0 by the part of
+    // the wavelet before it (y and dy/dt at 0 of the full response are exactly that part's).
+    const State s0 = full_state(w, omega, damping, 0.0);
+    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
+    const double decay = std::exp(-damping * omega * t_s);
+    const double free = decay * (s0.y * std::cos(omega_d * t_s) +
+                                 (s0.ydot + damping * omega * s0.y) / omega_d * std::sin(omega_d * t_s));
+    return full - free;
 }
 
 SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples) {

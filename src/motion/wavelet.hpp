@@ -37,10 +37,11 @@ struct Wavelet {
     double end_s() const;
 };
 
-/// Pseudo-acceleration response y = -omega^2 u of the oscillator (f_hz, damping), at rest
-/// before the wavelet, to the continuous wavelet, at time t_s:
-/// y(t) = omega^2 / omega_d * int_{-inf}^{t} exp(-zeta omega (t - s)) sin(omega_d (t - s)) w(s) ds,
-/// in closed form through the Faddeeva function (derivation in the source).
+/// Pseudo-acceleration response y = -omega^2 u at t_s >= 0 of the oscillator (f_hz, damping),
+/// at rest at t = 0, to the continuous wavelet cut off before t = 0 (as in a record):
+/// y(t) = omega^2 / omega_d * int_{0}^{t} exp(-zeta omega (t - s)) sin(omega_d (t - s)) w(s) ds,
+/// in closed form through the Faddeeva function (derivation in the source): the response to
+/// the whole wavelet minus the free vibration its part before t = 0 leaves.
 double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s);
 
 /// The wavelet sampled at i * dt_s over its support inside a record of `samples` samples:

@@ -131,9 +131,10 @@ TEST_CASE("hard case: 90 s Chi-Chi seed far from a short-period EC8 type 2 groun
 
 TEST_CASE("hard case: narrow-band targets", "[motion][generate][hard]") {
     // Decision: a 5%-damped spectrum cannot be narrower than the oscillator's own bandwidth
-    // (half-power width 2 zeta = 10% in frequency). A bump a few bandwidths wide must be matched;
-    // a spike narrower than one bandwidth cannot pass the 1.3 cap and 0.9 floor together, and the
-    // generator must say so (failing, with the reason) rather than return a record as passing.
+    // (half-power width 2 zeta = 10% in frequency). A bump about 1.5 bandwidths wide must be
+    // matched; a spike narrower than one bandwidth cannot pass the 1.3 cap and 0.9 floor
+    // together, and the generator must say so (failing, with the reason) rather than return a
+    // record as passing.
     const motion::Target base = motion::rg160_targets(0.2).horizontal;
     auto bumped = [&](double width) {
         spectra::Spectrum s = base.psa_5pct;
@@ -146,10 +147,10 @@ TEST_CASE("hard case: narrow-band targets", "[motion][generate][hard]") {
         t.psa_5pct = s;
         return t;
     };
-    SECTION("bump with a log-width of 0.3 (about +-35%) is matched") {
-        const motion::Target t = bumped(0.3);
-        const auto g = one(t, "");
-        test::require_srp(g.record, t);
+    SECTION("bump x2.5 at 5 Hz with a log-width of 0.15 (about +-15%) is matched") {
+        const motion::Target t = bumped(0.15);
+        test::require_srp(one(t, "").record, t);
+        test::require_srp(one(t, kSeeds[0]).record, t);
     }
     SECTION("spike with a log-width of 0.02 (+-2%) is reported failing, with the reason") {
         const motion::Target t = bumped(0.02);

@@ -28,11 +28,12 @@ TEST_CASE("Faddeeva function against real closed forms", "[motion][faddeeva]") {
 }
 
 namespace {
-// Direct midpoint quadrature of y(t) = w^2/wd int exp(-z w (t-s)) sin(wd (t-s)) a(s) ds.
+// Direct midpoint quadrature of y(t) = w^2/wd int_0^t exp(-z w (t-s)) sin(wd (t-s)) a(s) ds
+// (the record, and so the wavelet in it, starts at t = 0).
 double brute_response(const Wavelet& w, double f_hz, double zeta, double t) {
     const double om = 2 * M_PI * f_hz, wd = om * std::sqrt(1 - zeta * zeta), h = 2e-5;
     double s = 0.0;
-    for (double x = w.start_s() - w.gamma_s; x < t; x += h) {
+    for (double x = std::max(0.0, w.start_s() - w.gamma_s); x < t; x += h) {
         const double m = x + h / 2;
         s += std::exp(-zeta * om * (t - m)) * std::sin(wd * (t - m)) * w.value(m) * h;
     }
@@ -44,6 +45,7 @@ TEST_CASE("closed-form wavelet response equals direct convolution", "[motion][wa
     // Tolerance 1e-6 of the peak response: the quadrature error at h = 2e-5 s.
     for (double fw : {0.3, 2.0, 12.0})
         for (double fo : {0.3, 2.0, 12.0, 40.0}) {
+            // Centred at 5 s: the 0.3 Hz wavelet (gamma 3.6 s) is cut off at t = 0, the others not.
             const Wavelet w = Wavelet::for_oscillator(fw, std::max(fw, fo), 0.05, 5.0);
             const double scale = std::abs(wavelet_response(w, fw, 0.05, 5.0));
             for (double t : {3.0, 4.9, 5.0, 5.2, 7.0}) {
