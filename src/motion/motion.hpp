@@ -74,7 +74,9 @@ struct GenerateOptions {
     std::vector<core::Record> seed_records;
     Envelope envelope;
     MatchOptions match;
-    int max_attempts = 6;  ///< synthetic: seeds tried per component (spectrum or correlation)
+    /// Tries per component: synthetic, a new seed each (the first half stop after 12 passes);
+    /// seed record, gentler steps and a higher aim each.
+    int max_attempts = 6;
 };
 
 /// SRP 3.7.1 Option 1 Approach 2 acceptance of one record against its target.
@@ -130,14 +132,16 @@ struct GeneratedSet {
 /// different from the component count, unknown component names).
 GeneratedSet generate_set(const TargetSet& targets, const GenerateOptions& options);
 
-/// Wavelet-matches one seed record to a target (after scaling it to the target), with the
-/// baseline constraints; returns the matched record and the passes used.
+/// Result of matching one record.
 struct MatchResult {
     core::Record record;
-    int iterations = 0;
-    bool converged = false;  ///< in-loop criteria met at the matching frequencies
+    int iterations = 0;      ///< passes made before the returned record
+    bool converged = false;  ///< every matching frequency got inside [lower, upper]
     Acceptance acceptance;   ///< full check of the returned record
 };
+/// Wavelet-matches one seed record to a target: scaled to the target's geometric-mean level
+/// first, then wavelet passes with the baseline constraints until the full acceptance check
+/// passes or options.max_iterations is reached (the iterate closest to the band is returned).
 MatchResult match_record(const core::Record& seed, const Target& target,
                          const MatchOptions& options);
 
