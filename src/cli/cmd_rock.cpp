@@ -6,6 +6,7 @@
 
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/spectra_cli.hpp"
 #include "core/errors.hpp"
 #include "rocking/summary.hpp"
 #include "sliding/block_spec.hpp"
@@ -132,15 +133,8 @@ void print_text(const rocking::RockingChecks& r) {
 std::optional<rocking::DampedSpectra> read_set(const po::variables_map& vm, const char* option) {
     if (!vm.count(option)) return std::nullopt;
     std::vector<spectra::Spectrum> set;
-    const std::string text = vm[option].as<std::string>();
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = text.find(',', start);
-        set.push_back(spectra::read_spectrum_csv(
-            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
+    for (const auto& path : spectrum_paths(vm[option].as<std::string>(), std::string("--") + option))
+        set.push_back(spectra::read_spectrum_csv(path));
     return rocking::DampedSpectra(std::move(set));
 }
 

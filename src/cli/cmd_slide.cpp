@@ -6,6 +6,7 @@
 
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/spectra_cli.hpp"
 #include "core/errors.hpp"
 #include "sliding/asce.hpp"
 #include "sliding/spectrum_input.hpp"
@@ -33,17 +34,6 @@ void print_text(const sliding::SlidingEstimate& e) {
               << text_value(e.slide_asce_m, "m", e.slide_asce_reason) << "\n";
     std::cout << "sliding, energy conservation:      "
               << text_value(e.slide_energy_m, "m", e.slide_energy_reason) << "\n";
-}
-
-std::vector<std::filesystem::path> split_paths(const std::string& text) {
-    std::vector<std::filesystem::path> out;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = text.find(',', start);
-        out.emplace_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-        if (comma == std::string::npos) return out;
-        start = comma + 1;
-    }
 }
 
 int run_slide(const std::vector<std::string>& args) {
@@ -88,7 +78,7 @@ int run_slide(const std::vector<std::string>& args) {
             ? sliding::estimate_sliding(in, *fes_hz)
             : sliding::estimate_sliding(
                   in, sliding::vector_horizontal_from_files(
-                          split_paths((*vm)["spectrum10"].as<std::string>()),
+                          spectrum_paths((*vm)["spectrum10"].as<std::string>(), "--spectrum10"),
                           sliding::asce_sliding_damping));
     if (!vm->count("json")) {
         print_text(e);

@@ -3,6 +3,7 @@
 /// and damping options, and printing PSA tables as CSV or JSON.
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -73,6 +74,25 @@ inline std::vector<double> frequencies_from(const po::variables_map& vm) {
         throw InputError(SourceLocation{"", 0, "--per-decade"},
                          fmt::format("{}; expected an integer in [1, 100000]", per));
     return spectra::log_frequencies(fmin, fmax, static_cast<int>(per));
+}
+
+/// Spectrum file paths from a comma-separated option value ("H1.csv,H2.csv"); an empty entry
+/// (",x.csv", "x.csv,") is a usage error naming the option.
+inline std::vector<std::filesystem::path> spectrum_paths(const std::string& text,
+                                                         const std::string& option) {
+    std::vector<std::filesystem::path> out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (item.empty())
+            throw UsageError(fmt::format("{}: empty file name in \"{}\"; expected FILE[,FILE...]",
+                                         option, text));
+        out.emplace_back(item);
+        if (comma == std::string::npos) return out;
+        start = comma + 1;
+    }
 }
 
 /// Column/key name of a damping: shortest round-trip text, e.g. 0.05 -> "0.05".

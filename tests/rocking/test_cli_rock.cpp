@@ -104,6 +104,9 @@ TEST_CASE("rock: out-of-range input is a clear error", "[rocking][cli]") {
     r = run_cli("rock --block b=0.15,h=0.6 --spectrum '" + f + "," + f + "'");
     CHECK(r.exit_code == 3);
     CHECK(r.err.find("distinct dampings") != std::string::npos);
+    r = run_cli("rock --block b=0.15,h=0.6 --spectrum '," + f + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--spectrum: empty file name in") != std::string::npos);
     r = run_cli("rock --block b=0.15,h=0.6 --spectrum /nonexistent/x.csv");
     CHECK(r.exit_code != 0);
     CHECK(r.err.find("x.csv") != std::string::npos);

@@ -157,6 +157,9 @@ TEST_CASE("slide: bad spectra and options are clear errors", "[sliding][cli]") {
     r = run_cli("slide --mu 0.15 --fes-hz 1 --pga-g -0.2");
     CHECK(r.exit_code == 3);
     CHECK(r.err.find("--pga-g: value -0.2 is out of range; expected [0, inf)") != std::string::npos);
+    r = run_cli("slide --mu 0.15 --spectrum10 '" + power_law_file() + ",'");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--spectrum10: empty file name in") != std::string::npos);
     r = run_cli("slide --mu 0.15 --fes-hz nan");
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("--fes-hz: expected a finite number; got \"nan\"") != std::string::npos);
