@@ -70,3 +70,28 @@ TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[m
     e.strong_s = 30.0;
     CHECK_THROWS_WITH(motion::synthesize(targets().horizontal, 20.0, 0.005, 1, e), Contains("exceed the duration 20 s"));
 }
+
+TEST_CASE("the acceptance report names every failed criterion", "[motion][acceptance]") {
+    const motion::Target t = motion::rg160_targets(0.3).horizontal;
+    core::Record r = core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2");
+    // Unmatched, unscaled (PGA about 0.14 g against 0.3 g): far below the target.
+    motion::Acceptance a = motion::check_acceptance(r, t);
+    CHECK_FALSE(a.passed);
+    CHECK(a.min_ratio < 0.9);
+    CHECK_THAT(a.reason, Contains("min ratio") && Contains("adjacent points below target"));
+    CHECK(a.check_points >= 270);
+    // Too short and too coarse: both named.
+    core::Record coarse;
+    coarse.dt_s = 0.02;
+    for (std::size_t i = 0; i < r.size() / 4 && coarse.accel_mps2.size() < 500; i += 4) coarse.accel_mps2.push_back(r.accel_mps2[i]);
+    a = motion::check_acceptance(coarse, t);
+    CHECK_FALSE(a.passed);
+    CHECK_THAT(a.reason, Contains("dt 0.02 s > 0.01 s") && Contains("duration 9.760 s < 20 s"));
+    // Band follows Nyquist: 25 Hz at dt = 0.02 s.
+    CHECK(a.check_points == 241);  // ceil(100 log10(250)) + 1
+    // A drifting record: the final velocity is named.
+    core::Record drift = r;
+    for (double& x : drift.accel_mps2) x += 0.01;
+    a = motion::check_acceptance(drift, t);
+    CHECK_THAT(a.reason, Contains("final velocity") && Contains("final displacement"));
+}
