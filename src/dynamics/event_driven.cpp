@@ -7,7 +7,6 @@
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <cmath>
 #include <fmt/format.h>
-#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -24,6 +23,9 @@ constexpr double half_pi = std::numbers::pi / 2.0;
 constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
 constexpr std::size_t burst_fail = 100000;    // ... before giving up
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
+// Longest contact step, s: events are found by sign changes at step ends, so a step must not
+// span two crossings (a rocking half-cycle of the smallest blocks is ~0.1 s).
+constexpr double max_step_s = 0.02;
 
 // Linear base acceleration on the current segment.
 struct Segment {
@@ -32,16 +34,18 @@ struct Segment {
 };
 
 // Rock / slide-rock right-hand side; keeps the accelerations of its last call (the FSAL stage,
-// at the end of an accepted step).
+// at the end of an accepted step). The base is read on whichever segment holds t, so a step may
+// cross sample times.
 struct Rhs {
     const Geometry* g = nullptr;
+    const BaseMotion* bm = nullptr;
     Mode mode = Mode::rock;
     int s = 1, sigma = 1;
-    Segment seg;
     mutable Accel last;
+    Base base(double t) const { return bm->at(bm->segment_of(t), t); }
     Accel accel(const Vec& x, double t) const {
-        return mode == Mode::rock ? rock_accel(*g, s, x[2], x[3], seg.at(t))
-                                  : slide_rock_accel(*g, s, sigma, x[2], x[3], seg.at(t));
+        return mode == Mode::rock ? rock_accel(*g, s, x[2], x[3], base(t))
+                                  : slide_rock_accel(*g, s, sigma, x[2], x[3], base(t));
     }
     void operator()(const Vec& x, Vec& dx, double t) const {
         last = accel(x, t);
@@ -52,8 +56,8 @@ struct Rhs {
 
 enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
 
-double toms748_root(const std::function<double(double)>& f, double a, double b, double fa,
-                    double fb) {
+template <class F>
+double toms748_root(F f, double a, double b, double fa, double fb) {
     if (fa == 0.0) return a;
     if (fb == 0.0) return b;
     std::uintmax_t iters = 200;
@@ -108,7 +112,7 @@ public:
             case Mode::rest: return advance_rest(t);
             case Mode::slide: return advance_slide(t);
             case Mode::rock:
-            case Mode::slide_rock: return advance_contact(t);
+            case Mode::slide_rock: return advance_contact(k, t, tb);
             case Mode::flight: return advance_flight(t);
         }
         return tb;
@@ -237,14 +241,21 @@ private:
         return 1.0;
     }
 
-    double advance_contact(double t) {
+public:
+    /// Rock / slide-rock from t (inside segment k) until an event or `horizon` (a sample time).
+    /// Steps cross sample times: the input is continuous there and only its slope jumps, so the
+    /// solution is C2 and the step's error estimate measures the kink like any other error.
+    /// Samples passed are recorded from the dense output; next_sample() is the first sample not
+    /// recorded (the caller records the one at the time reached if it is a sample time).
+    double advance_contact(std::size_t k, double t, double horizon) {
+        next_sample_ = k + 1;
         const bool tail = t >= bm_.quiet_from_s();
         const std::size_t ia = static_cast<std::size_t>(Geometry::index(st_.s));
         if (tail && st_.mode == Mode::rock && st_.th > g_.alpha[ia] && st_.om > 0.0) {
             rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
             return t;
         }
-        Rhs rhs{&g_, st_.mode, st_.s, st_.sigma, seg_, {}};
+        Rhs rhs{&g_, &bm_, st_.mode, st_.s, st_.sigma, {}};
         std::array<Ev, 5> events = {Ev::impact, Ev::overturn, Ev::lift, Ev::none, Ev::none};
         if (st_.mode == Mode::rock) {
             events[3] = Ev::friction;
@@ -255,7 +266,7 @@ private:
         Vec x = {st_.u, st_.v, st_.th, st_.om}, dx{}, xn{}, dxn{}, xerr{};
         Accel acc0;
         // First same-as-last: the input is continuous at sample times, so the derivative at the
-        // end of the previous segment is the one at the start of this one.
+        // end of the previous phase is the one at the start of this one.
         if (fsal_ok_ && fsal_t_ == t && fsal_x_ == x) {
             dx = fsal_dx_;
             acc0 = fsal_acc_;
@@ -265,9 +276,9 @@ private:
         }
         fsal_ok_ = false;
         Stepper& stepper = stepper_;
-        while (t < tb_) {
-            double h = std::min(h_, tb_ - t);
-            if (tb_ - (t + h) < 1e-12 * h) h = tb_ - t;
+        while (t < horizon) {
+            double h = std::min({h_, max_step_s, horizon - t});
+            if (horizon - (t + h) < 1e-12 * h) h = horizon - t;
             double err = 0.0;
             for (;;) {
                 stepper.do_step(std::ref(rhs), x, dx, t, xn, dxn, h, xerr);
@@ -284,9 +295,9 @@ private:
                         mode_name(st_.mode)));
             }
             rec_.step();
-            const double t1 = (h == tb_ - t) ? tb_ : t + h;
+            const double t1 = (h == horizon - t) ? horizon : t + h;
             const Accel acc1 = rhs.last;
-            // Dense output of the accepted step, for root finding.
+            // Dense output of the accepted step, for root finding and the samples inside it.
             auto dense = [&](double tt) {
                 Vec y;
                 stepper.calc_state(tt, y, x, dx, t, xn, dxn, t1);
@@ -299,9 +310,11 @@ private:
                 const double v1 = event_value(e, xn, acc1);
                 if (!(v1 < 0.0)) continue;
                 const double v0 = event_value(e, x, acc0);
+                // Only the force events need the accelerations (and their trigonometry).
+                const bool force = e == Ev::friction || e == Ev::lift;
                 auto f = [&](double tt) {
                     const Vec y = dense(tt);
-                    return event_value(e, y, rhs.accel(y, tt));
+                    return event_value(e, y, force ? rhs.accel(y, tt) : Accel{});
                 };
                 double ta = t, fa = v0;
                 if (v0 == 0.0) {
@@ -329,15 +342,14 @@ private:
                     rec_.observe(peak);
                 }
             }
+            record_samples(dense, first == Ev::none ? t1 : t_ev);
             if (first != Ev::none) {
                 const Vec y = t_ev == t1 ? xn : dense(t_ev);
                 rec_.time_in(st_.mode, t_ev - t);
-                st_.u = y[0];
-                st_.v = y[1];
-                st_.th = y[2];
-                st_.om = y[3];
+                set_contact(y);
                 rec_.observe(st_);
                 h_ = std::max(h, 1e-6);
+                enter_segment(next_sample_ - 1);
                 handle_contact_event(first, t_ev);
                 return t_ev;
             }
@@ -346,23 +358,63 @@ private:
             dx = dxn;
             acc0 = acc1;
             t = t1;
-            st_.u = x[0];
-            st_.v = x[1];
-            st_.th = x[2];
-            st_.om = x[3];
+            set_contact(x);
             rec_.observe(st_);
             const double grow = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
-            // A step cut short to land on the sample time says little about the step the
-            // error allows: keep the larger proposal then.
+            // A step cut short to land on the horizon says little about the step the error
+            // allows: keep the larger proposal then.
             const double proposal = h * std::clamp(grow, 0.2, 5.0);
-            h_ = (t1 == tb_ && h < h_) ? std::max(h_, proposal) : proposal;
+            h_ = (t1 == horizon && h < h_) ? std::max(h_, proposal) : proposal;
         }
         fsal_ok_ = true;
-        fsal_t_ = tb_;
+        fsal_t_ = horizon;
         fsal_x_ = x;
         fsal_dx_ = dx;
         fsal_acc_ = acc0;
-        return tb_;
+        fsal_mode_ = st_.mode;
+        return horizon;
+    }
+
+    /// Accelerations of the current contact state if the integrator ended a step at t (the FSAL
+    /// stage), else null.
+    const Accel* accel_at(double t) const {
+        const bool contact = st_.mode == Mode::rock || st_.mode == Mode::slide_rock;
+        const Vec x = {st_.u, st_.v, st_.th, st_.om};
+        return contact && fsal_ok_ && fsal_mode_ == st_.mode && fsal_t_ == t && fsal_x_ == x
+                   ? &fsal_acc_
+                   : nullptr;
+    }
+
+    /// First output sample not yet recorded by advance_contact.
+    std::size_t next_sample() const { return next_sample_; }
+
+private:
+    void enter_segment(std::size_t k) {
+        bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
+        seg_.tk = bm_.t_k(k);
+        tb_ = bm_.t_k(k + 1);
+    }
+
+    void set_contact(const Vec& y) {
+        st_.u = y[0];
+        st_.v = y[1];
+        st_.th = y[2];
+        st_.om = y[3];
+    }
+
+    // Output samples strictly before t_stop, from the step's dense output.
+    template <class Dense>
+    void record_samples(const Dense& dense, double t_stop) {
+        for (double tj = bm_.t_k(next_sample_); tj < t_stop; tj = bm_.t_k(++next_sample_)) {
+            BlockState at = st_;
+            const Vec y = dense(tj);
+            at.u = y[0];
+            at.v = y[1];
+            at.th = y[2];
+            at.om = y[3];
+            rec_.observe(at);
+            rec_.sample(tj, at, bm_.sample(next_sample_));
+        }
     }
 
     void handle_contact_event(Ev e, double t) {
@@ -494,11 +546,13 @@ private:
     Segment seg_;
     double tb_ = 0.0;
     double h_ = 1e-3;  // step size carried between phases
+    std::size_t next_sample_ = 0;
     Stepper stepper_;
     bool fsal_ok_ = false;
     double fsal_t_ = 0.0;
     Vec fsal_x_{}, fsal_dx_{};
     Accel fsal_acc_;
+    Mode fsal_mode_ = Mode::rest;
     double last_event_ = -1.0;
     std::size_t burst_ = 0;
     bool armed_ = false;
@@ -516,7 +570,7 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
     rec.observe(st);
     rec.sample(0.0, st, b0);
     Engine engine(g, bm, o, rec, st);
-    const double dt = bm.dt(), min_end = bm.min_end_s();
+    const double dt = bm.dt(), min_end = bm.min_end_s(), t_end = bm.t_k(n_seg);
     for (std::size_t k = 0; k < n_seg; ++k) {
         // The rest inequalities are linear on a segment: holding at both samples, they hold
         // throughout, so whole runs of such segments are passed without the engine.
@@ -538,12 +592,21 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
             k = j;
         }
         double t = bm.t_k(k);
-        const double tb = bm.t_k(k + 1);
+        double tb = bm.t_k(k + 1);
         while (t < tb) {
-            t = engine.advance(k, t, tb);
+            if (st.mode == Mode::rock || st.mode == Mode::slide_rock) {
+                // Contact phases run across samples up to the end of the excitation (where the
+                // overturn criterion changes) or of the run.
+                const double quiet = bm.quiet_from_s();
+                t = engine.advance_contact(k, t, t < quiet ? tb : t_end);
+                k = engine.next_sample() - 1;
+                tb = bm.t_k(k + 1);
+            } else {
+                t = engine.advance(k, t, tb);
+            }
             if (rec.overturned()) return rec.finish(st, t, integrator_name(Integrator::event));
         }
-        rec.sample(tb, st, bm.sample(k + 1));
+        rec.sample(tb, st, bm.sample(k + 1), engine.accel_at(tb));
         if (st.mode == Mode::rest && tb >= bm.min_end_s())
             return rec.finish(st, tb, integrator_name(Integrator::event));
     }

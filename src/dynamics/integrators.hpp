@@ -25,6 +25,8 @@ public:
         const double tau = t - t_k(k);
         return {ax0 + ax1 * tau, G0 + G1 * tau};
     }
+    /// Segment containing time t >= 0 (the earlier one at a sample time, to round-off).
+    std::size_t segment_of(double t) const { return static_cast<std::size_t>(t * inv_dt_); }
     /// Value and slope on segment k: ax = ax0 + ax1 (t - t_k), G likewise.
     void segment(std::size_t k, double& ax0, double& ax1, double& G0, double& G1) const {
         ax0 = h(k);
@@ -89,8 +91,9 @@ public:
     void step(std::size_t n = 1) { summary_.steps += n; }
     void overturn(double t_s, OverturnCriterion c);
     bool overturned() const { return summary_.overturned; }
-    /// Output sample at time t (also tracks the peak top acceleration).
-    void sample(double t_s, const BlockState& st, Base base);
+    /// Output sample at time t (also tracks the peak top acceleration); `known`, if given, is the
+    /// state's acceleration already evaluated by the integrator.
+    void sample(double t_s, const BlockState& st, Base base, const Accel* known = nullptr);
     /// Samples i0 <= i < i1 of a block at rest (the hot path of long records); peak_ax_mps2 is
     /// the largest |xg''| among them.
     void rest_samples(const BaseMotion& bm, std::size_t i0, std::size_t i1, const BlockState& st,

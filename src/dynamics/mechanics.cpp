@@ -177,7 +177,11 @@ double rebound_angle(const Geometry& g, int s, double om, double G) {
 
 double top_corner_accel(const Geometry& g, double ax_base, double xdd_cg, double phi, double phid,
                         double phidd) {
-    const double cp = std::cos(phi), sp = std::sin(phi);
+    return top_corner_accel_cs(g, ax_base, xdd_cg, std::cos(phi), std::sin(phi), phid, phidd);
+}
+
+double top_corner_accel_cs(const Geometry& g, double ax_base, double xdd_cg, double cp, double sp,
+                           double phid, double phidd) {
     const double by = g.top - g.h;
     double best = 0.0;
     for (double bx : {g.b[1], -g.b[0]}) {

@@ -83,6 +83,9 @@ double rebound_angle(const Geometry& g, int s, double om, double G);
 /// acceleration (xdd), rotation phi (counter-clockwise), phi' and phi''.
 double top_corner_accel(const Geometry& g, double ax_base, double xdd_cg, double phi, double phid,
                         double phidd);
+/// The same with cos(phi) and sin(phi) given (saves the trigonometry when they are known).
+double top_corner_accel_cs(const Geometry& g, double ax_base, double xdd_cg, double cos_phi,
+                           double sin_phi, double phid, double phidd);
 
 /// CG acceleration relative to the base in a contact mode on edge s (for top_corner_accel).
 double cg_xdd(const Geometry& g, int s, double th, double om, const Accel& a);

@@ -57,7 +57,7 @@ void Recorder::overturn(double t_s, OverturnCriterion c) {
     summary_.overturn_criterion = c;
 }
 
-void Recorder::sample(double t_s, const BlockState& st, Base base) {
+void Recorder::sample(double t_s, const BlockState& st, Base base, const Accel* known) {
     if (st.mode == Mode::rest) {  // carried by the base: the hot path of long records
         top_peak_ = std::max(top_peak_, std::abs(base.ax));
         if (!record_series_) return;
@@ -70,16 +70,22 @@ void Recorder::sample(double t_s, const BlockState& st, Base base) {
         series_.push_back(smp);
         return;
     }
-    const Accel a = accel_of(g_, st, base);
+    const Accel a = known != nullptr ? *known : accel_of(g_, st, base);
     double top = base.ax;
     switch (st.mode) {
         case Mode::rest: break;
         case Mode::slide: top = base.ax + a.u_dd; break;
         case Mode::rock:
         case Mode::slide_rock: {
+            // One sincos: phi = -s theta, and alpha - theta by the angle-difference formulas.
             const double ds = static_cast<double>(st.s);
-            top = top_corner_accel(g_, base.ax, cg_xdd(g_, st.s, st.th, st.om, a), -ds * st.th,
-                                   -ds * st.om, -ds * a.th_dd);
+            const auto i = static_cast<std::size_t>(Geometry::index(st.s));
+            const double st_ = std::sin(st.th), ct = std::cos(st.th);
+            const double sn = g_.sin_alpha[i] * ct - g_.cos_alpha[i] * st_;
+            const double c = g_.cos_alpha[i] * ct + g_.sin_alpha[i] * st_;
+            const double xdd_cg = a.u_dd + ds * g_.R[i] * (c * a.th_dd + sn * st.om * st.om);
+            top = top_corner_accel_cs(g_, base.ax, xdd_cg, ct, -ds * st_, -ds * st.om,
+                                      -ds * a.th_dd);
             break;
         }
         case Mode::flight:
