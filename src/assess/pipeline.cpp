@@ -117,7 +117,18 @@ AssessmentResult assess(const Case& c) {
     res.plots = plot_data(res, demands, bank);
     res.assumptions = pipeline_assumptions(c);
     res.limits = limits(res, bank);
-    if (bank.generated()) res.histories_generated = static_cast<int>(bank.sets().size());
+    if (bank.generated()) {
+        res.histories_generated = static_cast<int>(bank.sets().size());
+        const std::array<const char*, 3> names{"h1", "h2", "v"};
+        for (std::size_t k = 0; k < bank.sets().size(); ++k) {
+            const HistorySet& set = bank.sets()[k];
+            for (std::size_t j = 0; j < set.acceptance.size() && j < names.size(); ++j) {
+                const auto& a = set.acceptance[j];
+                res.history_checks.push_back(HistoryCheck{static_cast<int>(k + 1), names[j], set.method,
+                                                          a.passed, a.min_ratio, a.max_ratio, a.reason});
+            }
+        }
+    }
     for (const LevelResult& l : res.levels) res.simulations_run += l.simulation ? l.simulation->histories : 0;
     return res;
 }

@@ -161,6 +161,17 @@ struct PlotData {
     std::vector<InitiationDiagram> initiation;
 };
 
+/// SRP 3.7.1 acceptance of one generated component (ratios are scale-free).
+struct HistoryCheck {
+    int history = 0;          ///< 1-based
+    std::string component;    ///< "h1", "h2", "v"
+    std::string method;
+    bool passed = false;
+    double min_ratio = 0.0;   ///< 5% computed / target over 0.1-50 Hz
+    double max_ratio = 0.0;
+    std::string reason;       ///< failed criteria, "" when passed
+};
+
 /// The whole assessment.
 struct AssessmentResult {
     Case input;
@@ -172,6 +183,7 @@ struct AssessmentResult {
     std::vector<std::string> assumptions;  ///< case defaults plus pipeline choices
     std::vector<std::string> limits;       ///< what the models do not cover
     int histories_generated = 0;
+    std::vector<HistoryCheck> history_checks;  ///< empty when no histories were generated
     int simulations_run = 0;
 };
 

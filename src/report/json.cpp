@@ -170,6 +170,13 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
     j["upgrade"] = up;
     j["histories_generated"] = r.histories_generated;
     j["simulations_run"] = r.simulations_run;
+    ordered_json checks = ordered_json::array();
+    for (const HistoryCheck& h : r.history_checks) {
+        checks.push_back({{"history", h.history}, {"component", h.component}, {"method", h.method},
+                          {"passed", h.passed}, {"min_ratio", num(h.min_ratio)},
+                          {"max_ratio", num(h.max_ratio)}, {"reason", h.reason}});
+    }
+    j["history_acceptance"] = checks;
     j["case"] = case_json(r.input);
     j["assumptions"] = r.assumptions;
     j["limits"] = r.limits;

@@ -148,6 +148,15 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
     }
     mstch::array levels;
     for (const LevelResult& l : r.levels) levels.push_back(level_row(l));
+    mstch::array checks;
+    for (const HistoryCheck& h : r.history_checks) {
+        checks.push_back(mstch::map{{"history", std::to_string(h.history)},
+                                    {"component", h.component},
+                                    {"method", h.method},
+                                    {"passed", std::string(h.passed ? "yes" : "no: " + h.reason)},
+                                    {"min_ratio", fixed(h.min_ratio, 3)},
+                                    {"max_ratio", fixed(h.max_ratio, 3)}});
+    }
     mstch::array figures;
     for (const Figure& f : figs) figures.push_back(mstch::map{{"file", f.file}, {"caption", f.caption}, {"svg", f.svg}});
     return mstch::map{
@@ -167,6 +176,8 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"levels", levels},
         {"flex_notes", flex_notes(r.levels)},
         {"figures", figures},
+        {"has_history_checks", !r.history_checks.empty()},
+        {"history_checks", checks},
         {"assumptions", text_list(r.assumptions)},
         {"limits", text_list(r.limits)},
         {"stamp_version", stamp.tool_version},
