@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -16,15 +17,16 @@ struct Band {
     double hi = 0.0;
 };
 
-// The band to screen, or empty with the reason when nothing falls in the seismic range.
-std::optional<Band> screen_band(const FlexibleInput& in, std::string& reason) {
+// The bands to screen (free-rocking, fixed-base, or both: screened as their union, not the
+// span between them), or none with the reason when nothing falls in the seismic range.
+std::vector<Band> screen_bands(const FlexibleInput& in, std::string& reason) {
     if (!in.fixed_base_hz && !in.rock_band_lo_hz && !in.rock_band_hi_hz)
         throw InputError(SourceLocation{"", 0, "flexible"},
                          "expected a fixed-base frequency or a free-rocking band");
     if (in.rock_band_lo_hz.has_value() != in.rock_band_hi_hz.has_value())
         throw InputError(SourceLocation{"", 0, "rock band"},
                          "expected both ends of the free-rocking band (lo,hi Hz)");
-    std::optional<Band> band;
+    std::vector<Band> bands;
     if (in.rock_band_lo_hz) {
         require_positive(*in.rock_band_lo_hz, SourceLocation{"", 0, "rock band lo_hz"});
         require_positive(*in.rock_band_hi_hz, SourceLocation{"", 0, "rock band hi_hz"});
@@ -32,20 +34,25 @@ std::optional<Band> screen_band(const FlexibleInput& in, std::string& reason) {
             throw InputError(SourceLocation{"", 0, "rock band"},
                              fmt::format("band {},{} Hz: expected lo < hi", *in.rock_band_lo_hz,
                                          *in.rock_band_hi_hz));
-        band = Band{*in.rock_band_lo_hz, *in.rock_band_hi_hz};
+        bands.push_back(Band{*in.rock_band_lo_hz, *in.rock_band_hi_hz});
     }
     if (in.fixed_base_hz) {
         const double f = *in.fixed_base_hz;
         require_positive(f, SourceLocation{"", 0, "fixed-base frequency"});
         if (f < rigid_frequency_hz) {
-            const Band fb{f / band_broadening, f * band_broadening};
-            band = band ? Band{std::min(band->lo, fb.lo), std::max(band->hi, fb.hi)} : fb;
-        } else if (!band) {
+            bands.push_back(Band{f / band_broadening, f * band_broadening});
+        } else if (bands.empty()) {
             reason = fmt::format("fixed-base frequency {} Hz >= {} Hz: rigid, screen not needed", f,
                                  rigid_frequency_hz);
         }
     }
-    return band;
+    return bands;
+}
+
+std::string describe(const std::vector<Band>& bands) {
+    std::vector<std::string> parts;
+    for (const Band& b : bands) parts.push_back(fmt::format("{:.4g}-{:.4g} Hz", b.lo, b.hi));
+    return fmt::format("{}", fmt::join(parts, " and "));
 }
 
 }  // namespace
@@ -55,15 +62,21 @@ FlexibleScreen flexible_screen(const spectra::Spectrum& s, const FlexibleInput& 
     require_in_range(in.pga_h_g, 0.0, HUGE_VAL, SourceLocation{"", 0, "pga_h_g"}, true, false);
     FlexibleScreen out;
     out.threshold_g = in.uplift_threshold_g;
-    const std::optional<Band> band = screen_band(in, out.reason);
-    if (!band) return out;
+    const std::vector<Band> bands = screen_bands(in, out.reason);
+    if (bands.empty()) return out;
     out.applies = true;
-    out.band_lo_hz = band->lo;
-    out.band_hi_hz = band->hi;
-    // psa_at is a power law between points, so the band maximum is at an end or a point.
-    std::vector<double> fs{band->lo, band->hi};
-    for (double f : s.frequency_hz)
-        if (f > band->lo && f < band->hi) fs.push_back(f);
+    out.band_lo_hz = bands.front().lo;
+    out.band_hi_hz = bands.front().hi;
+    // psa_at is a power law between points, so a band's maximum is at an end or a point.
+    std::vector<double> fs;
+    for (const Band& band : bands) {
+        out.band_lo_hz = std::min(out.band_lo_hz, band.lo);
+        out.band_hi_hz = std::max(out.band_hi_hz, band.hi);
+        fs.push_back(band.lo);
+        fs.push_back(band.hi);
+        for (double f : s.frequency_hz)
+            if (f > band.lo && f < band.hi) fs.push_back(f);
+    }
     for (double f : fs) {
         const double a = s.psa_at(f);
         if (a > out.peak_psa_g || (a == out.peak_psa_g && f < out.peak_f_hz)) {
@@ -74,9 +87,8 @@ FlexibleScreen flexible_screen(const spectra::Spectrum& s, const FlexibleInput& 
     const bool strong = out.peak_psa_g >= out.threshold_g;
     const bool below = in.pga_h_g < out.threshold_g;
     out.flagged = strong && below;
-    const std::string where = fmt::format("peak PSA {:.4g} g at {:.4g} Hz in {:.4g}-{:.4g} Hz",
-                                          out.peak_psa_g, out.peak_f_hz, out.band_lo_hz,
-                                          out.band_hi_hz);
+    const std::string where = fmt::format("peak PSA {:.4g} g at {:.4g} Hz in {}", out.peak_psa_g,
+                                          out.peak_f_hz, describe(bands));
     if (!strong)
         out.reason = fmt::format("{} < static uplift threshold {:.4g} g: no strong content",
                                  where, out.threshold_g);

@@ -33,9 +33,9 @@ struct FlexibleInput {
 /// pga_h_g < uplift_threshold_g (otherwise the rigid classification already predicts uplift).
 struct FlexibleScreen {
     bool applies = false;           ///< false: no band in the seismic range (reason says why)
-    double band_lo_hz = 0.0;
-    double band_hi_hz = 0.0;
-    double peak_psa_g = 0.0;        ///< max of psa_at over the band
+    double band_lo_hz = 0.0;        ///< lowest frequency screened (of either band)
+    double band_hi_hz = 0.0;        ///< highest frequency screened (of either band)
+    double peak_psa_g = 0.0;        ///< max of psa_at over the band(s), not the gap between
     double peak_f_hz = 0.0;
     double threshold_g = 0.0;
     bool flagged = false;           ///< possible frequency-induced rocking below the threshold
@@ -44,7 +44,8 @@ struct FlexibleScreen {
 
 /// Screens spectrum s (use the body's damping, 5% when unknown) over the band: the fixed-base
 /// band [f / 1.15, 1.15 f] when f < 33 Hz, the free-rocking band, or their union when both are
-/// given. InputError for non-positive frequencies, lo >= hi, one band end only, or no input.
+/// given (two disjoint bands are screened separately; the gap between them is not).
+/// InputError for non-positive frequencies, lo >= hi, one band end only, or no input.
 FlexibleScreen flexible_screen(const spectra::Spectrum& s, const FlexibleInput& in);
 
 }  // namespace freestand::rocking

@@ -76,6 +76,19 @@ TEST_CASE("rigid bodies and band input errors", "[rocking][flexible]") {
     both.rock_band_hi_hz = 2.0;
     CHECK(flexible_screen(peaked(), both).band_lo_hz == 1.0);
     CHECK(flexible_screen(peaked(), both).band_hi_hz == Approx(5.75));
+    // Disjoint bands are screened as a union, not the span between them: a peak in the gap
+    // (here 0.3 g at 5 Hz, between a 1-2 Hz rocking band and a 6.9-9.2 Hz fixed-base band) is
+    // not seen; the 0.1 g in the bands is below the 0.25 g threshold.
+    FlexibleInput gap = fixed_base(8.0, 0.25, 0.1);
+    gap.rock_band_lo_hz = 1.0;
+    gap.rock_band_hi_hz = 2.0;
+    const FlexibleScreen g = flexible_screen(peaked(), gap);
+    CHECK(g.applies);
+    CHECK(g.band_lo_hz == 1.0);
+    CHECK(g.band_hi_hz == Approx(9.2));
+    CHECK(g.peak_psa_g == Approx(0.1).epsilon(1e-12));
+    CHECK_FALSE(g.flagged);
+    CHECK(g.reason.find("1-2 Hz and 6.957-9.2 Hz") != std::string::npos);
     using freestand::InputError;
     FlexibleInput none;
     none.uplift_threshold_g = 0.25;
