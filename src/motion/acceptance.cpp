@@ -35,8 +35,34 @@ EndWeights end_weights(std::size_t samples, double dt_s) {
 }
 
 namespace {
-
 constexpr double kPsdResolutionHz = 0.005;
+}  // namespace
+
+std::vector<double> averaged_psd_per_radps(const core::Record& record, double td_s,
+                                           const std::vector<double>& frequency_hz) {
+    // Zero-padding samples X(f), the record's continuous transform, densely (<= 0.005 Hz), so the
+    // +-20% band average approximates an integral even at 0.3 Hz, where it spans few 1/T bins.
+    const auto dense = static_cast<std::size_t>(std::ceil(1.0 / (kPsdResolutionHz * record.dt_s)));
+    const std::size_t n = fft_size(std::max(record.size(), dense));
+    RealFft fft(n);
+    const auto x = fft.forward(record.accel_mps2);
+    const double df = 1.0 / (static_cast<double>(n) * record.dt_s);
+    std::vector<double> s(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k) s[k] = std::norm(x[k] * record.dt_s) / (units::pi * td_s);
+    std::vector<double> out;
+    out.reserve(frequency_hz.size());
+    for (double f : frequency_hz) {
+        const auto k0 = static_cast<std::size_t>(std::ceil(f * (1.0 - criteria::psd_band_halfwidth) / df));
+        const auto k1 = std::min(x.size() - 1,
+                                 static_cast<std::size_t>(std::floor(f * (1.0 + criteria::psd_band_halfwidth) / df)));
+        double sum = 0.0;
+        for (std::size_t k = k0; k <= k1; ++k) sum += s[k];
+        out.push_back(k1 >= k0 ? sum / static_cast<double>(k1 - k0 + 1) : 0.0);
+    }
+    return out;
+}
+
+namespace {
 
 struct RatioStats {
     double min = 0.0, max = 0.0, mean = 0.0, max_cap_band = 0.0;
@@ -62,30 +88,14 @@ RatioStats ratio_stats(const std::vector<double>& f, const std::vector<double>& 
     return s;
 }
 
-// S(f) = |X(f)|^2 / (pi T_D), X = dt FFT(a): one-sided PSD per rad/s (SRP 3.7.1 App. A),
-// averaged over the FFT bins within f (1 -+ 0.2); min over 100 points per decade in 0.3-24 Hz.
+// Minimum over 0.3-24 Hz (100 per decade) of the averaged PSD over the RG 1.60 target PSD.
 double psd_min_ratio(const core::Record& record, double td_s, double pga_g) {
-    // Zero-padding samples X(f), the record's continuous transform, densely (<= 0.005 Hz), so the
-    // +-20% band average approximates an integral even at 0.3 Hz, where it spans few 1/T bins.
-    const auto dense = static_cast<std::size_t>(std::ceil(1.0 / (kPsdResolutionHz * record.dt_s)));
-    const std::size_t n = fft_size(std::max(record.size(), dense));
-    RealFft fft(n);
-    const auto x = fft.forward(record.accel_mps2);
-    const double df = 1.0 / (static_cast<double>(n) * record.dt_s);
-    std::vector<double> s(x.size());
-    for (std::size_t k = 0; k < x.size(); ++k)
-        s[k] = std::norm(x[k] * record.dt_s) / (units::pi * td_s);
     const double top = std::min(criteria::psd_high_hz, 0.5 / record.dt_s / (1.0 + criteria::psd_band_halfwidth));
+    const std::vector<double> f = spectra::log_frequencies(criteria::psd_low_hz, top, criteria::points_per_decade);
+    const std::vector<double> s = averaged_psd_per_radps(record, td_s, f);
     double worst = 1e300;
-    for (double f : spectra::log_frequencies(criteria::psd_low_hz, top, criteria::points_per_decade)) {
-        const auto k0 = static_cast<std::size_t>(std::ceil(f * (1.0 - criteria::psd_band_halfwidth) / df));
-        const auto k1 = std::min(x.size() - 1,
-                                 static_cast<std::size_t>(std::floor(f * (1.0 + criteria::psd_band_halfwidth) / df)));
-        double sum = 0.0;
-        for (std::size_t k = k0; k <= k1; ++k) sum += s[k];
-        const double avg = sum / static_cast<double>(k1 - k0 + 1);
-        worst = std::min(worst, avg / spectra::rg160_target_psd_per_radps(f, pga_g));
-    }
+    for (std::size_t i = 0; i < f.size(); ++i)
+        worst = std::min(worst, s[i] / spectra::rg160_target_psd_per_radps(f[i], pga_g));
     return worst;
 }
 

@@ -2,6 +2,8 @@
 /// SRP 3.7.1 Option 1 Approach 2 numbers (METHODS.md s.8) shared by the generator and the report.
 #include <vector>
 
+#include "core/record.hpp"
+
 namespace freestand::motion::criteria {
 
 inline constexpr double band_low_hz = 0.1;
@@ -40,5 +42,11 @@ struct EndWeights {
     std::vector<double> displacement;
 };
 EndWeights end_weights(std::size_t samples, double dt_s);
+
+/// Record PSD in the SRP 3.7.1 App. A convention, one-sided per rad/s: S(f) = |X(f)|^2 / (pi T_D),
+/// X = dt FFT(a) (zero-padded to <= 0.005 Hz bins), averaged over the bins within f (1 -+ 0.2).
+/// For stationary white noise of variance s^2 and T_D = its length, S = s^2 dt / pi.
+std::vector<double> averaged_psd_per_radps(const core::Record& record, double td_s,
+                                           const std::vector<double>& frequency_hz);
 
 }  // namespace freestand::motion

@@ -132,3 +132,22 @@ TEST_CASE("check band follows Nyquist and SRP point density", "[motion][criteria
     CHECK(f.back() == 50.0);
     CHECK(static_cast<double>(f.size() - 1) >= 100.0 * std::log10(500.0) - 1e-9);
 }
+
+TEST_CASE("record PSD: white noise gives sigma^2 dt / pi per rad/s", "[motion][psd]") {
+    // One-sided per rad/s: integral over omega in (0, pi/dt) of s^2 dt / pi = s^2 (Parseval).
+    // Box-Muller normals from the portable uniform; tolerance 10% (band average of ~1e3 bins).
+    core::Record r;
+    r.dt_s = 0.01;
+    std::mt19937_64 g(11);
+    const double sigma = 2.0;
+    for (int i = 0; i < 65536; ++i) {
+        const double u1 = 1.0 - uniform01(g()), u2 = uniform01(g());
+        r.accel_mps2.push_back(sigma * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2));
+    }
+    const std::vector<double> f{0.5, 2.0, 10.0, 30.0};
+    const auto s = averaged_psd_per_radps(r, r.duration_s(), f);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        INFO("f " << f[i]);
+        CHECK(s[i] == Approx(sigma * sigma * r.dt_s / M_PI).epsilon(0.10));
+    }
+}
