@@ -247,7 +247,8 @@ void check_inputs(const core::Record& record, const std::vector<double>& damping
 
 /// Validated inputs, then one stepper per (damping, frequency), damping-major.
 std::vector<Stepper> steppers_for(const core::Record& record, const std::vector<double>& dampings,
-                                  const std::vector<double>& frequency_hz, int min_steps_per_period) {
+                                  const std::vector<double>& frequency_hz,
+                                  int min_steps_per_period) {
     check_inputs(record, dampings, frequency_hz);
     std::vector<Stepper> steppers;
     steppers.reserve(dampings.size() * frequency_hz.size());
