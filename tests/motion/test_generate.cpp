@@ -184,3 +184,19 @@ TEST_CASE("deterministic: the same inputs and seed give bit-identical records", 
     const auto other = motion::generate_set(ts, o);
     CHECK(other.components[0].record.accel_mps2 != a.components[0].record.accel_mps2);
 }
+
+TEST_CASE("correlated components are reported failing with the pair named", "[motion][generate]") {
+    // The same seed record for h1 and h2 cannot give independent components (rho ~ 1): a seed
+    // record is not regenerated, so the set fails and the note names the pair.
+    const motion::TargetSet ts = motion::rg160_targets(0.3);
+    motion::GenerateOptions o;
+    o.components = {"h1", "h2"};
+    o.seed_records = {seed(kSeeds[1]), seed(kSeeds[1])};
+    const auto s = motion::generate_set(ts, o);
+    CHECK(s.components[0].acceptance.passed);
+    REQUIRE(s.correlations.size() == 1);
+    CHECK(s.correlations[0].rho > 0.9);
+    CHECK_FALSE(s.passed);
+    REQUIRE_FALSE(s.notes.empty());
+    CHECK_THAT(s.notes.back(), Catch::Contains("h1-h2: |rho| = ") && Catch::Contains("> 0.16"));
+}
