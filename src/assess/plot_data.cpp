@@ -107,12 +107,10 @@ PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& de
     for (Direction d : {Direction::x, Direction::y}) p.initiation.push_back(initiation_diagram(r, d));
     const std::optional<std::size_t> gov = governing_simulated(r.levels);
     const LevelResult& shown = r.levels.at(gov ? *gov : r.governing_level);
-    const std::size_t level_index = shown.pga_g == demands.back().pga_g ? demands.size() - 1 : [&] {
-        std::size_t i = 0;
-        while (demands[i].pga_g != shown.pga_g) ++i;
-        return i;
-    }();
-    const spectra::Spectrum& target = demands[level_index].h5;
+    // The demand of the shown level (levels are built from the same PGA list, so equal exactly).
+    const auto demand = std::find_if(demands.begin(), demands.end(),
+                                     [&](const LevelDemand& d) { return d.pga_g == shown.pga_g; });
+    const spectra::Spectrum& target = demand->h5;
     p.spectra.push_back(Series{fmt::format("RG 1.60 target, 5%, PGA {:.3f} g", shown.pga_g),
                                target.frequency_hz, target.psa_g});
     if (bank.generated()) {

@@ -243,3 +243,21 @@ TEST_CASE("regress passes on unchanged goldens and detects a drift", "[report][c
     CHECK(test::run_cli("regress " + args + " --rtol 0.02").exit_code == 0);
     fs::remove_all(dir);
 }
+
+TEST_CASE("regress CLI errors", "[report][cli][regress]") {
+    const fs::path dir = temp_dir("regress_errors");
+    const auto no_cases = test::run_cli("regress '" + dir.string() + "' --cases '" + (dir / "none").string() + "'");
+    CHECK(no_cases.exit_code == 5);
+    CHECK(no_cases.err.find((dir / "none").string() + ": not a folder of case files") != std::string::npos);
+    const auto bad_rtol = test::run_cli("regress --rtol -1");
+    CHECK(bad_rtol.exit_code == 2);
+    CHECK(bad_rtol.err.find("--rtol: expected a number >= 0; got -1") != std::string::npos);
+    small_case(dir / "cases", "small");
+    fs::create_directories(dir / "reports" / "small");
+    std::ofstream(dir / "reports" / "small" / "result.json") << "{not json";
+    const auto bad_golden = test::run_cli("regress '" + (dir / "reports").string() + "' --cases '" +
+                                          (dir / "cases").string() + "'");
+    CHECK(bad_golden.exit_code == 3);
+    CHECK(bad_golden.err.find("result.json: not valid JSON") != std::string::npos);
+    fs::remove_all(dir);
+}
