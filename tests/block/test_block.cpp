@@ -35,6 +35,9 @@ TEST_CASE("bad block dimensions are input errors naming the field", "[block]") {
     CHECK_THROWS_WITH(Block::uniform(0.15, -1.0), Catch::Contains("CG height"));
     CHECK_THROWS_WITH(Block::uniform(0.15, 0.6, 0.0), Catch::Contains("mass"));
     CHECK_THROWS_AS(Block::general(0.1, 0.1, 1.0, 1.0, 0.0), freestand::InputError);
+    CHECK_THROWS_WITH(Block::general(0.1, 0.1, 1.0, 1.0, 0.0),
+                      Catch::Contains("I_c (inertia about CG, kg m^2): value 0 must be a finite "
+                                      "number > 0"));
     CHECK_THROWS_WITH(Block::uniform(std::nan(""), 0.6), Catch::Contains("finite"));
 }
 

@@ -49,6 +49,7 @@ TEST_CASE("AT2 reader rejects a malformed value naming its line", "[core][at2]")
 TEST_CASE("AT2 reader rejects NaN and infinity", "[core][at2]") {
     const auto p = write_temp("nan.AT2", header + "NPTS=  2, DT= .0100 SEC\n 0.1 nan\n");
     CHECK_THROWS_AS(core::read_at2(p), InputError);
+    CHECK_THROWS_WITH(core::read_at2(p), Catch::Contains("nan.AT2:5: acceleration"));
     const auto q = write_temp("inf.AT2", header + "NPTS=  2, DT= .0100 SEC\n inf 0.1\n");
     CHECK_THROWS_WITH(core::read_at2(q), Catch::Contains(":5: acceleration"));
 }

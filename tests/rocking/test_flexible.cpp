@@ -93,6 +93,9 @@ TEST_CASE("rigid bodies and band input errors", "[rocking][flexible]") {
     FlexibleInput none;
     none.uplift_threshold_g = 0.25;
     CHECK_THROWS_AS(flexible_screen(peaked(), none), InputError);
+    CHECK_THROWS_WITH(flexible_screen(peaked(), none),
+                      Catch::Contains("flexible: expected a fixed-base frequency or a free-rocking "
+                                      "band"));
     FlexibleInput half = none;
     half.rock_band_lo_hz = 1.0;
     CHECK_THROWS_WITH(flexible_screen(peaked(), half), Catch::Contains("both ends"));

@@ -37,6 +37,8 @@ TEST_CASE("box spec errors name the field", "[sliding][block_spec]") {
     CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.6}, {"m", 1.0}}, {{"h", 0.0}}, 1.0)),
                       Catch::Contains("cg h"));
     CHECK_THROWS_AS(make_block(box_spec({{"b", 0.15}, {"h", 0.0}}, {}, std::nullopt)), InputError);
+    CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.0}}, {}, std::nullopt)),
+                      Catch::Contains("h (half-height, m): value 0 must be a finite number > 0"));
 }
 
 TEST_CASE("sliding helper error paths", "[sliding][asce]") {

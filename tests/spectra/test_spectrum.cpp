@@ -52,6 +52,8 @@ TEST_CASE("psa_at rejects non-positive frequencies and an inconsistent spectrum"
     CHECK_THROWS_WITH(s.psa_at(0.0),
                       Catch::Contains("f_hz: frequency 0 Hz must be finite and > 0"));
     CHECK_THROWS_AS(s.psa_at(std::nan("")), InputError);
+    CHECK_THROWS_WITH(s.psa_at(std::nan("")),
+                      Catch::Contains("f_hz: frequency nan Hz must be finite and > 0"));
     spectra::Spectrum bad = s;
     bad.psa_g.pop_back();
     CHECK_THROWS_WITH(bad.psa_at(1.0), Catch::Contains("has 2 frequencies and 1 PSA values"));
