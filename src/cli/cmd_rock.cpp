@@ -112,6 +112,9 @@ void print_text(const rocking::RockingChecks& r) {
     std::cout << "Housner slenderness that survives: "
               << opt_text(c.housner ? std::optional<double>(c.housner->alpha_required_rad) : std::nullopt,
                           "{:.4g} rad", r.spectral_reason)
+              << (c.housner ? (c.housner->survives ? " (alpha above it: survives)"
+                                                   : " (alpha below it: may overturn)")
+                            : "")
               << "\n";
     if (c.el) {
         const auto& e = *c.el;

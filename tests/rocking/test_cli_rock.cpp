@@ -71,6 +71,10 @@ TEST_CASE("rock: equivalent-linear estimate from spectrum files", "[rocking][cli
                            "' --pga-g 0.5");
     CHECK(t.out.find("equivalent-linear estimate") != std::string::npos);
     CHECK(t.out.find("spectral margin: 3") != std::string::npos);
+    // Peak PSV of this spectrum is at 1000 Hz (2 pi 1000 x 0.05 = 314 m/s): Housner's alpha far
+    // exceeds the block's, and the text says what that means.
+    CHECK(j["housner_survives"] == false);
+    CHECK(t.out.find("rad (alpha below it: may overturn)") != std::string::npos);
 }
 
 TEST_CASE("rock: flexible-body screen from the command line", "[rocking][cli]") {
