@@ -42,15 +42,52 @@ struct Rhs {
     Mode mode = Mode::rock;
     int s = 1, sigma = 1;
     mutable Accel last;
+    // sin and cos of alpha - theta at the step start (theta_ref): the stages and the dense
+    // output of a step differ from it by little, so angle differences replace most sincos calls.
+    double th_ref = 0.0, sin_ref = 0.0, cos_ref = 1.0;
+    bool has_ref = false;
+
+    void set_reference(double th) {
+        const double a = g->alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
+        th_ref = th;
+        sin_ref = std::sin(a);
+        cos_ref = std::cos(a);
+        has_ref = true;
+    }
     Base base(double t) const { return bm->at(bm->segment_of(t), t); }
     Accel accel(const Vec& x, double t) const {
-        return mode == Mode::rock ? rock_accel(*g, s, x[2], x[3], base(t))
-                                  : slide_rock_accel(*g, s, sigma, x[2], x[3], base(t));
+        double sn, c;
+        sin_cos(x[2], sn, c);
+        return mode == Mode::rock ? rock_accel_sc(*g, s, sn, c, x[3], base(t))
+                                  : slide_rock_accel_sc(*g, s, sigma, sn, c, x[3], base(t));
     }
     void operator()(const Vec& x, Vec& dx, double t) const {
         last = accel(x, t);
         const bool slip = mode == Mode::slide_rock;
         dx = {slip ? x[1] : 0.0, slip ? last.u_dd : 0.0, x[3], last.th_dd};
+    }
+
+private:
+    // sin and cos of alpha - th. For |d| = |th - th_ref| <= 0.05 the Taylor series of sin d
+    // (to d^9) and cos d (to d^10) leave a remainder below d^11/11! = 1.2e-22, far under one
+    // ulp, and sin(a - d) = sin a cos d - cos a sin d (likewise cos) is exact to round-off.
+    void sin_cos(double th, double& sn, double& c) const {
+        const double d = th - th_ref;
+        if (!has_ref || std::abs(d) > 0.05) {
+            const double a = g->alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
+            sn = std::sin(a);
+            c = std::cos(a);
+            return;
+        }
+        // Horner form with reciprocal factorials (multiplications: no divisions in the hot path).
+        const double d2 = d * d;
+        const double sd =
+            d * (1.0 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))));
+        const double cd =
+            1.0 + d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 +
+                                                                          d2 * (-1.0 / 3628800)))));
+        sn = sin_ref * cd - cos_ref * sd;
+        c = cos_ref * cd + sin_ref * sd;
     }
 };
 
@@ -280,6 +317,7 @@ public:
             double h = std::min({h_, max_step_s, horizon - t});
             if (horizon - (t + h) < 1e-12 * h) h = horizon - t;
             double err = 0.0;
+            rhs.set_reference(x[2]);
             for (;;) {
                 stepper.do_step(std::ref(rhs), x, dx, t, xn, dxn, h, xerr);
                 err = 0.0;

@@ -51,10 +51,14 @@ Geometry make_geometry(const BlockModel& model) {
 }
 
 Accel rock_accel(const Geometry& g, int s, double th, double om, Base base) {
+    const double a = g.alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
+    return rock_accel_sc(g, s, std::sin(a), std::cos(a), om, base);
+}
+
+Accel rock_accel_sc(const Geometry& g, int s, double sn, double c, double om, Base base) {
     const auto i = static_cast<std::size_t>(Geometry::index(s));
     const double ds = static_cast<double>(s);
     const double R = g.R[i];
-    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
     Accel a;
     a.th_dd = -g.k_rock[i] * (base.G * sn + ds * base.ax * c);
     const double xdd = ds * R * (c * a.th_dd + sn * om * om);
@@ -65,10 +69,15 @@ Accel rock_accel(const Geometry& g, int s, double th, double om, Base base) {
 }
 
 Accel slide_rock_accel(const Geometry& g, int s, int sigma, double th, double om, Base base) {
+    const double a = g.alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
+    return slide_rock_accel_sc(g, s, sigma, std::sin(a), std::cos(a), om, base);
+}
+
+Accel slide_rock_accel_sc(const Geometry& g, int s, int sigma, double sn, double c, double om,
+                          Base base) {
     const auto i = static_cast<std::size_t>(Geometry::index(s));
     const double ds = static_cast<double>(s), dsig = static_cast<double>(sigma);
     const double R = g.R[i];
-    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
     const double w2 = om * om;
     // Rows: horizontal balance of the CG, vertical balance, moment about the CG (sec. 3).
     Eigen::Matrix3d A;

@@ -41,11 +41,16 @@ struct Accel {
 /// Rock about edge s (+1 right, -1 left) without slip:
 /// I_O theta'' = -M R [G sin(alpha - theta) + s xg'' cos(alpha - theta)].
 Accel rock_accel(const Geometry& g, int s, double th, double om, Base base);
+/// The same with sn = sin(alpha_s - theta) and c = cos(alpha_s - theta) given.
+Accel rock_accel_sc(const Geometry& g, int s, double sn, double c, double om, Base base);
 
 /// Slide-rock about edge s with the contact point slipping in direction sigma (F = -sigma mu_k N):
 /// the 3x3 linear system in (u'', theta'', N) from the CG's horizontal and vertical balance and
 /// the moment about the CG, solved with Eigen.
 Accel slide_rock_accel(const Geometry& g, int s, int sigma, double th, double om, Base base);
+/// The same with sn = sin(alpha_s - theta) and c = cos(alpha_s - theta) given.
+Accel slide_rock_accel_sc(const Geometry& g, int s, int sigma, double sn, double c, double om,
+                          Base base);
 
 /// Flat sliding in direction sigma: u'' = -xg'' - sigma mu_k G.
 Accel slide_accel(const Geometry& g, int sigma, Base base);

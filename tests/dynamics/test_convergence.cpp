@@ -90,14 +90,15 @@ TEST_CASE("event-driven answer unchanged when the tolerance tightens", "[dynamic
     for (const Case c : {Case{0.6, 0.15}, Case{0.4, 0.8}, Case{0.6, 0.3}}) {
         const auto model = dynamics::make_block_model(blk, c.mu);
         const auto e = test::scaled_to(rec, c.pga_g);
-        const auto loose = test::opts();  // default: rel 1e-10, abs 1e-12
+        const auto loose = test::opts();  // default: rel 1e-9, abs 1e-11
         auto tight = test::opts();
         tight.rel_tol = 1e-12;
         tight.abs_tol = 1e-14;
         const auto a = dynamics::simulate(model, e, loose).summary;
         const auto b = dynamics::simulate(model, e, tight).summary;
         CHECK(a.overturned == b.overturned);
-        // Measured: <= 4e-6 relative (slide-rock at 0.6 g), 1e-12 or less for slide and rock.
+        // Measured at the default: 6e-6 relative (slide before an overturn, 0.6 g, mu 0.3),
+        // 4e-8 for rock at 0.4 g, 0 for slide.
         CHECK(a.slide_max_m == Approx(b.slide_max_m).epsilon(1e-5).margin(1e-12));
         CHECK(a.rock_max_rad == Approx(b.rock_max_rad).epsilon(1e-5).margin(1e-12));
         CHECK(a.slide_residual_m == Approx(b.slide_residual_m).epsilon(1e-5).margin(1e-12));
