@@ -1,6 +1,7 @@
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/errors.hpp"
 #include "core/measures.hpp"
@@ -48,13 +49,16 @@ std::vector<double> averaged_psd_per_radps(const core::Record& record, double td
     const auto x = fft.forward(record.accel_mps2);
     const double df = 1.0 / (static_cast<double>(n) * record.dt_s);
     std::vector<double> s(x.size());
-    for (std::size_t k = 0; k < x.size(); ++k) s[k] = std::norm(x[k] * record.dt_s) / (units::pi * td_s);
+    for (std::size_t k = 0; k < x.size(); ++k)
+        s[k] = std::norm(x[k] * record.dt_s) / (units::pi * td_s);
     std::vector<double> out;
     out.reserve(frequency_hz.size());
     for (double f : frequency_hz) {
-        const auto k0 = static_cast<std::size_t>(std::ceil(f * (1.0 - criteria::psd_band_halfwidth) / df));
-        const auto k1 = std::min(x.size() - 1,
-                                 static_cast<std::size_t>(std::floor(f * (1.0 + criteria::psd_band_halfwidth) / df)));
+        const auto k0 =
+            static_cast<std::size_t>(std::ceil(f * (1.0 - criteria::psd_band_halfwidth) / df));
+        const auto k1 = std::min(
+            x.size() - 1,
+            static_cast<std::size_t>(std::floor(f * (1.0 + criteria::psd_band_halfwidth) / df)));
         double sum = 0.0;
         for (std::size_t k = k0; k <= k1; ++k) sum += s[k];
         out.push_back(k1 >= k0 ? sum / static_cast<double>(k1 - k0 + 1) : 0.0);
@@ -90,8 +94,10 @@ RatioStats ratio_stats(const std::vector<double>& f, const std::vector<double>& 
 
 // Minimum over 0.3-24 Hz (100 per decade) of the averaged PSD over the RG 1.60 target PSD.
 double psd_min_ratio(const core::Record& record, double td_s, double pga_g) {
-    const double top = std::min(criteria::psd_high_hz, 0.5 / record.dt_s / (1.0 + criteria::psd_band_halfwidth));
-    const std::vector<double> f = spectra::log_frequencies(criteria::psd_low_hz, top, criteria::points_per_decade);
+    const double top =
+        std::min(criteria::psd_high_hz, 0.5 / record.dt_s / (1.0 + criteria::psd_band_halfwidth));
+    const std::vector<double> f =
+        spectra::log_frequencies(criteria::psd_low_hz, top, criteria::points_per_decade);
     const std::vector<double> s = averaged_psd_per_radps(record, td_s, f);
     double worst = 1e300;
     for (std::size_t i = 0; i < f.size(); ++i)
@@ -140,18 +146,21 @@ Acceptance check_acceptance(const core::Record& record, const Target& target) {
     if (a.dt_s > criteria::max_dt_s + 1e-12)
         add_reason(why, fmt::format("dt {} s > {} s", a.dt_s, criteria::max_dt_s));
     if (a.duration_s < criteria::min_duration_s - 1e-9)
-        add_reason(why, fmt::format("duration {:.3f} s < {} s", a.duration_s, criteria::min_duration_s));
+        add_reason(why,
+                   fmt::format("duration {:.3f} s < {} s", a.duration_s, criteria::min_duration_s));
     if (a.min_ratio < criteria::floor_ratio)
         add_reason(why, fmt::format("min ratio {:.4f} < {}", a.min_ratio, criteria::floor_ratio));
     if (a.max_adjacent_below > criteria::max_adjacent_below)
         add_reason(why, fmt::format("{} adjacent points below target > {}", a.max_adjacent_below,
                                     criteria::max_adjacent_below));
     if (a.max_ratio_cap_band > criteria::cap_ratio)
-        add_reason(why, fmt::format("ratio {:.4f} > {} in {}-{} Hz", a.max_ratio_cap_band, criteria::cap_ratio,
-                                    criteria::cap_low_hz, criteria::cap_high_hz));
+        add_reason(why,
+                   fmt::format("ratio {:.4f} > {} in {}-{} Hz", a.max_ratio_cap_band,
+                               criteria::cap_ratio, criteria::cap_low_hz, criteria::cap_high_hz));
     if (a.psd_min_ratio && *a.psd_min_ratio < criteria::psd_floor_rg160)
         add_reason(why, fmt::format("PSD ratio {:.4f} < {} in {}-{} Hz", *a.psd_min_ratio,
-                                    criteria::psd_floor_rg160, criteria::psd_low_hz, criteria::psd_high_hz));
+                                    criteria::psd_floor_rg160, criteria::psd_low_hz,
+                                    criteria::psd_high_hz));
     if (std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps)
         add_reason(why, fmt::format("final velocity {:.3g} m/s", a.final_velocity_mps));
     if (std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m)

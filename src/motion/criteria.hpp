@@ -7,7 +7,7 @@
 namespace freestand::motion::criteria {
 
 inline constexpr double band_low_hz = 0.1;
-inline constexpr double band_high_hz = 50.0;   ///< or the Nyquist frequency if lower
+inline constexpr double band_high_hz = 50.0;  ///< or the Nyquist frequency if lower
 inline constexpr int points_per_decade = 100;
 inline constexpr double floor_ratio = 0.9;
 inline constexpr int max_adjacent_below = 9;

@@ -11,8 +11,8 @@ constexpr int kTerms = 36;  // Weideman's N
 constexpr double kAsymptoticRadius = 8.0;
 
 struct Coefficients {
-    double L = 0.0;                     // scale of the Moebius map
-    std::array<double, kTerms> a{};    // a_1..a_N of eq. 3.11
+    double L = 0.0;                  // scale of the Moebius map
+    std::array<double, kTerms> a{};  // a_1..a_N of eq. 3.11
 };
 
 // a_n are the Fourier coefficients of f(t) = exp(-t^2) (L^2 + t^2) on the mapped grid
@@ -35,8 +35,8 @@ Coefficients make_coefficients() {
         double re = 0.0;
         for (int j = 0; j < m2; ++j)
             re += shifted[static_cast<std::size_t>(j)] *
-                  std::cos(2.0 * std::numbers::pi * static_cast<double>(n) * static_cast<double>(j) /
-                           static_cast<double>(m2));
+                  std::cos(2.0 * std::numbers::pi * static_cast<double>(n) *
+                           static_cast<double>(j) / static_cast<double>(m2));
         c.a[static_cast<std::size_t>(n - 1)] = re / static_cast<double>(m2);
     }
     return c;

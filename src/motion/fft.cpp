@@ -1,7 +1,8 @@
 #include "motion/fft.hpp"
 
-#include <algorithm>
 #include <fftw3.h>
+
+#include <algorithm>
 #include <mutex>
 #include <new>
 

@@ -10,7 +10,7 @@ namespace freestand::motion {
 /// r2c / c2r pair for one length n, with FFTW-aligned buffers owned by the object.
 /// Unnormalised like FFTW: inverse(forward(x)) = n x. Not copyable; use one per thread.
 class RealFft {
-public:
+  public:
     explicit RealFft(std::size_t n);
     ~RealFft();
     RealFft(const RealFft&) = delete;
@@ -23,7 +23,7 @@ public:
     /// x_j = sum over the full Hermitian spectrum (no 1/n), j = 0..n-1.
     std::vector<double> inverse(const std::vector<std::complex<double>>& spectrum);
 
-private:
+  private:
     std::size_t n_;
     double* real_ = nullptr;
     void* complex_ = nullptr;  // fftw_complex*

@@ -1,6 +1,7 @@
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -44,7 +45,8 @@ double correlation(const core::Record& a, const core::Record& b) {
 }
 
 void check_request(const TargetSet& targets, const GenerateOptions& o) {
-    if (o.components.empty()) throw InputError(SourceLocation{"", 0, "components"}, "no component requested");
+    if (o.components.empty())
+        throw InputError(SourceLocation{"", 0, "components"}, "no component requested");
     for (std::size_t i = 0; i < o.components.size(); ++i) {
         const std::string& c = o.components[i];
         if (c != "h1" && c != "h2" && c != "v")
@@ -52,38 +54,43 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
                              fmt::format("unknown component \"{}\"; expected h1, h2 or v", c));
         for (std::size_t j = 0; j < i; ++j)
             if (o.components[j] == c)
-                throw InputError(SourceLocation{"", 0, "components"}, fmt::format("component \"{}\" given twice", c));
+                throw InputError(SourceLocation{"", 0, "components"},
+                                 fmt::format("component \"{}\" given twice", c));
         validate_target(target_for(targets, c).psa_5pct, 0.05);
     }
     if (o.seed_records.empty()) {
         require_positive(o.dt_s, SourceLocation{"", 0, "dt_s"});
         require_positive(o.duration_s, SourceLocation{"", 0, "duration_s"});
         if (o.dt_s > criteria::max_dt_s + 1e-12)
-            throw InputError(SourceLocation{"", 0, "dt_s"},
-                             fmt::format("dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s, and the Nyquist "
-                                         "frequency {} Hz is below the {} Hz top of the acceptance band",
-                                         o.dt_s, criteria::max_dt_s, 0.5 / o.dt_s, criteria::band_high_hz));
+            throw InputError(
+                SourceLocation{"", 0, "dt_s"},
+                fmt::format("dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s, and the Nyquist "
+                            "frequency {} Hz is below the {} Hz top of the acceptance band",
+                            o.dt_s, criteria::max_dt_s, 0.5 / o.dt_s, criteria::band_high_hz));
         if (o.duration_s < criteria::min_duration_s - 1e-9)
             throw InputError(SourceLocation{"", 0, "duration_s"},
-                             fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s", o.duration_s,
-                                         criteria::min_duration_s));
+                             fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s",
+                                         o.duration_s, criteria::min_duration_s));
         return;
     }
     if (o.seed_records.size() != o.components.size())
-        throw InputError(SourceLocation{"", 0, "seed_records"},
-                         fmt::format("{} seed records for {} components; give one seed record per component",
-                                     o.seed_records.size(), o.components.size()));
+        throw InputError(
+            SourceLocation{"", 0, "seed_records"},
+            fmt::format("{} seed records for {} components; give one seed record per component",
+                        o.seed_records.size(), o.components.size()));
     for (const core::Record& r : o.seed_records) {
         core::validate(r);
         const SourceLocation where{r.source, 0, "dt"};
         if (r.dt_s > criteria::max_dt_s + 1e-12)
-            throw InputError(where, fmt::format("seed record dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s "
-                                                "(Nyquist {} Hz below the {} Hz acceptance band)",
-                                                r.dt_s, criteria::max_dt_s, 0.5 / r.dt_s, criteria::band_high_hz));
+            throw InputError(
+                where,
+                fmt::format("seed record dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s "
+                            "(Nyquist {} Hz below the {} Hz acceptance band)",
+                            r.dt_s, criteria::max_dt_s, 0.5 / r.dt_s, criteria::band_high_hz));
         if (r.duration_s() < criteria::min_duration_s - 1e-9)
             throw InputError(SourceLocation{r.source, 0, "duration"},
-                             fmt::format("seed record lasts {:.3f} s; SRP 3.7.1 needs >= {} s", r.duration_s(),
-                                         criteria::min_duration_s));
+                             fmt::format("seed record lasts {:.3f} s; SRP 3.7.1 needs >= {} s",
+                                         r.duration_s(), criteria::min_duration_s));
     }
 }
 
@@ -93,8 +100,10 @@ bool correlated_with_earlier(const std::vector<GeneratedComponent>& done, const 
     return false;
 }
 
-GeneratedComponent synthetic_component(const Target& target, const GenerateOptions& o, std::size_t index,
-                                       const std::vector<GeneratedComponent>& done, std::vector<std::string>& notes) {
+GeneratedComponent synthetic_component(const Target& target, const GenerateOptions& o,
+                                       std::size_t index,
+                                       const std::vector<GeneratedComponent>& done,
+                                       std::vector<std::string>& notes) {
     const auto start = Clock::now();
     GeneratedComponent best;
     const std::string& name = o.components[index];
@@ -104,7 +113,8 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
         // A fresh seed usually converges in a few passes where a stubborn one needs dozens:
         // cap the passes of the first half of the attempts; hard targets get full ones after.
         MatchOptions mo = o.match;
-        if (2 * (attempt + 1) <= o.max_attempts) mo.max_iterations = std::min(mo.max_iterations, kQuickPasses);
+        if (2 * (attempt + 1) <= o.max_attempts)
+            mo.max_iterations = std::min(mo.max_iterations, kQuickPasses);
         MatchResult m = match_in_place(std::move(raw), target, mo);
         GeneratedComponent g;
         g.record = std::move(m.record);
@@ -119,14 +129,16 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
             best = std::move(g);
             break;
         }
-        notes.push_back(fmt::format("{}: seed {} rejected ({}); trying the next seed", name, seed,
-                                    correlated ? "|rho| > 0.16 with an earlier component" : g.acceptance.reason));
+        notes.push_back(fmt::format(
+            "{}: seed {} rejected ({}); trying the next seed", name, seed,
+            correlated ? "|rho| > 0.16 with an earlier component" : g.acceptance.reason));
         if (correlated && g.acceptance.passed) {
             g.acceptance.passed = false;
             g.acceptance.reason = "correlated with an earlier component";
         }
         g.stop = "attempt limit";
-        if (attempt == 0 || (!best.acceptance.passed && g.acceptance.min_ratio > best.acceptance.min_ratio))
+        if (attempt == 0 ||
+            (!best.acceptance.passed && g.acceptance.min_ratio > best.acceptance.min_ratio))
             best = std::move(g);
     }
     best.attempts = std::max(best.attempts, 1);
@@ -164,8 +176,9 @@ GeneratedComponent seed_component(const Target& target, const GenerateOptions& o
         }
         best.attempts = attempt + 1;
         if (best.acceptance.passed) break;
-        notes.push_back(fmt::format("{}: matching {} (setting {}) failed ({}); trying gentler steps", name,
-                                    seed.name, attempt + 1, best.acceptance.reason));
+        notes.push_back(
+            fmt::format("{}: matching {} (setting {}) failed ({}); trying gentler steps", name,
+                        seed.name, attempt + 1, best.acceptance.reason));
     }
     best.record.component = name;
     best.record.name = name;
@@ -178,16 +191,18 @@ GeneratedComponent seed_component(const Target& target, const GenerateOptions& o
 
 }  // namespace
 
-MatchResult match_record(const core::Record& seed, const Target& target, const MatchOptions& options) {
+MatchResult match_record(const core::Record& seed, const Target& target,
+                         const MatchOptions& options) {
     core::validate(seed);
     validate_target(target.psa_5pct, 0.05);
     // Scale to the target first (geometric mean of the ratio over the band) so the wavelets only
     // reshape; then match.
-    const std::vector<double> f = spectra::log_frequencies(criteria::band_low_hz,
-                                                           criteria::band_high_for(seed.dt_s), 20);
+    const std::vector<double> f =
+        spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(seed.dt_s), 20);
     const std::vector<double> psa = spectra::psa_g(seed, 0.05, f);
     double log_sum = 0.0;
-    for (std::size_t i = 0; i < f.size(); ++i) log_sum += std::log(target.psa_5pct.psa_at(f[i]) / psa[i]);
+    for (std::size_t i = 0; i < f.size(); ++i)
+        log_sum += std::log(target.psa_5pct.psa_at(f[i]) / psa[i]);
     core::Record scaled = seed;
     const double k = std::exp(log_sum / static_cast<double>(f.size()));
     for (double& a : scaled.accel_mps2) a *= k;
@@ -207,14 +222,17 @@ GeneratedSet generate_set(const TargetSet& targets, const GenerateOptions& o) {
         set.components.push_back(seed_component(target, o, i, set.notes));
     }
     set.passed = true;
-    for (const GeneratedComponent& g : set.components) set.passed = set.passed && g.acceptance.passed;
+    for (const GeneratedComponent& g : set.components)
+        set.passed = set.passed && g.acceptance.passed;
     for (std::size_t i = 0; i < set.components.size(); ++i)
         for (std::size_t j = i + 1; j < set.components.size(); ++j) {
             const double rho = correlation(set.components[i].record, set.components[j].record);
-            set.correlations.push_back({set.components[i].record.component, set.components[j].record.component, rho});
+            set.correlations.push_back(
+                {set.components[i].record.component, set.components[j].record.component, rho});
             if (std::abs(rho) > criteria::max_abs_correlation) {
                 set.passed = false;
-                set.notes.push_back(fmt::format("{}-{}: |rho| = {:.3f} > {}", set.components[i].record.component,
+                set.notes.push_back(fmt::format("{}-{}: |rho| = {:.3f} > {}",
+                                                set.components[i].record.component,
                                                 set.components[j].record.component, std::abs(rho),
                                                 criteria::max_abs_correlation));
             }

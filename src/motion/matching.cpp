@@ -27,7 +27,8 @@ constexpr double kUncappedUpper = 1.4;
 // Band raise after a full check fails although every matching frequency is inside the band.
 constexpr double kRaise = 0.02;
 constexpr int kMaxRaises = 2;
-// Misfit below which the full acceptance check is tried on a copy, at most every kCheckEvery passes.
+// Misfit below which the full acceptance check is tried on a copy, at most every kCheckEvery
+// passes.
 constexpr double kNearBand = 0.04;
 constexpr double kTaper_s = 0.5;
 constexpr int kCheckEvery = 3;
@@ -116,13 +117,15 @@ struct Matcher {
         const std::size_t n = m + 2;
         std::vector<Wavelet> waves;
         waves.reserve(m);
-        for (std::size_t j = 0; j < m; ++j) waves.push_back(Wavelet::for_oscillator(f_wave[j], f[j], kDamping, pk.t[j]));
+        for (std::size_t j = 0; j < m; ++j)
+            waves.push_back(Wavelet::for_oscillator(f_wave[j], f[j], kDamping, pk.t[j]));
         Eigen::MatrixXd c(n, n);
         Eigen::VectorXd rhs(n);
         for (std::size_t i = 0; i < m; ++i) {
             for (std::size_t j = 0; j < m; ++j)
                 c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-                    interpolation_gain(f_wave[j], rec.dt_s) * wavelet_response(waves[j], f[i], kDamping, pk.t[i]);
+                    interpolation_gain(f_wave[j], rec.dt_s) *
+                    wavelet_response(waves[j], f[i], kDamping, pk.t[i]);
             for (std::size_t k = 0; k < 2; ++k)
                 c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(m + k)) =
                     wavelet_response(pulses[k], f[i], kDamping, pk.t[i]);
@@ -149,7 +152,8 @@ struct Matcher {
         for (std::size_t j = 0; j < m; ++j)
             add_wavelet(sampled[j], relaxation * b(static_cast<Eigen::Index>(j)), rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
-            add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)), rec.accel_mps2);
+            add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)),
+                        rec.accel_mps2);
     }
 
     // Rows scaled to unit max, columns to unit norm, then min |C x - r|^2 + lambda^2 |x|^2.
@@ -164,11 +168,14 @@ struct Matcher {
         Eigen::VectorXd col(c.cols());
         for (Eigen::Index j = 0; j < c.cols(); ++j) {
             col(j) = c.col(j).norm();
-            if (col(j) > 0.0) c.col(j) /= col(j);
-            else col(j) = 1.0;
+            if (col(j) > 0.0)
+                c.col(j) /= col(j);
+            else
+                col(j) = 1.0;
         }
         Eigen::MatrixXd normal = c.transpose() * c;
-        const double lambda2 = kRegularisation * normal.trace() / static_cast<double>(normal.rows());
+        const double lambda2 =
+            kRegularisation * normal.trace() / static_cast<double>(normal.rows());
         normal.diagonal().array() += lambda2;
         Eigen::VectorXd x = normal.ldlt().solve(c.transpose() * rhs);
         return x.cwiseQuotient(col);
@@ -181,7 +188,9 @@ struct Matcher {
         const std::size_t n = r.size();
         const auto taper = std::min(n / 4, static_cast<std::size_t>(kTaper_s / r.dt_s));
         for (std::size_t k = 0; k < taper; ++k) {
-            const double w = 0.5 * (1.0 - std::cos(units::pi * static_cast<double>(k) / static_cast<double>(taper)));
+            const double w =
+                0.5 *
+                (1.0 - std::cos(units::pi * static_cast<double>(k) / static_cast<double>(taper)));
             r.accel_mps2[k] *= w;
             r.accel_mps2[n - 1 - k] *= w;
         }

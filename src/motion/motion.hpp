@@ -56,12 +56,12 @@ double envelope_at(const Envelope& envelope, double t_s, double duration_s);
 /// Controls of the wavelet matching loop. A matching frequency whose ratio (computed / target)
 /// lies in [lower, upper] is held where it is; one outside is pulled to aim.
 struct MatchOptions {
-    double aim = 1.05;            ///< ratio aimed at, so dips between matching points stay >= 1
-    double lower = 1.02;          ///< in-loop band: ratios at the matching frequencies
+    double aim = 1.05;    ///< ratio aimed at, so dips between matching points stay >= 1
+    double lower = 1.02;  ///< in-loop band: ratios at the matching frequencies
     double upper = 1.18;
-    double relaxation = 1.0;      ///< fraction of the linearised correction applied per pass
-    int max_iterations = 40;      ///< matching passes
-    int match_per_decade = 30;    ///< matching frequencies per decade (checks are at 100)
+    double relaxation = 1.0;    ///< fraction of the linearised correction applied per pass
+    int max_iterations = 40;    ///< matching passes
+    int match_per_decade = 30;  ///< matching frequencies per decade (checks are at 100)
 };
 
 /// Everything the generator needs besides the targets.
@@ -87,9 +87,9 @@ struct Acceptance {
     double min_ratio = 0.0;        ///< computed / target over the check band
     double max_ratio = 0.0;
     double mean_ratio = 0.0;
-    int max_adjacent_below = 0;    ///< longest run of adjacent points below 1.0 (<= 9)
-    double max_ratio_cap_band = 0.0;  ///< max ratio over 0.2-25 Hz (<= 1.3)
-    std::optional<double> psd_min_ratio;  ///< min of averaged PSD / target PSD, 0.3-24 Hz
+    int max_adjacent_below = 0;             ///< longest run of adjacent points below 1.0 (<= 9)
+    double max_ratio_cap_band = 0.0;        ///< max ratio over 0.2-25 Hz (<= 1.3)
+    std::optional<double> psd_min_ratio;    ///< min of averaged PSD / target PSD, 0.3-24 Hz
     std::optional<double> ratio_10pct_min;  ///< 10% ratio, informational
     std::optional<double> ratio_10pct_max;
     double pga_g = 0.0, pgv_mps = 0.0, pgd_m = 0.0;
@@ -104,14 +104,14 @@ Acceptance check_acceptance(const core::Record& record, const Target& target);
 
 /// One generated or matched component.
 struct GeneratedComponent {
-    core::Record record;      ///< component label set; acceleration in m/s^2
+    core::Record record;  ///< component label set; acceleration in m/s^2
     Acceptance acceptance;
-    std::string method;       ///< "synthetic+wavelet" or "wavelet (seed <name>)"
-    std::uint64_t seed = 0;   ///< RNG seed actually used (synthetic), else 0
-    int attempts = 0;         ///< seeds tried
-    int iterations = 0;       ///< matching passes of the kept attempt
-    double wall_s = 0.0;      ///< wall time of this component (the only non-deterministic output)
-    std::string stop;         ///< "passed", "iteration limit", "attempt limit", ...
+    std::string method;      ///< "synthetic+wavelet" or "wavelet (seed <name>)"
+    std::uint64_t seed = 0;  ///< RNG seed actually used (synthetic), else 0
+    int attempts = 0;        ///< seeds tried
+    int iterations = 0;      ///< matching passes of the kept attempt
+    double wall_s = 0.0;     ///< wall time of this component (the only non-deterministic output)
+    std::string stop;        ///< "passed", "iteration limit", "attempt limit", ...
 };
 
 /// Zero-lag Pearson correlation of two components over their common samples.
@@ -147,7 +147,7 @@ MatchResult match_record(const core::Record& seed, const Target& target,
 
 /// Synthetic stationary random-phase process x envelope, iterated in the frequency domain on
 /// the target/computed PSA ratio (SIMQKE); not yet matched.
-core::Record synthesize(const Target& target, double duration_s, double dt_s,
-                        std::uint64_t seed, const Envelope& envelope);
+core::Record synthesize(const Target& target, double duration_s, double dt_s, std::uint64_t seed,
+                        const Envelope& envelope);
 
 }  // namespace freestand::motion

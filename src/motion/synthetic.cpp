@@ -1,10 +1,11 @@
 // Random-phase stationary process shaped by an envelope and iterated on the spectral ratio in
 // the frequency domain (Gasparini & Vanmarcke 1976, SIMQKE): phases fixed, Fourier amplitudes of
 // the stationary process multiplied by target / computed PSA, envelope re-applied each pass.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fmt/format.h>
 #include <random>
 
 #include "core/errors.hpp"
@@ -19,7 +20,8 @@ namespace freestand::motion {
 double uniform01(std::uint64_t draw) { return static_cast<double>(draw >> 11) * 0x1.0p-53; }
 
 std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt) {
-    std::uint64_t z = seed ^ (component * 0x9E3779B97F4A7C15ull) ^ (attempt * 0xD1B54A32D192ED03ull);
+    std::uint64_t z =
+        seed ^ (component * 0x9E3779B97F4A7C15ull) ^ (attempt * 0xD1B54A32D192ED03ull);
     z += 0x9E3779B97F4A7C15ull;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
@@ -45,11 +47,12 @@ constexpr double kMaxStep = 3.0;  // a single pass changes an amplitude by at mo
 void validate_envelope(const Envelope& e, double duration_s) {
     require_positive(e.rise_s, SourceLocation{"", 0, "envelope rise_s"});
     require_positive(e.strong_s, SourceLocation{"", 0, "envelope strong_s"});
-    require_in_range(e.end_level, 0.0, 1.0, SourceLocation{"", 0, "envelope end_level"}, false, true);
+    require_in_range(e.end_level, 0.0, 1.0, SourceLocation{"", 0, "envelope end_level"}, false,
+                     true);
     if (e.rise_s + e.strong_s > duration_s)
         throw InputError(SourceLocation{"", 0, "envelope"},
-                         fmt::format("rise {} s + strong part {} s exceed the duration {} s", e.rise_s,
-                                     e.strong_s, duration_s));
+                         fmt::format("rise {} s + strong part {} s exceed the duration {} s",
+                                     e.rise_s, e.strong_s, duration_s));
 }
 
 // Log-frequency linear interpolation of ratio samples, constant beyond the ends.
@@ -83,7 +86,8 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
         amp[k] = fk < 0.05 ? 0.0 : target.psa_5pct.psa_at(fk) / std::sqrt(fk);
     }
     std::vector<double> env(n);
-    for (std::size_t i = 0; i < n; ++i) env[i] = envelope_at(envelope, static_cast<double>(i) * dt_s, duration_s);
+    for (std::size_t i = 0; i < n; ++i)
+        env[i] = envelope_at(envelope, static_cast<double>(i) * dt_s, duration_s);
 
     core::Record rec;
     rec.dt_s = dt_s;
@@ -94,8 +98,8 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
         const std::vector<double> x = fft.inverse(spec);
         for (std::size_t i = 0; i < n; ++i) rec.accel_mps2[i] = env[i] * x[i];
     };
-    const std::vector<double> f = spectra::log_frequencies(criteria::band_low_hz,
-                                                           criteria::band_high_for(dt_s), kPerDecade);
+    const std::vector<double> f =
+        spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(dt_s), kPerDecade);
     std::vector<double> target_psa;
     for (double fi : f) target_psa.push_back(target.psa_5pct.psa_at(fi));
     for (int pass = 0; pass < kPasses; ++pass) {
@@ -112,7 +116,8 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
         std::vector<double> r(f.size());
         for (std::size_t i = 0; i < f.size(); ++i)
             r[i] = std::clamp(target_psa[i] / std::max(psa[i], 1e-300), 1.0 / kMaxStep, kMaxStep);
-        for (std::size_t k = 1; k < amp.size(); ++k) amp[k] *= interp_log(f, r, static_cast<double>(k) * df);
+        for (std::size_t k = 1; k < amp.size(); ++k)
+            amp[k] *= interp_log(f, r, static_cast<double>(k) * df);
     }
     build();
     return rec;

@@ -1,6 +1,7 @@
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/errors.hpp"
 #include "motion/motion.hpp"
@@ -33,9 +34,10 @@ spectra::Spectrum scaled(const spectra::Spectrum& s, double ratio, const std::st
 void validate_target(const spectra::Spectrum& s, double expected_damping) {
     const SourceLocation where{"", 0, s.label.empty() ? std::string("target") : s.label};
     if (std::abs(s.damping - expected_damping) > 1e-9)
-        throw InputError(where, fmt::format("damping {} but the acceptance criteria (SRP 3.7.1) are "
-                                            "on the {}-damped spectrum; give a {} target",
-                                            s.damping, expected_damping, expected_damping));
+        throw InputError(where,
+                         fmt::format("damping {} but the acceptance criteria (SRP 3.7.1) are "
+                                     "on the {}-damped spectrum; give a {} target",
+                                     s.damping, expected_damping, expected_damping));
     if (s.frequency_hz.size() < 2 || s.frequency_hz.size() != s.psa_g.size())
         throw InputError(where, fmt::format("{} frequencies and {} PSA values; expected the same "
                                             "number, at least 2",
@@ -44,13 +46,16 @@ void validate_target(const spectra::Spectrum& s, double expected_damping) {
         const double f = s.frequency_hz[i];
         const double a = s.psa_g[i];
         if (!(std::isfinite(f) && f > 0.0))
-            throw InputError(where, fmt::format("point {}: frequency {} Hz; expected finite > 0", i + 1, f));
+            throw InputError(
+                where, fmt::format("point {}: frequency {} Hz; expected finite > 0", i + 1, f));
         if (i > 0 && !(f > s.frequency_hz[i - 1]))
-            throw InputError(where, fmt::format("point {}: frequency {} Hz not above the previous {} Hz; "
-                                                "frequencies must be strictly increasing",
-                                                i + 1, f, s.frequency_hz[i - 1]));
+            throw InputError(where,
+                             fmt::format("point {}: frequency {} Hz not above the previous {} Hz; "
+                                         "frequencies must be strictly increasing",
+                                         i + 1, f, s.frequency_hz[i - 1]));
         if (!(std::isfinite(a) && a > 0.0))
-            throw InputError(where, fmt::format("point {}: PSA {} g at {} Hz; expected finite > 0", i + 1, a, f));
+            throw InputError(where, fmt::format("point {}: PSA {} g at {} Hz; expected finite > 0",
+                                                i + 1, a, f));
     }
 }
 
@@ -73,7 +78,8 @@ TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5
                         double vertical_ratio) {
     validate_target(horizontal_5pct, 0.05);
     if (horizontal_10pct) validate_target(*horizontal_10pct, 0.10);
-    require_in_range(vertical_ratio, 0.0, 2.0, SourceLocation{"", 0, "vertical_ratio"}, false, true);
+    require_in_range(vertical_ratio, 0.0, 2.0, SourceLocation{"", 0, "vertical_ratio"}, false,
+                     true);
     TargetSet t;
     t.label = std::move(label);
     t.horizontal.psa_5pct = horizontal_5pct;
@@ -82,7 +88,8 @@ TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5
     t.vertical.psa_5pct = scaled(horizontal_5pct, vertical_ratio, vlabel);
     if (horizontal_10pct)
         t.vertical.psa_10pct =
-            scaled(*horizontal_10pct, vertical_ratio, fmt::format("{} x {}", vertical_ratio, horizontal_10pct->label));
+            scaled(*horizontal_10pct, vertical_ratio,
+                   fmt::format("{} x {}", vertical_ratio, horizontal_10pct->label));
     return t;
 }
 

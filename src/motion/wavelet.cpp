@@ -41,7 +41,7 @@ Wavelet Wavelet::at(double frequency_hz, double damping, double t_peak_s) {
     w.damping = damping;
     const double root = std::sqrt(1.0 - damping * damping);
     w.omega_d_radps = units::hz_to_radps(frequency_hz) * root;
-    w.gamma_s = 1.178 * std::pow(frequency_hz, -0.93);  // AA2010 eq. 17
+    w.gamma_s = 1.178 * std::pow(frequency_hz, -0.93);                 // AA2010 eq. 17
     const double shift = std::atan(root / damping) / w.omega_d_radps;  // AA2010 eq. 14
     w.centre_s = t_peak_s - shift;
     return w;
@@ -87,11 +87,13 @@ State full_state(const Wavelet& w, double omega, double damping, double t_s) {
     const double T = t_s - w.centre_s;
     if (T < -kSupportGammas * w.gamma_s) return {};
     // Long after the wavelet the free vibration has decayed below exp(-kDecayed) of its size.
-    if (T > kSupportGammas * w.gamma_s && damping * omega * (T - kSupportGammas * w.gamma_s) > kDecayed)
+    if (T > kSupportGammas * w.gamma_s &&
+        damping * omega * (T - kSupportGammas * w.gamma_s) > kDecayed)
         return {};
     // cos(Omega x) = Re exp(i Omega x) and Im(A) Re(B) = Im(A B + A conj(B)) / 2.
-    const std::complex<double> sum = half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
-                                     half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
+    const std::complex<double> sum =
+        half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
+        half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
     const double k = omega * omega / (2.0 * omega_d);
     return {k * sum.imag(), k * (omega_d * sum.real() - damping * omega * sum.imag())};
 }
@@ -107,8 +109,9 @@ double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_
     const State s0 = full_state(w, omega, damping, 0.0);
     const double omega_d = omega * std::sqrt(1.0 - damping * damping);
     const double decay = std::exp(-damping * omega * t_s);
-    const double free = decay * (s0.y * std::cos(omega_d * t_s) +
-                                 (s0.ydot + damping * omega * s0.y) / omega_d * std::sin(omega_d * t_s));
+    const double free =
+        decay * (s0.y * std::cos(omega_d * t_s) +
+                 (s0.ydot + damping * omega * s0.y) / omega_d * std::sin(omega_d * t_s));
     return full - free;
 }
 

@@ -18,7 +18,7 @@ struct Wavelet {
     double damping = 0.05;
     double omega_d_radps = 0.0;  ///< omega'
     double gamma_s = 0.0;
-    double centre_s = 0.0;       ///< t_peak - dt_shift
+    double centre_s = 0.0;  ///< t_peak - dt_shift
 
     /// Wavelet placed for a peak at t_peak_s.
     static Wavelet at(double frequency_hz, double damping, double t_peak_s);

@@ -11,15 +11,18 @@ namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("freestand_gen_" + std::to_string(::getpid()) + "_" + name);
+    const fs::path p =
+        fs::temp_directory_path() / ("freestand_gen_" + std::to_string(::getpid()) + "_" + name);
     fs::remove_all(p);
     return p;
 }
 }  // namespace
 
-TEST_CASE("generate writes one CSV per component and match.json with the issue's keys", "[motion][cli]") {
+TEST_CASE("generate writes one CSV per component and match.json with the issue's keys",
+          "[motion][cli]") {
     const fs::path out = scratch("a");
-    const auto r = run_cli("generate --target rg1.60 --pga 0.2 --components h1,v --seed 3 --out '" + out.string() + "'");
+    const auto r = run_cli("generate --target rg1.60 --pga 0.2 --components h1,v --seed 3 --out '" +
+                           out.string() + "'");
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(fs::exists(out / "h1.csv"));
@@ -27,9 +30,9 @@ TEST_CASE("generate writes one CSV per component and match.json with the issue's
     const auto j = nlohmann::json::parse(slurp(out / "match.json"));
     CHECK(j["passed"] == true);
     REQUIRE(j["components"].size() == 2);
-    for (const char* key : {"component", "passed", "min_ratio", "max_ratio", "mean_ratio", "max_adjacent_below", "pga_g",
-                            "pgv_mps", "pgd_m", "final_velocity_mps", "final_displacement_m", "d5_75_s", "iterations",
-                            "wall_s"})
+    for (const char* key : {"component", "passed", "min_ratio", "max_ratio", "mean_ratio",
+                            "max_adjacent_below", "pga_g", "pgv_mps", "pgd_m", "final_velocity_mps",
+                            "final_displacement_m", "d5_75_s", "iterations", "wall_s"})
         CHECK(j["components"][0].contains(key));
     CHECK(j["components"][1]["component"] == "v");
     CHECK(j["correlations"].size() == 1);
@@ -39,7 +42,8 @@ TEST_CASE("generate writes one CSV per component and match.json with the issue's
 
 TEST_CASE("generate is byte-identical for the same inputs and seed", "[motion][cli]") {
     const fs::path a = scratch("b1"), b = scratch("b2");
-    const std::string args = "generate --target asce7 --sds 0.8 --sd1 0.4 --tl 6 --components h1 --no-timing --out ";
+    const std::string args =
+        "generate --target asce7 --sds 0.8 --sd1 0.4 --tl 6 --components h1 --no-timing --out ";
     REQUIRE(run_cli(args + "'" + a.string() + "'").exit_code == 0);
     REQUIRE(run_cli(args + "'" + b.string() + "'").exit_code == 0);
     CHECK(slurp(a / "h1.csv") == slurp(b / "h1.csv"));
@@ -50,8 +54,10 @@ TEST_CASE("generate is byte-identical for the same inputs and seed", "[motion][c
 
 TEST_CASE("generate matches a seed record given on the command line", "[motion][cli]") {
     const fs::path out = scratch("c");
-    const auto r = run_cli("generate --target rg1.60 --pga 0.3 --seed-record tests/data/RSN175_IMPVALL.H_H-E12230.AT2 --out '" +
-                           out.string() + "'");
+    const auto r = run_cli(
+        "generate --target rg1.60 --pga 0.3 --seed-record tests/data/RSN175_IMPVALL.H_H-E12230.AT2 "
+        "--out '" +
+        out.string() + "'");
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto j = nlohmann::json::parse(slurp(out / "match.json"));
@@ -60,7 +66,8 @@ TEST_CASE("generate matches a seed record given on the command line", "[motion][
     fs::remove_all(out);
 }
 
-TEST_CASE("generate rejects bad requests with a clear message and exit code", "[motion][cli][errors]") {
+TEST_CASE("generate rejects bad requests with a clear message and exit code",
+          "[motion][cli][errors]") {
     const fs::path out = scratch("d");
     auto r = run_cli("generate --target rg1.60 --pga 0.2 --dt 0.02 --out '" + out.string() + "'");
     CHECK(r.exit_code == 3);
@@ -74,8 +81,10 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code", "[
     r = run_cli("generate --target nureg --pga 0.2 --out '" + out.string() + "'");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Catch::Contains("unknown target \"nureg\""));
-    r = run_cli("generate --target rg1.60 --pga 0.2 --seed-record tests/data/RSN175_IMPVALL.H_H-E12230.AT2 --dt 0.005 --out '" +
-                out.string() + "'");
+    r = run_cli(
+        "generate --target rg1.60 --pga 0.2 --seed-record tests/data/RSN175_IMPVALL.H_H-E12230.AT2 "
+        "--dt 0.005 --out '" +
+        out.string() + "'");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Catch::Contains("--dt applies to synthetic records"));
     // Target files: missing damping, non-increasing frequency, non-positive PSA.
@@ -85,16 +94,24 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code", "[
         std::ofstream(p) << text;
         return p.string();
     };
-    r = run_cli("generate --target-file '" + write("nodamp.csv", "frequency_hz,psa_g\n0.1,0.1\n10,0.5\n") + "' --out '" + out.string() + "'");
+    r = run_cli("generate --target-file '" +
+                write("nodamp.csv", "frequency_hz,psa_g\n0.1,0.1\n10,0.5\n") + "' --out '" +
+                out.string() + "'");
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("damping"));
-    r = run_cli("generate --target-file '" + write("order.csv", "# damping: 0.05\nfrequency_hz,psa_g\n1,0.1\n1,0.5\n") + "' --out '" + out.string() + "'");
+    r = run_cli("generate --target-file '" +
+                write("order.csv", "# damping: 0.05\nfrequency_hz,psa_g\n1,0.1\n1,0.5\n") +
+                "' --out '" + out.string() + "'");
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("order.csv"));
-    r = run_cli("generate --target-file '" + write("neg.csv", "# damping: 0.05\nfrequency_hz,psa_g\n1,0.1\n2,-0.5\n") + "' --out '" + out.string() + "'");
+    r = run_cli("generate --target-file '" +
+                write("neg.csv", "# damping: 0.05\nfrequency_hz,psa_g\n1,0.1\n2,-0.5\n") +
+                "' --out '" + out.string() + "'");
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("neg.csv"));
-    r = run_cli("generate --target-file '" + write("d02.csv", "# damping: 0.02\nfrequency_hz,psa_g\n1,0.1\n2,0.5\n") + "' --out '" + out.string() + "'");
+    r = run_cli("generate --target-file '" +
+                write("d02.csv", "# damping: 0.02\nfrequency_hz,psa_g\n1,0.1\n2,0.5\n") +
+                "' --out '" + out.string() + "'");
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("damping 0.02"));
     fs::remove_all(out);

@@ -23,11 +23,14 @@ motion::TargetSet targets() { return motion::ratio_targets("t", good(), std::nul
 TEST_CASE("bad targets are InputErrors naming the point", "[motion][errors]") {
     auto s = good();
     s.psa_g[2] = 0.0;
-    CHECK_THROWS_MATCHES(motion::validate_target(s, 0.05), InputError, Catch::Message("user target: point 3: PSA 0 g at 10 Hz; expected finite > 0"));
+    CHECK_THROWS_MATCHES(
+        motion::validate_target(s, 0.05), InputError,
+        Catch::Message("user target: point 3: PSA 0 g at 10 Hz; expected finite > 0"));
     s = good();
     s.frequency_hz[2] = 1.0;
     CHECK_THROWS_MATCHES(motion::validate_target(s, 0.05), InputError,
-                         Catch::Message("user target: point 3: frequency 1 Hz not above the previous 1 Hz; frequencies must be strictly increasing"));
+                         Catch::Message("user target: point 3: frequency 1 Hz not above the "
+                                        "previous 1 Hz; frequencies must be strictly increasing"));
     s = good();
     s.damping = 0.02;
     CHECK_THROWS_WITH(motion::validate_target(s, 0.05), Contains("user target: damping 0.02"));
@@ -35,45 +38,56 @@ TEST_CASE("bad targets are InputErrors naming the point", "[motion][errors]") {
     s = good();
     s.psa_g.pop_back();
     CHECK_THROWS_AS(motion::validate_target(s, 0.05), InputError);
-    CHECK_THROWS_WITH(motion::ratio_targets("t", good(), std::nullopt, 0.0), Contains("vertical_ratio"));
+    CHECK_THROWS_WITH(motion::ratio_targets("t", good(), std::nullopt, 0.0),
+                      Contains("vertical_ratio"));
 }
 
 TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[motion][errors]") {
     motion::GenerateOptions o;
     o.components = {"h1"};
     o.dt_s = 0.02;
-    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
-                         Catch::Message("dt_s: dt 0.02 s is too coarse: SRP 3.7.1 needs dt <= 0.01 s, and the Nyquist "
-                                        "frequency 25 Hz is below the 50 Hz top of the acceptance band"));
+    CHECK_THROWS_MATCHES(
+        motion::generate_set(targets(), o), InputError,
+        Catch::Message(
+            "dt_s: dt 0.02 s is too coarse: SRP 3.7.1 needs dt <= 0.01 s, and the Nyquist "
+            "frequency 25 Hz is below the 50 Hz top of the acceptance band"));
     o.dt_s = 0.005;
     o.duration_s = 10.0;
-    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
-                         Catch::Message("duration_s: duration 10 s is too short: SRP 3.7.1 needs >= 20 s"));
+    CHECK_THROWS_MATCHES(
+        motion::generate_set(targets(), o), InputError,
+        Catch::Message("duration_s: duration 10 s is too short: SRP 3.7.1 needs >= 20 s"));
     o.duration_s = 20.0;
     o.components = {"h1", "x"};
-    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
-                         Catch::Message("components: unknown component \"x\"; expected h1, h2 or v"));
+    CHECK_THROWS_MATCHES(
+        motion::generate_set(targets(), o), InputError,
+        Catch::Message("components: unknown component \"x\"; expected h1, h2 or v"));
     o.components = {"h1", "h1"};
     CHECK_THROWS_WITH(motion::generate_set(targets(), o), Contains("given twice"));
     o.components = {"h1", "h2"};
-    o.seed_records = {core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2")};
-    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
-                         Catch::Message("seed_records: 1 seed records for 2 components; give one seed record per component"));
+    o.seed_records = {
+        core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2")};
+    CHECK_THROWS_MATCHES(
+        motion::generate_set(targets(), o), InputError,
+        Catch::Message(
+            "seed_records: 1 seed records for 2 components; give one seed record per component"));
     core::Record short_rec = o.seed_records[0];
     short_rec.accel_mps2.resize(2000);  // 10 s
     short_rec.source = "short.AT2";
     o.components = {"h1"};
     o.seed_records = {short_rec};
-    CHECK_THROWS_MATCHES(motion::generate_set(targets(), o), InputError,
-                         Catch::Message("short.AT2: duration: seed record lasts 9.995 s; SRP 3.7.1 needs >= 20 s"));
+    CHECK_THROWS_MATCHES(
+        motion::generate_set(targets(), o), InputError,
+        Catch::Message("short.AT2: duration: seed record lasts 9.995 s; SRP 3.7.1 needs >= 20 s"));
     motion::Envelope e;
     e.strong_s = 30.0;
-    CHECK_THROWS_WITH(motion::synthesize(targets().horizontal, 20.0, 0.005, 1, e), Contains("exceed the duration 20 s"));
+    CHECK_THROWS_WITH(motion::synthesize(targets().horizontal, 20.0, 0.005, 1, e),
+                      Contains("exceed the duration 20 s"));
 }
 
 TEST_CASE("the acceptance report names every failed criterion", "[motion][acceptance]") {
     const motion::Target t = motion::rg160_targets(0.3).horizontal;
-    core::Record r = core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2");
+    core::Record r =
+        core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2");
     // Unmatched, unscaled (PGA about 0.14 g against 0.3 g): far below the target.
     motion::Acceptance a = motion::check_acceptance(r, t);
     CHECK_FALSE(a.passed);
@@ -83,7 +97,8 @@ TEST_CASE("the acceptance report names every failed criterion", "[motion][accept
     // Too short and too coarse: both named.
     core::Record coarse;
     coarse.dt_s = 0.02;
-    for (std::size_t i = 0; i < r.size() / 4 && coarse.accel_mps2.size() < 500; i += 4) coarse.accel_mps2.push_back(r.accel_mps2[i]);
+    for (std::size_t i = 0; i < r.size() / 4 && coarse.accel_mps2.size() < 500; i += 4)
+        coarse.accel_mps2.push_back(r.accel_mps2[i]);
     a = motion::check_acceptance(coarse, t);
     CHECK_FALSE(a.passed);
     CHECK_THAT(a.reason, Contains("dt 0.02 s > 0.01 s") && Contains("duration 9.760 s < 20 s"));

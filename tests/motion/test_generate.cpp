@@ -16,12 +16,15 @@ namespace {
 const char* const kSeeds[] = {"RSN175_IMPVALL.H_H-E12140.AT2", "RSN175_IMPVALL.H_H-E12230.AT2",
                               "RSN1546_CHICHI_TCU122-N.AT2"};
 
-core::Record seed(const std::string& file) { return core::read_at2(std::string(FREESTAND_TEST_DATA) + "/" + file); }
+core::Record seed(const std::string& file) {
+    return core::read_at2(std::string(FREESTAND_TEST_DATA) + "/" + file);
+}
 
 std::vector<double> grid() { return spectra::log_frequencies(0.01, 200.0, 100); }
 
 // One component through the full generator (retries included); returns it after the own check.
-motion::GeneratedComponent one(const motion::Target& target, const std::string& seed_file, std::uint64_t rng_seed = 1) {
+motion::GeneratedComponent one(const motion::Target& target, const std::string& seed_file,
+                               std::uint64_t rng_seed = 1) {
     motion::TargetSet ts;
     ts.horizontal = target;
     ts.vertical = target;
@@ -51,26 +54,32 @@ void require_all_methods(const motion::Target& target) {
 
 }  // namespace
 
-TEST_CASE("RG 1.60 at 0.1-0.4 g: synthetic and every seed record meet SRP 3.7.1", "[motion][generate]") {
+TEST_CASE("RG 1.60 at 0.1-0.4 g: synthetic and every seed record meet SRP 3.7.1",
+          "[motion][generate]") {
     for (double pga : {0.1, 0.2, 0.3, 0.4}) {
         INFO("PGA " << pga << " g");
         require_all_methods(motion::rg160_targets(pga).horizontal);
     }
 }
 
-TEST_CASE("ASCE 7 and Eurocode 8 targets: synthetic and every seed record meet SRP 3.7.1", "[motion][generate]") {
+TEST_CASE("ASCE 7 and Eurocode 8 targets: synthetic and every seed record meet SRP 3.7.1",
+          "[motion][generate]") {
     SECTION("ASCE 7, SDS 1.0 g, SD1 0.6 g, TL 8 s") {
-        require_all_methods(motion::ratio_targets("ASCE 7", spectra::asce7(1.0, 0.6, 8.0, grid()), std::nullopt, 2.0 / 3.0).horizontal);
+        require_all_methods(motion::ratio_targets("ASCE 7", spectra::asce7(1.0, 0.6, 8.0, grid()),
+                                                  std::nullopt, 2.0 / 3.0)
+                                .horizontal);
     }
     SECTION("EC8 type 1, ground B, a_g 0.3 g") {
         const auto f = grid();
-        require_all_methods(motion::ratio_targets("EC8", spectra::ec8(0.3, spectra::Ec8Type::type1, 'B', 0.05, f),
-                                                  spectra::ec8(0.3, spectra::Ec8Type::type1, 'B', 0.10, f), 2.0 / 3.0)
+        require_all_methods(motion::ratio_targets(
+                                "EC8", spectra::ec8(0.3, spectra::Ec8Type::type1, 'B', 0.05, f),
+                                spectra::ec8(0.3, spectra::Ec8Type::type1, 'B', 0.10, f), 2.0 / 3.0)
                                 .horizontal);
     }
 }
 
-TEST_CASE("three components: independent, matched to their own targets, 10% ratio reported", "[motion][generate]") {
+TEST_CASE("three components: independent, matched to their own targets, 10% ratio reported",
+          "[motion][generate]") {
     const motion::TargetSet ts = motion::rg160_targets(0.3);
     motion::GenerateOptions o;  // h1, h2, v synthetic, seed 1
     const motion::GeneratedSet s = motion::generate_set(ts, o);
@@ -86,7 +95,10 @@ TEST_CASE("three components: independent, matched to their own targets, 10% rati
     const auto& a = s.components[0].record.accel_mps2;
     const auto& b = s.components[1].record.accel_mps2;
     double ma = 0, mb = 0, sab = 0, saa = 0, sbb = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) { ma += a[i]; mb += b[i]; }
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ma += a[i];
+        mb += b[i];
+    }
     ma /= static_cast<double>(a.size());
     mb /= static_cast<double>(b.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -103,7 +115,8 @@ TEST_CASE("three components: independent, matched to their own targets, 10% rati
     }
 }
 
-TEST_CASE("hard case: coarse dt = 0.01 s against RG 1.60 defined to 50 Hz", "[motion][generate][hard]") {
+TEST_CASE("hard case: coarse dt = 0.01 s against RG 1.60 defined to 50 Hz",
+          "[motion][generate][hard]") {
     const motion::TargetSet ts = motion::rg160_targets(0.3);
     motion::GenerateOptions o;
     o.components = {"h1"};
@@ -114,11 +127,14 @@ TEST_CASE("hard case: coarse dt = 0.01 s against RG 1.60 defined to 50 Hz", "[mo
     test::require_srp(s.components[0].record, ts.horizontal);
 }
 
-TEST_CASE("hard case: 90 s Chi-Chi seed far from a short-period EC8 type 2 ground A target", "[motion][generate][hard]") {
+TEST_CASE("hard case: 90 s Chi-Chi seed far from a short-period EC8 type 2 ground A target",
+          "[motion][generate][hard]") {
     const auto f = grid();
-    const motion::Target t = motion::ratio_targets("EC8 type 2 A", spectra::ec8(0.2, spectra::Ec8Type::type2, 'A', 0.05, f),
-                                                   std::nullopt, 2.0 / 3.0)
-                                 .horizontal;
+    const motion::Target t =
+        motion::ratio_targets("EC8 type 2 A",
+                              spectra::ec8(0.2, spectra::Ec8Type::type2, 'A', 0.05, f),
+                              std::nullopt, 2.0 / 3.0)
+            .horizontal;
     const core::Record chichi = seed(kSeeds[2]);
     REQUIRE(chichi.duration_s() > 89.0);
     // Far: unscaled, its 5% spectrum shape is off by a factor > 3 somewhere in the band.
@@ -169,7 +185,8 @@ TEST_CASE("hard case: narrow-band targets", "[motion][generate][hard]") {
     }
 }
 
-TEST_CASE("deterministic: the same inputs and seed give bit-identical records", "[motion][generate]") {
+TEST_CASE("deterministic: the same inputs and seed give bit-identical records",
+          "[motion][generate]") {
     const motion::TargetSet ts = motion::rg160_targets(0.2);
     motion::GenerateOptions o;
     o.components = {"h1", "v"};

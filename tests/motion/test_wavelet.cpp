@@ -22,9 +22,11 @@ TEST_CASE("Faddeeva function against real closed forms", "[motion][faddeeva]") {
         CHECK(w.real() == Approx(ref).epsilon(1e-8));
         CHECK(std::abs(w.imag()) < 1e-12);
     }
-    for (double x : {0.0, 0.3, 1.0, 2.5, 4.0}) CHECK(faddeeva_upper({x, 0.0}).real() == Approx(std::exp(-x * x)).margin(1e-9));
+    for (double x : {0.0, 0.3, 1.0, 2.5, 4.0})
+        CHECK(faddeeva_upper({x, 0.0}).real() == Approx(std::exp(-x * x)).margin(1e-9));
     // Dawson's function: Im w(x) = 2/sqrt(pi) F(x); F(1) = 0.5380795069127684 (A&S Table 7.5).
-    CHECK(faddeeva_upper({1.0, 0.0}).imag() == Approx(2.0 / std::sqrt(M_PI) * 0.5380795069127684).epsilon(1e-9));
+    CHECK(faddeeva_upper({1.0, 0.0}).imag() ==
+          Approx(2.0 / std::sqrt(M_PI) * 0.5380795069127684).epsilon(1e-9));
 }
 
 namespace {
@@ -50,12 +52,14 @@ TEST_CASE("closed-form wavelet response equals direct convolution", "[motion][wa
             const double scale = std::abs(wavelet_response(w, fw, 0.05, 5.0));
             for (double t : {3.0, 4.9, 5.0, 5.2, 7.0}) {
                 INFO("fw " << fw << " fo " << fo << " t " << t);
-                CHECK(wavelet_response(w, fo, 0.05, t) == Approx(brute_response(w, fo, 0.05, t)).margin(1e-6 * scale));
+                CHECK(wavelet_response(w, fo, 0.05, t) ==
+                      Approx(brute_response(w, fo, 0.05, t)).margin(1e-6 * scale));
             }
         }
 }
 
-TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual", "[motion][wavelet]") {
+TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual",
+          "[motion][wavelet]") {
     for (double f : {0.5, 2.0, 10.0}) {
         const Wavelet w = Wavelet::at(f, 0.05, 10.0);
         const double at_peak = wavelet_response(w, f, 0.05, 10.0);
@@ -63,7 +67,10 @@ TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form resi
         double best = 0.0, best_t = 0.0;
         for (double t = 10.0 - 0.3 / f; t <= 10.0 + 0.3 / f; t += 0.002 / f) {
             const double y = std::abs(wavelet_response(w, f, 0.05, t));
-            if (y > best) { best = y; best_t = t; }
+            if (y > best) {
+                best = y;
+                best_t = t;
+            }
         }
         CHECK(std::abs(best_t - 10.0) * f < 0.06);
         CHECK(at_peak > 0.98 * best);
@@ -75,18 +82,21 @@ TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form resi
         const core::GroundMotion gm = core::measure(r);
         // int cos(W x) exp(-x^2/g^2) dx = g sqrt(pi) exp(-(W g / 2)^2); the displacement at the end
         // is (T - centre) times that. 2% covers sampling and the +-4 gamma truncation.
-        const double v_ref = w.gamma_s * std::sqrt(M_PI) * std::exp(-std::pow(w.omega_d_radps * w.gamma_s / 2, 2));
+        const double v_ref =
+            w.gamma_s * std::sqrt(M_PI) * std::exp(-std::pow(w.omega_d_radps * w.gamma_s / 2, 2));
         INFO("f " << f << " pgv " << gm.pgv_mps);
         // At 2 and 10 Hz the residual (< 3e-7) is of the size of the trapezoidal sampling error.
         if (f < 1.0) {
             CHECK(gm.final_velocity_mps == Approx(v_ref).epsilon(0.02));
-            CHECK(gm.final_displacement_m == Approx(v_ref * (r.duration_s() - w.centre_s)).epsilon(0.02));
+            CHECK(gm.final_displacement_m ==
+                  Approx(v_ref * (r.duration_s() - w.centre_s)).epsilon(0.02));
         }
         CHECK(std::abs(gm.final_velocity_mps) < 1e-4 * gm.pgv_mps);
     }
 }
 
-TEST_CASE("end weights reproduce the trapezoidal final velocity and displacement", "[motion][baseline]") {
+TEST_CASE("end weights reproduce the trapezoidal final velocity and displacement",
+          "[motion][baseline]") {
     core::Record r;
     r.dt_s = 0.01;
     std::mt19937_64 rng(7);
@@ -106,7 +116,8 @@ TEST_CASE("portable uniform transform and seed derivation", "[motion][rng]") {
     CHECK(uniform01(0) == 0.0);
     CHECK(uniform01(~0ull) == Approx(1.0 - 0x1.0p-53).epsilon(0));
     CHECK(uniform01(~0ull) < 1.0);
-    // mt19937_64's 10000th output from the default seed is fixed by the standard (C++ [rand.predef]).
+    // mt19937_64's 10000th output from the default seed is fixed by the standard (C++
+    // [rand.predef]).
     std::mt19937_64 g;
     g.discard(9999);
     CHECK(g() == 9981545732273789042ull);
@@ -115,7 +126,8 @@ TEST_CASE("portable uniform transform and seed derivation", "[motion][rng]") {
     CHECK(derive_seed(1, 2, 3) == derive_seed(1, 2, 3));
 }
 
-TEST_CASE("envelope: quadratic rise, flat strong part, exponential decay to end level", "[motion][envelope]") {
+TEST_CASE("envelope: quadratic rise, flat strong part, exponential decay to end level",
+          "[motion][envelope]") {
     const Envelope e{};  // 2 s rise, 10 s strong, 0.05 at the end
     CHECK(envelope_at(e, 0.0, 20.0) == 0.0);
     CHECK(envelope_at(e, 1.0, 20.0) == Approx(0.25));
