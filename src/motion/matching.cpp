@@ -30,12 +30,13 @@ constexpr int kMaxRaises = 2;
 // Misfit below which the full acceptance check is tried on a copy, at most every kCheckEvery
 // passes.
 constexpr double kNearBand = 0.04;
-constexpr double kTaper_s = 0.5;
 constexpr int kCheckEvery = 3;
+// Cosine taper at both ends of the record before the exact baseline step.
+constexpr double kTaper_s = 0.5;
 // Wavelets are kept at >= 10 samples per cycle: coarser ones are poorly represented by their
 // samples (and the closed-form Jacobian no longer describes them); near-rigid oscillators above
 // that frequency respond quasi-statically to the lower-frequency wavelet placed at their peak.
-constexpr double kWaveletSamplesPerCycle_inv = 0.1;
+constexpr double kMaxWaveletCyclesPerSample = 0.1;
 
 double dot_support(const SampledWavelet& w, const std::vector<double>& weights) {
     double s = 0.0;
@@ -73,7 +74,7 @@ struct Matcher {
         f = spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(rec.dt_s),
                                      opt.match_per_decade);
         for (double fi : f) {
-            f_wave.push_back(std::min(fi, kWaveletSamplesPerCycle_inv / rec.dt_s));
+            f_wave.push_back(std::min(fi, kMaxWaveletCyclesPerSample / rec.dt_s));
             q.push_back(target.psa_5pct.psa_at(fi) * units::g_mps2);
             // No cap outside 0.2-25 Hz: holding a tight band there only makes competing peaks of
             // the long-period oscillators alternate.
