@@ -105,9 +105,14 @@ std::vector<spectra::Spectrum> build(const po::variables_map& vm, const std::str
         }
     } else if (design == "asce7") {
         five_percent_only();
-        out.push_back(spectra::asce7(number_option(vm, design, "sds"),
-                                     number_option(vm, design, "sd1"),
-                                     number_option(vm, design, "tl"), f));
+        const double sds = number_option(vm, design, "sds");
+        const double sd1 = number_option(vm, design, "sd1");
+        const double tl = number_option(vm, design, "tl");
+        if (!(tl > sd1 / sds))  // checked here too so the message names the option
+            throw InputError(SourceLocation{"", 0, "--tl"},
+                             fmt::format("{} s; expected more than TS = SD1/SDS = {} s", tl,
+                                         sd1 / sds));
+        out.push_back(spectra::asce7(sds, sd1, tl, f));
     } else if (design == "ec8") {
         const double ag = number_option(vm, design, "ag");
         const std::string type = vm.count("type") ? vm["type"].as<std::string>() : "";

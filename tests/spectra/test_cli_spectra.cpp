@@ -144,7 +144,7 @@ TEST_CASE("bad options exit 2 (usage) or 3 (value) and name the option", "[spect
         {"target --design asce7 --sds 1 --sd1 0.6", 2, "--design asce7 needs --tl"},
         {"target --design asce7 --sds 1 --sd1 0.6 --tl 8 --damping 0.1", 3,
          "--design asce7 is defined at 5% only"},
-        {"target --design asce7 --sds 1 --sd1 0.6 --tl 0.3", 3, "tl_s: TL 0.3 s must exceed TS"},
+        {"target --design asce7 --sds 1 --sd1 0.6 --tl 0.3", 3, "--tl: 0.3 s; expected more than TS = SD1/SDS = 0.6 s"},
         {"target --design ec8 --ag 0.3 --type 3 --ground A", 2,
          "--type: \"3\"; --design ec8 needs --type 1 or 2"},
         {"target --design ec8 --ag 0.3 --type 1 --ground F", 2,
