@@ -57,8 +57,8 @@ struct Initiation {
 struct FlexibleFlag {
     bool raised = false;
     std::string basis;              ///< e.g. "fixed-base 7.5 Hz; free-rocking band 1.7-4.9 Hz"
-    double band_lo_hz = 0.0;        ///< band screened
-    double band_hi_hz = 0.0;
+    double band_lo_hz = 0.0;        ///< lowest frequency screened (the band may have a gap)
+    double band_hi_hz = 0.0;        ///< highest frequency screened
     double peak_psa_in_band_g = 0.0;  ///< 5%-damped target PSA peak in the band
     double uplift_a_g = 0.0;        ///< static uplift threshold g tan(alpha), in g
     std::string reason;             ///< why raised or not, in words

