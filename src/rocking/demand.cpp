@@ -89,6 +89,11 @@ double DampedSpectra::zpa_g() const {
     return set_.front().psa_g.back();
 }
 
+double DampedSpectra::zpa_frequency_hz() const {
+    if (generator_) return checked(generator_(0.05)).frequency_hz.back();
+    return set_.front().frequency_hz.back();
+}
+
 std::string DampedSpectra::label() const { return label_; }
 
 }  // namespace freestand::rocking

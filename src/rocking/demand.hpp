@@ -44,6 +44,8 @@ public:
     /// Rigid-limit PSA (at the highest frequency) of the lowest-damping spectrum, or of the
     /// generator's 5% spectrum, g: the zero-period acceleration standing in for the PGA.
     double zpa_g() const;
+    /// The frequency zpa_g() is read at (the spectrum's highest), Hz.
+    double zpa_frequency_hz() const;
 
     std::string label() const;
 

@@ -38,7 +38,14 @@ void resolve_peaks(const RockingInput& in, RockingChecks& out) {
         out.pga_h_source = "given";
     } else if (in.horizontal) {
         out.pga_h_g = in.horizontal->zpa_g();
-        out.pga_h_source = "spectrum ZPA";
+        const double f = in.horizontal->zpa_frequency_hz();
+        // Below the rigid frequency the last point may still be amplified: say so.
+        out.pga_h_source =
+            f >= rigid_frequency_hz
+                ? "spectrum ZPA"
+                : fmt::format("spectrum PSA at its highest frequency, {} Hz < {} Hz: may exceed "
+                              "the PGA; give the PGA explicitly",
+                              f, rigid_frequency_hz);
     }
     if (in.pga_v_g) {
         out.pga_v_g = *in.pga_v_g;

@@ -55,7 +55,8 @@ struct RockingChecks {
         return governing_edge == block::Edge::left ? left : right;
     }
     std::optional<double> pga_h_g;
-    std::string pga_h_source;        ///< "given" or "spectrum ZPA"
+    std::string pga_h_source;        ///< "given", "spectrum ZPA", or a caution when the
+                                     ///< spectrum stops below 33 Hz
     double pga_v_g = 0.0;
     std::string pga_v_source;
     std::optional<double> housner_sv_mps;

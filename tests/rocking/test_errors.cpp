@@ -71,3 +71,21 @@ TEST_CASE("rocking_checks without a spectrum reports what is missing", "[rocking
     CHECK(r2.initiation->governing().mode == freestand::sliding::Mode::rock);
     CHECK(*r2.pgv_below_ishiyama);  // 0.2 < 0.2823 m/s
 }
+
+TEST_CASE("the PGA defaults to the spectrum's last point, with a caution below 33 Hz",
+          "[rocking][summary]") {
+    RockingInput in;
+    in.horizontal = DampedSpectra({flat(0.3, 0.05)});  // ends at 10 Hz
+    const RockingChecks r = rocking_checks(blk, in);
+    REQUIRE(r.pga_h_g);
+    CHECK(*r.pga_h_g == 0.3);
+    CHECK(r.pga_h_source ==
+          "spectrum PSA at its highest frequency, 10 Hz < 33 Hz: may exceed the PGA; give the "
+          "PGA explicitly");
+    Spectrum wide = flat(0.3, 0.05);
+    wide.frequency_hz.back() = 33.0;
+    in.horizontal = DampedSpectra({wide});
+    CHECK(rocking_checks(blk, in).pga_h_source == "spectrum ZPA");
+    in.pga_h_g = 0.2;
+    CHECK(rocking_checks(blk, in).pga_h_source == "given");
+}
