@@ -137,14 +137,19 @@ void check_options(const ElOptions& o, const VerticalDemand& v) {
     require_in_range(o.grid_points, 10.0, 1e7, field("grid_points"));
 }
 
+// Below the gate: theta0 = 0 whatever the spectrum or the restitution.
+void no_rocking(ElResult& r) {
+    r.theta0_rad = 0.0;
+    r.theta0_reason = fmt::format("no rocking: PGA {:.4g} g <= gate (1 - 0.4 A_v) tan(alpha) "
+                                  "= {:.4g} g",
+                                  r.pga_h_g, r.gate_g);
+    r.fs_reason = "no rocking predicted: the factor of safety is unbounded";
+    r.fs_ok = true;
+}
+
 void estimate_theta0(const Context& c, ElResult& r) {
     if (!r.gate_exceeded) {
-        r.theta0_rad = 0.0;
-        r.theta0_reason = fmt::format("no rocking: PGA {:.4g} g <= gate (1 - 0.4 A_v) tan(alpha) "
-                                      "= {:.4g} g",
-                                      r.pga_h_g, r.gate_g);
-        r.fs_reason = "no rocking predicted: the factor of safety is unbounded";
-        r.fs_ok = true;
+        no_rocking(r);
         return;
     }
     const Scan s = c.scan(1.0);
@@ -202,9 +207,15 @@ ElResult equivalent_linear_rocking(const Block& blk, Edge e, const DampedSpectra
         r.beta_e_reason = fmt::format("restitution r = {:.4g} is not in (0, 1): {}", r.restitution,
                                       r.restitution >= 1.0 ? "no impact damping"
                                                            : "the block does not rebound");
-        r.theta0_reason = "equivalent-linear estimate not applicable: " + r.beta_e_reason;
-        r.fs_reason = r.theta0_reason;
-        r.spectral_margin_reason = r.theta0_reason;
+        const std::string why = "equivalent-linear estimate not applicable: " + r.beta_e_reason;
+        r.spectral_margin_reason = why;
+        // The gate needs no damping: below it the answer is still "no rocking".
+        if (!r.gate_exceeded) {
+            no_rocking(r);
+            return r;
+        }
+        r.theta0_reason = why;
+        r.fs_reason = why;
         return r;
     }
     r.beta_e = damping_from_restitution(r.restitution);

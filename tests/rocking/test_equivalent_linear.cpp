@@ -214,6 +214,16 @@ TEST_CASE("restitution: Housner's by default, a measured one overrides it", "[ro
     CHECK_FALSE(elastic.beta_e);
     CHECK_FALSE(elastic.theta0_rad);
     CHECK(elastic.theta0_reason.find("not applicable") != std::string::npos);
+    // Below the gate the restitution does not matter: still "no rocking" (theta0 = 0).
+    ElOptions low = o;
+    low.pga_h_g = 0.2;  // < tan(alpha) = 0.25
+    const ElResult quiet = equivalent_linear_rocking(steel, Edge::left, demand, {}, low);
+    CHECK_FALSE(quiet.beta_e);
+    REQUIRE(quiet.theta0_rad);
+    CHECK(*quiet.theta0_rad == 0.0);
+    CHECK(quiet.fs_ok);
+    CHECK(quiet.theta0_reason.find("no rocking: PGA 0.2 g <= gate") == 0);
+    CHECK(quiet.spectral_margin_reason.find("not applicable") != std::string::npos);
     o.restitution = 1.5;
     CHECK_THROWS_WITH(equivalent_linear_rocking(steel, Edge::left, demand, {}, o),
                       Catch::Contains("restitution"));
