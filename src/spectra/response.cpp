@@ -234,6 +234,11 @@ std::vector<Peak> peaks_of(const std::vector<Stepper>& steppers, const std::vect
 void check_inputs(const core::Record& record, const std::vector<double>& dampings,
                   const std::vector<double>& frequency_hz) {
     core::validate(record);
+    if (record.accel_mps2.size() < 2)
+        throw InputError(SourceLocation{record.source, 0, "samples"},
+                         fmt::format("record \"{}\" has {} sample; expected at least 2 (one time "
+                                     "step) for a response",
+                                     record.name, record.accel_mps2.size()));
     if (dampings.empty())
         throw InputError(SourceLocation{"", 0, "damping"},
                          "no damping given; expected at least one");

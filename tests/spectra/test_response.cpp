@@ -241,6 +241,11 @@ TEST_CASE("psa_g, response_spectra and peak_responses agree; SD, PSV, PSA are co
 
 TEST_CASE("response spectra reject bad dampings, frequencies and records", "[spectra][response]") {
     const auto rec = make_record(0.01, 10, step_load);
+    const auto one = make_record(0.01, 1, step_load);
+    CHECK_THROWS_WITH(spectra::psa_g(one, 0.05, {1.0}),
+                      Catch::Contains("test: samples: record \"synthetic\" has 1 sample; expected "
+                                      "at least 2"));
+    CHECK_THROWS_WITH(spectra::response_spectra(one, {0.05}, {1.0}), Catch::Contains("1 sample"));
     CHECK_THROWS_AS(spectra::psa_g(rec, 1.0, {1.0}), InputError);
     CHECK_THROWS_WITH(spectra::psa_g(rec, 1.0, {1.0}),
                       Catch::Contains("damping: value 1 is out of range; expected [0, 1)"));
