@@ -1,7 +1,8 @@
 #include "assess/case.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "assess/materials.hpp"
 #include "assess/toml_reader.hpp"
@@ -16,11 +17,28 @@ constexpr double max_size_m = 100.0;
 const Range positive_size{0.0, max_size_m, false, true};
 const Range frequency_range{0.0, 1000.0, false, true};
 
-const std::vector<std::string> component_keys{
-    "name", "description", "mass_kg", "cg_height_m", "cg_to_edge_x_m", "cg_to_edge_y_m",
-    "width_m", "depth_m", "height_m", "inertia_cg_x_kgm2", "inertia_cg_y_kgm2", "p_radps",
-    "footprint", "fixed_base_frequency_hz", "free_rocking_band_hz", "base_material", "mu_s",
-    "mu_k", "restitution", "allowable_slide_m", "required_overturn_fs", "assumptions"};
+const std::vector<std::string> component_keys{"name",
+                                              "description",
+                                              "mass_kg",
+                                              "cg_height_m",
+                                              "cg_to_edge_x_m",
+                                              "cg_to_edge_y_m",
+                                              "width_m",
+                                              "depth_m",
+                                              "height_m",
+                                              "inertia_cg_x_kgm2",
+                                              "inertia_cg_y_kgm2",
+                                              "p_radps",
+                                              "footprint",
+                                              "fixed_base_frequency_hz",
+                                              "free_rocking_band_hz",
+                                              "base_material",
+                                              "mu_s",
+                                              "mu_k",
+                                              "restitution",
+                                              "allowable_slide_m",
+                                              "required_overturn_fs",
+                                              "assumptions"};
 const std::vector<std::string> site_keys{"design", "pga_g", "vertical_ratio", "sliding_damping",
                                          "g_mps2"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
@@ -58,9 +76,13 @@ void read_geometry(TableReader& r, Component& c, std::vector<std::string>& assum
     }
     c.cg_height_m = r.required_number("cg_height_m", positive_size);
     const auto bx = r.numbers("cg_to_edge_x_m", positive_size, 2);
-    if (!bx) r.fail("cg_to_edge_x_m", "missing required key ([left, right] distances in m, each in (0, 100])");
+    if (!bx)
+        r.fail("cg_to_edge_x_m",
+               "missing required key ([left, right] distances in m, each in (0, 100])");
     const auto by = r.numbers("cg_to_edge_y_m", positive_size, 2);
-    if (!by) r.fail("cg_to_edge_y_m", "missing required key ([left, right] distances in m, each in (0, 100])");
+    if (!by)
+        r.fail("cg_to_edge_y_m",
+               "missing required key ([left, right] distances in m, each in (0, 100])");
     c.x.b_left_m = (*bx)[0];
     c.x.b_right_m = (*bx)[1];
     c.y.b_left_m = (*by)[0];
@@ -120,8 +142,8 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
     if (const auto name = r.string("base_material")) {
         const Material* m = find_material(*name);
         if (m == nullptr) {
-            r.fail("base_material", fmt::format("unknown material \"{}\"; expected one of {}", *name,
-                                                material_names()));
+            r.fail("base_material", fmt::format("unknown material \"{}\"; expected one of {}",
+                                                *name, material_names()));
         }
         c.base.material = m->name;
         c.base.mu_s = m->mu_s;
@@ -143,8 +165,9 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
     if (!mu_k) assumptions.push_back("mu_k not given: taken equal to mu_s.");
     if (const auto rest = r.number("restitution", r_range)) c.base.restitution = *rest;
     if (!c.base.restitution) {
-        assumptions.push_back("No restitution given or tabulated: Housner's r = 1 - 2 M R^2 "
-                              "sin^2(alpha) / I_O (METHODS.md s.1).");
+        assumptions.push_back(
+            "No restitution given or tabulated: Housner's r = 1 - 2 M R^2 "
+            "sin^2(alpha) / I_O (METHODS.md s.1).");
     }
 }
 
@@ -164,7 +187,8 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     if (const auto band = r.numbers("free_rocking_band_hz", frequency_range, 2)) {
         if ((*band)[0] >= (*band)[1]) {
             r.fail("free_rocking_band_hz",
-                   fmt::format("expected [lo, hi] with lo < hi, got [{}, {}]", (*band)[0], (*band)[1]));
+                   fmt::format("expected [lo, hi] with lo < hi, got [{}, {}]", (*band)[0],
+                               (*band)[1]));
         }
         c.free_rocking_band_hz = std::array<double, 2>{(*band)[0], (*band)[1]};
     }
@@ -179,7 +203,8 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions) {
     Site s;
     if (const auto design = r.string("design")) {
         if (*design != "rg1.60") {
-            r.fail("design", fmt::format("unknown design spectrum \"{}\"; expected \"rg1.60\"", *design));
+            r.fail("design",
+                   fmt::format("unknown design spectrum \"{}\"; expected \"rg1.60\"", *design));
         }
         s.design = *design;
     }
@@ -194,7 +219,8 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions) {
     s.pga_g = *pga;
     const auto ratio = r.number("vertical_ratio", Range{0.0, 1.5});
     s.vertical_ratio = ratio.value_or(2.0 / 3.0);
-    if (!ratio) assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
+    if (!ratio)
+        assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
     // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
     s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
@@ -233,9 +259,12 @@ Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
 
 const char* to_string(SimulatePolicy p) {
     switch (p) {
-        case SimulatePolicy::automatic: return "auto";
-        case SimulatePolicy::always: return "always";
-        case SimulatePolicy::never: return "never";
+        case SimulatePolicy::automatic:
+            return "auto";
+        case SimulatePolicy::always:
+            return "always";
+        case SimulatePolicy::never:
+            return "never";
     }
     return "auto";
 }
@@ -243,7 +272,8 @@ const char* to_string(SimulatePolicy p) {
 block::Block Component::block(Direction d) const {
     const PlanarGeometry& g = plane(d);
     if (g.inertia_cg_kgm2 > 0.0) {
-        return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg, g.inertia_cg_kgm2);
+        return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg,
+                                     g.inertia_cg_kgm2);
     }
     // Before the inertia is known (while reading p_radps) only R and alpha are used.
     return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg,
@@ -263,14 +293,18 @@ Case parse_case(const std::string& text, const std::string& file_label) {
     for (const auto& [k, node] : root) {
         const std::string key(k.str());
         if (key != "component" && key != "site" && key != "options") {
-            throw InputError(SourceLocation{file_label, static_cast<int>(node.source().begin.line), key},
-                             "unknown table; allowed tables: [component], [site], [options]");
+            throw InputError(
+                SourceLocation{file_label, static_cast<int>(node.source().begin.line), key},
+                "unknown table; allowed tables: [component], [site], [options]");
         }
     }
     const toml::table* comp = subtable(root, "component", file_label);
     const toml::table* site = subtable(root, "site", file_label);
-    if (comp == nullptr) throw InputError(SourceLocation{file_label, 0, "component"}, "missing required table [component]");
-    if (site == nullptr) throw InputError(SourceLocation{file_label, 0, "site"}, "missing required table [site]");
+    if (comp == nullptr)
+        throw InputError(SourceLocation{file_label, 0, "component"},
+                         "missing required table [component]");
+    if (site == nullptr)
+        throw InputError(SourceLocation{file_label, 0, "site"}, "missing required table [site]");
     TableReader rc(comp, file_label, "component");
     out.component = read_component(rc, out.assumptions);
     TableReader rs(site, file_label, "site");

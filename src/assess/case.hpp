@@ -27,11 +27,11 @@ struct PlanarGeometry {
 
 /// Base friction and restitution, with where each value came from.
 struct BaseContact {
-    std::string material;  ///< METHODS.md s.7 name, or "" for explicit values
-    double mu_s = 0.0;     ///< static friction coefficient
-    double mu_k = 0.0;     ///< kinetic friction coefficient
+    std::string material;               ///< METHODS.md s.7 name, or "" for explicit values
+    double mu_s = 0.0;                  ///< static friction coefficient
+    double mu_k = 0.0;                  ///< kinetic friction coefficient
     std::optional<double> restitution;  ///< on angular velocity; Housner's formula when absent
-    std::string source;    ///< e.g. "material table (METHODS.md s.7)" or "case file"
+    std::string source;                 ///< e.g. "material table (METHODS.md s.7)" or "case file"
 };
 
 /// The free-standing component (issue 6, [component]).
@@ -40,15 +40,15 @@ struct Component {
     std::string description;
     double mass_kg = 0.0;
     double cg_height_m = 0.0;
-    PlanarGeometry x;  ///< rocking in the x-z plane
-    PlanarGeometry y;  ///< rocking in the y-z plane
+    PlanarGeometry x;            ///< rocking in the x-z plane
+    PlanarGeometry y;            ///< rocking in the y-z plane
     bool uniform_block = false;  ///< given as width/depth/height of a uniform block
     std::string footprint;       ///< legs or footprint description (free text)
     std::optional<double> fixed_base_frequency_hz;
     std::optional<std::array<double, 2>> free_rocking_band_hz;
     BaseContact base;
-    double allowable_slide_m = 0.0;       ///< clearance / slack the component may slide
-    double required_overturn_fs = 1.5;    ///< required alpha / theta_max (METHODS.md s.5a)
+    double allowable_slide_m = 0.0;     ///< clearance / slack the component may slide
+    double required_overturn_fs = 1.5;  ///< required alpha / theta_max (METHODS.md s.5a)
 
     const PlanarGeometry& plane(Direction d) const { return d == Direction::x ? x : y; }
     /// The planar rigid block of one direction.
@@ -57,11 +57,11 @@ struct Component {
 
 /// The site's design motion (issue 6, [site]).
 struct Site {
-    std::string design = "rg1.60";    ///< design spectrum name; only RG 1.60 is implemented
-    std::vector<double> pga_g;        ///< horizontal PGA levels, g, strictly increasing
+    std::string design = "rg1.60";      ///< design spectrum name; only RG 1.60 is implemented
+    std::vector<double> pga_g;          ///< horizontal PGA levels, g, strictly increasing
     double vertical_ratio = 2.0 / 3.0;  ///< vertical PGA / horizontal PGA
-    double sliding_damping = 0.10;    ///< damping of the spectrum the sliding method reads
-    double g_mps2 = 9.81;             ///< gravity used throughout the case
+    double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
+    double g_mps2 = 9.81;               ///< gravity used throughout the case
 };
 
 /// When to run the time-history simulation (issue 6, [options] simulate).

@@ -1,7 +1,8 @@
 #include "assess/histories.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <future>
 #include <thread>
 
@@ -20,7 +21,8 @@ std::vector<double> target_frequencies() { return spectra::log_frequencies(0.05,
 motion::TargetSet unit_targets(const Site& site) {
     const auto f = target_frequencies();
     motion::TargetSet t = motion::ratio_targets(
-        fmt::format("RG 1.60 horizontal, vertical {:.4f} x horizontal, PGA 1 g", site.vertical_ratio),
+        fmt::format("RG 1.60 horizontal, vertical {:.4f} x horizontal, PGA 1 g",
+                    site.vertical_ratio),
         spectra::rg160(1.0, 0.05, false, f), spectra::rg160(1.0, 0.10, false, f),
         site.vertical_ratio);
     t.horizontal.rg160_psd_pga_g = 1.0;  // the RG 1.60 target PSD applies to the horizontals
@@ -71,11 +73,13 @@ const std::vector<HistorySet>& HistoryBank::sets() {
     // The sets are independent (own seeds); generating them on all cores keeps the result
     // identical, since each lands in its own slot (the motion stage serialises FFTW planning).
     sets_.resize(n);
-    const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(n, std::thread::hardware_concurrency()));
+    const std::size_t workers =
+        std::max<std::size_t>(1, std::min<std::size_t>(n, std::thread::hardware_concurrency()));
     std::vector<std::future<void>> jobs;
     for (std::size_t w = 0; w < workers; ++w) {
         jobs.push_back(std::async(std::launch::async, [&, w] {
-            for (std::size_t k = w; k < n; k += workers) sets_[k] = generate_one(*case_, targets, k);
+            for (std::size_t k = w; k < n; k += workers)
+                sets_[k] = generate_one(*case_, targets, k);
         }));
     }
     for (auto& job : jobs) job.get();  // rethrows the first failure

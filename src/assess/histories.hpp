@@ -15,9 +15,9 @@ namespace freestand::assess {
 
 /// One three-component history at the reference PGA of 1 g.
 struct HistorySet {
-    core::Record h1;  ///< applied along x
-    core::Record h2;  ///< applied along y
-    core::Record v;   ///< vertical, positive up
+    core::Record h1;                             ///< applied along x
+    core::Record h2;                             ///< applied along y
+    core::Record v;                              ///< vertical, positive up
     std::vector<motion::Acceptance> acceptance;  ///< h1, h2, v at 1 g (ratios scale-free)
     std::vector<motion::Correlation> correlations;
     bool passed = false;
@@ -25,7 +25,7 @@ struct HistorySet {
 };
 
 class HistoryBank {
-public:
+  public:
     /// Nothing is generated until sets() is first called.
     explicit HistoryBank(const Case& c);
 
@@ -45,7 +45,7 @@ public:
     /// unrelated streams).
     static std::uint64_t history_seed(std::uint64_t case_seed, int k);
 
-private:
+  private:
     const Case* case_;
     bool generated_ = false;
     std::vector<HistorySet> sets_;

@@ -1,9 +1,10 @@
 #include "assess/level.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "assess/verdict.hpp"
 #include "core/measures.hpp"
@@ -25,10 +26,14 @@ constexpr std::array<double, 5> rg160_dampings{0.005, 0.02, 0.05, 0.07, 0.10};
 
 Mode to_mode(sliding::Mode m) {
     switch (m) {
-        case sliding::Mode::rest: return Mode::rest;
-        case sliding::Mode::slide: return Mode::slide;
-        case sliding::Mode::rock: return Mode::rock;
-        case sliding::Mode::slide_rock: return Mode::slide_rock;
+        case sliding::Mode::rest:
+            return Mode::rest;
+        case sliding::Mode::slide:
+            return Mode::slide;
+        case sliding::Mode::rock:
+            return Mode::rock;
+        case sliding::Mode::slide_rock:
+            return Mode::slide_rock;
     }
     return Mode::rest;
 }
@@ -39,7 +44,8 @@ spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
     return sliding::vector_horizontal({h, h}, damping);
 }
 
-FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, const LevelDemand& dem) {
+FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk,
+                             const LevelDemand& dem) {
     FlexibleFlag out;
     const block::Edge e = blk.critical_edge();
     out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
@@ -62,9 +68,11 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, con
     out.peak_psa_in_band_g = s.peak_psa_g;
     out.reason = s.reason;
     std::vector<std::string> basis;
-    if (comp.fixed_base_frequency_hz) basis.push_back(fmt::format("fixed-base {:.2f} Hz", *comp.fixed_base_frequency_hz));
+    if (comp.fixed_base_frequency_hz)
+        basis.push_back(fmt::format("fixed-base {:.2f} Hz", *comp.fixed_base_frequency_hz));
     if (comp.free_rocking_band_hz) {
-        basis.push_back(fmt::format("free-rocking band {:.2f}-{:.2f} Hz", (*comp.free_rocking_band_hz)[0],
+        basis.push_back(fmt::format("free-rocking band {:.2f}-{:.2f} Hz",
+                                    (*comp.free_rocking_band_hz)[0],
                                     (*comp.free_rocking_band_hz)[1]));
     }
     out.basis = fmt::format("{}", fmt::join(basis, "; "));
@@ -81,7 +89,8 @@ Sliding closed_form_sliding(const Case& c, const BaseContact& base, Direction d,
                                         : "the block rocks with friction holding: no sliding";
         return out;
     }
-    const sliding::Crossing cross = sliding::lowest_crossing(dem.sa_vh_slide, out.c_s_mps2 / units::g_mps2);
+    const sliding::Crossing cross =
+        sliding::lowest_crossing(dem.sa_vh_slide, out.c_s_mps2 / units::g_mps2);
     if (!cross.f_hz) {
         out.reason = "ASCE 4: " + cross.reason;
         return out;
@@ -89,8 +98,8 @@ Sliding closed_form_sliding(const Case& c, const BaseContact& base, Direction d,
     // DeltaD of the energy method is the table (ground) displacement of the matched histories,
     // as in METHODS.md s.4's worked example (DeltaD = 0.040 m at 0.2 g).
     out.pgd_m = bank.mean_pgd_m(d, dem.pga_g);
-    out.pgd_source = fmt::format("mean PGD of the {} matched {} histories", c.options.histories_per_level,
-                                 d == Direction::x ? "h1" : "h2");
+    out.pgd_source = fmt::format("mean PGD of the {} matched {} histories",
+                                 c.options.histories_per_level, d == Direction::x ? "h1" : "h2");
     sliding::SlidingInput in;
     in.mu_s = base.mu_s;
     in.av_g = dem.pga_v_g;
@@ -120,7 +129,8 @@ rocking::ElBlockResult equivalent_linear(const Case& c, const BaseContact& base,
     opt.fs_required = c.component.required_overturn_fs;
     rocking::VerticalDemand vertical;
     vertical.ratio = c.site.vertical_ratio;
-    rocking::ElBlockResult result = rocking::equivalent_linear_rocking(blk, dem.sa_vh_damped, vertical, opt);
+    rocking::ElBlockResult result =
+        rocking::equivalent_linear_rocking(blk, dem.sa_vh_damped, vertical, opt);
     if (cacheable) cached = result;
     return result;
 }
@@ -160,10 +170,12 @@ std::vector<double> design_frequencies() { return spectra::log_frequencies(0.05,
 LevelDemand level_demand(const Site& site, double pga_g) {
     std::vector<spectra::Spectrum> damped;
     for (double d : rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
-    return LevelDemand{pga_g, site.vertical_ratio * pga_g,
+    return LevelDemand{pga_g,
+                       site.vertical_ratio * pga_g,
                        spectra::rg160(pga_g, 0.05, false, design_frequencies()),
                        vector_horizontal_target(pga_g, site.sliding_damping),
-                       rocking::DampedSpectra(std::move(damped)), {}};
+                       rocking::DampedSpectra(std::move(damped)),
+                       {}};
 }
 
 dynamics::BlockModel block_model(const Component& comp, const BaseContact& base, Direction d) {
@@ -189,7 +201,8 @@ Simulation simulate_level(const Case& c, const BaseContact& base, Direction d, d
     int standing = 0;
     double worst = -1.0;
     for (std::size_t k = 0; k < sets.size(); ++k) {
-        const dynamics::Summary s = dynamics::simulate(model, excitation(sets[k], d, pga_g), opt).summary;
+        const dynamics::Summary s =
+            dynamics::simulate(model, excitation(sets[k], d, pga_g), opt).summary;
         sim.slide_max_mean_m += s.slide_max_m;
         sim.slide_max_max_m = std::max(sim.slide_max_max_m, s.slide_max_m);
         sim.slide_residual_mean_m += s.slide_residual_m;
@@ -201,7 +214,8 @@ Simulation simulate_level(const Case& c, const BaseContact& base, Direction d, d
         } else {
             ++standing;
             sim.rock_max_over_alpha_mean += s.rock_max_over_alpha;
-            sim.rock_max_over_alpha_max = std::max(sim.rock_max_over_alpha_max, s.rock_max_over_alpha);
+            sim.rock_max_over_alpha_max =
+                std::max(sim.rock_max_over_alpha_max, s.rock_max_over_alpha);
         }
         // Governing history: an overturned one, else the largest rocking (rocking modes) or slip.
         const bool rocking = mode == Mode::rock || mode == Mode::slide_rock;
@@ -227,7 +241,8 @@ LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
     r.pga_v_g = demand.pga_v_g;
     r.direction = d;
     const block::Block blk = c.component.block(d);
-    const sliding::PeakInitiation peak = sliding::classify_peak(blk, base.mu_s, demand.pga_g, demand.pga_v_g);
+    const sliding::PeakInitiation peak =
+        sliding::classify_peak(blk, base.mu_s, demand.pga_g, demand.pga_v_g);
     const sliding::Initiation& gi = peak.governing();
     r.initiation.mode = to_mode(gi.mode);
     r.initiation.a_ratio = gi.A;
@@ -237,7 +252,8 @@ LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
     r.flexible = screen_flexible(c.component, blk, demand);
     r.sliding = closed_form_sliding(c, base, d, r.initiation.mode, demand, bank);
     r.rocking = closed_form_rocking(c, base, blk, d, r.initiation.mode, base.mu_s, demand);
-    const SimulationNeed need = simulation_need(r, c.component.allowable_slide_m, c.options.simulate);
+    const SimulationNeed need =
+        simulation_need(r, c.component.allowable_slide_m, c.options.simulate);
     r.simulation_reason = need.reason;
     if (need.run) {
         r.simulation = simulate_level(c, base, d, demand.pga_g, bank, r.initiation.mode);

@@ -19,8 +19,8 @@ namespace freestand::assess {
 struct LevelDemand {
     double pga_g = 0.0;
     double pga_v_g = 0.0;
-    spectra::Spectrum h5;           ///< 5%-damped horizontal target
-    spectra::Spectrum sa_vh_slide;  ///< SA_VH at the sliding damping (METHODS.md s.4)
+    spectra::Spectrum h5;                 ///< 5%-damped horizontal target
+    spectra::Spectrum sa_vh_slide;        ///< SA_VH at the sliding damping (METHODS.md s.4)
     rocking::DampedSpectra sa_vh_damped;  ///< SA_VH at any damping (METHODS.md s.5a)
     /// Equivalent-linear rocking per direction (x, y), computed on first need. It does not
     /// depend on the friction, so the material trials reuse it (they keep the restitution).

@@ -8,10 +8,8 @@ namespace freestand::assess {
 const std::vector<Material>& materials() {
     // METHODS.md section 7.
     static const std::vector<Material> table{
-        {"plywood", 0.15, 0.94},
-        {"PVC sheet on concrete", 0.15, std::nullopt},
-        {"HDPE", 0.32, 0.95},
-        {"aluminium", 0.48, 0.97},
+        {"plywood", 0.15, 0.94}, {"PVC sheet on concrete", 0.15, std::nullopt},
+        {"HDPE", 0.32, 0.95},    {"aluminium", 0.48, 0.97},
         {"steel", 0.72, 0.98},
     };
     return table;

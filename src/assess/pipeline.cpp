@@ -1,7 +1,8 @@
 #include "assess/pipeline.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "assess/histories.hpp"
 #include "assess/level.hpp"
@@ -32,7 +33,8 @@ Verdict worst_of(const std::vector<LevelResult>& levels) {
 // METHODS.md s.6 step 5: the same pipeline for each material; the weakest that passes.
 // Only the friction changes: mu_k keeps the case's mu_k / mu_s ratio and the restitution stays
 // the case's (the table's r was measured on steel specimens, not on this component).
-Upgrade search_materials(const Case& c, const std::vector<LevelDemand>& demands, HistoryBank& bank) {
+Upgrade search_materials(const Case& c, const std::vector<LevelDemand>& demands,
+                         HistoryBank& bank) {
     Upgrade up;
     up.needed = true;
     const BaseContact& own = c.component.base;
@@ -52,19 +54,24 @@ Upgrade search_materials(const Case& c, const std::vector<LevelDemand>& demands,
 
 std::vector<std::string> pipeline_assumptions(const Case& c) {
     std::vector<std::string> out = c.assumptions;
-    out.push_back("Both horizontal directions receive the same RG 1.60 target; the sliding and "
-                  "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).");
-    out.push_back(fmt::format("Vertical PGA = {:.4f} x horizontal PGA, taken downward in the static "
-                              "checks (the worst case, METHODS.md s.5).",
-                              c.site.vertical_ratio));
-    out.push_back("Sliding: the simulation (peak and residual slip, max over the histories) governs when "
-                  "it was run; it is run when the ASCE 4 and energy estimates straddle the allowable. "
-                  "Otherwise the larger closed form governs, or the smaller when both exceed the "
-                  "allowable.");
-    out.push_back("Rocking is decided by the time-history simulation when it was run, else by the "
-                  "equivalent-linear screen (METHODS.md s.5a).");
-    out.push_back("Upgrade trials change only the static friction (mu_k keeps the case's mu_k/mu_s); "
-                  "the restitution stays the case's.");
+    out.push_back(
+        "Both horizontal directions receive the same RG 1.60 target; the sliding and "
+        "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).");
+    out.push_back(
+        fmt::format("Vertical PGA = {:.4f} x horizontal PGA, taken downward in the static "
+                    "checks (the worst case, METHODS.md s.5).",
+                    c.site.vertical_ratio));
+    out.push_back(
+        "Sliding: the simulation (peak and residual slip, max over the histories) governs when "
+        "it was run; it is run when the ASCE 4 and energy estimates straddle the allowable. "
+        "Otherwise the larger closed form governs, or the smaller when both exceed the "
+        "allowable.");
+    out.push_back(
+        "Rocking is decided by the time-history simulation when it was run, else by the "
+        "equivalent-linear screen (METHODS.md s.5a).");
+    out.push_back(
+        "Upgrade trials change only the static friction (mu_k keeps the case's mu_k/mu_s); "
+        "the restitution stays the case's.");
     return out;
 }
 
@@ -87,9 +94,10 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
             sets.size(), sets.front().method));
         for (std::size_t k = 0; k < sets.size(); ++k) {
             if (!sets[k].passed) {
-                out.push_back(fmt::format("History {} did not pass every SRP 3.7.1 acceptance "
-                                          "criterion; it is used all the same.",
-                                          k + 1));
+                out.push_back(
+                    fmt::format("History {} did not pass every SRP 3.7.1 acceptance "
+                                "criterion; it is used all the same.",
+                                k + 1));
             }
         }
     } else {
@@ -124,12 +132,14 @@ AssessmentResult assess(const Case& c) {
             const HistorySet& set = bank.sets()[k];
             for (std::size_t j = 0; j < set.acceptance.size() && j < names.size(); ++j) {
                 const auto& a = set.acceptance[j];
-                res.history_checks.push_back(HistoryCheck{static_cast<int>(k + 1), names[j], set.method,
-                                                          a.passed, a.min_ratio, a.max_ratio, a.reason});
+                res.history_checks.push_back(HistoryCheck{static_cast<int>(k + 1), names[j],
+                                                          set.method, a.passed, a.min_ratio,
+                                                          a.max_ratio, a.reason});
             }
         }
     }
-    for (const LevelResult& l : res.levels) res.simulations_run += l.simulation ? l.simulation->histories : 0;
+    for (const LevelResult& l : res.levels)
+        res.simulations_run += l.simulation ? l.simulation->histories : 0;
     return res;
 }
 

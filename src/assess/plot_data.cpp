@@ -1,7 +1,8 @@
 #include "assess/plot_data.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "assess/verdict.hpp"
 #include "core/units.hpp"
@@ -41,17 +42,21 @@ std::optional<std::size_t> governing_simulated(const std::vector<LevelResult>& l
     std::optional<std::size_t> gov;
     for (std::size_t i = 0; i < levels.size(); ++i) {
         if (!levels[i].simulation) continue;
-        if (!gov || &more_severe(levels[i].verdict, levels[*gov].verdict) == &levels[i].verdict) gov = i;
+        if (!gov || &more_severe(levels[i].verdict, levels[*gov].verdict) == &levels[i].verdict)
+            gov = i;
     }
     return gov;
 }
 
-Series history_series(std::string label, const std::vector<double>& t, const std::vector<double>& y) {
+Series history_series(std::string label, const std::vector<double>& t,
+                      const std::vector<double>& y) {
     return decimate(Series{std::move(label), t, y}, max_history_points);
 }
 
-void add_histories(PlotData& p, const AssessmentResult& r, const LevelResult& lvl, HistoryBank& bank) {
-    const HistorySet& set = bank.sets().at(static_cast<std::size_t>(lvl.simulation->governing_history));
+void add_histories(PlotData& p, const AssessmentResult& r, const LevelResult& lvl,
+                   HistoryBank& bank) {
+    const HistorySet& set =
+        bank.sets().at(static_cast<std::size_t>(lvl.simulation->governing_history));
     const dynamics::Excitation ex = excitation(set, lvl.direction, lvl.pga_g);
     std::vector<double> t(ex.horizontal_mps2.size());
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = ex.dt_s * static_cast<double>(i);
@@ -61,7 +66,8 @@ void add_histories(PlotData& p, const AssessmentResult& r, const LevelResult& lv
     };
     p.ground_motion.push_back(history_series("horizontal", t, in_g(ex.horizontal_mps2)));
     p.ground_motion.push_back(history_series("vertical", t, in_g(ex.vertical_mps2)));
-    const dynamics::BlockModel model = block_model(r.input.component, r.input.component.base, lvl.direction);
+    const dynamics::BlockModel model =
+        block_model(r.input.component, r.input.component.base, lvl.direction);
     dynamics::Options opt;
     opt.g_mps2 = r.input.site.g_mps2;
     const dynamics::SimulationResult sim = dynamics::simulate(model, ex, opt);
@@ -104,7 +110,8 @@ Series decimate(const Series& s, std::size_t max_points) {
 PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& demands,
                    HistoryBank& bank) {
     PlotData p;
-    for (Direction d : {Direction::x, Direction::y}) p.initiation.push_back(initiation_diagram(r, d));
+    for (Direction d : {Direction::x, Direction::y})
+        p.initiation.push_back(initiation_diagram(r, d));
     const std::optional<std::size_t> gov = governing_simulated(r.levels);
     const LevelResult& shown = r.levels.at(gov ? *gov : r.governing_level);
     // The demand of the shown level (levels are built from the same PGA list, so equal exactly).
@@ -118,8 +125,9 @@ PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& de
         const auto& sets = bank.sets();
         for (std::size_t k = 0; k < sets.size(); ++k) {
             const core::Record& h = shown.direction == Direction::x ? sets[k].h1 : sets[k].h2;
-            p.spectra.push_back(Series{fmt::format("history {}", k + 1), f,
-                                       spectra::psa_g(HistoryBank::scaled(h, shown.pga_g), 0.05, f)});
+            p.spectra.push_back(
+                Series{fmt::format("history {}", k + 1), f,
+                       spectra::psa_g(HistoryBank::scaled(h, shown.pga_g), 0.05, f)});
         }
     }
     if (gov) add_histories(p, r, r.levels[*gov], bank);

@@ -1,9 +1,10 @@
 #include "assess/toml_reader.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace freestand::assess {
 
@@ -11,16 +12,26 @@ namespace {
 
 const char* type_name(toml::node_type t) {
     switch (t) {
-        case toml::node_type::table: return "a table";
-        case toml::node_type::array: return "an array";
-        case toml::node_type::string: return "a string";
-        case toml::node_type::integer: return "an integer";
-        case toml::node_type::floating_point: return "a number";
-        case toml::node_type::boolean: return "a boolean";
-        case toml::node_type::date: return "a date";
-        case toml::node_type::time: return "a time";
-        case toml::node_type::date_time: return "a date-time";
-        case toml::node_type::none: break;
+        case toml::node_type::table:
+            return "a table";
+        case toml::node_type::array:
+            return "an array";
+        case toml::node_type::string:
+            return "a string";
+        case toml::node_type::integer:
+            return "an integer";
+        case toml::node_type::floating_point:
+            return "a number";
+        case toml::node_type::boolean:
+            return "a boolean";
+        case toml::node_type::date:
+            return "a date";
+        case toml::node_type::time:
+            return "a time";
+        case toml::node_type::date_time:
+            return "a date-time";
+        case toml::node_type::none:
+            break;
     }
     return "nothing";
 }
@@ -96,11 +107,13 @@ std::optional<long long> TableReader::integer(const std::string& key, long long 
     if (n == nullptr) return std::nullopt;
     const auto* i = n->as_integer();
     if (i == nullptr) {
-        fail(key, fmt::format("expected an integer in [{}, {}], got {}", lo, hi, type_name(n->type())));
+        fail(key,
+             fmt::format("expected an integer in [{}, {}], got {}", lo, hi, type_name(n->type())));
     }
     const long long v = i->get();
     if (v < lo || v > hi) {
-        fail(key, fmt::format("value {} is out of range; expected an integer in [{}, {}]", v, lo, hi));
+        fail(key,
+             fmt::format("value {} is out of range; expected an integer in [{}, {}]", v, lo, hi));
     }
     return v;
 }

@@ -1,12 +1,12 @@
 #pragma once
 /// Typed, range-checked reading of one TOML table that remembers which keys were read, so
 /// finish() can reject the rest (STYLE.md: unknown keys are errors, as SeisSol's warnUnknown()).
+#include <toml++/toml.h>
+
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "core/errors.hpp"
 
@@ -22,7 +22,7 @@ struct Range {
 
 /// Reads keys of one table. Errors name "file:line: table.key: ..." and the allowed range.
 class TableReader {
-public:
+  public:
     /// table may be null (the table is absent): every key reads as missing.
     TableReader(const toml::table* table, std::string file, std::string table_name);
 
@@ -50,7 +50,7 @@ public:
 
     [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
-private:
+  private:
     const toml::node* find(const std::string& key);
     double as_number(const std::string& key, const toml::node& node, Range range) const;
 

@@ -1,44 +1,58 @@
 #include "assess/verdict.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace freestand::assess {
 
 const char* to_string(Mode m) {
     switch (m) {
-        case Mode::rest: return "rest";
-        case Mode::slide: return "slide";
-        case Mode::rock: return "rock";
-        case Mode::slide_rock: return "slide-rock";
+        case Mode::rest:
+            return "rest";
+        case Mode::slide:
+            return "slide";
+        case Mode::rock:
+            return "rock";
+        case Mode::slide_rock:
+            return "slide-rock";
     }
     return "rest";
 }
 
 const char* to_string(Model m) {
     switch (m) {
-        case Model::static_initiation: return "static initiation criterion (METHODS.md s.2)";
-        case Model::asce4_sliding: return "ASCE 4 equivalent-linear sliding (METHODS.md s.4)";
-        case Model::energy_sliding: return "energy-conservation sliding (METHODS.md s.4)";
-        case Model::simulation_slide: return "time-history simulation, peak slip (METHODS.md s.3)";
+        case Model::static_initiation:
+            return "static initiation criterion (METHODS.md s.2)";
+        case Model::asce4_sliding:
+            return "ASCE 4 equivalent-linear sliding (METHODS.md s.4)";
+        case Model::energy_sliding:
+            return "energy-conservation sliding (METHODS.md s.4)";
+        case Model::simulation_slide:
+            return "time-history simulation, peak slip (METHODS.md s.3)";
         case Model::simulation_residual:
             return "time-history simulation, residual slip (METHODS.md s.3)";
         case Model::equivalent_linear_rocking:
             return "equivalent-linear rocking estimate (METHODS.md s.5a)";
         case Model::simulation_rocking:
             return "time-history simulation, rocking and overturning (METHODS.md s.3)";
-        case Model::no_motion: return "low-motion threshold: peak slip < 1 mm (METHODS.md s.2)";
+        case Model::no_motion:
+            return "low-motion threshold: peak slip < 1 mm (METHODS.md s.2)";
     }
     return "";
 }
 
 const char* to_string(VerdictKind k) {
     switch (k) {
-        case VerdictKind::acceptable: return "acceptable";
-        case VerdictKind::acceptable_with_clearance: return "acceptable_with_clearance";
-        case VerdictKind::upgrade_material: return "upgrade_material";
-        case VerdictKind::anchor: return "anchor";
+        case VerdictKind::acceptable:
+            return "acceptable";
+        case VerdictKind::acceptable_with_clearance:
+            return "acceptable_with_clearance";
+        case VerdictKind::upgrade_material:
+            return "upgrade_material";
+        case VerdictKind::anchor:
+            return "anchor";
     }
     return "";
 }
@@ -54,7 +68,8 @@ bool closed_form_slide_available(const Sliding& s) {
 }
 
 bool slides(const LevelResult& level) {
-    if (level.initiation.mode == Mode::slide || level.initiation.mode == Mode::slide_rock) return true;
+    if (level.initiation.mode == Mode::slide || level.initiation.mode == Mode::slide_rock)
+        return true;
     return level.simulation && level.simulation->slide_max_max_m >= no_motion_slide_m;
 }
 
@@ -107,7 +122,8 @@ Verdict slide_verdict(const LevelResult& level, double allowable_m) {
 
 Verdict rock_verdict(const LevelResult& level, double required_fs) {
     Verdict v;
-    v.margin_basis = fmt::format("factor of safety alpha / theta_max over required {}", required_fs);
+    v.margin_basis =
+        fmt::format("factor of safety alpha / theta_max over required {}", required_fs);
     if (level.simulation) {
         const Simulation& sim = *level.simulation;
         v.decided_by = Model::simulation_rocking;
@@ -140,9 +156,11 @@ SimulationNeed simulation_need(const LevelResult& closed, double allowable_slide
             return {false, "at rest by the static criteria (METHODS.md s.2)"};
         case Mode::rock:
         case Mode::slide_rock:
-            return {true, "rocking: the equivalent-linear estimate is a screen, the simulation is "
-                          "the reference (METHODS.md s.5a)"};
-        case Mode::slide: break;
+            return {true,
+                    "rocking: the equivalent-linear estimate is a screen, the simulation is "
+                    "the reference (METHODS.md s.5a)"};
+        case Mode::slide:
+            break;
     }
     if (!closed_form_slide_available(closed.sliding)) {
         return {true, "the block slides by the static criterion but no closed form applies"};
@@ -225,7 +243,8 @@ void apply_upgrade(std::vector<LevelResult>& levels, const Upgrade& upgrade) {
 
 std::string verdict_text(const Verdict& v) {
     switch (v.kind) {
-        case VerdictKind::acceptable: return "free-standing acceptable";
+        case VerdictKind::acceptable:
+            return "free-standing acceptable";
         case VerdictKind::acceptable_with_clearance: {
             // Whole mm, rounded up; the 1e-9 guards against 0.047000000001 -> 48.
             const double mm = std::ceil(v.clearance_m * 1000.0 - 1e-9);
@@ -234,7 +253,8 @@ std::string verdict_text(const Verdict& v) {
         case VerdictKind::upgrade_material:
             return v.material.empty() ? "upgrade base material"
                                       : "upgrade base material to " + v.material;
-        case VerdictKind::anchor: return "anchor";
+        case VerdictKind::anchor:
+            return "anchor";
     }
     return "";
 }

@@ -1,6 +1,7 @@
 // `freestand assess`: a case file to a verdict, with report.md, report.html and result.json.
-#include <chrono>
 #include <fmt/format.h>
+
+#include <chrono>
 #include <iostream>
 
 #include "cli/command.hpp"
@@ -22,20 +23,24 @@ int run(const std::vector<std::string>& args) {
     const std::filesystem::path case_file = (*vm)["case"].as<std::string>();
     std::optional<std::vector<double>> pga;
     if (vm->count("pga")) pga = parse_double_list((*vm)["pga"].as<std::string>(), "--pga");
-    const std::filesystem::path out = vm->count("out") ? std::filesystem::path((*vm)["out"].as<std::string>())
-                                                       : std::filesystem::path("reports") / case_file.stem();
+    const std::filesystem::path out = vm->count("out")
+                                          ? std::filesystem::path((*vm)["out"].as<std::string>())
+                                          : std::filesystem::path("reports") / case_file.stem();
     const auto start = std::chrono::steady_clock::now();
     const report::CaseRun r = report::run_case(case_file, pga, FREESTAND_COMMIT);
-    const double assess_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double assess_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     report::write_report(out, r.rendered);
     std::cout << report::verdict_line(r.result) << "\n";
     // Timing goes to stdout only, never into the reports (they must be byte-identical per input).
     std::cout << fmt::format("wrote {} ({} histories generated, {} simulations) in {:.2f} s\n",
-                             out.string(), r.result.histories_generated, r.result.simulations_run, assess_s);
+                             out.string(), r.result.histories_generated, r.result.simulations_run,
+                             assess_s);
     return 0;
 }
 
-const CommandRegistrar reg{{"assess", "assess a case file: verdict, report.md, report.html, result.json", &run}};
+const CommandRegistrar reg{
+    {"assess", "assess a case file: verdict, report.md, report.html, result.json", &run}};
 
 }  // namespace
 }  // namespace freestand::cli

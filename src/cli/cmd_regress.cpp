@@ -1,6 +1,7 @@
 // `freestand regress`: re-run every case and compare with the committed result.json goldens.
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -39,7 +40,8 @@ bool check(const fs::path& golden_file, const report::CaseRun& run, double rtol)
     try {
         golden = nlohmann::ordered_json::parse(core::read_text_file(golden_file));
     } catch (const nlohmann::json::parse_error& e) {
-        throw InputError(SourceLocation{golden_file.string(), 0, ""}, std::string("not valid JSON: ") + e.what());
+        throw InputError(SourceLocation{golden_file.string(), 0, ""},
+                         std::string("not valid JSON: ") + e.what());
     }
     const auto fresh = nlohmann::ordered_json::parse(run.rendered.json);
     const auto diffs = report::compare_results(golden, fresh, rtol);
@@ -53,17 +55,21 @@ bool check(const fs::path& golden_file, const report::CaseRun& run, double rtol)
                                  fresh.at("verdict").get<std::string>());
     }
     for (std::size_t i = 0; i < std::min(diffs.size(), max_listed); ++i) {
-        std::cout << fmt::format("  {}: {} -> {}\n", diffs[i].path, diffs[i].golden, diffs[i].fresh);
+        std::cout << fmt::format("  {}: {} -> {}\n", diffs[i].path, diffs[i].golden,
+                                 diffs[i].fresh);
     }
-    if (diffs.size() > max_listed) std::cout << fmt::format("  ... and {} more\n", diffs.size() - max_listed);
+    if (diffs.size() > max_listed)
+        std::cout << fmt::format("  ... and {} more\n", diffs.size() - max_listed);
     return false;
 }
 
 int run(const std::vector<std::string>& args) {
     po::options_description desc("options");
-    desc.add_options()("reports", po::value<std::string>()->default_value("reports"), "folder of golden reports")(
+    desc.add_options()("reports", po::value<std::string>()->default_value("reports"),
+                       "folder of golden reports")(
         "cases", po::value<std::string>()->default_value("cases"), "folder of case files")(
-        "update", po::bool_switch(), "rewrite the goldens (report.md, report.html, result.json, figures)")(
+        "update", po::bool_switch(),
+        "rewrite the goldens (report.md, report.html, result.json, figures)")(
         "rtol", po::value<std::string>()->default_value("1e-6"), "relative tolerance for numbers");
     const auto vm = parse_options("regress", usage, desc, args, {"reports"});
     if (!vm) return 0;
@@ -77,7 +83,8 @@ int run(const std::vector<std::string>& args) {
         const fs::path dir = reports / case_file.stem();
         if (update) {
             report::write_report(dir, run.rendered);
-            std::cout << fmt::format("updated {}: {}\n", dir.string(), report::verdict_line(run.result));
+            std::cout << fmt::format("updated {}: {}\n", dir.string(),
+                                     report::verdict_line(run.result));
         } else {
             all_ok = check(dir / "result.json", run, rtol) && all_ok;
         }
@@ -85,7 +92,8 @@ int run(const std::vector<std::string>& args) {
     return all_ok ? 0 : static_cast<int>(ExitCode::failure);
 }
 
-const CommandRegistrar reg{{"regress", "re-run every case and compare with the golden result.json files", &run}};
+const CommandRegistrar reg{
+    {"regress", "re-run every case and compare with the golden result.json files", &run}};
 
 }  // namespace
 }  // namespace freestand::cli

@@ -1,7 +1,8 @@
 #include "report/json.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <string>
 
 #include "assess/verdict.hpp"
@@ -110,10 +111,12 @@ ordered_json case_json(const Case& c) {
     comp["uniform_block"] = k.uniform_block;
     comp["footprint"] = k.footprint;
     comp["fixed_base_frequency_hz"] = num(k.fixed_base_frequency_hz);
-    comp["free_rocking_band_hz"] = k.free_rocking_band_hz
-                                       ? ordered_json{num((*k.free_rocking_band_hz)[0]), num((*k.free_rocking_band_hz)[1])}
-                                       : ordered_json(nullptr);
-    comp["base_material"] = k.base.material.empty() ? ordered_json(nullptr) : ordered_json(k.base.material);
+    comp["free_rocking_band_hz"] =
+        k.free_rocking_band_hz
+            ? ordered_json{num((*k.free_rocking_band_hz)[0]), num((*k.free_rocking_band_hz)[1])}
+            : ordered_json(nullptr);
+    comp["base_material"] =
+        k.base.material.empty() ? ordered_json(nullptr) : ordered_json(k.base.material);
     comp["mu_s"] = num(k.base.mu_s);
     comp["mu_k"] = num(k.base.mu_k);
     comp["restitution"] = num(k.base.restitution);
@@ -157,7 +160,8 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
     j["levels"] = levels;
     ordered_json up;
     up["needed"] = r.upgrade.needed;
-    up["recommended"] = r.upgrade.recommended ? ordered_json(*r.upgrade.recommended) : ordered_json(nullptr);
+    up["recommended"] =
+        r.upgrade.recommended ? ordered_json(*r.upgrade.recommended) : ordered_json(nullptr);
     ordered_json trials = ordered_json::array();
     for (const MaterialTrial& t : r.upgrade.trials) {
         ordered_json tj = verdict_json(t.verdict);
@@ -172,9 +176,13 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
     j["simulations_run"] = r.simulations_run;
     ordered_json checks = ordered_json::array();
     for (const HistoryCheck& h : r.history_checks) {
-        checks.push_back({{"history", h.history}, {"component", h.component}, {"method", h.method},
-                          {"passed", h.passed}, {"min_ratio", num(h.min_ratio)},
-                          {"max_ratio", num(h.max_ratio)}, {"reason", h.reason}});
+        checks.push_back({{"history", h.history},
+                          {"component", h.component},
+                          {"method", h.method},
+                          {"passed", h.passed},
+                          {"min_ratio", num(h.min_ratio)},
+                          {"max_ratio", num(h.max_ratio)},
+                          {"reason", h.reason}});
     }
     j["history_acceptance"] = checks;
     j["case"] = case_json(r.input);

@@ -1,9 +1,8 @@
 #pragma once
 /// result.json: every number of the assessment, with the stamp under "stamp" (issue 6).
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "assess/result.hpp"
 

@@ -1,7 +1,8 @@
 #include "report/plots.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "report/svg.hpp"
 
@@ -30,24 +31,28 @@ Figure initiation_figure(const assess::AssessmentResult& r, const assess::Initia
     p.regions.push_back(Region{"slide", {{0, 0}, {x_max, 0}, {x_max, ta}, {ta, ta}}, "#e3eefa"});
     Region rock{"rock", {{ta, ta}}, "#fbe9d7"};
     Region slide_rock{"slide-rock", {{ta, ta}, {x_max, ta}}, "#f6dcef"};
-    for (std::size_t i = 0; i < d.a_g.size(); ++i) rock.polygon.push_back({d.a_g[i], std::min(d.mu_crit[i], y_max)});
+    for (std::size_t i = 0; i < d.a_g.size(); ++i)
+        rock.polygon.push_back({d.a_g[i], std::min(d.mu_crit[i], y_max)});
     rock.polygon.push_back({x_max, y_max});
     rock.polygon.push_back({ta, y_max});
-    for (std::size_t i = d.a_g.size(); i-- > 0;) slide_rock.polygon.push_back({d.a_g[i], std::min(d.mu_crit[i], y_max)});
+    for (std::size_t i = d.a_g.size(); i-- > 0;)
+        slide_rock.polygon.push_back({d.a_g[i], std::min(d.mu_crit[i], y_max)});
     p.regions.push_back(rock);
     p.regions.push_back(slide_rock);
     p.lines.push_back(Line{"mu_crit(A) (Shenton 1996)", d.a_g, d.mu_crit, "#555555", 1.2, true});
     std::size_t k = 0;
     for (const assess::LevelResult& l : r.levels) {
         if (l.direction != d.direction || k >= d.points.size()) continue;
-        p.markers.push_back(Marker{fmt::format("{:.2f} g", l.pga_g), d.points[k][0], d.points[k][1], "#000000"});
+        p.markers.push_back(
+            Marker{fmt::format("{:.2f} g", l.pga_g), d.points[k][0], d.points[k][1], "#000000"});
         ++k;
     }
-    return Figure{fmt::format("initiation-{}.svg", dir),
-                  fmt::format("Motion-initiation diagram, direction {}: regions of METHODS.md s.2 for "
-                              "this block, and the case's point at each PGA level.",
-                              dir),
-                  render_svg(p)};
+    return Figure{
+        fmt::format("initiation-{}.svg", dir),
+        fmt::format("Motion-initiation diagram, direction {}: regions of METHODS.md s.2 for "
+                    "this block, and the case's point at each PGA level.",
+                    dir),
+        render_svg(p)};
 }
 
 Figure spectra_figure(const assess::AssessmentResult& r) {
@@ -56,11 +61,13 @@ Figure spectra_figure(const assess::AssessmentResult& r) {
     p.x = Axis{"frequency (Hz)", true, 0.1, 100.0};
     p.y = Axis{"pseudo-spectral acceleration (g)", true, {}, {}};
     const auto& s = r.plots.spectra;
-    for (std::size_t i = 1; i < s.size(); ++i) p.lines.push_back(to_line(s[i], palette[(i - 1) % palette.size()], 0.8));
+    for (std::size_t i = 1; i < s.size(); ++i)
+        p.lines.push_back(to_line(s[i], palette[(i - 1) % palette.size()], 0.8));
     if (!s.empty()) p.lines.push_back(Line{s[0].label, s[0].x, s[0].y, "#000000", 2.0, false});
     return Figure{"spectra.svg",
-                  s.size() > 1 ? "Target (black) and the matched horizontal histories at the shown level."
-                               : "Target spectrum (no histories were generated).",
+                  s.size() > 1
+                      ? "Target (black) and the matched horizontal histories at the shown level."
+                      : "Target spectrum (no histories were generated).",
                   render_svg(p)};
 }
 
@@ -70,7 +77,8 @@ Figure history_figure(const std::string& file, const std::string& title, const s
     p.title = title;
     p.x = Axis{"time (s)", false, 0.0, {}};
     p.y = Axis{y_label, false, {}, {}};
-    for (std::size_t i = 0; i < series.size(); ++i) p.lines.push_back(to_line(series[i], palette[i % palette.size()]));
+    for (std::size_t i = 0; i < series.size(); ++i)
+        p.lines.push_back(to_line(series[i], palette[i % palette.size()]));
     return Figure{file, caption, render_svg(p)};
 }
 
@@ -82,12 +90,14 @@ std::vector<Figure> figures(const assess::AssessmentResult& r) {
     out.push_back(spectra_figure(r));
     if (!r.plots.ground_motion.empty()) {
         const std::string g = r.plots.governing;
-        out.push_back(history_figure("ground-motion.svg", "Ground acceleration of the governing history",
-                                     "acceleration (g)", r.plots.ground_motion, "Ground motion: " + g + "."));
-        out.push_back(history_figure("slip.svg", "Slip of the block relative to the base", "slip (m)",
-                                     r.plots.slip, "Simulated slip: " + g + "."));
+        out.push_back(
+            history_figure("ground-motion.svg", "Ground acceleration of the governing history",
+                           "acceleration (g)", r.plots.ground_motion, "Ground motion: " + g + "."));
+        out.push_back(history_figure("slip.svg", "Slip of the block relative to the base",
+                                     "slip (m)", r.plots.slip, "Simulated slip: " + g + "."));
         out.push_back(history_figure("rotation.svg", "Rocking angle over the slenderness angle",
-                                     "theta / alpha", r.plots.rotation, "Simulated rotation: " + g + "."));
+                                     "theta / alpha", r.plots.rotation,
+                                     "Simulated rotation: " + g + "."));
     }
     return out;
 }

@@ -14,7 +14,8 @@ void compare(const json& a, const json& b, const std::string& path, double rtol,
     if (a.is_number() && b.is_number()) {
         const double x = a.get<double>();
         const double y = b.get<double>();
-        if (std::abs(x - y) > rtol * std::max(std::abs(x), std::abs(y))) out.push_back({path, a.dump(), b.dump()});
+        if (std::abs(x - y) > rtol * std::max(std::abs(x), std::abs(y)))
+            out.push_back({path, a.dump(), b.dump()});
         return;
     }
     if (a.type() != b.type()) {
@@ -32,7 +33,8 @@ void compare(const json& a, const json& b, const std::string& path, double rtol,
             }
         }
         for (const auto& [key, value] : b.items()) {
-            if (!a.contains(key) && !(path.empty() && key == "stamp")) out.push_back({path + "/" + key, "(missing)", value.dump()});
+            if (!a.contains(key) && !(path.empty() && key == "stamp"))
+                out.push_back({path + "/" + key, "(missing)", value.dump()});
         }
         return;
     }
@@ -41,7 +43,8 @@ void compare(const json& a, const json& b, const std::string& path, double rtol,
             out.push_back({path + "/length", std::to_string(a.size()), std::to_string(b.size())});
             return;
         }
-        for (std::size_t i = 0; i < a.size(); ++i) compare(a[i], b[i], path + "/" + std::to_string(i), rtol, out);
+        for (std::size_t i = 0; i < a.size(); ++i)
+            compare(a[i], b[i], path + "/" + std::to_string(i), rtol, out);
         return;
     }
     if (a != b) out.push_back({path, a.dump(), b.dump()});

@@ -1,10 +1,9 @@
 #pragma once
 /// Golden comparison of result.json files (issue 6 `freestand regress`; STYLE.md: goldens
 /// compared numerically with an epsilon, refreshed by one command).
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace freestand::report {
 

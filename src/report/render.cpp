@@ -1,6 +1,7 @@
 #include "report/render.hpp"
 
 #include <fmt/format.h>
+
 #include <mstch/mstch.hpp>
 
 #include "assess/verdict.hpp"
@@ -19,15 +20,21 @@ using namespace freestand::assess;
 const std::string none = "n/a";
 
 std::string fixed(double v, int precision) { return fmt::format("{:.{}f}", v, precision); }
-std::string fixed(const std::optional<double>& v, int precision) { return v ? fixed(*v, precision) : none; }
+std::string fixed(const std::optional<double>& v, int precision) {
+    return v ? fixed(*v, precision) : none;
+}
 std::string mm(const std::optional<double>& v_m) { return v_m ? fixed(*v_m * 1000.0, 1) : none; }
 
 mstch::map input(std::string name, std::string value, std::string unit, std::string note = "") {
-    return mstch::map{{"name", std::move(name)}, {"value", std::move(value)}, {"unit", std::move(unit)},
+    return mstch::map{{"name", std::move(name)},
+                      {"value", std::move(value)},
+                      {"unit", std::move(unit)},
                       {"note", std::move(note)}};
 }
 
-std::string pair(double a, double b, int precision) { return fixed(a, precision) + ", " + fixed(b, precision); }
+std::string pair(double a, double b, int precision) {
+    return fixed(a, precision) + ", " + fixed(b, precision);
+}
 
 mstch::array inputs(const Case& c) {
     const Component& k = c.component;
@@ -35,27 +42,39 @@ mstch::array inputs(const Case& c) {
     out.push_back(input("mass", fixed(k.mass_kg, 1), "kg"));
     out.push_back(input("CG height above the contact plane", fixed(k.cg_height_m, 3), "m",
                         k.uniform_block ? "uniform block: half the height" : ""));
-    out.push_back(input("CG to rocking edges, x (left, right)", pair(k.x.b_left_m, k.x.b_right_m, 3), "m"));
-    out.push_back(input("CG to rocking edges, y (left, right)", pair(k.y.b_left_m, k.y.b_right_m, 3), "m"));
-    out.push_back(input("I_c about the CG, x plane", fixed(k.x.inertia_cg_kgm2, 2), "kg m^2", k.x.inertia_source));
-    out.push_back(input("I_c about the CG, y plane", fixed(k.y.inertia_cg_kgm2, 2), "kg m^2", k.y.inertia_source));
+    out.push_back(
+        input("CG to rocking edges, x (left, right)", pair(k.x.b_left_m, k.x.b_right_m, 3), "m"));
+    out.push_back(
+        input("CG to rocking edges, y (left, right)", pair(k.y.b_left_m, k.y.b_right_m, 3), "m"));
+    out.push_back(input("I_c about the CG, x plane", fixed(k.x.inertia_cg_kgm2, 2), "kg m^2",
+                        k.x.inertia_source));
+    out.push_back(input("I_c about the CG, y plane", fixed(k.y.inertia_cg_kgm2, 2), "kg m^2",
+                        k.y.inertia_source));
     out.push_back(input("footprint", k.footprint.empty() ? none : k.footprint, ""));
     out.push_back(input("fixed-base natural frequency", fixed(k.fixed_base_frequency_hz, 2), "Hz"));
     out.push_back(input("free-rocking band",
-                        k.free_rocking_band_hz ? pair((*k.free_rocking_band_hz)[0], (*k.free_rocking_band_hz)[1], 2) : none,
+                        k.free_rocking_band_hz
+                            ? pair((*k.free_rocking_band_hz)[0], (*k.free_rocking_band_hz)[1], 2)
+                            : none,
                         "Hz"));
-    out.push_back(input("base material", k.base.material.empty() ? none : k.base.material, "", k.base.source));
+    out.push_back(input("base material", k.base.material.empty() ? none : k.base.material, "",
+                        k.base.source));
     out.push_back(input("static friction mu_s", fixed(k.base.mu_s, 3), "-"));
     out.push_back(input("kinetic friction mu_k", fixed(k.base.mu_k, 3), "-"));
-    out.push_back(input("restitution r", k.base.restitution ? fixed(*k.base.restitution, 3) : "Housner", "-"));
-    out.push_back(input("allowable slide (clearance)", fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
-    out.push_back(input("required overturning factor of safety", fixed(k.required_overturn_fs, 2), "-"));
-    out.push_back(input("design spectrum", c.site.design == "rg1.60" ? "US NRC RG 1.60" : c.site.design, ""));
+    out.push_back(input("restitution r",
+                        k.base.restitution ? fixed(*k.base.restitution, 3) : "Housner", "-"));
+    out.push_back(
+        input("allowable slide (clearance)", fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
+    out.push_back(
+        input("required overturning factor of safety", fixed(k.required_overturn_fs, 2), "-"));
+    out.push_back(
+        input("design spectrum", c.site.design == "rg1.60" ? "US NRC RG 1.60" : c.site.design, ""));
     std::string levels;
     for (double p : c.site.pga_g) levels += (levels.empty() ? "" : ", ") + fixed(p, 3);
     out.push_back(input("PGA levels (horizontal)", levels, "g"));
     out.push_back(input("vertical / horizontal PGA", fixed(c.site.vertical_ratio, 4), "-"));
-    out.push_back(input("damping of the sliding spectrum", fixed(c.site.sliding_damping * 100.0, 1), "%"));
+    out.push_back(
+        input("damping of the sliding spectrum", fixed(c.site.sliding_damping * 100.0, 1), "%"));
     out.push_back(input("gravity", fixed(c.site.g_mps2, 3), "m/s^2"));
     out.push_back(input("histories per level", std::to_string(c.options.histories_per_level), ""));
     out.push_back(input("simulate", to_string(c.options.simulate), ""));
@@ -117,18 +136,20 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
     mstch::array out;
     for (const LevelResult& l : levels) {
         if (!l.flexible.raised) continue;
-        out.push_back(mstch::map{{"text", fmt::format(
-            "PGA {:.3f} g, {}: mode stays {} ({}). Screen: {}. A flexible body may uplift below the "
-            "static threshold (frequency-induced rocking, METHODS.md s.2).",
-            l.pga_g, to_string(l.direction), to_string(l.initiation.mode), l.flexible.basis,
-            l.flexible.reason)}});
+        out.push_back(mstch::map{
+            {"text", fmt::format("PGA {:.3f} g, {}: mode stays {} ({}). Screen: {}. A flexible "
+                                 "body may uplift below the "
+                                 "static threshold (frequency-induced rocking, METHODS.md s.2).",
+                                 l.pga_g, to_string(l.direction), to_string(l.initiation.mode),
+                                 l.flexible.basis, l.flexible.reason)}});
     }
     return out;
 }
 
 std::string upgrade_summary(const Upgrade& up) {
-    return up.recommended ? "the weakest material that passes every level is " + *up.recommended + "."
-                          : "no material of METHODS.md s.7 passes every level.";
+    return up.recommended
+               ? "the weakest material that passes every level is " + *up.recommended + "."
+               : "no material of METHODS.md s.7 passes every level.";
 }
 
 mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vector<Figure>& figs) {
@@ -138,11 +159,12 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         const std::string failing = t.verdict.kind == VerdictKind::anchor
                                         ? "does not pass: rocking / overturning"
                                         : "does not pass: slides beyond the allowable";
-        trials.push_back(mstch::map{{"material", t.material},
-                                    {"mu_s", fixed(t.mu_s, 2)},
-                                    {"verdict", passes(t.verdict) ? verdict_text(t.verdict) : failing},
-                                    {"margin", margin_text(t.verdict)},
-                                    {"decided_by", std::string(to_string(t.verdict.decided_by))}});
+        trials.push_back(
+            mstch::map{{"material", t.material},
+                       {"mu_s", fixed(t.mu_s, 2)},
+                       {"verdict", passes(t.verdict) ? verdict_text(t.verdict) : failing},
+                       {"margin", margin_text(t.verdict)},
+                       {"decided_by", std::string(to_string(t.verdict.decided_by))}});
     }
     mstch::array levels;
     for (const LevelResult& l : r.levels) levels.push_back(level_row(l));
@@ -156,7 +178,8 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
                                     {"max_ratio", fixed(h.max_ratio, 3)}});
     }
     mstch::array figures;
-    for (const Figure& f : figs) figures.push_back(mstch::map{{"file", f.file}, {"caption", f.caption}, {"svg", f.svg}});
+    for (const Figure& f : figs)
+        figures.push_back(mstch::map{{"file", f.file}, {"caption", f.caption}, {"svg", f.svg}});
     return mstch::map{
         {"component_name", r.input.component.name},
         {"description", r.input.component.description},
@@ -166,7 +189,9 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
                                (r.overall.material.empty() ? "" : " with " + r.overall.material)},
         {"verdict_margin_basis", r.overall.margin_basis},
         {"verdict_decided_by", std::string(to_string(r.overall.decided_by))},
-        {"governing", gov ? fmt::format("PGA {:.3f} g, direction {}", gov->pga_g, to_string(gov->direction)) : none},
+        {"governing",
+         gov ? fmt::format("PGA {:.3f} g, direction {}", gov->pga_g, to_string(gov->direction))
+             : none},
         {"upgrade_needed", r.upgrade.needed},
         {"upgrade_summary", upgrade_summary(r.upgrade)},
         {"trials", trials},
@@ -188,15 +213,16 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
 
 // mstch's escape function is global: swap it for one render and restore it after.
 class EscapeGuard {
-public:
-    explicit EscapeGuard(std::function<std::string(const std::string&)> f) : saved_(mstch::config::escape) {
+  public:
+    explicit EscapeGuard(std::function<std::string(const std::string&)> f)
+        : saved_(mstch::config::escape) {
         mstch::config::escape = std::move(f);
     }
     ~EscapeGuard() { mstch::config::escape = saved_; }
     EscapeGuard(const EscapeGuard&) = delete;
     EscapeGuard& operator=(const EscapeGuard&) = delete;
 
-private:
+  private:
     std::function<std::string(const std::string&)> saved_;
 };
 
@@ -206,15 +232,30 @@ std::string markdown_escape(const std::string& text) {
     std::string out;
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
             case '\n':
-            case '\r': out += ' '; break;
-            case '\\': case '`': case '*': case '_': case '[': case ']': case '|': case '#': case '!':
+            case '\r':
+                out += ' ';
+                break;
+            case '\\':
+            case '`':
+            case '*':
+            case '_':
+            case '[':
+            case ']':
+            case '|':
+            case '#':
+            case '!':
                 out += '\\';
                 out += c;
                 break;
-            default: out += c;
+            default:
+                out += c;
         }
     }
     return out;

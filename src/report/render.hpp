@@ -14,8 +14,8 @@ namespace freestand::report {
 /// Every output file's contents.
 struct Rendered {
     std::string markdown;
-    std::string html;      ///< self-contained: inline CSS and SVG, no external resources
-    std::string json;      ///< result.json, 2-space indented, trailing newline
+    std::string html;             ///< self-contained: inline CSS and SVG, no external resources
+    std::string json;             ///< result.json, 2-space indented, trailing newline
     std::vector<Figure> figures;  ///< also written as SVG files for the Markdown report
 };
 

@@ -15,7 +15,8 @@ CaseRun run_case(const std::filesystem::path& case_file,
     if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
     CaseRun run;
     run.result = assess::assess(c);
-    run.rendered = render(run.result, make_stamp(bytes, case_file.string(), c.options.seed, commit));
+    run.rendered =
+        render(run.result, make_stamp(bytes, case_file.string(), c.options.seed, commit));
     return run;
 }
 
@@ -23,7 +24,8 @@ std::string verdict_line(const assess::AssessmentResult& r) {
     std::string where;
     if (!r.levels.empty()) {
         const auto& g = r.levels[r.governing_level];
-        where = fmt::format("governing PGA {:.3f} g, direction {}, ", g.pga_g, assess::to_string(g.direction));
+        where = fmt::format("governing PGA {:.3f} g, direction {}, ", g.pga_g,
+                            assess::to_string(g.direction));
     }
     const std::string with = r.overall.material.empty() ? "" : " with " + r.overall.material;
     return fmt::format("{}: {} ({}margin{} {}, decided by {})", r.input.component.name,

@@ -21,7 +21,8 @@ struct CaseRun {
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit);
 
-/// The one-line verdict the commands print: "<name>: <verdict> (governing ..., margin ..., by ...)".
+/// The one-line verdict the commands print: "<name>: <verdict> (governing ..., margin ..., by
+/// ...)".
 std::string verdict_line(const assess::AssessmentResult& r);
 
 }  // namespace freestand::report

@@ -1,8 +1,9 @@
 #include "report/svg.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 
 namespace freestand::report {
@@ -27,9 +28,7 @@ struct Scale {
                              : (v - lo) / (hi - lo);
         return px0 + t * (px1 - px0);
     }
-    bool contains(double v) const {
-        return std::isfinite(v) && (!log || v > 0.0);
-    }
+    bool contains(double v) const { return std::isfinite(v) && (!log || v > 0.0); }
 };
 
 // A "nice" step of 1, 2 or 5 x 10^k giving about `target` intervals.
@@ -47,10 +46,12 @@ Scale make_scale(const Axis& axis, std::vector<double> values, double px0, doubl
     s.log = axis.log;
     s.px0 = px0;
     s.px1 = px1;
-    values.erase(std::remove_if(values.begin(), values.end(),
-                                [&](double v) { return !std::isfinite(v) || (axis.log && v <= 0.0); }),
-                 values.end());
-    double lo = values.empty() ? (axis.log ? 0.1 : 0.0) : *std::min_element(values.begin(), values.end());
+    values.erase(
+        std::remove_if(values.begin(), values.end(),
+                       [&](double v) { return !std::isfinite(v) || (axis.log && v <= 0.0); }),
+        values.end());
+    double lo =
+        values.empty() ? (axis.log ? 0.1 : 0.0) : *std::min_element(values.begin(), values.end());
     double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
     if (axis.log) {
         lo = std::pow(10.0, std::floor(std::log10(lo)));
@@ -114,12 +115,23 @@ std::string xml_escape(const std::string& text) {
     out.reserve(text.size());
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -148,13 +160,16 @@ std::string render_svg(const Plot& plot) {
     const Scale sx = make_scale(plot.x, xs, margin_left, w - margin_right);
     const Scale sy = make_scale(plot.y, ys, frame_bottom, margin_top);
     std::string out = fmt::format(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 0 "
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 "
+        "0 "
         "{:.0f} {:.0f}\" font-family=\"sans-serif\" font-size=\"11\">\n",
         w, h, w, h);
-    out += fmt::format("<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n",
-                       xml_escape(plot.title));
-    out += fmt::format("<text x=\"{:.1f}\" y=\"18\" font-size=\"13\" font-weight=\"bold\">{}</text>\n",
-                       margin_left, xml_escape(plot.title));
+    out +=
+        fmt::format("<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n",
+                    xml_escape(plot.title));
+    out +=
+        fmt::format("<text x=\"{:.1f}\" y=\"18\" font-size=\"13\" font-weight=\"bold\">{}</text>\n",
+                    margin_left, xml_escape(plot.title));
     for (const Region& r : plot.regions) {
         std::vector<double> rx, ry;
         for (const auto& p : r.polygon) {
@@ -166,47 +181,58 @@ std::string render_svg(const Plot& plot) {
     }
     for (double t : ticks(sx)) {
         const double px = sx(t);
-        out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#dddddd\"/>\n"
-                           "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>\n",
-                           px, margin_top, frame_bottom, frame_bottom + 14.0, tick_label(t));
+        out += fmt::format(
+            "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" "
+            "stroke=\"#dddddd\"/>\n"
+            "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>\n",
+            px, margin_top, frame_bottom, frame_bottom + 14.0, tick_label(t));
     }
     for (double t : ticks(sy)) {
         const double py = sy(t);
-        out += fmt::format("<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\" stroke=\"#dddddd\"/>\n"
-                           "<text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\">{5}</text>\n",
-                           py, margin_left, w - margin_right, margin_left - 4.0, py + 4.0, tick_label(t));
+        out += fmt::format(
+            "<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\" "
+            "stroke=\"#dddddd\"/>\n"
+            "<text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\">{5}</text>\n",
+            py, margin_left, w - margin_right, margin_left - 4.0, py + 4.0, tick_label(t));
     }
-    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
-                       "stroke=\"#333333\"/>\n",
-                       margin_left, margin_top, w - margin_right - margin_left, frame_bottom - margin_top);
+    out += fmt::format(
+        "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
+        "stroke=\"#333333\"/>\n",
+        margin_left, margin_top, w - margin_right - margin_left, frame_bottom - margin_top);
     out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
-                       (margin_left + w - margin_right) / 2.0, frame_bottom + 32.0, xml_escape(plot.x.label));
-    out += fmt::format("<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
-                       (margin_top + frame_bottom) / 2.0, xml_escape(plot.y.label));
+                       (margin_left + w - margin_right) / 2.0, frame_bottom + 32.0,
+                       xml_escape(plot.x.label));
+    out += fmt::format(
+        "<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
+        (margin_top + frame_bottom) / 2.0, xml_escape(plot.y.label));
     for (const Line& l : plot.lines) {
-        out += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}/>\n",
-                           points_attr(l.x, l.y, sx, sy), l.color, l.width,
-                           l.dashed ? " stroke-dasharray=\"5 3\"" : "");
+        out += fmt::format(
+            "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}/>\n",
+            points_attr(l.x, l.y, sx, sy), l.color, l.width,
+            l.dashed ? " stroke-dasharray=\"5 3\"" : "");
     }
     for (const Marker& m : plot.markers) {
         if (!sx.contains(m.x) || !sy.contains(m.y)) continue;
-        out += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"{}\"/>\n"
-                           "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-                           sx(m.x), sy(m.y), m.color, sx(m.x) + 6.0, sy(m.y) - 6.0, xml_escape(m.label));
+        out += fmt::format(
+            "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"{}\"/>\n"
+            "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+            sx(m.x), sy(m.y), m.color, sx(m.x) + 6.0, sy(m.y) - 6.0, xml_escape(m.label));
     }
     double row_y = plot.height_px + 4.0;
     for (const Region& r : plot.regions) {
-        out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"10\" fill=\"{}\"/>"
-                           "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-                           margin_left, row_y, r.fill, margin_left + 20.0, row_y + 9.0, xml_escape(r.label));
+        out += fmt::format(
+            "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"10\" fill=\"{}\"/>"
+            "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+            margin_left, row_y, r.fill, margin_left + 20.0, row_y + 9.0, xml_escape(r.label));
         row_y += legend_row_px;
     }
     for (const Line& l : plot.lines) {
-        out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
-                           "stroke-width=\"2\"{}/><text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-                           margin_left, row_y + 5.0, margin_left + 14.0, row_y + 5.0, l.color,
-                           l.dashed ? " stroke-dasharray=\"5 3\"" : "", margin_left + 20.0, row_y + 9.0,
-                           xml_escape(l.label));
+        out += fmt::format(
+            "<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
+            "stroke-width=\"2\"{}/><text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+            margin_left, row_y + 5.0, margin_left + 14.0, row_y + 5.0, l.color,
+            l.dashed ? " stroke-dasharray=\"5 3\"" : "", margin_left + 20.0, row_y + 9.0,
+            xml_escape(l.label));
         row_y += legend_row_px;
     }
     out += "</svg>\n";

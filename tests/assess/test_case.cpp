@@ -40,7 +40,8 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
     for (const char* name : {"glovebox-single", "glovebox-steel-pads", "glovebox-pair", "block-ts1",
                              "block-ts2", "block-ts3"}) {
         INFO(name);
-        const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (std::string(name) + ".toml"));
+        const Case c =
+            read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (std::string(name) + ".toml"));
         CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
         CHECK(c.options.histories_per_level == 5);
     }
@@ -64,8 +65,9 @@ TEST_CASE("the case's own assumptions are kept for the report, first", "[assess]
     const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair.toml");
     REQUIRE(c.assumptions.size() >= 4);
     CHECK(c.assumptions.front().rfind("Case: boxes side by side along x", 0) == 0);
-    CHECK(error_of(base_component + "assumptions = [1]\n" + base_site) ==
-          "case.toml:9: component.assumptions: expected an array of strings, got an integer element");
+    CHECK(
+        error_of(base_component + "assumptions = [1]\n" + base_site) ==
+        "case.toml:9: component.assumptions: expected an array of strings, got an integer element");
 }
 
 TEST_CASE("a uniform block from its box and a material from the table", "[assess][case]") {
@@ -114,20 +116,23 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
               "case.toml:11: site.vertical_ratio: expected a number in [0, 1.5], got a string");
     }
     SECTION("out of range") {
-        CHECK(error_of(base_component + base_site + "sliding_damping = 0.2\n") ==
-              "case.toml:11: site.sliding_damping: value 0.2 is out of range; expected [0.005, 0.1]");
+        CHECK(
+            error_of(base_component + base_site + "sliding_damping = 0.2\n") ==
+            "case.toml:11: site.sliding_damping: value 0.2 is out of range; expected [0.005, 0.1]");
     }
     SECTION("array of the wrong size") {
         std::string text = base_component + base_site;
         text.replace(text.find("[0.4, 0.5]"), 10, "[0.4]");
-        CHECK(error_of(text) == "case.toml:5: component.cg_to_edge_x_m: expected an array of 2 "
-                                "numbers in (0, 100], got 1 element(s)");
+        CHECK(error_of(text) ==
+              "case.toml:5: component.cg_to_edge_x_m: expected an array of 2 "
+              "numbers in (0, 100], got 1 element(s)");
     }
     SECTION("levels not increasing") {
         std::string text = base_component + base_site;
         text.replace(text.find("[0.1, 0.2]"), 10, "[0.2, 0.1]");
-        CHECK(error_of(text) == "case.toml:10: site.pga_g: levels must be strictly increasing; 0.1 "
-                                "follows 0.2");
+        CHECK(error_of(text) ==
+              "case.toml:10: site.pga_g: levels must be strictly increasing; 0.1 "
+              "follows 0.2");
     }
     SECTION("unknown material") {
         std::string text = base_component + base_site;
@@ -147,8 +152,10 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     }
     SECTION("p too large for a positive I_c") {
         const std::string e = error_of(base_component + "p_radps = 5.0\n" + base_site);
-        // p < sqrt(g / R), R the larger critical-edge R: sqrt(0.4^2 + 1) = 1.0770 m -> 3.0180 rad/s.
-        CHECK(e.rfind("case.toml:9: component.p_radps: value 5 is out of range; expected (0, 3.018", 0) == 0);
+        // p < sqrt(g / R), R the larger critical-edge R: sqrt(0.4^2 + 1) = 1.0770 m -> 3.0180
+        // rad/s.
+        CHECK(e.rfind("case.toml:9: component.p_radps: value 5 is out of range; expected (0, 3.018",
+                      0) == 0);
     }
     SECTION("free-rocking band reversed") {
         CHECK(error_of(base_component + "free_rocking_band_hz = [4.0, 2.0]\n" + base_site) ==
@@ -180,8 +187,9 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
                                    0) == 0);
     }
     SECTION("a key that is allowed but unused in this combination") {
-        CHECK(error_of(base_component + "height_m = 2.0\n" + base_site).find("component.height_m") !=
-              std::string::npos);
+        CHECK(
+            error_of(base_component + "height_m = 2.0\n" + base_site).find("component.height_m") !=
+            std::string::npos);
     }
 }
 

@@ -70,7 +70,8 @@ TEST_CASE("seed records must come in threes per history", "[assess][pipeline]") 
         assess::assess(c);
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()).find("options.seed_records: expected 3 records (h1, h2, v) per history, 3 in "
-                                         "all for histories_per_level = 1, got 1") != std::string::npos);
+        CHECK(std::string(e.what()).find(
+                  "options.seed_records: expected 3 records (h1, h2, v) per history, 3 in "
+                  "all for histories_per_level = 1, got 1") != std::string::npos);
     }
 }

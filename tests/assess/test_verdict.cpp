@@ -29,7 +29,8 @@ LevelResult sliding(double asce_m, double energy_m) {
     return l;
 }
 
-Simulation sim(double slide_max_m, double residual_m, double rock_over_alpha = 0.0, double overturned = 0.0) {
+Simulation sim(double slide_max_m, double residual_m, double rock_over_alpha = 0.0,
+               double overturned = 0.0) {
     Simulation s;
     s.histories = 5;
     s.slide_max_max_m = slide_max_m;
@@ -73,7 +74,8 @@ TEST_CASE("slide: a simulation governs when run (peak or residual)", "[assess][v
     CHECK(v.kind == VerdictKind::acceptable_with_clearance);
     CHECK(v.decided_by == Model::simulation_slide);
     CHECK(verdict_text(v) == "acceptable with clearance >= 12 mm");
-    l.simulation = sim(0.060, 0.061);  // residual larger than the peak cannot happen, but it governs
+    l.simulation =
+        sim(0.060, 0.061);  // residual larger than the peak cannot happen, but it governs
     v = decide_level(l, allowable, fs_required);
     CHECK(v.kind == VerdictKind::upgrade_material);
     CHECK(v.decided_by == Model::simulation_residual);
@@ -89,7 +91,8 @@ TEST_CASE("slide below 1 mm is no motion, and no closed form means no slide", "[
     CHECK_FALSE(v.margin.has_value());
 }
 
-TEST_CASE("rock without simulation: the equivalent-linear factor of safety decides", "[assess][verdict]") {
+TEST_CASE("rock without simulation: the equivalent-linear factor of safety decides",
+          "[assess][verdict]") {
     LevelResult l = level(Mode::rock, 0.6);
     l.rocking.overturn_fs = 2.0;
     Verdict v = decide_level(l, allowable, fs_required);
@@ -151,7 +154,8 @@ TEST_CASE("when to simulate", "[assess][verdict]") {
     CHECK(simulation_need(level(Mode::slide_rock), allowable, SimulatePolicy::automatic).run);
     CHECK_FALSE(simulation_need(sliding(0.02, 0.04), allowable, SimulatePolicy::automatic).run);
     CHECK_FALSE(simulation_need(sliding(0.06, 0.40), allowable, SimulatePolicy::automatic).run);
-    const SimulationNeed open = simulation_need(sliding(0.04, 0.40), allowable, SimulatePolicy::automatic);
+    const SimulationNeed open =
+        simulation_need(sliding(0.04, 0.40), allowable, SimulatePolicy::automatic);
     CHECK(open.run);
     CHECK(open.reason == "the closed-form slides straddle the allowable: the simulation decides");
     // Exactly at the allowable counts as within it.

@@ -50,7 +50,8 @@ assess::AssessmentResult hand_result() {
 Stamp stamp() { return make_stamp("case bytes", "case.toml", 7, "abc123"); }
 
 fs::path temp_dir(const std::string& name) {
-    const fs::path d = fs::temp_directory_path() / ("freestand_report_" + name + "_" + std::to_string(::getpid()));
+    const fs::path d =
+        fs::temp_directory_path() / ("freestand_report_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
     return d;
@@ -100,7 +101,8 @@ TEST_CASE("a hostile component name is escaped in HTML and Markdown", "[report][
     CHECK(out.markdown.find("[link](javascript") == std::string::npos);
     CHECK(out.markdown.find("\\[link\\](javascript:alert(1)) \\| \\*b\\*") != std::string::npos);
     // The description's newline is folded so it cannot start a Markdown block.
-    CHECK(out.markdown.find("&lt;/script> &amp; \\[link\\](javascript:alert(1)) \\| \\*b\\* second line") !=
+    CHECK(out.markdown.find(
+              "&lt;/script> &amp; \\[link\\](javascript:alert(1)) \\| \\*b\\* second line") !=
           std::string::npos);
     // The JSON keeps the text verbatim (JSON escaping is the consumer's business).
     CHECK(out.json.find("\"name\": \"<script>alert('x')</script>") != std::string::npos);
@@ -114,7 +116,8 @@ TEST_CASE("the HTML report is self-contained", "[report][html]") {
     CHECK(out.html.find("<script") == std::string::npos);
     CHECK(out.html.find("<style>") != std::string::npos);
     // Verdict first: the verdict block precedes the inputs.
-    CHECK(out.html.find("acceptable with clearance &gt;= 13 mm") < out.html.find("<h2>Inputs</h2>"));
+    CHECK(out.html.find("acceptable with clearance &gt;= 13 mm") <
+          out.html.find("<h2>Inputs</h2>"));
 }
 
 TEST_CASE("numbers are formatted with fixed precision and the stamp is present", "[report][json]") {
@@ -127,8 +130,9 @@ TEST_CASE("numbers are formatted with fixed precision and the stamp is present",
     CHECK(j.at("stamp").at("input_sha256") == sha256_hex("case bytes"));
     CHECK(j.at("stamp").at("commit") == "abc123");
     CHECK(j.at("stamp").at("seed") == 7);
-    for (const char* key : {"pga_g", "direction", "mode", "slide_asce_m", "slide_energy_m", "slide_sim_max_m",
-                            "rock_max_over_alpha", "overturned_fraction", "verdict", "decided_by"}) {
+    for (const char* key :
+         {"pga_g", "direction", "mode", "slide_asce_m", "slide_energy_m", "slide_sim_max_m",
+          "rock_max_over_alpha", "overturned_fraction", "verdict", "decided_by"}) {
         CHECK(j.at("levels").at(0).contains(key));
     }
     CHECK(j.contains("upgrade"));
@@ -142,7 +146,8 @@ TEST_CASE("rendering twice gives identical bytes", "[report][determinism]") {
     CHECK(a.json == b.json);
 }
 
-TEST_CASE("an SVG plot escapes its text and skips non-positive values on log axes", "[report][svg]") {
+TEST_CASE("an SVG plot escapes its text and skips non-positive values on log axes",
+          "[report][svg]") {
     Plot p;
     p.title = "a < b & c";
     p.x = Axis{"f (Hz)", true, {}, {}};
@@ -158,7 +163,8 @@ TEST_CASE("an SVG plot escapes its text and skips non-positive values on log axe
 }
 
 TEST_CASE("regress comparison: tolerance, verdict change, stamp ignored", "[report][regress]") {
-    auto golden = nlohmann::ordered_json::parse(R"({"verdict": "anchor", "levels": [{"x": 1.0}], "stamp": {"commit": "a"}})");
+    auto golden = nlohmann::ordered_json::parse(
+        R"({"verdict": "anchor", "levels": [{"x": 1.0}], "stamp": {"commit": "a"}})");
     auto fresh = golden;
     fresh["stamp"]["commit"] = "b";
     fresh["levels"][0]["x"] = 1.0 + 5e-7;
@@ -192,10 +198,12 @@ TEST_CASE("a failed write leaves no half file behind", "[report][atomic]") {
 TEST_CASE("assess CLI: two runs give byte-identical files", "[report][cli][determinism]") {
     const fs::path dir = temp_dir("determinism");
     const fs::path c = small_case(dir, "small");
-    const auto a = test::run_cli("assess '" + c.string() + "' --out '" + (dir / "a").string() + "'");
+    const auto a =
+        test::run_cli("assess '" + c.string() + "' --out '" + (dir / "a").string() + "'");
     REQUIRE(a.exit_code == 0);
     CHECK(a.out.rfind("Small box: ", 0) == 0);
-    const auto b = test::run_cli("assess '" + c.string() + "' --out '" + (dir / "b").string() + "'");
+    const auto b =
+        test::run_cli("assess '" + c.string() + "' --out '" + (dir / "b").string() + "'");
     REQUIRE(b.exit_code == 0);
     std::size_t files = 0;
     for (const auto& e : fs::directory_iterator(dir / "a")) {
@@ -210,19 +218,23 @@ TEST_CASE("assess CLI: two runs give byte-identical files", "[report][cli][deter
 TEST_CASE("assess CLI errors", "[report][cli]") {
     const auto missing = test::run_cli("assess /nonexistent/case.toml");
     CHECK(missing.exit_code == 5);
-    CHECK(missing.err.find("/nonexistent/case.toml: cannot open file for reading") != std::string::npos);
+    CHECK(missing.err.find("/nonexistent/case.toml: cannot open file for reading") !=
+          std::string::npos);
     const fs::path dir = temp_dir("errors");
     const fs::path c = small_case(dir, "small");
-    const auto bad = test::run_cli("assess '" + c.string() + "' --pga 0.3,0.2 --out '" + dir.string() + "/o'");
+    const auto bad =
+        test::run_cli("assess '" + c.string() + "' --pga 0.3,0.2 --out '" + dir.string() + "/o'");
     CHECK(bad.exit_code == 3);
-    CHECK(bad.err.find("--pga: levels must be strictly increasing; 0.2 follows 0.3") != std::string::npos);
+    CHECK(bad.err.find("--pga: levels must be strictly increasing; 0.2 follows 0.3") !=
+          std::string::npos);
     fs::remove_all(dir);
 }
 
 TEST_CASE("regress passes on unchanged goldens and detects a drift", "[report][cli][regress]") {
     const fs::path dir = temp_dir("regress");
     small_case(dir / "cases", "small");
-    const std::string args = "'" + (dir / "reports").string() + "' --cases '" + (dir / "cases").string() + "'";
+    const std::string args =
+        "'" + (dir / "reports").string() + "' --cases '" + (dir / "cases").string() + "'";
     const auto missing = test::run_cli("regress " + args);
     CHECK(missing.exit_code == 1);
     CHECK(missing.out.find("MISSING small") != std::string::npos);
@@ -246,9 +258,11 @@ TEST_CASE("regress passes on unchanged goldens and detects a drift", "[report][c
 
 TEST_CASE("regress CLI errors", "[report][cli][regress]") {
     const fs::path dir = temp_dir("regress_errors");
-    const auto no_cases = test::run_cli("regress '" + dir.string() + "' --cases '" + (dir / "none").string() + "'");
+    const auto no_cases =
+        test::run_cli("regress '" + dir.string() + "' --cases '" + (dir / "none").string() + "'");
     CHECK(no_cases.exit_code == 5);
-    CHECK(no_cases.err.find((dir / "none").string() + ": not a folder of case files") != std::string::npos);
+    CHECK(no_cases.err.find((dir / "none").string() + ": not a folder of case files") !=
+          std::string::npos);
     const auto bad_rtol = test::run_cli("regress --rtol -1");
     CHECK(bad_rtol.exit_code == 2);
     CHECK(bad_rtol.err.find("--rtol: expected a number >= 0; got -1") != std::string::npos);
