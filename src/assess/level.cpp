@@ -169,6 +169,7 @@ std::vector<double> design_frequencies() { return spectra::log_frequencies(0.05,
 
 LevelDemand level_demand(const Site& site, double pga_g) {
     std::vector<spectra::Spectrum> damped;
+    damped.reserve(rg160_dampings.size());
     for (double d : rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
     return LevelDemand{pga_g,
                        site.vertical_ratio * pga_g,

@@ -23,11 +23,12 @@ constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (
 
 void compress(std::array<std::uint32_t, 8>& h, const unsigned char* block) {
     std::array<std::uint32_t, 64> w{};
-    for (int i = 0; i < 16; ++i) {
-        w[static_cast<std::size_t>(i)] = (static_cast<std::uint32_t>(block[4 * i]) << 24) |
-                                         (static_cast<std::uint32_t>(block[4 * i + 1]) << 16) |
-                                         (static_cast<std::uint32_t>(block[4 * i + 2]) << 8) |
-                                         static_cast<std::uint32_t>(block[4 * i + 3]);
+    for (std::size_t i = 0; i < 16; ++i) {
+        // Big-endian 32-bit words (FIPS 180-4 s.3.1).
+        w[i] = (static_cast<std::uint32_t>(block[4 * i]) << 24) |
+               (static_cast<std::uint32_t>(block[4 * i + 1]) << 16) |
+               (static_cast<std::uint32_t>(block[4 * i + 2]) << 8) |
+               static_cast<std::uint32_t>(block[4 * i + 3]);
     }
     for (std::size_t i = 16; i < 64; ++i) {
         const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
