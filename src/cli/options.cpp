@@ -25,8 +25,7 @@ std::optional<po::variables_map> parse_options(const std::string& command, const
         }
         po::notify(vm);
     } catch (const po::error& e) {
-        throw UsageError(fmt::format("freestand {}: {} (see freestand {} --help)", command, e.what(),
-                                     command));
+        throw UsageError(fmt::format("{} (see freestand {} --help)", e.what(), command));
     }
     return vm;
 }

@@ -1,0 +1,39 @@
+#include <catch2/catch.hpp>
+
+#include "support/run_cli.hpp"
+
+using freestand::test::run_cli;
+
+TEST_CASE("freestand without a command prints help and exits 2", "[cli]") {
+    const auto r = run_cli("");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Contains("commands:"));
+}
+
+TEST_CASE("freestand --help lists every command and the exit codes", "[cli]") {
+    const auto r = run_cli("--help");
+    CHECK(r.exit_code == 0);
+    for (const char* cmd : {"assess", "regress", "spectrum", "target", "generate", "classify",
+                            "slide", "rock", "simulate"})
+        CHECK_THAT(r.out, Catch::Contains(cmd));
+    CHECK_THAT(r.out, Catch::Contains("exit codes"));
+}
+
+TEST_CASE("an unknown command is a usage error naming it", "[cli]") {
+    const auto r = run_cli("frobnicate");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("unknown command \"frobnicate\""));
+}
+
+TEST_CASE("an unknown option is a usage error with the command prefixed once", "[cli]") {
+    const auto r = run_cli("spectrum --no-such-option x");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("freestand spectrum: error: unrecognised option '--no-such-option'"));
+    CHECK_THAT(r.err, Catch::Contains("(see freestand spectrum --help)"));
+}
+
+TEST_CASE("freestand --version prints the version", "[cli]") {
+    const auto r = run_cli("--version");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::StartsWith("freestand " FREESTAND_VERSION));
+}
