@@ -55,7 +55,19 @@ struct Rhs {
         cos_ref = std::cos(a);
         has_ref = true;
     }
-    Base base(double t) const { return bm->at(bm->segment_of(t), t); }
+    // Linear base of the segment [seg.tk, seg_end] of the step start: a step that stays inside
+    // it (the usual case: steps end at samples) reads no samples.
+    Segment seg;
+    double seg_end = -1.0;
+    void set_segment(double t) {
+        const std::size_t k = bm->segment_of(t);
+        bm->segment(k, seg.ax0, seg.ax1, seg.G0, seg.G1);
+        seg.tk = bm->t_k(k);
+        seg_end = bm->t_k(k + 1);
+    }
+    Base base(double t) const {
+        return t >= seg.tk && t <= seg_end ? seg.at(t) : bm->at(bm->segment_of(t), t);
+    }
     Accel accel(const Vec& x, double t) const {
         double sn, c;
         sin_cos(x[2], sn, c);
@@ -321,7 +333,12 @@ public:
             rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
             return t;
         }
-        Rhs rhs{&g_, &bm_, st_.mode, st_.s, st_.sigma, {}};
+        Rhs rhs;
+        rhs.g = &g_;
+        rhs.bm = &bm_;
+        rhs.mode = st_.mode;
+        rhs.s = st_.s;
+        rhs.sigma = st_.sigma;
         std::array<Ev, 5> events = {Ev::impact, Ev::overturn, Ev::lift, Ev::none, Ev::none};
         if (st_.mode == Mode::rock) {
             events[3] = Ev::friction;
@@ -347,6 +364,7 @@ public:
             if (horizon - (t + h) < 1e-12 * h) h = horizon - t;
             double err = 0.0;
             rhs.set_reference(x[2]);
+            if (!(t >= rhs.seg.tk && t < rhs.seg_end)) rhs.set_segment(t);
             for (;;) {
                 stepper.do_step(std::ref(rhs), x, dx, t, xn, dxn, h, xerr);
                 err = 0.0;
