@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "report/run.hpp"
@@ -27,7 +28,7 @@ int run(const std::vector<std::string>& args) {
                                           ? std::filesystem::path((*vm)["out"].as<std::string>())
                                           : std::filesystem::path("reports") / case_file.stem();
     const auto start = std::chrono::steady_clock::now();
-    const report::CaseRun r = report::run_case(case_file, pga, FREESTAND_COMMIT);
+    const report::CaseRun r = report::run_case(case_file, pga, build_commit);
     const double assess_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     report::write_report(out, r.rendered);

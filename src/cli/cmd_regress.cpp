@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "core/errors.hpp"
@@ -79,7 +80,7 @@ int run(const std::vector<std::string>& args) {
     const bool update = (*vm)["update"].as<bool>();
     bool all_ok = true;
     for (const fs::path& case_file : case_files((*vm)["cases"].as<std::string>())) {
-        const report::CaseRun run = report::run_case(case_file, std::nullopt, FREESTAND_COMMIT);
+        const report::CaseRun run = report::run_case(case_file, std::nullopt, build_commit);
         const fs::path dir = reports / case_file.stem();
         if (update) {
             report::write_report(dir, run.rendered);

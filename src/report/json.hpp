@@ -11,7 +11,7 @@ namespace freestand::report {
 /// Reproducibility stamp (STYLE.md: stamp outputs with version, commit and input hash).
 struct Stamp {
     std::string tool_version;  ///< FREESTAND_VERSION
-    std::string commit;        ///< passed in by the CLI (FREESTAND_COMMIT), "unknown" outside git
+    std::string commit;        ///< passed in by the CLI (build_commit), "unknown" outside git
     std::string input_sha256;  ///< of the case file's bytes
     std::string case_file;     ///< path as given
     std::uint64_t seed = 0;

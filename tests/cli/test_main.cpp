@@ -37,3 +37,19 @@ TEST_CASE("freestand --version prints the version", "[cli]") {
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.out, Catch::StartsWith("freestand " FREESTAND_VERSION));
 }
+
+TEST_CASE("report stamps carry a commit of this repository", "[cli]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_stamp_test";
+    const auto r = run_cli("assess cases/glovebox-steel-pads.toml --pga 0.1 --out '" + dir.string() + "'");
+    REQUIRE(r.exit_code == 0);
+    const std::string json = freestand::test::slurp(dir / "result.json");
+    std::filesystem::remove_all(dir);
+    const std::string key = "\"commit\": \"";
+    const auto at = json.find(key);
+    REQUIRE(at != std::string::npos);
+    const std::string commit = json.substr(at + key.size(), json.find('"', at + key.size()) - at - key.size());
+    if (commit == "unknown") return;  // built outside a git checkout
+    CHECK(commit.size() == 12);
+    // The stamped commit must name an object of the source repository.
+    CHECK(run_cli("--version >/dev/null && git cat-file -e " + commit + "^{commit}").exit_code == 0);
+}
