@@ -39,8 +39,9 @@ const std::vector<std::string> component_keys{"name",
                                               "allowable_slide_m",
                                               "required_overturn_fs",
                                               "assumptions"};
-const std::vector<std::string> site_keys{"design", "pga_g", "vertical_ratio", "sliding_damping",
-                                         "g_mps2"};
+const std::vector<std::string> site_keys{"design",          "target_h_file", "target_h10_file",
+                                         "target_v_file",   "pga_g",         "vertical_ratio",
+                                         "sliding_damping", "g_mps2"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
                                            "simulate"};
 
@@ -199,8 +200,58 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     return c;
 }
 
-Site read_site(TableReader& r, std::vector<std::string>& assumptions) {
+// Reads one target file named by key (path relative to the case's folder) and checks its
+// damping; any problem is reported at the case's key with the file's own message.
+std::optional<TargetFile> read_target(TableReader& r, const std::string& key,
+                                      double expected_damping,
+                                      const std::filesystem::path& case_dir) {
+    const auto given = r.string(key);
+    if (!given) return std::nullopt;
+    const std::filesystem::path p(*given);
+    TargetFile t;
+    t.given = *given;
+    try {
+        t.spectrum = spectra::read_spectrum_csv(p.is_absolute() ? p : case_dir / p);
+    } catch (const Error& e) {
+        r.fail(key, fmt::format("cannot use target file \"{}\": {}", *given, e.what()));
+    }
+    if (std::abs(t.spectrum.damping - expected_damping) > 1e-9) {
+        r.fail(key, fmt::format("target file \"{}\" has damping {}; expected {}", *given,
+                                t.spectrum.damping, expected_damping));
+    }
+    return t;
+}
+
+std::optional<UserTargets> read_targets(TableReader& r, const std::filesystem::path& case_dir) {
+    const bool any = r.has("target_h_file") || r.has("target_h10_file") || r.has("target_v_file");
+    if (!any) return std::nullopt;
+    if (r.has("design")) {
+        r.fail("design", "design and target files are not used together; give either design = "
+                         "\"rg1.60\" or target_h_file (with optional target_h10_file, "
+                         "target_v_file)");
+    }
+    if (!r.has("target_h_file")) {
+        r.fail("target_h_file",
+               "missing required key: target_h10_file / target_v_file need the 5% horizontal "
+               "target_h_file");
+    }
+    UserTargets u;
+    u.h5 = *read_target(r, "target_h_file", 0.05, case_dir);
+    u.h10 = read_target(r, "target_h10_file", 0.10, case_dir);
+    u.v = read_target(r, "target_v_file", 0.05, case_dir);
+    u.zpa_h_g = u.h5.spectrum.psa_g.back();
+    if (u.v && r.has("vertical_ratio")) {
+        r.fail("vertical_ratio", "vertical_ratio and target_v_file are not used together (the "
+                                 "vertical file sets the vertical/horizontal ratio)");
+    }
+    return u;
+}
+
+Site read_site(TableReader& r, std::vector<std::string>& assumptions,
+               const std::filesystem::path& case_dir) {
     Site s;
+    s.targets = read_targets(r, case_dir);
+    if (s.targets) s.design = "user target files";
     if (const auto design = r.string("design")) {
         if (*design != "rg1.60") {
             r.fail("design",
@@ -219,8 +270,12 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions) {
     s.pga_g = *pga;
     const auto ratio = r.number("vertical_ratio", Range{0.0, 1.5});
     s.vertical_ratio = ratio.value_or(2.0 / 3.0);
-    if (!ratio)
+    if (s.targets && s.targets->v) {
+        // The vertical file's rigid-limit PSA over the horizontal one's is the PGA ratio.
+        s.vertical_ratio = s.targets->v->spectrum.psa_g.back() / s.targets->zpa_h_g;
+    } else if (!ratio) {
         assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
+    }
     // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
     s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
@@ -308,7 +363,7 @@ Case parse_case(const std::string& text, const std::string& file_label) {
     TableReader rc(comp, file_label, "component");
     out.component = read_component(rc, out.assumptions);
     TableReader rs(site, file_label, "site");
-    out.site = read_site(rs, out.assumptions);
+    out.site = read_site(rs, out.assumptions, std::filesystem::path(file_label).parent_path());
     TableReader ro(subtable(root, "options", file_label), file_label, "options");
     out.options = read_options(ro, std::filesystem::path(file_label).parent_path());
     return out;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "block/block.hpp"
+#include "spectra/spectrum.hpp"
 
 namespace freestand::assess {
 
@@ -55,9 +56,27 @@ struct Component {
     block::Block block(Direction d) const;
 };
 
+/// A user target spectrum file ([site] target_*_file), read when the case is parsed.
+struct TargetFile {
+    std::string given;           ///< path as written in the case file
+    spectra::Spectrum spectrum;  ///< as read (PSA in g at the file's own scale)
+};
+
+/// User target files replacing the design spectrum. One horizontal target serves both
+/// directions (the history generator matches h1 and h2 to one target). Each file is scaled
+/// at a level by pga_g / zpa_h_g, zpa_h_g being the 5% horizontal file's rigid-limit PSA (at
+/// its highest frequency); the 10% and vertical files take the same factor.
+struct UserTargets {
+    TargetFile h5;                  ///< horizontal, 5% damped
+    std::optional<TargetFile> h10;  ///< horizontal, 10% damped
+    std::optional<TargetFile> v;    ///< vertical, 5% damped
+    double zpa_h_g = 1.0;           ///< PSA of h5 at its highest frequency, g
+};
+
 /// The site's design motion (issue 6, [site]).
 struct Site {
-    std::string design = "rg1.60";      ///< design spectrum name; only RG 1.60 is implemented
+    std::string design = "rg1.60";      ///< "rg1.60", or "user target files" when targets is set
+    std::optional<UserTargets> targets; ///< user target files instead of RG 1.60
     std::vector<double> pga_g;          ///< horizontal PGA levels, g, strictly increasing
     double vertical_ratio = 2.0 / 3.0;  ///< vertical PGA / horizontal PGA
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
+#include "assess/level.hpp"
 #include "spectra/design.hpp"
 
 namespace freestand::assess {
@@ -18,7 +19,25 @@ namespace {
 // Target spectra are tabulated over 0.05-100 Hz, covering the acceptance band 0.1-50 Hz.
 std::vector<double> target_frequencies() { return spectra::log_frequencies(0.05, 100.0, 100); }
 
+// User files at 1 g: the same factor 1 / zpa_h_g on every file; vertical = ratio x
+// horizontal unless a vertical file is given. No target PSD (defined for RG 1.60 only).
+motion::TargetSet user_unit_targets(const Site& site, const UserTargets& u) {
+    const auto f = target_frequencies();
+    const double factor = 1.0 / u.zpa_h_g;
+    std::optional<spectra::Spectrum> h10;
+    if (u.h10) h10 = scaled_target(u.h10->spectrum, factor, f);
+    motion::TargetSet t = motion::ratio_targets(fmt::format("target file {}, PGA 1 g", u.h5.given),
+                                                scaled_target(u.h5.spectrum, factor, f), h10,
+                                                site.vertical_ratio);
+    if (u.v) {
+        t.vertical.psa_5pct = scaled_target(u.v->spectrum, factor, f);
+        t.vertical.psa_10pct.reset();
+    }
+    return t;
+}
+
 motion::TargetSet unit_targets(const Site& site) {
+    if (site.targets) return user_unit_targets(site, *site.targets);
     const auto f = target_frequencies();
     motion::TargetSet t = motion::ratio_targets(
         fmt::format("RG 1.60 horizontal, vertical {:.4f} x horizontal, PGA 1 g",

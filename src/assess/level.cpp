@@ -167,7 +167,44 @@ Rocking closed_form_rocking(const Case& c, const BaseContact& base, const block:
 
 std::vector<double> design_frequencies() { return spectra::log_frequencies(0.05, 100.0, 100); }
 
+spectra::Spectrum scaled_target(const spectra::Spectrum& file, double factor,
+                                 const std::vector<double>& f_hz) {
+    spectra::Spectrum s;
+    s.damping = file.damping;
+    s.label = fmt::format("{} x {:.6g}", file.label, factor);
+    s.frequency_hz = f_hz;
+    for (double f : f_hz) s.psa_g.push_back(factor * file.psa_at(f));
+    return s;
+}
+
+namespace {
+// User files: the 5% (and 10% if given) horizontal at this level; other dampings through
+// rocking::DampedSpectra (log-damping interpolation between the two, EN 1998-1 eta scaling
+// outside them).
+LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga_g) {
+    const double factor = pga_g / u.zpa_h_g;
+    const std::vector<double> f = design_frequencies();
+    const spectra::Spectrum h5 = scaled_target(u.h5.spectrum, factor, f);
+    std::vector<spectra::Spectrum> vh{sliding::vector_horizontal({h5, h5}, 0.05)};
+    if (u.h10) {
+        const spectra::Spectrum h10 = scaled_target(u.h10->spectrum, factor, f);
+        vh.push_back(sliding::vector_horizontal({h10, h10}, 0.10));
+    }
+    rocking::DampedSpectra damped(std::move(vh));
+    const rocking::DampedDemand slide = damped.at(site.sliding_damping);
+    spectra::Spectrum sa_vh_slide;
+    sa_vh_slide.damping = site.sliding_damping;
+    sa_vh_slide.label = fmt::format("SA_VH from the target files at {:.3g} damping ({})",
+                                    site.sliding_damping, slide.note);
+    sa_vh_slide.frequency_hz = f;
+    for (double fi : f) sa_vh_slide.psa_g.push_back(slide.psa_g(fi));
+    return LevelDemand{pga_g, site.vertical_ratio * pga_g, h5, std::move(sa_vh_slide),
+                       std::move(damped), {}};
+}
+}  // namespace
+
 LevelDemand level_demand(const Site& site, double pga_g) {
+    if (site.targets) return user_level_demand(site, *site.targets, pga_g);
     std::vector<spectra::Spectrum> damped;
     damped.reserve(rg160_dampings.size());
     for (double d : rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));

@@ -30,6 +30,11 @@ struct LevelDemand {
 /// Builds the demand of a level from the site.
 LevelDemand level_demand(const Site& site, double pga_g);
 
+/// A target file's spectrum times factor, resampled on f_hz (Spectrum::psa_at: log-log inside,
+/// constant displacement below, rigid limit above).
+spectra::Spectrum scaled_target(const spectra::Spectrum& file, double factor,
+                                const std::vector<double>& f_hz);
+
 /// Frequencies the design spectra are tabulated on, Hz.
 std::vector<double> design_frequencies();
 

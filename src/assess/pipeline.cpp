@@ -52,11 +52,51 @@ Upgrade search_materials(const Case& c, const std::vector<LevelDemand>& demands,
     return up;
 }
 
+// Echo of the user target files (names, damping, scaling) and how the other dampings follow.
+std::vector<std::string> target_file_assumptions(const Site& site) {
+    const UserTargets& u = *site.targets;
+    std::vector<std::string> out;
+    out.push_back(fmt::format(
+        "Target files instead of a design spectrum: horizontal {} (damping {:.3g}), scaled at "
+        "each level by pga_g / {:.6g} g (its PSA at {:.6g} Hz, the rigid limit); both "
+        "horizontal directions receive it; the sliding and rocking demand is the vector SA_VH = "
+        "sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).",
+        u.h5.given, u.h5.spectrum.damping, u.zpa_h_g, u.h5.spectrum.frequency_hz.back()));
+    if (u.h10) {
+        out.push_back(fmt::format("10%-damped horizontal target: {} (damping {:.3g}), same scale "
+                                  "factor; other dampings interpolate on log damping between the "
+                                  "5% and 10% files (EN 1998-1 eta scaling outside them).",
+                                  u.h10->given, u.h10->spectrum.damping));
+    } else {
+        out.push_back(
+            "No 10%-damped target file: the demand at any other damping (the sliding method's "
+            "and the equivalent-linear rocking's) is the 5% file scaled by the EN 1998-1 factor "
+            "eta(xi) / eta(5%), eta = sqrt(10 / (5 + xi%)) >= 0.55 (meant for the amplified "
+            "range; rocking::DampedSpectra).");
+    }
+    if (u.v) {
+        out.push_back(fmt::format("Vertical target: {} (damping {:.3g}), same scale factor; "
+                                  "vertical/horizontal PGA ratio {:.4f} from the files' rigid "
+                                  "limits.",
+                                  u.v->given, u.v->spectrum.damping, site.vertical_ratio));
+    } else {
+        out.push_back(fmt::format("No vertical target file: vertical target = {:.4f} x the "
+                                  "horizontal target.",
+                                  site.vertical_ratio));
+    }
+    return out;
+}
+
 std::vector<std::string> pipeline_assumptions(const Case& c) {
     std::vector<std::string> out = c.assumptions;
-    out.push_back(
-        "Both horizontal directions receive the same RG 1.60 target; the sliding and "
-        "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).");
+    if (c.site.targets) {
+        for (const std::string& line : target_file_assumptions(c.site)) out.push_back(line);
+    } else {
+        out.push_back(
+            "Both horizontal directions receive the same RG 1.60 target; the sliding and "
+            "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md "
+            "s.4).");
+    }
     out.push_back(
         fmt::format("Vertical PGA = {:.4f} x horizontal PGA, taken downward in the static "
                     "checks (the worst case, METHODS.md s.5).",
@@ -88,10 +128,11 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
     if (bank.generated()) {
         const auto& sets = bank.sets();
         out.push_back(fmt::format(
-            "{} three-component histories ({}) matched to RG 1.60 at 1 g and scaled to each "
+            "{} three-component histories ({}) matched to {} at 1 g and scaled to each "
             "level; response spectra are linear, so each scaled record matches its scaled target "
             "with the same ratios.",
-            sets.size(), sets.front().method));
+            sets.size(), sets.front().method,
+            r.input.site.targets ? "the target files" : "RG 1.60"));
         for (std::size_t k = 0; k < sets.size(); ++k) {
             if (!sets[k].passed) {
                 out.push_back(
@@ -103,7 +144,6 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
     } else {
         out.push_back("No time histories were generated: the closed forms settled every level.");
     }
-    (void)r;
     return out;
 }
 

@@ -118,7 +118,8 @@ PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& de
     const auto demand = std::find_if(demands.begin(), demands.end(),
                                      [&](const LevelDemand& d) { return d.pga_g == shown.pga_g; });
     const spectra::Spectrum& target = demand->h5;
-    p.spectra.push_back(Series{fmt::format("RG 1.60 target, 5%, PGA {:.3f} g", shown.pga_g),
+    p.spectra.push_back(Series{fmt::format("{} target, 5%, PGA {:.3f} g",
+                                           r.input.site.targets ? "File" : "RG 1.60", shown.pga_g),
                                target.frequency_hz, target.psa_g});
     if (bank.generated()) {
         const std::vector<double> f = spectra::log_frequencies(0.1, 50.0, 40);
