@@ -39,9 +39,9 @@ const std::vector<std::string> component_keys{"name",
                                               "allowable_slide_m",
                                               "required_overturn_fs",
                                               "assumptions"};
-const std::vector<std::string> site_keys{"design",          "target_h_file", "target_h10_file",
-                                         "target_v_file",   "pga_g",         "vertical_ratio",
-                                         "sliding_damping", "g_mps2"};
+const std::vector<std::string> site_keys{
+    "design",        "target_h_file",   "target_h10_file", "target_y_file",   "target_y10_file",
+    "target_v_file", "pga_g",           "vertical_ratio",  "sliding_damping", "g_mps2"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
                                            "simulate"};
 
@@ -222,8 +222,24 @@ std::optional<TargetFile> read_target(TableReader& r, const std::string& key,
     return t;
 }
 
+// Direction y's files pair with x's: the 10% files come for both directions or for neither,
+// so SA_VH combines the two directions at the same dampings.
+void check_y_keys(TableReader& r) {
+    if (r.has("target_y10_file") && !r.has("target_y_file")) {
+        r.fail("target_y10_file", "needs target_y_file (the 5% target of direction y)");
+    }
+    if (r.has("target_y10_file") && !r.has("target_h10_file")) {
+        r.fail("target_y10_file", "needs target_h10_file (the 10% target of direction x)");
+    }
+    if (r.has("target_y_file") && r.has("target_h10_file") && !r.has("target_y10_file")) {
+        r.fail("target_y_file", "target_h10_file is given, so direction y needs its 10% file "
+                                "target_y10_file too");
+    }
+}
+
 std::optional<UserTargets> read_targets(TableReader& r, const std::filesystem::path& case_dir) {
-    const bool any = r.has("target_h_file") || r.has("target_h10_file") || r.has("target_v_file");
+    const bool any = r.has("target_h_file") || r.has("target_h10_file") ||
+                     r.has("target_y_file") || r.has("target_y10_file") || r.has("target_v_file");
     if (!any) return std::nullopt;
     if (r.has("design")) {
         r.fail("design", "design and target files are not used together; give either design = "
@@ -232,13 +248,16 @@ std::optional<UserTargets> read_targets(TableReader& r, const std::filesystem::p
     }
     if (!r.has("target_h_file")) {
         r.fail("target_h_file",
-               "missing required key: target_h10_file / target_v_file need the 5% horizontal "
-               "target_h_file");
+               "missing required key: target_h10_file / target_y_file / target_y10_file / "
+               "target_v_file need the 5% horizontal target_h_file");
     }
+    check_y_keys(r);
     UserTargets u;
     u.h5 = *read_target(r, "target_h_file", 0.05, case_dir);
     u.h10 = read_target(r, "target_h10_file", 0.10, case_dir);
     u.v = read_target(r, "target_v_file", 0.05, case_dir);
+    u.y5 = read_target(r, "target_y_file", 0.05, case_dir);
+    u.y10 = read_target(r, "target_y10_file", 0.10, case_dir);
     u.zpa_h_g = u.h5.spectrum.psa_g.back();
     if (u.v && r.has("vertical_ratio")) {
         r.fail("vertical_ratio", "vertical_ratio and target_v_file are not used together (the "

@@ -62,14 +62,17 @@ struct TargetFile {
     spectra::Spectrum spectrum;  ///< as read (PSA in g at the file's own scale)
 };
 
-/// User target files replacing the design spectrum. One horizontal target serves both
-/// directions (the history generator matches h1 and h2 to one target). Each file is scaled
-/// at a level by pga_g / zpa_h_g, zpa_h_g being the 5% horizontal file's rigid-limit PSA (at
-/// its highest frequency); the 10% and vertical files take the same factor.
+/// User target files replacing the design spectrum. target_h_file (h5, h10) is direction x, and
+/// y too unless target_y_file (y5, y10) is given; history h1 is matched to x's target, h2 to
+/// y's. Each file is scaled at a level by pga_g / zpa_h_g, zpa_h_g being the x 5% file's
+/// rigid-limit PSA (at its highest frequency); the 10%, y and vertical files take the same
+/// factor, so direction y's PGA is pga_g x (y file's rigid limit / zpa_h_g).
 struct UserTargets {
     TargetFile h5;                  ///< horizontal, 5% damped
     std::optional<TargetFile> h10;  ///< horizontal, 10% damped
     std::optional<TargetFile> v;    ///< vertical, 5% damped
+    std::optional<TargetFile> y5;   ///< horizontal of direction y, 5% damped
+    std::optional<TargetFile> y10;  ///< horizontal of direction y, 10% damped (with h10 and y5)
     double zpa_h_g = 1.0;           ///< PSA of h5 at its highest frequency, g
 };
 

@@ -20,7 +20,7 @@ namespace {
 std::vector<double> target_frequencies() { return spectra::log_frequencies(0.05, 100.0, 100); }
 
 // User files at 1 g: the same factor 1 / zpa_h_g on every file; vertical = ratio x
-// horizontal unless a vertical file is given. No target PSD (defined for RG 1.60 only).
+// horizontal unless a vertical file is given; h2 follows the y file when given. No target PSD (defined for RG 1.60 only).
 motion::TargetSet user_unit_targets(const Site& site, const UserTargets& u) {
     const auto f = target_frequencies();
     const double factor = 1.0 / u.zpa_h_g;
@@ -32,6 +32,15 @@ motion::TargetSet user_unit_targets(const Site& site, const UserTargets& u) {
     if (u.v) {
         t.vertical.psa_5pct = scaled_target(u.v->spectrum, factor, f);
         t.vertical.psa_10pct.reset();
+    }
+    if (u.y5) {
+        // h2 (direction y) is matched to y's file at the same factor as x's.
+        motion::Target y = t.horizontal;
+        y.psa_5pct = scaled_target(u.y5->spectrum, factor, f);
+        y.psa_10pct.reset();
+        if (u.y10) y.psa_10pct = scaled_target(u.y10->spectrum, factor, f);
+        t.horizontal_2 = std::move(y);
+        t.label += fmt::format("; direction y: target file {}", u.y5->given);
     }
     return t;
 }

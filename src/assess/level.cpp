@@ -44,7 +44,7 @@ spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
     return sliding::vector_horizontal({h, h}, damping);
 }
 
-FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk,
+FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Direction d,
                              const LevelDemand& dem) {
     FlexibleFlag out;
     const block::Edge e = blk.critical_edge();
@@ -60,8 +60,8 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk,
         in.rock_band_hi_hz = (*comp.free_rocking_band_hz)[1];
     }
     in.uplift_threshold_g = out.uplift_a_g;
-    in.pga_h_g = dem.pga_g;
-    const rocking::FlexibleScreen s = rocking::flexible_screen(dem.h5, in);
+    in.pga_h_g = dem.pga_of(d);
+    const rocking::FlexibleScreen s = rocking::flexible_screen(dem.h5_of(d), in);
     out.raised = s.flagged;
     out.band_lo_hz = s.band_lo_hz;
     out.band_hi_hz = s.band_hi_hz;
@@ -104,7 +104,7 @@ Sliding closed_form_sliding(const Case& c, const BaseContact& base, Direction d,
     in.mu_s = base.mu_s;
     in.av_g = dem.pga_v_g;
     in.pgd_m = out.pgd_m;
-    in.pga_h_g = dem.pga_g;
+    in.pga_h_g = dem.pga_of(d);
     const sliding::SlidingEstimate est = sliding::estimate_sliding(in, *cross.f_hz);
     out.f_es_hz = est.f_es_hz;
     out.slide_asce_m = est.slide_asce_m;
@@ -123,7 +123,7 @@ rocking::ElBlockResult equivalent_linear(const Case& c, const BaseContact& base,
     const bool cacheable = base.restitution == c.component.base.restitution;
     if (cacheable && cached) return *cached;
     rocking::ElOptions opt;
-    opt.pga_h_g = dem.pga_g;
+    opt.pga_h_g = dem.pga_of(d);
     opt.pga_v_g = dem.pga_v_g;
     opt.restitution = base.restitution;
     opt.fs_required = c.component.required_overturn_fs;
@@ -147,7 +147,7 @@ Rocking closed_form_rocking(const Case& c, const BaseContact& base, const block:
     out.restitution = base.restitution.value_or(blk.housner_restitution(e));
     out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
     out.ishiyama_v_mps = rocking::ishiyama_velocity_mps(blk, e);
-    const double A = dem.pga_g / (1.0 - dem.pga_v_g);
+    const double A = dem.pga_of(d) / (1.0 - dem.pga_v_g);
     if (mode == Mode::rock || mode == Mode::slide_rock) {
         const rocking::ElBlockResult el = equivalent_linear(c, base, blk, d, dem);
         const rocking::ElResult& g = el.governing();
@@ -185,10 +185,15 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
     const double factor = pga_g / u.zpa_h_g;
     const std::vector<double> f = design_frequencies();
     const spectra::Spectrum h5 = scaled_target(u.h5.spectrum, factor, f);
-    std::vector<spectra::Spectrum> vh{sliding::vector_horizontal({h5, h5}, 0.05)};
+    std::optional<spectra::Spectrum> y5;
+    if (u.y5) y5 = scaled_target(u.y5->spectrum, factor, f);
+    // SA_VH combines direction x's and y's targets (METHODS.md s.4; one file: {h, h}).
+    std::vector<spectra::Spectrum> vh{sliding::vector_horizontal({h5, y5 ? *y5 : h5}, 0.05)};
     if (u.h10) {
         const spectra::Spectrum h10 = scaled_target(u.h10->spectrum, factor, f);
-        vh.push_back(sliding::vector_horizontal({h10, h10}, 0.10));
+        const spectra::Spectrum y10 =
+            u.y10 ? scaled_target(u.y10->spectrum, factor, f) : h10;
+        vh.push_back(sliding::vector_horizontal({h10, y10}, 0.10));
     }
     rocking::DampedSpectra damped(std::move(vh));
     const rocking::DampedDemand slide = damped.at(site.sliding_damping);
@@ -198,8 +203,14 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
                                     site.sliding_damping, slide.note);
     sa_vh_slide.frequency_hz = f;
     for (double fi : f) sa_vh_slide.psa_g.push_back(slide.psa_g(fi));
-    return LevelDemand{pga_g, site.vertical_ratio * pga_g, h5, std::move(sa_vh_slide),
-                       std::move(damped), {}};
+    LevelDemand out{pga_g, site.vertical_ratio * pga_g, h5, std::move(sa_vh_slide),
+                    std::move(damped), {}, std::nullopt, std::nullopt};
+    if (y5) {
+        out.h5_y = std::move(y5);
+        // Same factor as x: y's PGA is its file's rigid limit at that scale (equal files: pga_g).
+        out.pga_y_g = pga_g * (u.y5->spectrum.psa_g.back() / u.zpa_h_g);
+    }
+    return out;
 }
 }  // namespace
 
@@ -213,7 +224,9 @@ LevelDemand level_demand(const Site& site, double pga_g) {
                        spectra::rg160(pga_g, 0.05, false, design_frequencies()),
                        vector_horizontal_target(pga_g, site.sliding_damping),
                        rocking::DampedSpectra(std::move(damped)),
-                       {}};
+                       {},
+                       std::nullopt,
+                       std::nullopt};
 }
 
 dynamics::BlockModel block_model(const Component& comp, const BaseContact& base, Direction d) {
@@ -280,14 +293,14 @@ LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
     r.direction = d;
     const block::Block blk = c.component.block(d);
     const sliding::PeakInitiation peak =
-        sliding::classify_peak(blk, base.mu_s, demand.pga_g, demand.pga_v_g);
+        sliding::classify_peak(blk, base.mu_s, demand.pga_of(d), demand.pga_v_g);
     const sliding::Initiation& gi = peak.governing();
     r.initiation.mode = to_mode(gi.mode);
     r.initiation.a_ratio = gi.A;
     r.initiation.mu_s = base.mu_s;
     r.initiation.tan_alpha = gi.tan_alpha;
     r.initiation.mu_crit = gi.mu_crit;
-    r.flexible = screen_flexible(c.component, blk, demand);
+    r.flexible = screen_flexible(c.component, blk, d, demand);
     r.sliding = closed_form_sliding(c, base, d, r.initiation.mode, demand, bank);
     r.rocking = closed_form_rocking(c, base, blk, d, r.initiation.mode, base.mu_s, demand);
     const SimulationNeed need =

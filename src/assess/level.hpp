@@ -15,16 +15,28 @@
 
 namespace freestand::assess {
 
-/// The design demand at one PGA level (both horizontal directions share the RG 1.60 target).
+/// The design demand at one PGA level. Both horizontal directions share the target unless the
+/// site gives direction y its own file (h5_y, pga_y_g); SA_VH combines the two directions.
 struct LevelDemand {
-    double pga_g = 0.0;
+    double pga_g = 0.0;                   ///< the level's PGA = direction x's, g
     double pga_v_g = 0.0;
-    spectra::Spectrum h5;                 ///< 5%-damped horizontal target
+    spectra::Spectrum h5;                 ///< 5%-damped horizontal target of direction x
     spectra::Spectrum sa_vh_slide;        ///< SA_VH at the sliding damping (METHODS.md s.4)
     rocking::DampedSpectra sa_vh_damped;  ///< SA_VH at any damping (METHODS.md s.5a)
     /// Equivalent-linear rocking per direction (x, y), computed on first need. It does not
     /// depend on the friction, so the material trials reuse it (they keep the restitution).
     mutable std::array<std::optional<rocking::ElBlockResult>, 2> el_cache;
+    std::optional<spectra::Spectrum> h5_y;  ///< direction y's own 5% target (target_y_file)
+    std::optional<double> pga_y_g;          ///< direction y's PGA from its file, g
+
+    /// 5%-damped horizontal target of direction d.
+    const spectra::Spectrum& h5_of(Direction d) const {
+        return d == Direction::y && h5_y ? *h5_y : h5;
+    }
+    /// Horizontal PGA of direction d, g.
+    double pga_of(Direction d) const {
+        return d == Direction::y && pga_y_g ? *pga_y_g : pga_g;
+    }
 };
 
 /// Builds the demand of a level from the site.

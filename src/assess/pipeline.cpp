@@ -56,13 +56,33 @@ Upgrade search_materials(const Case& c, const std::vector<LevelDemand>& demands,
 std::vector<std::string> target_file_assumptions(const Site& site) {
     const UserTargets& u = *site.targets;
     std::vector<std::string> out;
-    out.push_back(fmt::format(
-        "Target files instead of a design spectrum: horizontal {} (damping {:.3g}), scaled at "
-        "each level by pga_g / {:.6g} g (its PSA at {:.6g} Hz, the rigid limit); both "
-        "horizontal directions receive it; the sliding and rocking demand is the vector SA_VH = "
-        "sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).",
-        u.h5.given, u.h5.spectrum.damping, u.zpa_h_g, u.h5.spectrum.frequency_hz.back()));
-    if (u.h10) {
+    if (u.y5) {
+        out.push_back(fmt::format(
+            "Target files instead of a design spectrum: direction x {} (damping {:.3g}), "
+            "direction y {} (damping {:.3g}); every file is scaled at each level by pga_g / "
+            "{:.6g} g (direction x's PSA at {:.6g} Hz, the rigid limit), so direction y's PGA is "
+            "{:.6g} x pga_g; history h1 is matched to x's target and h2 to y's; each direction's "
+            "initiation and flexible-body screens use its own target; the sliding and rocking "
+            "demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 the larger of the "
+            "x and y targets (METHODS.md s.4).",
+            u.h5.given, u.h5.spectrum.damping, u.y5->given, u.y5->spectrum.damping, u.zpa_h_g,
+            u.h5.spectrum.frequency_hz.back(), u.y5->spectrum.psa_g.back() / u.zpa_h_g));
+    } else {
+        out.push_back(fmt::format(
+            "Target files instead of a design spectrum: horizontal {} (damping {:.3g}), scaled "
+            "at each level by pga_g / {:.6g} g (its PSA at {:.6g} Hz, the rigid limit); both "
+            "horizontal directions receive it; the sliding and rocking demand is the vector "
+            "SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).",
+            u.h5.given, u.h5.spectrum.damping, u.zpa_h_g, u.h5.spectrum.frequency_hz.back()));
+    }
+    if (u.h10 && u.y10) {
+        out.push_back(fmt::format("10%-damped horizontal targets: direction x {} (damping "
+                                  "{:.3g}), direction y {} (damping {:.3g}), same scale factor; "
+                                  "other dampings interpolate on log damping between the 5% and "
+                                  "10% files (EN 1998-1 eta scaling outside them).",
+                                  u.h10->given, u.h10->spectrum.damping, u.y10->given,
+                                  u.y10->spectrum.damping));
+    } else if (u.h10) {
         out.push_back(fmt::format("10%-damped horizontal target: {} (damping {:.3g}), same scale "
                                   "factor; other dampings interpolate on log damping between the "
                                   "5% and 10% files (EN 1998-1 eta scaling outside them).",

@@ -117,9 +117,11 @@ PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& de
     // The demand of the shown level (levels are built from the same PGA list, so equal exactly).
     const auto demand = std::find_if(demands.begin(), demands.end(),
                                      [&](const LevelDemand& d) { return d.pga_g == shown.pga_g; });
-    const spectra::Spectrum& target = demand->h5;
-    p.spectra.push_back(Series{fmt::format("{} target, 5%, PGA {:.3f} g",
-                                           r.input.site.targets ? "File" : "RG 1.60", shown.pga_g),
+    const spectra::Spectrum& target = demand->h5_of(shown.direction);
+    const bool own_y = demand->h5_y && shown.direction == Direction::y;
+    p.spectra.push_back(Series{fmt::format("{} target{}, 5%, PGA {:.3f} g",
+                                           r.input.site.targets ? "File" : "RG 1.60",
+                                           own_y ? " of direction y" : "", shown.pga_g),
                                target.frequency_hz, target.psa_g});
     if (bank.generated()) {
         const std::vector<double> f = spectra::log_frequencies(0.1, 50.0, 40);

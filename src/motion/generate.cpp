@@ -21,7 +21,9 @@ double seconds_since(Clock::time_point start) {
 }
 
 const Target& target_for(const TargetSet& targets, const std::string& component) {
-    return component == "v" ? targets.vertical : targets.horizontal;
+    if (component == "v") return targets.vertical;
+    if (component == "h2" && targets.horizontal_2) return *targets.horizontal_2;
+    return targets.horizontal;
 }
 
 double correlation(const core::Record& a, const core::Record& b) {

@@ -26,6 +26,9 @@ struct TargetSet {
     std::string label;  ///< e.g. "RG 1.60, PGA 0.3 g"
     Target horizontal;
     Target vertical;
+    /// Target of component "h2" when the two horizontal directions differ; unset: h2 matches
+    /// horizontal like h1.
+    std::optional<Target> horizontal_2;
 };
 
 /// RG 1.60 horizontal and vertical (5% and 10%), with the RG 1.60 target PSD on horizontals.

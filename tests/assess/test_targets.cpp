@@ -121,7 +121,8 @@ TEST_CASE("target file errors name file, line and key", "[assess][targets]") {
     SECTION("10% or vertical file without the 5% horizontal") {
         CHECK(error_of("target_v_file = \"rg160-v-5pct-1g.csv\"\n") ==
               label + ":9: site.target_h_file: missing required key: target_h10_file / "
-                      "target_v_file need the 5% horizontal target_h_file");
+                      "target_y_file / target_y10_file / target_v_file need the 5% horizontal "
+                      "target_h_file");
     }
     SECTION("vertical ratio and vertical file together") {
         CHECK(error_of("target_h_file = \"rg160-h-5pct-1g.csv\"\n"
@@ -132,7 +133,8 @@ TEST_CASE("target file errors name file, line and key", "[assess][targets]") {
     SECTION("unknown key lists the target keys") {
         const std::string e = error_of("target_x_file = \"rg160-h-5pct-1g.csv\"\n");
         CHECK(e.rfind(label + ":11: site.target_x_file: unknown key; allowed keys: design, "
-                              "target_h_file, target_h10_file, target_v_file, ",
+                              "target_h_file, target_h10_file, target_y_file, "
+                              "target_y10_file, target_v_file, ",
                       0) == 0);
     }
 }
