@@ -34,16 +34,9 @@ Geometry make_geometry(const BlockModel& model) {
         g.k_rock[k] = g.M * g.R[k] / g.IO[k];
     }
     for (std::size_t i = 0; i < 2; ++i) {
-        if (model.restitution) {
-            g.r_onto[i] = *model.restitution;
-        } else if (blk.symmetric()) {
-            g.r_onto[i] = blk.housner_restitution(edges[i]);
-        } else {
-            // Angular momentum about the striking edge i, just before (rotation about the other
-            // edge at theta = 0) and after: H = omega (I_c + M (h^2 - b_L b_R)) = I_O,i omega+.
-            // Equals Housner's 1 - 2 M R^2 sin^2(alpha) / I_O when b_L = b_R.
-            g.r_onto[i] = (g.Ic + g.M * (g.h * g.h - g.b[0] * g.b[1])) / g.IO[i];
-        }
+        // Default: angular momentum about the striking edge (block::Block::housner_restitution),
+        // exact for asymmetric blocks too.
+        g.r_onto[i] = model.restitution ? *model.restitution : blk.housner_restitution(edges[i]);
         // A squat block (alpha > ~0.96 rad when uniform) cannot rebound: the impulse stops it.
         g.r_onto[i] = std::max(0.0, g.r_onto[i]);
     }
