@@ -1,10 +1,9 @@
 // Event-driven integrator: closed forms for rest, slide and flight on each piecewise-linear
-// input segment; Dormand-Prince 5(4) (Boost.Odeint) with its dense output for rock and
-// slide-rock; every switch located by root finding (TOMS 748) on the closed form or the dense
-// output, never by the next sample.
+// input segment; for rock and slide-rock one Taylor polynomial per segment (taylor.hpp), of the
+// degree the tolerance needs, which is also the dense output; every switch located by root
+// finding (Newton or TOMS 748) on the closed form or the polynomial, never by the next sample.
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
-#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -13,13 +12,13 @@
 
 #include "core/errors.hpp"
 #include "dynamics/integrators.hpp"
+#include "dynamics/taylor.hpp"
 
 namespace freestand::dynamics::detail {
 
 namespace {
 
 using Vec = std::array<double, 4>;  // u, u', theta, theta'
-using Stepper = boost::numeric::odeint::runge_kutta_dopri5<Vec>;
 constexpr double half_pi = std::numbers::pi / 2.0;
 constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
 constexpr std::size_t burst_fail = 100000;    // ... before giving up
@@ -32,76 +31,6 @@ constexpr double max_step_s = 0.02;
 struct Segment {
     double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
     Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
-};
-
-// Rock / slide-rock right-hand side; keeps the accelerations of its last call (the FSAL stage,
-// at the end of an accepted step). The base is read on whichever segment holds t, so a step may
-// cross sample times.
-struct Rhs {
-    const Geometry* g = nullptr;
-    const BaseMotion* bm = nullptr;
-    Mode mode = Mode::rock;
-    int s = 1, sigma = 1;
-    mutable Accel last;
-    // sin and cos of alpha - theta at the step start (theta_ref): the stages and the dense
-    // output of a step differ from it by little, so angle differences replace most sincos calls.
-    double th_ref = 0.0, sin_ref = 0.0, cos_ref = 1.0;
-    bool has_ref = false;
-
-    void set_reference(double th) {
-        const double a = g->alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
-        th_ref = th;
-        sin_ref = std::sin(a);
-        cos_ref = std::cos(a);
-        has_ref = true;
-    }
-    // Linear base of the segment [seg.tk, seg_end] of the step start: a step that stays inside
-    // it (the usual case: steps end at samples) reads no samples.
-    Segment seg;
-    double seg_end = -1.0;
-    void set_segment(double t) {
-        const std::size_t k = bm->segment_of(t);
-        bm->segment(k, seg.ax0, seg.ax1, seg.G0, seg.G1);
-        seg.tk = bm->t_k(k);
-        seg_end = bm->t_k(k + 1);
-    }
-    Base base(double t) const {
-        return t >= seg.tk && t <= seg_end ? seg.at(t) : bm->at(bm->segment_of(t), t);
-    }
-    Accel accel(const Vec& x, double t) const {
-        double sn, c;
-        sin_cos(x[2], sn, c);
-        return mode == Mode::rock ? rock_accel_sc(*g, s, sn, c, x[3], base(t))
-                                  : slide_rock_accel_sc(*g, s, sigma, sn, c, x[3], base(t));
-    }
-    void operator()(const Vec& x, Vec& dx, double t) const {
-        last = accel(x, t);
-        const bool slip = mode == Mode::slide_rock;
-        dx = {slip ? x[1] : 0.0, slip ? last.u_dd : 0.0, x[3], last.th_dd};
-    }
-
-private:
-    // sin and cos of alpha - th. For |d| = |th - th_ref| <= 0.05 the Taylor series of sin d
-    // (to d^9) and cos d (to d^10) leave a remainder below d^11/11! = 1.2e-22, far under one
-    // ulp, and sin(a - d) = sin a cos d - cos a sin d (likewise cos) is exact to round-off.
-    void sin_cos(double th, double& sn, double& c) const {
-        const double d = th - th_ref;
-        if (!has_ref || std::abs(d) > 0.05) {
-            const double a = g->alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
-            sn = std::sin(a);
-            c = std::cos(a);
-            return;
-        }
-        // Horner form with reciprocal factorials (multiplications: no divisions in the hot path).
-        const double d2 = d * d;
-        const double sd =
-            d * (1.0 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))));
-        const double cd =
-            1.0 + d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 +
-                                                                          d2 * (-1.0 / 3628800)))));
-        sn = sin_ref * cd - cos_ref * sd;
-        c = cos_ref * cd + sin_ref * sd;
-    }
 };
 
 enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
@@ -118,10 +47,10 @@ double toms748_root(F f, double a, double b, double fa, double fb, int bits = 50
 
 // Root of a smooth f in a sign-changing bracket [a, b] by Newton's method with the derivative
 // g(t) = {f, f'} gives (the dense output carries theta and theta'), safeguarded by bisection
-// when a step leaves the bracket; stops at a step below 4 ulp. 3-4 evaluations where TOMS 748
-// needs ~10 (it cannot use the derivative).
+// when a step leaves the bracket; stops at a step below 4 ulp, or below x_tol_s if given. 3-4
+// evaluations where TOMS 748 needs ~10 (it cannot use the derivative).
 template <class G>
-double newton_root(G g, double a, double b, double fa, double fb) {
+double newton_root(G g, double a, double b, double fa, double fb, double x_tol_s = 0.0) {
     if (fa == 0.0) return a;
     if (fb == 0.0) return b;
     const double ulp4 = 4.0 * std::numeric_limits<double>::epsilon();
@@ -136,7 +65,7 @@ double newton_root(G g, double a, double b, double fa, double fb) {
             b = x;
         }
         double xn = dfx != 0.0 ? x - fx / dfx : 0.5 * (a + b);
-        if (std::abs(xn - x) <= ulp4 * std::abs(x)) return std::clamp(xn, a, b);
+        if (std::abs(xn - x) <= std::max(ulp4 * std::abs(x), x_tol_s)) return std::clamp(xn, a, b);
         if (!(xn > a && xn < b)) xn = 0.5 * (a + b);
         if (b - a <= ulp4 * std::abs(x)) return xn;
         x = xn;
@@ -321,8 +250,10 @@ private:
 
 public:
     /// Rock / slide-rock from t (inside segment k) until an event or `horizon` (a sample time).
-    /// Steps may cross sample times before the horizon (the caller allows it where the input
-    /// has no kinks); samples passed are recorded from the dense output. next_sample() is the
+    /// Each step is one Taylor polynomial (taylor.hpp) on one linear piece of the input: while
+    /// the excitation lasts steps end at every sample, where the input's slope jumps, and the
+    /// sample is recorded from the step's end; after it the base is at rest and steps run up to
+    /// max_step_s, the samples inside them evaluated on the polynomial. next_sample() is the
     /// first sample not recorded (the caller records the one at the time reached if it is a
     /// sample time).
     double advance_contact(std::size_t k, double t, double horizon) {
@@ -333,12 +264,6 @@ public:
             rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
             return t;
         }
-        Rhs rhs;
-        rhs.g = &g_;
-        rhs.bm = &bm_;
-        rhs.mode = st_.mode;
-        rhs.s = st_.s;
-        rhs.sigma = st_.sigma;
         std::array<Ev, 5> events = {Ev::impact, Ev::overturn, Ev::lift, Ev::none, Ev::none};
         if (st_.mode == Mode::rock) {
             events[3] = Ev::friction;
@@ -346,140 +271,169 @@ public:
         } else {
             events[3] = Ev::stop;
         }
-        Vec x = {st_.u, st_.v, st_.th, st_.om}, dx{}, xn{}, dxn{}, xerr{};
-        Accel acc0;
-        // First same-as-last: the input is continuous at sample times, so the derivative at the
-        // end of the previous phase is the one at the start of this one.
-        if (fsal_ok_ && fsal_t_ == t && fsal_x_ == x) {
-            dx = fsal_dx_;
-            acc0 = fsal_acc_;
-        } else {
-            rhs(x, dx, t);
-            acc0 = rhs.last;
-        }
-        fsal_ok_ = false;
-        Stepper& stepper = stepper_;
+        ContactStart x0;
+        x0.mode = st_.mode;
+        x0.s = st_.s;
+        x0.sigma = st_.sigma;
+        const double alpha = g_.alpha[ia];
+        double phi0 = alpha - st_.th;
+        x0.sn = st_.th == 0.0 ? g_.sin_alpha[ia] : std::sin(phi0);  // after an impact: theta = 0
+        x0.c = st_.th == 0.0 ? g_.cos_alpha[ia] : std::cos(phi0);
+        std::size_t kseg = k;
+        enter_segment(kseg);
+        Accel acc0 = contact_accel(x0, x0.sn, x0.c, st_.om, seg_.at(t));
+        ContactSeries S;
         while (t < horizon) {
-            double h = std::min({h_, max_step_s, horizon - t});
-            if (horizon - (t + h) < 1e-12 * h) h = horizon - t;
-            double err = 0.0;
-            rhs.set_reference(x[2]);
-            if (!(t >= rhs.seg.tk && t < rhs.seg_end)) rhs.set_segment(t);
-            for (;;) {
-                stepper.do_step(std::ref(rhs), x, dx, t, xn, dxn, h, xerr);
-                err = 0.0;
-                for (std::size_t i = 0; i < 4; ++i) {
-                    const double sc = o_.abs_tol + o_.rel_tol * std::max(std::abs(x[i]), std::abs(xn[i]));
-                    err = std::max(err, std::abs(xerr[i]) / sc);
-                }
-                if (err <= 1.0) break;
-                h *= std::max(0.2, 0.9 * std::pow(err, -0.2));
-                if (h < 1e-14)
-                    throw NumericalError(fmt::format(
-                        "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
-                        mode_name(st_.mode)));
-            }
+            x0.u = st_.u;
+            x0.v = st_.v;
+            x0.th = st_.th;
+            x0.om = st_.om;
+            const Base b0 = seg_.at(t);
+            x0.ax0 = b0.ax;
+            x0.G0 = b0.G;
+            x0.ax1 = seg_.ax1;
+            x0.G1 = seg_.G1;
+            const double stop_at = tail ? horizon : std::min(tb_, horizon);
+            double h = std::min({stop_at - t, max_step_s, h_cap_});
+            const double h_full = h;
+            h = x0.mode == Mode::rock
+                    ? taylor_rock_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_,
+                                       rock_lower_streak_)
+                    : taylor_contact_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S);
+            if (h < 1e-14)
+                throw NumericalError(fmt::format(
+                    "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
+                    mode_name(st_.mode)));
+            h_cap_ = h < h_full ? 1.25 * h : std::min(2.0 * h_cap_, 1.0);
             rec_.step();
-            const double t1 = (h == horizon - t) ? horizon : t + h;
-            const Accel acc1 = rhs.last;
-            // Dense output of the accepted step, for root finding and the samples inside it.
+            const double t1 = (h == stop_at - t) ? stop_at : t + h;
+            const Vec x = {x0.u, x0.v, x0.th, x0.om};
+            const Vec xn = {S.slip(h), S.slip_velocity(h), S.th_end, S.om_end};
+            double sn1, c1;
+            sin_cos_shift(x0.sn, x0.c, phi0, xn[2] - x0.th, sn1, c1);
+            const Accel acc1 = contact_accel(x0, sn1, c1, xn[3], seg_.at(t1));
             auto dense = [&](double tt) {
-                Vec y;
-                stepper.calc_state(tt, y, x, dx, t, xn, dxn, t1);
-                return y;
+                const double tau = tt - t;
+                return Vec{S.slip(tau), S.slip_velocity(tau), S.theta(tau), S.omega(tau)};
+            };
+            auto accel_on_step = [&](double tt, const Vec& y) {
+                double sn, c;
+                sin_cos_shift(x0.sn, x0.c, phi0, y[2] - x0.th, sn, c);
+                return contact_accel(x0, sn, c, y[3], seg_.at(tt));
             };
             Ev first = Ev::none;
             double t_ev = t1;
+            // The event functions of `events` at the step end, written out: on a routine step
+            // none is negative and the loop below is skipped.
+            const bool flagged =
+                !theta_stays_positive(S, h) || xn[2] > half_pi || acc1.N < 0.0 ||
+                (st_.mode == Mode::rock ? g_.mu_s * acc1.N < std::abs(acc1.F)
+                                        : static_cast<double>(st_.sigma) * xn[1] < 0.0) ||
+                (events[4] == Ev::past_alpha && xn[2] > alpha);
             for (Ev e : events) {
+                if (!flagged) break;
                 if (e == Ev::none) continue;
-                const double v1 = event_value(e, xn, acc1);
-                if (!(v1 < 0.0)) continue;
-                const double v0 = event_value(e, x, acc0);
-                // Only the force events need the accelerations (and their trigonometry).
-                const bool force = e == Ev::friction || e == Ev::lift;
-                auto f = [&](double tt) {
-                    const Vec y = dense(tt);
-                    return event_value(e, y, force ? rhs.accel(y, tt) : Accel{});
-                };
-                double ta = t, fa = v0;
-                if (v0 == 0.0) {
-                    // Starting on the boundary: look for the excursion inside the step.
-                    for (int j = 1; j < 8; ++j) {
-                        const double tm = t + (t1 - t) * j / 8.0;
-                        const double fm = f(tm);
-                        if (fm > 0.0) { ta = tm; fa = fm; break; }
-                        if (fm < 0.0) break;
+                double te;
+                if (e == Ev::impact) {
+                    auto theta_at = [&](double tt) { return S.theta_omega(tt - t); };
+                    if (xn[2] < 0.0 && x[2] > 0.0) {
+                        // The usual impact: a sign change over the step, its root the first
+                        // one when theta is monotone or concave up to it.
+                        te = newton_root(theta_at, t, t1, x[2], xn[2]);
+                        if (theta_monotone_or_concave(S, te - t)) {
+                            if (te < t_ev || first == Ev::none) {
+                                t_ev = te;
+                                first = e;
+                            }
+                            continue;
+                        }
                     }
+                    // theta may dip below 0 and come back within the step: search the polynomial.
+                    const ZeroBracket z = theta_zero_bracket(S, h);
+                    if (!z.found) continue;
+                    te = z.theta_a == 0.0 && z.a == 0.0
+                             ? locate_event(e, t, t + z.b, 0.0, z.theta_b, dense, accel_on_step, S)
+                             : newton_root(theta_at, t + z.a, t + z.b, z.theta_a, z.theta_b);
+                } else {
+                    const double v1 = event_value(e, xn, acc1);
+                    if (!(v1 < 0.0)) continue;
+                    te = locate_event(e, t, t1, event_value(e, x, acc0), v1, dense, accel_on_step, S);
                 }
-                // Angle events: theta' from the same dense evaluation is the slope for Newton.
-                const double slope = e == Ev::impact ? 1.0 : -1.0;
-                auto fd = [&](double tt) {
-                    const Vec y = dense(tt);
-                    return std::pair<double, double>{event_value(e, y, Accel{}), slope * y[3]};
-                };
-                const bool angle = e == Ev::impact || e == Ev::overturn || e == Ev::past_alpha;
-                const double te = fa < 0.0 ? t
-                                  : angle  ? newton_root(fd, ta, t1, fa, v1)
-                                           : toms748_root(f, ta, t1, fa, v1);
                 if (te < t_ev || first == Ev::none) {
                     t_ev = te;
                     first = e;
                 }
             }
-            // Peak rotation between steps (theta' changes sign from + to -).
+            // Peak rotation inside the step (theta' changes sign from + to -): Newton on theta',
+            // with theta'' from the same polynomial.
             if (x[3] > 0.0 && xn[3] <= 0.0) {
-                auto w = [&](double tt) { return dense(tt)[3]; };
-                // theta is stationary at the peak: an error dt in its time changes theta by
-                // theta'' dt^2 / 2, so 26 bits (dt ~ 1e-8 t) leave theta exact to ~1e-14.
-                const double tp = toms748_root(w, t, t1, x[3], xn[3], 26);
+                auto w = [&](double tt) {
+                    return std::pair<double, double>{S.omega(tt - t), S.theta_dd(tt - t)};
+                };
+                // theta is stationary there: an error dt in the time moves it by theta'' dt^2 / 2,
+                // ~1e-16 rad for dt = 1e-6 of the step.
+                const double tp = newton_root(w, t, t1, x[3], xn[3], 1e-6 * (t1 - t));
                 if (first == Ev::none || tp <= t_ev) {
                     BlockState peak = st_;
-                    peak.th = dense(tp)[2];
+                    peak.th = S.theta(tp - t);
                     rec_.observe(peak);
                 }
             }
-            record_samples(dense, first == Ev::none ? t1 : t_ev);
+            // Steps cross sample times only after the excitation.
+            if (tail) record_samples(dense, first == Ev::none ? t1 : t_ev);
             if (first != Ev::none) {
                 const Vec y = t_ev == t1 ? xn : dense(t_ev);
                 rec_.time_in(st_.mode, t_ev - t);
                 set_contact(y);
                 rec_.observe(st_);
-                h_ = std::max(h, 1e-6);
-                enter_segment(next_sample_ - 1);
                 handle_contact_event(first, t_ev);
                 return t_ev;
             }
             rec_.time_in(st_.mode, t1 - t);
-            x = xn;
-            dx = dxn;
-            acc0 = acc1;
-            t = t1;
-            set_contact(x);
+            set_contact(xn);
             rec_.observe(st_);
-            // 0.9 err^-0.2 >= 5 (the cap) for err <= 0.18^5 = 1.9e-4, the usual case when the
-            // samples limit the step: no pow then.
-            const double grow = err > 1.8e-4 ? 0.9 * std::pow(err, -0.2) : 5.0;
-            // A step cut short to land on the horizon says little about the step the error
-            // allows: keep the larger proposal then.
-            const double proposal = h * std::clamp(grow, 0.2, 5.0);
-            h_ = (t1 == horizon && h < h_) ? std::max(h_, proposal) : proposal;
+            t = t1;
+            x0.sn = sn1;
+            x0.c = c1;
+            phi0 = alpha - xn[2];
+            acc0 = acc1;
+            known_ = {acc1, sn1, c1};
+            if (t == tb_ && t < horizon) {
+                // A sample time inside the run: record it from the step's end.
+                rec_.sample_contact(t, st_, bm_.sample(next_sample_), known_);
+                ++next_sample_;
+                enter_segment(++kseg);
+            }
         }
-        fsal_ok_ = true;
-        fsal_t_ = horizon;
-        fsal_x_ = x;
-        fsal_dx_ = dx;
-        fsal_acc_ = acc0;
-        fsal_mode_ = st_.mode;
+        known_ok_ = true;
+        known_t_ = horizon;
+        known_x_ = {st_.u, st_.v, st_.th, st_.om};
+        known_mode_ = st_.mode;
         return horizon;
     }
 
-    /// Accelerations of the current contact state if the integrator ended a step at t (the FSAL
-    /// stage), else null.
-    const Accel* accel_at(double t) const {
+    /// Flat sliding from t (inside segment k) until an event or `horizon` (a sample time), one
+    /// closed-form piece per segment, recording the samples passed; next_sample() as for
+    /// advance_contact.
+    double advance_slide_run(std::size_t k, double t, double horizon) {
+        next_sample_ = k + 1;
+        enter_segment(k);
+        for (;;) {
+            const double te = advance_slide(t);
+            if (st_.mode != Mode::slide || te < tb_ || te >= horizon) return te;
+            rec_.sample_slide(te, st_, bm_.sample(next_sample_));
+            enter_segment(next_sample_++);
+            t = te;
+        }
+    }
+
+    /// Accelerations (and trigonometry) of the current contact state if a contact run ended at
+    /// t, else null.
+    const Known* known_at(double t) const {
         const bool contact = st_.mode == Mode::rock || st_.mode == Mode::slide_rock;
         const Vec x = {st_.u, st_.v, st_.th, st_.om};
-        return contact && fsal_ok_ && fsal_mode_ == st_.mode && fsal_t_ == t && fsal_x_ == x
-                   ? &fsal_acc_
+        return contact && known_ok_ && known_mode_ == st_.mode && known_t_ == t && known_x_ == x
+                   ? &known_
                    : nullptr;
     }
 
@@ -487,6 +441,52 @@ public:
     std::size_t next_sample() const { return next_sample_; }
 
 private:
+    Accel contact_accel(const ContactStart& x0, double sn, double c, double om, Base base) const {
+        return x0.mode == Mode::rock ? rock_accel_sc(g_, x0.s, sn, c, om, base)
+                                     : slide_rock_accel_sc(g_, x0.s, x0.sigma, sn, c, om, base);
+    }
+
+    // Time of the event e in [t, t1] where it goes from v0 to v1 < 0. Angle events and the
+    // slip stop use Newton on the polynomial (theta' or u'' is the slope); the force events,
+    // TOMS 748 on the forces the polynomial's state implies.
+    template <class Dense, class AccelOn>
+    double locate_event(Ev e, double t, double t1, double v0, double v1, const Dense& dense,
+                        const AccelOn& accel_on, const ContactSeries& S) const {
+        const bool force = e == Ev::friction || e == Ev::lift;
+        auto f = [&](double tt) {
+            const Vec y = dense(tt);
+            return event_value(e, y, force ? accel_on(tt, y) : Accel{});
+        };
+        double ta = t, fa = v0;
+        if (v0 == 0.0) {
+            // Starting on the boundary: look for the excursion inside the step.
+            for (int j = 1; j < 8; ++j) {
+                const double tm = t + (t1 - t) * j / 8.0;
+                const double fm = f(tm);
+                if (fm > 0.0) {
+                    ta = tm;
+                    fa = fm;
+                    break;
+                }
+                if (fm < 0.0) break;
+            }
+        }
+        if (fa < 0.0) return t;
+        if (force) return toms748_root(f, ta, t1, fa, v1);
+        auto fd = [&](double tt) {
+            const double tau = tt - t;
+            switch (e) {
+                case Ev::impact: return S.theta_omega(tau);
+                case Ev::stop: {
+                    const double sig = static_cast<double>(st_.sigma);
+                    return std::pair<double, double>{sig * S.slip_velocity(tau), sig * S.slip_accel(tau)};
+                }
+                default: return std::pair<double, double>{f(tt), -S.omega(tau)};
+            }
+        };
+        return newton_root(fd, ta, t1, fa, v1);
+    }
+
     void enter_segment(std::size_t k) {
         bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
         seg_.tk = bm_.t_k(k);
@@ -643,14 +643,17 @@ private:
     BlockState& st_;
     Segment seg_;
     double tb_ = 0.0;
-    double h_ = 1e-3;  // step size carried between phases
+    // Longest contact step to try next: 1.25 x the last step the tolerance shortened, doubling
+    // after each step it did not.
+    double h_cap_ = max_step_s;
+    int rock_degree_ = 6;  // Taylor degree of the last rock step (taylor_rock_step)
+    int rock_lower_streak_ = 0;
     std::size_t next_sample_ = 0;
-    Stepper stepper_;
-    bool fsal_ok_ = false;
-    double fsal_t_ = 0.0;
-    Vec fsal_x_{}, fsal_dx_{};
-    Accel fsal_acc_;
-    Mode fsal_mode_ = Mode::rest;
+    Known known_;
+    bool known_ok_ = false;
+    double known_t_ = 0.0;
+    Vec known_x_{};
+    Mode known_mode_ = Mode::rest;
     double last_event_ = -1.0;
     std::size_t burst_ = 0;
     bool armed_ = false;
@@ -676,13 +679,9 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
             // Last segment end the run may reach: the first sample at or after min_end.
             const auto j_max = std::min<std::size_t>(
                 n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(std::ceil(min_end / dt - 1e-9))));
-            std::size_t j = k;
             double peak = 0.0;
-            for (; j < j_max; ++j) {
-                const Base b = bm.sample(j + 1);
-                if (!rest_holds(g, b)) break;
-                peak = std::max(peak, std::abs(b.ax));
-            }
+            // Segments k..j-1 stay at rest: samples k+1..j hold.
+            const std::size_t j = bm.rest_until(k + 1, j_max + 1, g.c_rest[0], g.c_rest[1], peak) - 1;
             rec.rest_samples(bm, k + 1, j + 1, st, peak);
             rec.time_in(Mode::rest, dt * static_cast<double>(j - k));
             if (j == n_seg || (j > k && bm.t_k(j) >= min_end))
@@ -693,12 +692,14 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
         double tb = bm.t_k(k + 1);
         while (t < tb) {
             if (st.mode == Mode::rock || st.mode == Mode::slide_rock) {
-                // While the excitation lasts a contact step ends at every sample: the input's
-                // slope jumps there, and steps across such kinks must shrink to meet the error
-                // test (measured: more steps at every tolerance, and at loose ones wrong
-                // verdicts). After it the base is at rest: steps run to the end of the run.
+                // Contact runs stop where the excitation ends (their steps then stop ending at
+                // samples) and at events.
                 const double quiet = bm.quiet_from_s();
-                t = engine.advance_contact(k, t, t < quiet ? tb : t_end);
+                t = engine.advance_contact(k, t, t < quiet ? quiet : t_end);
+                k = engine.next_sample() - 1;
+                tb = bm.t_k(k + 1);
+            } else if (st.mode == Mode::slide) {
+                t = engine.advance_slide_run(k, t, t_end);
                 k = engine.next_sample() - 1;
                 tb = bm.t_k(k + 1);
             } else {
@@ -706,7 +707,7 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
             }
             if (rec.overturned()) return rec.finish(st, t, integrator_name(Integrator::event));
         }
-        rec.sample(tb, st, bm.sample(k + 1), engine.accel_at(tb));
+        rec.sample(tb, st, bm.sample(k + 1), engine.known_at(tb));
         if (st.mode == Mode::rest && tb >= bm.min_end_s())
             return rec.finish(st, tb, integrator_name(Integrator::event));
     }

@@ -38,6 +38,12 @@ public:
     double quiet_from_s() const { return quiet_from_; }
     /// Time after which the simulation may stop once the block is at rest, s.
     double min_end_s() const { return duration_ > quiet_from_ ? duration_ : quiet_from_; }
+    /// First sample index in [i0, i1) at which a block at rest no longer satisfies the rest
+    /// inequalities |xg''| <= c G towards each edge and G >= 0 (rest_holds), or i1 if none;
+    /// peak_ax is raised to the largest |xg''| of the samples before it. The hot loop of long
+    /// records: raw samples, no interpolation.
+    std::size_t rest_until(std::size_t i0, std::size_t i1, double c_left, double c_right,
+                           double& peak_ax) const;
     /// Number of segments to cover the record and the tail.
     std::size_t segments(double tail_s) const;
     double pga_mps2() const { return pga_; }
@@ -61,6 +67,25 @@ struct BlockState {
 
 /// Contact accelerations and forces of the state in its mode.
 Accel accel_of(const Geometry& g, const BlockState& st, Base base);
+
+/// A contact state's accelerations already evaluated by the integrator, with sn = sin(alpha_s -
+/// theta) and c = cos(alpha_s - theta) (spares the recorder the trigonometry).
+struct Known {
+    Accel a;
+    double sn = 0.0, c = 1.0;
+};
+
+/// Absolute horizontal acceleration of the larger top corner of a rock / slide-rock state. With
+/// sn, c of alpha - theta known, phi = -s theta follows by the angle-difference formulas.
+inline double contact_top_accel(const Geometry& g, const BlockState& st, Base base, const Known& k) {
+    const double ds = static_cast<double>(st.s);
+    const auto i = static_cast<std::size_t>(Geometry::index(st.s));
+    const double sin_th = g.sin_alpha[i] * k.c - g.cos_alpha[i] * k.sn;
+    const double cos_th = g.cos_alpha[i] * k.c + g.sin_alpha[i] * k.sn;
+    const double xdd_cg = k.a.u_dd + ds * g.R[i] * (k.c * k.a.th_dd + k.sn * st.om * st.om);
+    return top_corner_accel_cs(g, base.ax, xdd_cg, cos_th, -ds * sin_th, -ds * st.om,
+                               -ds * k.a.th_dd);
+}
 
 /// Summary bookkeeping and the output series.
 class Recorder {
@@ -91,9 +116,23 @@ public:
     void step(std::size_t n = 1) { summary_.steps += n; }
     void overturn(double t_s, OverturnCriterion c);
     bool overturned() const { return summary_.overturned; }
-    /// Output sample at time t (also tracks the peak top acceleration); `known`, if given, is the
-    /// state's acceleration already evaluated by the integrator.
-    void sample(double t_s, const BlockState& st, Base base, const Accel* known = nullptr);
+    /// Output sample at time t (also tracks the peak top acceleration); `known`, if given, holds
+    /// the contact state's accelerations and trigonometry already evaluated by the integrator.
+    void sample(double t_s, const BlockState& st, Base base, const Known* known = nullptr);
+    /// The same for a flat sliding state (inline: once per segment of a sliding record). Its
+    /// absolute acceleration is xg'' + u'' = -sigma mu_k G.
+    void sample_slide(double t_s, const BlockState& st, Base base) {
+        const Accel a = slide_accel(g_, st.sigma, base);
+        top_peak_ = std::max(top_peak_, std::abs(base.ax + a.u_dd));
+        if (record_series_) push(t_s, st, a, base.ax + a.u_dd);
+    }
+    /// The same for a rock / slide-rock state with its accelerations known (inline: once per
+    /// step of a rocking record).
+    void sample_contact(double t_s, const BlockState& st, Base base, const Known& k) {
+        const double top = contact_top_accel(g_, st, base, k);
+        top_peak_ = std::max(top_peak_, std::abs(top));
+        if (record_series_) push(t_s, st, k.a, top);
+    }
     /// Samples i0 <= i < i1 of a block at rest (the hot path of long records); peak_ax_mps2 is
     /// the largest |xg''| among them.
     void rest_samples(const BaseMotion& bm, std::size_t i0, std::size_t i1, const BlockState& st,
@@ -101,6 +140,7 @@ public:
     SimulationResult finish(const BlockState& st, double end_time_s, const char* integrator);
 
 private:
+    void push(double t_s, const BlockState& st, const Accel& a, double top);
     const Geometry& g_;
     double g_mps2_ = 9.81;
     double top_peak_ = 0.0;  ///< peak |top acceleration|, m/s^2

@@ -1,6 +1,5 @@
 #include "dynamics/mechanics.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -44,21 +43,10 @@ Geometry make_geometry(const BlockModel& model) {
 }
 
 Accel rock_accel(const Geometry& g, int s, double th, double om, Base base) {
-    const double a = g.alpha[static_cast<std::size_t>(Geometry::index(s))] - th;
-    return rock_accel_sc(g, s, std::sin(a), std::cos(a), om, base);
-}
-
-Accel rock_accel_sc(const Geometry& g, int s, double sn, double c, double om, Base base) {
     const auto i = static_cast<std::size_t>(Geometry::index(s));
-    const double ds = static_cast<double>(s);
-    const double R = g.R[i];
-    Accel a;
-    a.th_dd = -g.k_rock[i] * (base.G * sn + ds * base.ax * c);
-    const double xdd = ds * R * (c * a.th_dd + sn * om * om);
-    const double ydd = R * (sn * a.th_dd - c * om * om);
-    a.F = g.M * (xdd + base.ax);
-    a.N = g.M * (ydd + base.G);
-    return a;
+    if (th == 0.0) return rock_accel_sc(g, s, g.sin_alpha[i], g.cos_alpha[i], om, base);
+    const double a = g.alpha[i] - th;
+    return rock_accel_sc(g, s, std::sin(a), std::cos(a), om, base);
 }
 
 Accel slide_rock_accel(const Geometry& g, int s, int sigma, double th, double om, Base base) {
@@ -72,27 +60,16 @@ Accel slide_rock_accel_sc(const Geometry& g, int s, int sigma, double sn, double
     const double ds = static_cast<double>(s), dsig = static_cast<double>(sigma);
     const double R = g.R[i];
     const double w2 = om * om;
-    // Rows: horizontal balance of the CG, vertical balance, moment about the CG (sec. 3).
-    Eigen::Matrix3d A;
-    A << g.M, g.M * ds * R * c, dsig * g.mu_k,
-         0.0, g.M * R * sn, -1.0,
-         0.0, ds * g.Ic, ds * R * sn - dsig * g.mu_k * R * c;
-    Eigen::Vector3d rhs(-g.M * (ds * R * sn * w2 + base.ax), g.M * (R * c * w2 - base.G), 0.0);
-    const Eigen::Vector3d z = A.partialPivLu().solve(rhs);
+    // Rows of the 3x3 system in (u'', theta'', N) (sec. 3): horizontal and vertical balance of
+    // the CG and the moment about it. The last two do not contain u'': the moment row gives
+    // N = -s I_c theta'' / D with D = s R sn - sigma mu_k R c, and the vertical row then
+    // theta'' = -D (G - R c w^2) / (R sn D + s I_c / M); the horizontal row gives u''.
+    const double D = ds * R * sn - dsig * g.mu_k * R * c;
     Accel a;
-    a.u_dd = z(0);
-    a.th_dd = z(1);
-    a.N = z(2);
+    a.th_dd = -D * (base.G - R * c * w2) / (R * sn * D + ds * g.Ic / g.M);
+    a.N = g.M * (R * sn * a.th_dd - R * c * w2 + base.G);
     a.F = -dsig * g.mu_k * a.N;
-    return a;
-}
-
-Accel slide_accel(const Geometry& g, int sigma, Base base) {
-    const double dsig = static_cast<double>(sigma);
-    Accel a;
-    a.u_dd = -base.ax - dsig * g.mu_k * base.G;
-    a.N = g.M * base.G;
-    a.F = -dsig * g.mu_k * a.N;
+    a.u_dd = -(ds * R * sn * w2 + base.ax) + a.F / g.M - ds * R * c * a.th_dd;
     return a;
 }
 
@@ -180,18 +157,6 @@ double rebound_angle(const Geometry& g, int s, double om, double G) {
 double top_corner_accel(const Geometry& g, double ax_base, double xdd_cg, double phi, double phid,
                         double phidd) {
     return top_corner_accel_cs(g, ax_base, xdd_cg, std::cos(phi), std::sin(phi), phid, phidd);
-}
-
-double top_corner_accel_cs(const Geometry& g, double ax_base, double xdd_cg, double cp, double sp,
-                           double phid, double phidd) {
-    const double by = g.top - g.h;
-    double best = 0.0;
-    for (double bx : {g.b[1], -g.b[0]}) {
-        const double rx = bx * cp - by * sp, ry = bx * sp + by * cp;
-        const double a = ax_base + xdd_cg - phidd * ry - phid * phid * rx;
-        if (std::abs(a) > std::abs(best)) best = a;
-    }
-    return best;
 }
 
 double cg_xdd(const Geometry& g, int s, double th, double om, const Accel& a) {

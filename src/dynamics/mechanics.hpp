@@ -2,6 +2,7 @@
 /// Internal: equations of motion of the block in each contact mode (METHODS.md section 3),
 /// shared by the event-driven and the central-difference integrators.
 #include <array>
+#include <cmath>
 
 #include "dynamics/simulate.hpp"
 
@@ -41,19 +42,39 @@ struct Accel {
 /// Rock about edge s (+1 right, -1 left) without slip:
 /// I_O theta'' = -M R [G sin(alpha - theta) + s xg'' cos(alpha - theta)].
 Accel rock_accel(const Geometry& g, int s, double th, double om, Base base);
-/// The same with sn = sin(alpha_s - theta) and c = cos(alpha_s - theta) given.
-Accel rock_accel_sc(const Geometry& g, int s, double sn, double c, double om, Base base);
+/// The same with sn = sin(alpha_s - theta) and c = cos(alpha_s - theta) given (inline: the
+/// event-driven integrator calls it at every step end).
+inline Accel rock_accel_sc(const Geometry& g, int s, double sn, double c, double om, Base base) {
+    const auto i = static_cast<std::size_t>(Geometry::index(s));
+    const double ds = static_cast<double>(s);
+    const double R = g.R[i];
+    Accel a;
+    a.th_dd = -g.k_rock[i] * (base.G * sn + ds * base.ax * c);
+    // CG acceleration relative to the base, then the base reactions (sec. 3).
+    const double xdd = ds * R * (c * a.th_dd + sn * om * om);
+    const double ydd = R * (sn * a.th_dd - c * om * om);
+    a.F = g.M * (xdd + base.ax);
+    a.N = g.M * (ydd + base.G);
+    return a;
+}
 
 /// Slide-rock about edge s with the contact point slipping in direction sigma (F = -sigma mu_k N):
 /// the 3x3 linear system in (u'', theta'', N) from the CG's horizontal and vertical balance and
-/// the moment about the CG, solved with Eigen.
+/// the moment about the CG, solved by elimination (N from the moment row).
 Accel slide_rock_accel(const Geometry& g, int s, int sigma, double th, double om, Base base);
 /// The same with sn = sin(alpha_s - theta) and c = cos(alpha_s - theta) given.
 Accel slide_rock_accel_sc(const Geometry& g, int s, int sigma, double sn, double c, double om,
                           Base base);
 
 /// Flat sliding in direction sigma: u'' = -xg'' - sigma mu_k G.
-Accel slide_accel(const Geometry& g, int sigma, Base base);
+inline Accel slide_accel(const Geometry& g, int sigma, Base base) {
+    const double dsig = static_cast<double>(sigma);
+    Accel a;
+    a.u_dd = -base.ax - dsig * g.mu_k * base.G;
+    a.N = g.M * base.G;
+    a.F = -dsig * g.mu_k * a.N;
+    return a;
+}
 
 /// The contact mode a block at rest (theta = 0, u' = 0) enters under base acceleration base,
 /// by METHODS.md section 2 (strict inequalities: exactly at a threshold it stays at rest).
@@ -88,9 +109,19 @@ double rebound_angle(const Geometry& g, int s, double om, double G);
 /// acceleration (xdd), rotation phi (counter-clockwise), phi' and phi''.
 double top_corner_accel(const Geometry& g, double ax_base, double xdd_cg, double phi, double phid,
                         double phidd);
-/// The same with cos(phi) and sin(phi) given (saves the trigonometry when they are known).
-double top_corner_accel_cs(const Geometry& g, double ax_base, double xdd_cg, double cos_phi,
-                           double sin_phi, double phid, double phidd);
+/// The same with cos(phi) and sin(phi) given (saves the trigonometry when they are known;
+/// inline: evaluated at every output sample).
+inline double top_corner_accel_cs(const Geometry& g, double ax_base, double xdd_cg, double cp,
+                                  double sp, double phid, double phidd) {
+    const double by = g.top - g.h;
+    double best = 0.0;
+    for (double bx : {g.b[1], -g.b[0]}) {
+        const double rx = bx * cp - by * sp, ry = bx * sp + by * cp;
+        const double a = ax_base + xdd_cg - phidd * ry - phid * phid * rx;
+        if (std::abs(a) > std::abs(best)) best = a;
+    }
+    return best;
+}
 
 /// CG acceleration relative to the base in a contact mode on edge s (for top_corner_accel).
 double cg_xdd(const Geometry& g, int s, double th, double om, const Accel& a);

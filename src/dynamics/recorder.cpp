@@ -20,6 +20,33 @@ BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
     duration_ = e.duration_s();
 }
 
+std::size_t BaseMotion::rest_until(std::size_t i0, std::size_t i1, double c_left,
+                                   double c_right, double& peak_ax) const {
+    const std::size_t n = std::min(i1, x_.size());
+    const double* x = x_.data();
+    double peak = peak_ax;
+    std::size_t i = i0;
+    if (!y_.empty()) {
+        const double* y = y_.data();
+        for (; i < n; ++i) {
+            const double ax = x[i], G = g_ + y[i];
+            if (!(G >= 0.0 && ax <= c_left * G && -ax <= c_right * G)) break;
+            peak = std::max(peak, std::abs(ax));
+        }
+    } else {
+        // G = g on every sample: the limits are constants.
+        const double hi = c_left * g_, lo = -(c_right * g_);
+        for (; i < n; ++i) {
+            const double ax = x[i];
+            if (!(ax <= hi && ax >= lo)) break;
+            peak = std::max(peak, std::abs(ax));
+        }
+    }
+    peak_ax = peak;
+    // Past the record the base is at rest (xg'' = 0, G = g > 0): rest holds.
+    return i < n ? i : std::max(i0, i1);
+}
+
 std::size_t BaseMotion::segments(double tail_s) const {
     const double end = std::max(duration_, quiet_from_) + std::max(0.0, tail_s);
     return static_cast<std::size_t>(std::ceil(end / dt_ - 1e-9));
@@ -57,7 +84,7 @@ void Recorder::overturn(double t_s, OverturnCriterion c) {
     summary_.overturn_criterion = c;
 }
 
-void Recorder::sample(double t_s, const BlockState& st, Base base, const Accel* known) {
+void Recorder::sample(double t_s, const BlockState& st, Base base, const Known* known) {
     if (st.mode == Mode::rest) {  // carried by the base: the hot path of long records
         top_peak_ = std::max(top_peak_, std::abs(base.ax));
         if (!record_series_) return;
@@ -70,22 +97,20 @@ void Recorder::sample(double t_s, const BlockState& st, Base base, const Accel* 
         series_.push_back(smp);
         return;
     }
-    const Accel a = known != nullptr ? *known : accel_of(g_, st, base);
+    const Accel a = known != nullptr ? known->a : accel_of(g_, st, base);
     double top = base.ax;
     switch (st.mode) {
         case Mode::rest: break;
         case Mode::slide: top = base.ax + a.u_dd; break;
         case Mode::rock:
         case Mode::slide_rock: {
-            // One sincos: phi = -s theta, and alpha - theta by the angle-difference formulas.
-            const double ds = static_cast<double>(st.s);
+            if (known != nullptr) {
+                sample_contact(t_s, st, base, *known);
+                return;
+            }
             const auto i = static_cast<std::size_t>(Geometry::index(st.s));
-            const double st_ = std::sin(st.th), ct = std::cos(st.th);
-            const double sn = g_.sin_alpha[i] * ct - g_.cos_alpha[i] * st_;
-            const double c = g_.cos_alpha[i] * ct + g_.sin_alpha[i] * st_;
-            const double xdd_cg = a.u_dd + ds * g_.R[i] * (c * a.th_dd + sn * st.om * st.om);
-            top = top_corner_accel_cs(g_, base.ax, xdd_cg, ct, -ds * st_, -ds * st.om,
-                                      -ds * a.th_dd);
+            const double ph = g_.alpha[i] - st.th;
+            top = contact_top_accel(g_, st, base, {a, std::sin(ph), std::cos(ph)});
             break;
         }
         case Mode::flight:
@@ -93,7 +118,10 @@ void Recorder::sample(double t_s, const BlockState& st, Base base, const Accel* 
             break;
     }
     top_peak_ = std::max(top_peak_, std::abs(top));
-    if (!record_series_) return;
+    if (record_series_) push(t_s, st, a, top);
+}
+
+void Recorder::push(double t_s, const BlockState& st, const Accel& a, double top) {
     Sample smp;
     smp.time_s = t_s;
     smp.mode = st.mode;

@@ -147,7 +147,7 @@ TEST_CASE("free rocking: output samples from the dense output conserve energy",
           "[dynamics][exact]") {
     // No excitation, r = 1, symmetric block: E = I_O w^2 / 2 + M g R (cos(alpha - |theta|) -
     // cos(alpha)) is constant through the run (METHODS.md s.1). The steps cross many samples
-    // here (no input kinks), so most samples come from the Dormand-Prince dense output.
+    // here (no input kinks), so most samples come from the Taylor polynomials (dense output).
     const auto blk = block::Block::uniform(0.2, 0.6, 20.0);
     const double alpha = blk.alpha_rad(block::Edge::right), R = blk.R_m(block::Edge::right);
     const double IO = blk.inertia_edge_kgm2(block::Edge::right), M = 20.0, g = 9.81;
