@@ -12,10 +12,10 @@ BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
     std::size_t last_v = y_.size();
     while (last_v > 0 && y_[last_v - 1] == 0.0) --last_v;
     last = std::max(last, last_v);
-    for (double a : x_) {
-        const double m = std::abs(a);
-        pga_ = m > pga_ ? m : pga_;
-    }
+    // A local accumulator: a member could alias the samples, forcing a store per sample.
+    double pga = 0.0;
+    for (double a : x_) pga = std::max(pga, std::abs(a));
+    pga_ = pga;
     quiet_from_ = dt_ * static_cast<double>(last);
     duration_ = e.duration_s();
 }
