@@ -325,35 +325,35 @@ public:
             double t_ev = t1;
             // The event functions of `events` at the step end, written out: on a routine step
             // none is negative and the loop below is skipped.
+            // sigma u' of a slide-rock step, whose zero is the stop event.
+            std::array<double, taylor_max_order + 1> sv;
+            Poly slip_poly{sv.data(), 0};
+            if (st_.mode == Mode::slide_rock) {
+                const double sig = static_cast<double>(st_.sigma);
+                slip_poly.n = S.nu - 1;
+                for (int j = 0; j < S.nu; ++j)
+                    sv[static_cast<std::size_t>(j)] = sig * (j + 1) * S.u[static_cast<std::size_t>(j + 1)];
+            }
+            // Whether theta (impact) or sigma u' (slip stop) may drop below 0 in the step; see
+            // first_zero.
+            auto may_cross = [&](Poly f, double f1) {
+                if (f.a[0] > 0.0) return !stays_positive(f, h);
+                return f1 < 0.0 || (f.n >= 1 && f.a[1] > 0.0 && !stays_positive(f, h));
+            };
+            const double sig = static_cast<double>(st_.sigma);
             const bool flagged =
-                !theta_stays_positive(S, h) || xn[2] > half_pi || acc1.N < 0.0 ||
+                may_cross(S.theta_poly(), xn[2]) || xn[2] > half_pi || acc1.N < 0.0 ||
                 (st_.mode == Mode::rock ? g_.mu_s * acc1.N < std::abs(acc1.F)
-                                        : static_cast<double>(st_.sigma) * xn[1] < 0.0) ||
+                                        : may_cross(slip_poly, sig * xn[1])) ||
                 (events[4] == Ev::past_alpha && xn[2] > alpha);
             for (Ev e : events) {
                 if (!flagged) break;
                 if (e == Ev::none) continue;
                 double te;
-                if (e == Ev::impact) {
-                    auto theta_at = [&](double tt) { return S.theta_omega(tt - t); };
-                    if (xn[2] < 0.0 && x[2] > 0.0) {
-                        // The usual impact: a sign change over the step, its root the first
-                        // one when theta is monotone or concave up to it.
-                        te = newton_root(theta_at, t, t1, x[2], xn[2]);
-                        if (theta_monotone_or_concave(S, te - t)) {
-                            if (te < t_ev || first == Ev::none) {
-                                t_ev = te;
-                                first = e;
-                            }
-                            continue;
-                        }
-                    }
-                    // theta may dip below 0 and come back within the step: search the polynomial.
-                    const ZeroBracket z = theta_zero_bracket(S, h);
-                    if (!z.found) continue;
-                    te = z.theta_a == 0.0 && z.a == 0.0
-                             ? locate_event(e, t, t + z.b, 0.0, z.theta_b, dense, accel_on_step, S)
-                             : newton_root(theta_at, t + z.a, t + z.b, z.theta_a, z.theta_b);
+                if (e == Ev::impact || e == Ev::stop) {
+                    te = first_zero(e, e == Ev::impact ? S.theta_poly() : slip_poly, t, t1, h,
+                                    dense, accel_on_step, S);
+                    if (te < 0.0) continue;
                 } else {
                     const double v1 = event_value(e, xn, acc1);
                     if (!(v1 < 0.0)) continue;
@@ -444,6 +444,34 @@ private:
     Accel contact_accel(const ContactStart& x0, double sn, double c, double om, Base base) const {
         return x0.mode == Mode::rock ? rock_accel_sc(g_, x0.s, sn, c, om, base)
                                      : slide_rock_accel_sc(g_, x0.s, x0.sigma, sn, c, om, base);
+    }
+
+    // First time in [t, t1] (h = t1 - t) at which f, theta (impact) or sigma u' (slip stop),
+    // drops below 0; -1 if none. From f(0) > 0 the polynomial is searched for a dip inside the
+    // step. From f(0) = 0 only a definite departure is searched (f'(0) > 0: just off the other
+    // edge after an impact, whose rebound can fall back and be lifted again within a step) and
+    // only a dip deeper than 1e-3 abs_tol counts; at a rock or slip onset f'(0) = 0 to
+    // round-off and the end value decides.
+    template <class Dense, class AccelOn>
+    double first_zero(Ev e, Poly f, double t, double t1, double h, const Dense& dense,
+                      const AccelOn& accel_on, const ContactSeries& S) const {
+        auto f_at = [&](double tt) { return f.value_d1(tt - t); };
+        const double f0 = f.a[0], f1 = f.value(h);
+        const bool from_zero = !(f0 > 0.0);
+        if (!from_zero && f1 < 0.0) {
+            // The usual case: a sign change over the step, its root the first one when f is
+            // monotone or concave up to it.
+            const double te = newton_root(f_at, t, t1, f0, f1);
+            if (monotone_or_concave(f, te - t)) return te;
+        }
+        if (!from_zero || (f.n >= 1 && f.a[1] > 0.0)) {
+            const ZeroBracket z = zero_bracket(f, h, from_zero ? 1e-3 * o_.abs_tol : 0.0);
+            if (z.found)
+                return z.f_a == 0.0 && z.a == 0.0
+                           ? locate_event(e, t, t + z.b, 0.0, z.f_b, dense, accel_on, S)
+                           : newton_root(f_at, t + z.a, t + z.b, z.f_a, z.f_b);
+        }
+        return f1 < 0.0 ? locate_event(e, t, t1, f0, f1, dense, accel_on, S) : -1.0;
     }
 
     // Time of the event e in [t, t1] where it goes from v0 to v1 < 0. Angle events and the

@@ -56,6 +56,17 @@ inline std::pair<double, double> poly_and_d1(const double* a, int n, double x) {
     return {y, dy};
 }
 
+/// A polynomial f(tau) = a[0] + ... + a[n] tau^n of a step (theta, or the slip velocity
+/// signed by the slip direction), for the zero searches below.
+struct Poly {
+    const double* a = nullptr;
+    int n = 0;
+    double value(double tau) const { return poly(a, n, tau); }
+    double d1(double tau) const { return poly_d1(a, n, tau); }
+    double d2(double tau) const { return poly_d2(a, n, tau); }
+    std::pair<double, double> value_d1(double tau) const { return poly_and_d1(a, n, tau); }
+};
+
 /// sin and cos of (phi0 - d) from sn0 = sin phi0 and c0 = cos phi0. For |d| <= 0.05 the Taylor
 /// polynomials of sin d (to d^9) and cos d (to d^10) leave a remainder below d^11/11! = 1.2e-22,
 /// far under one ulp, and the angle-difference formulas are exact to round-off; beyond, libm.
@@ -102,29 +113,30 @@ struct ContactSeries {
     double slip(double tau) const { return poly(u.data(), nu, tau); }
     double slip_velocity(double tau) const { return poly_d1(u.data(), nu, tau); }
     double slip_accel(double tau) const { return poly_d2(u.data(), nu, tau); }
+    Poly theta_poly() const { return {th.data(), n}; }
 };
 
-/// True if theta(tau) > 0 on (0, h] follows from theta(0) >= 0 and the bound
-/// |sum_{k>=2} th_k tau^k| <= tau B, B = sum_{k>=2} |th_k| h^(k-1): then theta(tau) >=
-/// theta(0) + tau (theta'(0) - B). Holds on almost every rocking step; a step that fails it
-/// needs the search of theta_zero_bracket.
-inline bool theta_stays_positive(const ContactSeries& S, double h) {
+/// True if f(tau) > 0 on (0, h] follows from f(0) >= 0 and the bound
+/// |sum_{k>=2} a_k tau^k| <= tau B, B = sum_{k>=2} |a_k| h^(k-1): then f(tau) >=
+/// f(0) + tau (f'(0) - B). Holds on almost every step; a step that fails it needs the search
+/// of zero_bracket.
+inline bool stays_positive(Poly f, double h) {
     double B = 0.0, hk = 1.0;
-    for (int k = 2; k <= S.n; ++k) {
+    for (int k = 2; k <= f.n; ++k) {
         hk *= h;
-        B += std::abs(S.th[static_cast<std::size_t>(k)]) * hk;
+        B += std::abs(f.a[k]) * hk;
     }
-    const double slope = S.th[1] - B;
-    return slope > 0.0 ? S.th[0] >= 0.0 : S.th[0] + h * slope > 0.0;
+    const double slope = (f.n >= 1 ? f.a[1] : 0.0) - B;
+    return slope > 0.0 ? f.a[0] >= 0.0 : f.a[0] + h * slope > 0.0;
 }
 
-/// True if theta' < 0 or theta'' < 0 throughout [0, tau] (bounds from |th_k|): then theta,
-/// starting at theta(0) >= 0, has at most one zero on (0, tau], and a root found there by
-/// Newton's method is the first.
-inline bool theta_monotone_or_concave(const ContactSeries& S, double tau) {
-    double w = S.th[1], dd = 2.0 * S.th[2], tk1 = 1.0;  // tau^(k-1)
-    for (int k = 2; k <= S.n; ++k) {
-        const double a = std::abs(S.th[static_cast<std::size_t>(k)]);
+/// True if f' < 0 or f'' < 0 throughout [0, tau] (bounds from |a_k|): then f, starting at
+/// f(0) >= 0, has at most one zero on (0, tau], and a root found there by Newton's method is
+/// the first.
+inline bool monotone_or_concave(Poly f, double tau) {
+    double w = f.n >= 1 ? f.a[1] : 0.0, dd = f.n >= 2 ? 2.0 * f.a[2] : 0.0, tk1 = 1.0;
+    for (int k = 2; k <= f.n; ++k) {
+        const double a = std::abs(f.a[k]);
         if (k >= 3) dd += k * (k - 1) * a * tk1;
         tk1 *= tau;
         w += k * a * tk1;
@@ -132,29 +144,30 @@ inline bool theta_monotone_or_concave(const ContactSeries& S, double tau) {
     return w < 0.0 || dd < 0.0;
 }
 
-/// Bracket [a, b] in [0, h] of the first time theta(tau) drops below 0, with theta(a) >= 0 >
-/// theta(b); found = false if theta >= 0 on [0, h]. theta and theta' are sampled at 8 points:
-/// a sign change of theta between them brackets the root, and a dip below 0 and back between
-/// them is caught at the minimum (theta' from - to +, located by Newton on theta'). A step
-/// can hold such a dip when the block barely lifts off its edge: the end values alone would
-/// miss the impact.
+/// Bracket [a, b] in [0, h] of the first time f(tau) drops below -depth, with f(a) >= 0 and
+/// f(b) < -depth (f(a) > 0 when f leaves 0 upwards); found = false if f >= -depth on [0, h]. f and f' are sampled at 8 points: a
+/// sign change of f between them brackets the root, and a dip below and back between them is
+/// caught at the minimum (f' from - to +, located by Newton on f'). A step can hold such a dip
+/// when the block barely lifts off its edge (f = theta) or its slip barely reverses
+/// (f = sigma u'): the end values alone would miss the impact or the stop.
 struct ZeroBracket {
     bool found = false;
-    double a = 0.0, b = 0.0, theta_a = 0.0, theta_b = 0.0;
+    double a = 0.0, b = 0.0, f_a = 0.0, f_b = 0.0;
 };
-inline ZeroBracket theta_zero_bracket(const ContactSeries& S, double h) {
+inline ZeroBracket zero_bracket(Poly f, double h, double depth = 0.0) {
     constexpr int m = 8;
     ZeroBracket z;
-    double ta = 0.0, tha = S.th[0], oma = S.th[1];
+    double ta = 0.0, fa = f.a[0];                         // last sample with f >= 0
+    double tp = 0.0, dp = f.n >= 1 ? f.a[1] : 0.0;        // previous sample and its f'
     for (int j = 1; j <= m; ++j) {
         const double tb = j == m ? h : h * j / m;
-        const auto [thb, omb] = S.theta_omega(tb);
-        double tc = tb, thc = thb;
-        if (!(thb < 0.0) && oma < 0.0 && omb > 0.0) {
-            // Minimum inside: Newton on theta' (slope theta''), kept inside the interval.
-            double lo = ta, hi = tb, x = ta + (tb - ta) * (-oma) / (omb - oma);
+        const auto [fb, db] = f.value_d1(tb);
+        double tc = tb, fc = fb;
+        if (!(fb < -depth) && dp < 0.0 && db > 0.0) {
+            // Minimum inside: Newton on f' (slope f''), kept inside the interval.
+            double lo = tp, hi = tb, x = tp + (tb - tp) * (-dp) / (db - dp);
             for (int it = 0; it < 50; ++it) {
-                const double w = S.omega(x), dw = S.theta_dd(x);
+                const double w = f.d1(x), dw = f.d2(x);
                 (w < 0.0 ? lo : hi) = x;
                 double xn = dw > 0.0 ? x - w / dw : 0.5 * (lo + hi);
                 if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
@@ -162,15 +175,39 @@ inline ZeroBracket theta_zero_bracket(const ContactSeries& S, double h) {
                 x = xn;
             }
             tc = x;
-            thc = S.theta(x);
+            fc = f.value(x);
         }
-        if (thc < 0.0) {
-            z = {true, ta, tc, tha, thc};
+        if (fc < -depth) {
+            if (ta == 0.0 && fa == 0.0 && f.n >= 2 && f.a[1] > 0.0) {
+                // Leaving 0 upwards (f'(0) > 0): put the bracket's start on the excursion's
+                // peak, near -f'(0) / f''(0), or on the highest of 16 points before tc.
+                double best_t = 0.0, best_f = 0.0;
+                if (f.a[2] < 0.0) {
+                    best_t = std::min(-f.a[1] / (2.0 * f.a[2]), 0.5 * tc);
+                    best_f = f.value(best_t);
+                }
+                for (int i = 1; i < 16 && !(best_f > 0.0); ++i) {
+                    const double ti = tc * i / 16;
+                    const double fi = f.value(ti);
+                    if (fi > best_f) {
+                        best_t = ti;
+                        best_f = fi;
+                    }
+                }
+                if (best_f > 0.0) {
+                    ta = best_t;
+                    fa = best_f;
+                }
+            }
+            z = {true, ta, tc, fa, fc};
             return z;
         }
-        ta = tb;
-        tha = thb;
-        oma = omb;
+        if (fb >= 0.0) {
+            ta = tb;
+            fa = fb;
+        }
+        tp = tb;
+        dp = db;
     }
     return z;
 }

@@ -155,17 +155,17 @@ TEST_CASE("impact search: a dip below zero between the end points is found", "[d
     S.th[2] = 1.0;
     const double h = 0.005;
     CHECK(S.theta(h) > 0.0);
-    CHECK_FALSE(theta_stays_positive(S, h));
-    const ZeroBracket z = theta_zero_bracket(S, h);
+    CHECK_FALSE(stays_positive(S.theta_poly(), h));
+    const ZeroBracket z = zero_bracket(S.theta_poly(), h);
     REQUIRE(z.found);
-    CHECK(z.theta_a >= 0.0);
-    CHECK(z.theta_b < 0.0);
+    CHECK(z.f_a >= 0.0);
+    CHECK(z.f_b < 0.0);
     CHECK(z.a <= 1.0e-3);
     CHECK(z.b >= 1.0e-3);
     CHECK(z.b <= 1.2e-3);
     // Shifted up by 2e-8 the minimum (-1e-8) stays above zero: no impact.
     S.th[0] += 2e-8;
-    CHECK_FALSE(theta_zero_bracket(S, h).found);
+    CHECK_FALSE(zero_bracket(S.theta_poly(), h).found);
 }
 
 TEST_CASE("impact search: quick tests of positivity and of a single zero", "[dynamics][taylor]") {
@@ -177,17 +177,40 @@ TEST_CASE("impact search: quick tests of positivity and of a single zero", "[dyn
     S.th[1] = 0.2;
     S.th[2] = -5.0;
     S.th[3] = 1.0;
-    CHECK(theta_stays_positive(S, 0.01));
+    CHECK(stays_positive(S.theta_poly(), 0.01));
     // ... but not over 0.05 s, where it falls back through zero (0.2 - 5 tau ~ 0 at 40 ms).
-    CHECK_FALSE(theta_stays_positive(S, 0.05));
-    CHECK(theta_zero_bracket(S, 0.05).found);
+    CHECK_FALSE(stays_positive(S.theta_poly(), 0.05));
+    CHECK(zero_bracket(S.theta_poly(), 0.05).found);
     // Falling with theta'' < 0 all along: concave, so at most one zero.
     S.th[0] = 0.001;
     S.th[1] = -0.3;
-    CHECK(theta_monotone_or_concave(S, 0.005));
+    CHECK(monotone_or_concave(S.theta_poly(), 0.005));
     // A dip and rise (theta'' > 0, theta' changing sign): neither monotone nor concave.
     S.th[1] = -2.2e-3;
     S.th[2] = 1.0;
     S.th[3] = 0.0;
-    CHECK_FALSE(theta_monotone_or_concave(S, 0.005));
+    CHECK_FALSE(monotone_or_concave(S.theta_poly(), 0.005));
+}
+
+TEST_CASE("impact search: a short excursion just off an edge is bracketed on its peak",
+          "[dynamics][taylor]") {
+    // theta = 1e-4 tau - tau^2 after an impact (theta(0) = 0, theta'(0) > 0): up for 0.1 ms and
+    // down for the rest of the 5 ms step. The bracket must start on the excursion (theta > 0),
+    // not at tau = 0 where theta = 0 (that would be an impact at the step start with theta' > 0).
+    ContactSeries S;
+    S.n = 2;
+    S.th[0] = 0.0;
+    S.th[1] = 1e-4;
+    S.th[2] = -1.0;
+    const ZeroBracket z = zero_bracket(S.theta_poly(), 0.005, 1e-14);
+    REQUIRE(z.found);
+    CHECK(z.a > 0.0);
+    CHECK(z.f_a > 0.0);
+    CHECK(z.a < 1e-4);
+    CHECK(z.b > 1e-4);
+    CHECK(z.f_b < 0.0);
+    // At a rock onset (theta'(0) = 0) a round-off dip is below the depth: nothing to find.
+    S.th[1] = 0.0;
+    S.th[2] = -1e-30;
+    CHECK_FALSE(zero_bracket(S.theta_poly(), 0.005, 1e-14).found);
 }
