@@ -295,6 +295,9 @@ public:
             x0.G1 = seg_.G1;
             const double stop_at = tail ? horizon : std::min(tb_, horizon);
             double h = std::min({stop_at - t, max_step_s, h_cap_});
+            // Sample times are k dt: a segment can be an ulp longer than dt (or max_step_s), and a
+            // step an ulp short of the sample would leave a step of ~1e-15 s after it.
+            if (stop_at - (t + h) < 1e-12 * h) h = stop_at - t;
             const double h_full = h;
             h = x0.mode == Mode::rock
                     ? taylor_rock_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_,

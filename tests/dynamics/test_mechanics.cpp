@@ -127,3 +127,35 @@ TEST_CASE("mu_k < tan(alpha) < mu_s < mu_crit: the block slides flat", "[dynamic
     CHECK(r.summary.rock_max_rad == 0.0);
     CHECK(r.summary.slide_max_m > 0.0);
 }
+
+TEST_CASE("slide-rock accelerations satisfy the three rows of the contact system",
+          "[dynamics][mechanics]") {
+    // Residuals of the rows (METHODS.md s.3) for the eliminated solution, both edges and slip
+    // directions, asymmetric block:
+    //   M u'' + M s R c theta'' + sigma mu N = -M (s R sn w^2 + xg'')
+    //   M R sn theta'' - N = M (R c w^2 - G)
+    //   s I_c theta'' + (s R sn - sigma mu R c) N = 0
+    const block::Block blk = block::Block::general(0.2, 0.35, 0.7, 50.0, 2.1);
+    const Geometry g = make_geometry(dynamics::make_block_model(blk, 0.4));
+    for (int s : {1, -1}) {
+        for (int sigma : {1, -1}) {
+            for (double th : {0.0, 0.05, 0.4}) {
+                for (double w : {0.0, -1.3, 2.0}) {
+                    const Base b{2.7 * s, 9.81 * 1.2};
+                    const Accel a = slide_rock_accel(g, s, sigma, th, w, b);
+                    const auto i = static_cast<std::size_t>(Geometry::index(s));
+                    const double R = g.R[i], sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
+                    const double ds = s, dsig = sigma, mu = g.mu_k, M = g.M;
+                    const double r1 = M * a.u_dd + M * ds * R * c * a.th_dd + dsig * mu * a.N + M * (ds * R * sn * w * w + b.ax);
+                    const double r2 = M * R * sn * a.th_dd - a.N - M * (R * c * w * w - b.G);
+                    const double r3 = ds * g.Ic * a.th_dd + (ds * R * sn - dsig * mu * R * c) * a.N;
+                    const double scale = M * 9.81 * 10.0;
+                    CHECK(std::abs(r1) < 1e-12 * scale);
+                    CHECK(std::abs(r2) < 1e-12 * scale);
+                    CHECK(std::abs(r3) < 1e-12 * scale);
+                    CHECK(a.F == Approx(-dsig * mu * a.N));
+                }
+            }
+        }
+    }
+}
