@@ -23,8 +23,10 @@ constexpr double half_pi = std::numbers::pi / 2.0;
 constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
 constexpr std::size_t burst_fail = 100000;    // ... before giving up
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
-// Longest contact step, s: events are found by sign changes at step ends, so a step must not
-// span two crossings (a rocking half-cycle of the smallest blocks is ~0.1 s).
+// Longest contact step, s (it matters after the excitation, where steps need not end at
+// samples): impacts and slip stops are searched inside a step, but the force events (friction,
+// lift-off) only by their sign at step ends, so a step must not span two of their crossings (a
+// rocking half-cycle of the smallest blocks is ~0.1 s).
 constexpr double max_step_s = 0.02;
 
 // Linear base acceleration on the current segment.
