@@ -301,10 +301,7 @@ public:
             // step an ulp short of the sample would leave a step of ~1e-15 s after it.
             if (stop_at - (t + h) < 1e-12 * h) h = stop_at - t;
             const double h_full = h;
-            h = x0.mode == Mode::rock
-                    ? taylor_rock_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_,
-                                       rock_lower_streak_)
-                    : taylor_contact_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S);
+            h = taylor_contact_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_);
             if (h < 1e-14)
                 throw NumericalError(fmt::format(
                     "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
@@ -679,8 +676,7 @@ private:
     // Longest contact step to try next: 1.25 x the last step the tolerance shortened, doubling
     // after each step it did not.
     double h_cap_ = max_step_s;
-    int rock_degree_ = 6;  // Taylor degree of the last rock step (taylor_rock_step)
-    int rock_lower_streak_ = 0;
+    RockDegree rock_degree_;  // Taylor degree carried between rock steps
     std::size_t next_sample_ = 0;
     Known known_;
     bool known_ok_ = false;
@@ -714,7 +710,7 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
                 n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(std::ceil(min_end / dt - 1e-9))));
             double peak = 0.0;
             // Segments k..j-1 stay at rest: samples k+1..j hold.
-            const std::size_t j = bm.rest_until(k + 1, j_max + 1, g.c_rest[0], g.c_rest[1], peak) - 1;
+            const std::size_t j = bm.rest_until(k + 1, j_max + 1, g, peak) - 1;
             rec.rest_samples(bm, k + 1, j + 1, st, peak);
             rec.time_in(Mode::rest, dt * static_cast<double>(j - k));
             if (j == n_seg || (j > k && bm.t_k(j) >= min_end))

@@ -42,7 +42,7 @@ public:
     /// inequalities |xg''| <= c G towards each edge and G >= 0 (rest_holds), or i1 if none;
     /// peak_ax is raised to the largest |xg''| of the samples before it. The hot loop of long
     /// records: raw samples, no interpolation.
-    std::size_t rest_until(std::size_t i0, std::size_t i1, double c_left, double c_right,
+    std::size_t rest_until(std::size_t i0, std::size_t i1, const Geometry& g,
                            double& peak_ax) const;
     /// Number of segments to cover the record and the tail.
     std::size_t segments(double tail_s) const;

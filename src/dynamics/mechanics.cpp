@@ -159,13 +159,6 @@ double top_corner_accel(const Geometry& g, double ax_base, double xdd_cg, double
     return top_corner_accel_cs(g, ax_base, xdd_cg, std::cos(phi), std::sin(phi), phid, phidd);
 }
 
-double cg_xdd(const Geometry& g, int s, double th, double om, const Accel& a) {
-    const auto i = static_cast<std::size_t>(Geometry::index(s));
-    const double ds = static_cast<double>(s);
-    const double sn = std::sin(g.alpha[i] - th), c = std::cos(g.alpha[i] - th);
-    return a.u_dd + ds * g.R[i] * (c * a.th_dd + sn * om * om);
-}
-
 Flight to_flight(const Geometry& g, int s, double u, double v, double th, double om) {
     const auto i = static_cast<std::size_t>(Geometry::index(s));
     const double ds = static_cast<double>(s);

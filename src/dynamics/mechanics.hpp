@@ -123,8 +123,6 @@ inline double top_corner_accel_cs(const Geometry& g, double ax_base, double xdd_
     return best;
 }
 
-/// CG acceleration relative to the base in a contact mode on edge s (for top_corner_accel).
-double cg_xdd(const Geometry& g, int s, double th, double om, const Accel& a);
 
 /// Free-flight state: CG position relative to the base (X from its initial flat position,
 /// Y above the base), counter-clockwise rotation phi, and their rates.

@@ -20,8 +20,8 @@ BaseMotion::BaseMotion(const Excitation& e, double g_mps2)
     duration_ = e.duration_s();
 }
 
-std::size_t BaseMotion::rest_until(std::size_t i0, std::size_t i1, double c_left,
-                                   double c_right, double& peak_ax) const {
+std::size_t BaseMotion::rest_until(std::size_t i0, std::size_t i1, const Geometry& g,
+                                   double& peak_ax) const {
     const std::size_t n = std::min(i1, x_.size());
     const double* x = x_.data();
     double peak = peak_ax;
@@ -29,13 +29,12 @@ std::size_t BaseMotion::rest_until(std::size_t i0, std::size_t i1, double c_left
     if (!y_.empty()) {
         const double* y = y_.data();
         for (; i < n; ++i) {
-            const double ax = x[i], G = g_ + y[i];
-            if (!(G >= 0.0 && ax <= c_left * G && -ax <= c_right * G)) break;
-            peak = std::max(peak, std::abs(ax));
+            if (!rest_holds(g, {x[i], g_ + y[i]})) break;
+            peak = std::max(peak, std::abs(x[i]));
         }
     } else {
-        // G = g on every sample: the limits are constants.
-        const double hi = c_left * g_, lo = -(c_right * g_);
+        // G = g on every sample: rest_holds's limits are constants.
+        const double hi = g.c_rest[0] * g_, lo = -(g.c_rest[1] * g_);
         for (; i < n; ++i) {
             const double ax = x[i];
             if (!(ax <= hi && ax >= lo)) break;

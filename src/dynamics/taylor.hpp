@@ -260,6 +260,7 @@ struct Tolerance {
 // Coefficient k >= 1 of s = sin(alpha - theta) and c = cos(alpha - theta) from theta's.
 inline void sin_cos_coefficient(const double* th, double* sn, double* c, int k) {
     double ss = 0.0, cc = 0.0;
+#pragma GCC unroll 16
     for (int j = 1; j <= k; ++j) {
         const double jt = j * th[j];
         ss += jt * c[k - j];
@@ -268,6 +269,15 @@ inline void sin_cos_coefficient(const double* th, double* sn, double* c, int k) 
     const double inv = recip.of_k[static_cast<std::size_t>(k)];
     sn[k] = -ss * inv;
     c[k] = cc * inv;
+}
+
+// Coefficient k + 2 >= 3 of theta for rock from those of s and c (k >= 1):
+// (k + 1)(k + 2) theta_{k+2} = -k_rock [G0 s_k + G1 s_{k-1} + A0 c_k + A1 c_{k-1}] with
+// G = G0 + G1 tau and A = s_edge xg'' = A0 + A1 tau; neg_k_rock = -k_rock.
+inline double rock_theta_coefficient(double neg_k_rock, const ContactStart& x0, double A0,
+                                     double A1, const double* sn, const double* c, int k) {
+    return neg_k_rock * (x0.G0 * sn[k] + x0.G1 * sn[k - 1] + A0 * c[k] + A1 * c[k - 1]) *
+           recip.of_k1k2[static_cast<std::size_t>(k)];
 }
 
 // Step the tolerance allows at degree n = taylor_max_order given the excess there (> 1): the
@@ -300,8 +310,7 @@ inline double rock_step(const Geometry& g, const ContactStart& x0, double h, dou
     for (int k = 1; k + 2 < K; ++k) {
         sin_cos_coefficient(th, sn, c, k);
         const int n = k + 2;
-        th[n] = -kr * (x0.G0 * sn[k] + x0.G1 * sn[k - 1] + A0 * c[k] + A1 * c[k - 1]) *
-                recip.of_k1k2[static_cast<std::size_t>(k)];
+        th[n] = rock_theta_coefficient(-kr, x0, A0, A1, sn, c, k);
         hn2 = hn1;
         hn1 = hn;
         hn *= h;
@@ -412,18 +421,8 @@ bool rock_step_fixed(const Geometry& g, const ContactStart& x0, double h, const 
     th[2] = kr * (x0.G0 * sn[0] + A0 * c[0]) * 0.5;
 #pragma GCC unroll 16
     for (int k = 1; k <= D - 2; ++k) {
-        double ss = 0.0, cc = 0.0;
-#pragma GCC unroll 16
-        for (int j = 1; j <= k; ++j) {
-            const double jt = j * th[j];
-            ss += jt * c[k - j];
-            cc += jt * sn[k - j];
-        }
-        const double inv = recip.of_k[static_cast<std::size_t>(k)];
-        sn[k] = -ss * inv;
-        c[k] = cc * inv;
-        th[k + 2] = kr * (x0.G0 * sn[k] + x0.G1 * sn[k - 1] + A0 * c[k] + A1 * c[k - 1]) *
-                    recip.of_k1k2[static_cast<std::size_t>(k)];
+        sin_cos_coefficient(th, sn, c, k);
+        th[k + 2] = rock_theta_coefficient(kr, x0, A0, A1, sn, c, k);
     }
     double th_end = th[0], om_end = 0.0;
 #pragma GCC unroll 16
@@ -449,39 +448,39 @@ bool rock_step_degree(int degree, const Geometry& g, const ContactStart& x0, dou
 
 }  // namespace taylor_detail
 
-/// Rock step from x0 of at most h: tries the degree that met the tolerance last (`degree`,
-/// updated: raised when it fails, lowered when one less would have done on 8 steps in a row,
-/// counted in lower_streak), then the adaptive kernel (which may shorten the step). Returns
-/// the step taken.
-inline double taylor_rock_step(const Geometry& g, const ContactStart& x0, double h, double rel_tol,
-                               double abs_tol, ContactSeries& S, int& degree, int& lower_streak) {
+/// Rock degree carried from step to step by taylor_contact_step.
+struct RockDegree {
+    int degree = 6;        ///< the degree that met the tolerance last
+    int lower_streak = 0;  ///< steps in a row on which one less would have done
+};
+
+/// Builds the Taylor polynomials of the contact phase from x0 for a step of at most h. Rock
+/// tries the degree that met the tolerance last (raised when it fails, lowered when one less
+/// would have done on 8 steps in a row), then the adaptive kernel; slide-rock raises the degree
+/// from the lowest. Returns h, or a shorter step the tolerance allows at degree
+/// taylor_max_order (then S holds that degree).
+inline double taylor_contact_step(const Geometry& g, const ContactStart& x0, double h,
+                                  double rel_tol, double abs_tol, ContactSeries& S,
+                                  RockDegree& rock) {
+    if (x0.mode != Mode::rock) return taylor_detail::slide_rock_step(g, x0, h, rel_tol, abs_tol, S);
     const taylor_detail::Tolerance tol(x0.th, x0.om, rel_tol, abs_tol);
-    degree = std::clamp(degree, rock_degree_min, rock_degree_max);
+    rock.degree = std::clamp(rock.degree, rock_degree_min, rock_degree_max);
     for (;;) {
         bool lower_ok = false;
         if (taylor_detail::rock_step_degree(
-                degree, g, x0, h, tol, S, lower_ok,
+                rock.degree, g, x0, h, tol, S, lower_ok,
                 std::make_integer_sequence<int, rock_degree_max - rock_degree_min + 1>{})) {
-            // One less after 8 steps in a row on which it would have done (no flip-flop).
-            lower_streak = lower_ok ? lower_streak + 1 : 0;
-            if (lower_streak >= 8) {
-                --degree;
-                lower_streak = 0;
+            rock.lower_streak = lower_ok ? rock.lower_streak + 1 : 0;
+            if (rock.lower_streak >= 8) {
+                --rock.degree;
+                rock.lower_streak = 0;
             }
             return h;
         }
-        if (degree == rock_degree_max) return taylor_detail::rock_step(g, x0, h, rel_tol, abs_tol, S);
-        ++degree;
+        if (rock.degree == rock_degree_max)
+            return taylor_detail::rock_step(g, x0, h, rel_tol, abs_tol, S);
+        ++rock.degree;
     }
-}
-
-/// Builds the Taylor polynomials of the contact phase from x0, raising the degree until the
-/// trailing terms at step h meet the tolerance. Returns h, or a shorter step the tolerance
-/// allows at degree taylor_max_order (then S holds that degree).
-inline double taylor_contact_step(const Geometry& g, const ContactStart& x0, double h,
-                                  double rel_tol, double abs_tol, ContactSeries& S) {
-    return x0.mode == Mode::rock ? taylor_detail::rock_step(g, x0, h, rel_tol, abs_tol, S)
-                                 : taylor_detail::slide_rock_step(g, x0, h, rel_tol, abs_tol, S);
 }
 
 }  // namespace freestand::dynamics::detail

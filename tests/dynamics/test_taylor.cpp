@@ -72,8 +72,8 @@ TEST_CASE("Taylor rock step matches an RK4 reference and its own derivatives",
         for (double th : {0.0, 0.02, 0.2}) {
             const ContactStart x0 = start(g, Mode::rock, s, th, th == 0.0 ? 0.3 : -0.5);
             ContactSeries S;
-            int degree = 6, streak = 0;
-            const double h = taylor_rock_step(g, x0, 0.005, 1e-12, 1e-14, S, degree, streak);
+            RockDegree rock;
+            const double h = taylor_contact_step(g, x0, 0.005, 1e-12, 1e-14, S, rock);
             REQUIRE(h == 0.005);
             const State ref = rk4_reference(g, x0, h, 20000);
             CHECK(S.th_end == Approx(ref[2]).margin(1e-13));
@@ -92,12 +92,12 @@ TEST_CASE("fixed-degree and adaptive rock kernels agree; the degree follows the 
     const Geometry g = make_geometry(dynamics::make_block_model(block::Block::uniform(0.3, 0.6, 38.0), 0.8));
     const ContactStart x0 = start(g, Mode::rock, 1, 0.05, 0.4);
     ContactSeries fixed, adaptive;
-    int degree = rock_degree_min, streak = 0;
-    taylor_rock_step(g, x0, 0.005, 1e-9, 1e-11, fixed, degree, streak);
+    RockDegree rock{rock_degree_min, 0};
+    taylor_contact_step(g, x0, 0.005, 1e-9, 1e-11, fixed, rock);
     taylor_detail::rock_step(g, x0, 0.005, 1e-9, 1e-11, adaptive);
     // Raised from the lowest degree to the one the adaptive loop stops at.
     CHECK(fixed.n == adaptive.n);
-    CHECK(degree == adaptive.n);
+    CHECK(rock.degree == adaptive.n);
     CHECK(fixed.th_end == Approx(adaptive.th_end).epsilon(1e-15));
     CHECK(fixed.om_end == Approx(adaptive.om_end).epsilon(1e-15));
     ContactSeries tight;
@@ -114,7 +114,8 @@ TEST_CASE("Taylor slide-rock step matches an RK4 reference", "[dynamics][taylor]
             x0.sigma = sigma;
             if (th > 0.1) x0.v = 0.0;  // slip starting from rest too
             ContactSeries S;
-            const double h = taylor_contact_step(g, x0, 0.005, 1e-12, 1e-14, S);
+            RockDegree rock;
+            const double h = taylor_contact_step(g, x0, 0.005, 1e-12, 1e-14, S, rock);
             REQUIRE(h == 0.005);
             const State ref = rk4_reference(g, x0, h, 20000);
             CHECK(S.slip(h) == Approx(ref[0]).margin(1e-13));
@@ -136,8 +137,8 @@ TEST_CASE("a step too long for the highest degree is shortened to one that meets
     const Geometry g = make_geometry(dynamics::make_block_model(block::Block::uniform(0.02, 0.05, 1.0), 0.8));
     ContactStart x0 = start(g, Mode::rock, 1, 0.1, 20.0);
     ContactSeries S;
-    int degree = 6, streak = 0;
-    const double h = taylor_rock_step(g, x0, 2.0, 1e-10, 1e-12, S, degree, streak);
+    RockDegree rock;
+    const double h = taylor_contact_step(g, x0, 2.0, 1e-10, 1e-12, S, rock);
     CHECK(h < 0.1);
     CHECK(h > 1e-4);
     CHECK(S.n == taylor_max_order);
