@@ -389,7 +389,7 @@ Case parse_case(const std::string& text, const std::string& file_label) {
 }
 
 Case read_case(const std::filesystem::path& path) {
-    return parse_case(core::read_text_file(path), path.string());
+    return parse_case(core::read_input_file(path), path.string());
 }
 
 }  // namespace freestand::assess

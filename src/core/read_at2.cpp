@@ -26,7 +26,7 @@ bool parse_double(std::string_view token, double& value) {
 
 Record read_at2(const std::filesystem::path& path) {
     const std::string file = path.string();
-    std::istringstream in(read_text_file(path));
+    std::istringstream in(read_input_file(path));
     std::string line;
     std::string header[4];
     for (int i = 0; i < 4; ++i) {

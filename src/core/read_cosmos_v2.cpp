@@ -301,7 +301,7 @@ Record CosmosParser::parse() {
 }  // namespace
 
 Record read_cosmos_v2(const std::filesystem::path& path) {
-    return CosmosParser(path.string(), text::split_lines(read_text_file(path))).parse();
+    return CosmosParser(path.string(), text::split_lines(read_input_file(path))).parse();
 }
 
 }  // namespace freestand::core

@@ -182,7 +182,7 @@ Record CsvParser::parse() {
 }  // namespace
 
 Record read_csv(const std::filesystem::path& path) {
-    return CsvParser(path.string(), text::split_lines(read_text_file(path))).parse();
+    return CsvParser(path.string(), text::split_lines(read_input_file(path))).parse();
 }
 
 }  // namespace freestand::core

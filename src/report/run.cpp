@@ -10,7 +10,7 @@ namespace freestand::report {
 
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit) {
-    const std::string bytes = core::read_text_file(case_file);
+    const std::string bytes = core::read_input_file(case_file);
     assess::Case c = assess::parse_case(bytes, case_file.string());
     if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
     CaseRun run;

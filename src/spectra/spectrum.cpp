@@ -123,7 +123,7 @@ void read_row(std::string_view text, const std::string& file, int line, ReadStat
 }  // namespace
 
 Spectrum read_spectrum_csv(const std::filesystem::path& path) {
-    const std::string text = core::read_text_file(path);
+    const std::string text = core::read_input_file(path);
     const std::string file = path.string();
     ReadState st;
     st.s.label = path.stem().string();

@@ -58,3 +58,21 @@ TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][erro
         CHECK(r.err.find(c.expect) != std::string::npos);
     }
 }
+
+TEST_CASE("simulate --out naming the --motion file is refused and the input kept",
+          "[dynamics][cli][errors]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_sim_own_input";
+    std::filesystem::create_directories(dir);
+    const auto motion = dir / "motion.AT2";
+    std::filesystem::copy_file(std::filesystem::path(FREESTAND_SOURCE_DIR) /
+                                   "tests/data/RSN175_IMPVALL.H_H-E12140.AT2",
+                               motion, std::filesystem::copy_options::overwrite_existing);
+    const std::string before = freestand::test::slurp(motion);
+    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.15 --motion '" +
+                           motion.string() + "' --out '" + motion.string() + "'");
+    CHECK(r.exit_code == 5);
+    CHECK(r.err.find(motion.string() + ": refusing to overwrite an input file") != std::string::npos);
+    CHECK(freestand::test::slurp(motion) == before);
+    CHECK_FALSE(std::filesystem::exists(dir / "motion.AT2.tmp"));
+    std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,28 @@
+// Atomic writing and the protection of inputs (core/file_io.hpp).
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+
+using namespace freestand;
+
+TEST_CASE("write_file_atomic refuses a file read as an input, under any spelling of its path",
+          "[core][io][errors]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_file_io_inputs";
+    std::filesystem::remove_all(dir);
+    core::write_file_atomic(dir / "input.csv", "time_s,accel_g\n0,0\n");
+    core::write_file_atomic(dir / "other.csv", "x\n");
+    CHECK(core::read_input_file(dir / "input.csv") == "time_s,accel_g\n0,0\n");
+    CHECK_THROWS_AS(core::write_file_atomic(dir / "input.csv", "lost"), IoError);
+    CHECK_THROWS_WITH(core::write_file_atomic(dir / "sub" / ".." / "input.csv", "lost"),
+                      Catch::Contains("refusing to overwrite an input file"));
+    CHECK(core::read_text_file(dir / "input.csv") == "time_s,accel_g\n0,0\n");
+    CHECK_FALSE(std::filesystem::exists(dir / "input.csv.tmp"));
+    // Files only read with read_text_file, and new files, are written as before.
+    CHECK(core::read_text_file(dir / "other.csv") == "x\n");
+    CHECK_NOTHROW(core::write_file_atomic(dir / "other.csv", "y\n"));
+    CHECK_NOTHROW(core::write_file_atomic(dir / "new.csv", "z\n"));
+    CHECK(core::read_text_file(dir / "other.csv") == "y\n");
+    std::filesystem::remove_all(dir);
+}
