@@ -20,14 +20,10 @@ namespace {
 
 using Vec = std::array<double, 4>;  // u, u', theta, theta'
 constexpr double half_pi = std::numbers::pi / 2.0;
+constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
 constexpr std::size_t burst_fail = 100000;    // ... before giving up
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
-// Longest contact step, s (it matters after the excitation, where steps need not end at
-// samples): impacts and slip stops are searched inside a step, but the force events (friction,
-// lift-off) only by their sign at step ends, so a step must not span two of their crossings (a
-// rocking half-cycle of the smallest blocks is ~0.1 s).
-constexpr double max_step_s = 0.02;
 
 // Linear base acceleration on the current segment.
 struct Segment {
@@ -255,9 +251,9 @@ public:
     /// Each step is one Taylor polynomial (taylor.hpp) on one linear piece of the input: while
     /// the excitation lasts steps end at every sample, where the input's slope jumps, and the
     /// sample is recorded from the step's end; after it the base is at rest and steps run up to
-    /// max_step_s, the samples inside them evaluated on the polynomial. next_sample() is the
-    /// first sample not recorded (the caller records the one at the time reached if it is a
-    /// sample time).
+    /// Options::max_contact_step_s, the samples inside them evaluated on the polynomial.
+    /// next_sample() is the first sample not recorded (the caller records the one at the time
+    /// reached if it is a sample time).
     double advance_contact(std::size_t k, double t, double horizon) {
         next_sample_ = k + 1;
         const bool tail = t >= bm_.quiet_from_s();
@@ -296,10 +292,11 @@ public:
             x0.ax1 = seg_.ax1;
             x0.G1 = seg_.G1;
             const double stop_at = tail ? horizon : std::min(tb_, horizon);
-            double h = std::min({stop_at - t, max_step_s, h_cap_});
-            // Sample times are k dt: a segment can be an ulp longer than dt (or max_step_s), and a
-            // step an ulp short of the sample would leave a step of ~1e-15 s after it.
-            if (stop_at - (t + h) < 1e-12 * h) h = stop_at - t;
+            double h = std::min({stop_at - t, o_.max_contact_step_s, h_cap_});
+            // Sample times are k dt: a segment can be an ulp longer than dt (or the longest step), and a
+            // step an ulp short of the sample would leave a step of ~1e-15 s after it. An ulp of
+            // t grows with t (7e-15 s at 32 s), so the snap is a few ulps of t as well.
+            if (stop_at - (t + h) < std::max(1e-12 * h, 8.0 * eps * stop_at)) h = stop_at - t;
             const double h_full = h;
             h = taylor_contact_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_);
             if (h < 1e-14)
@@ -705,7 +702,7 @@ private:
     double tb_ = 0.0;
     // Longest contact step to try next: 1.25 x the last step the tolerance shortened, doubling
     // after each step it did not.
-    double h_cap_ = max_step_s;
+    double h_cap_ = o_.max_contact_step_s;
     RockDegree rock_degree_;  // Taylor degree carried between rock steps
     std::size_t next_sample_ = 0;
     Known known_;

@@ -15,6 +15,7 @@ SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
     require_positive(options.cd_dt_s, {"", 0, "--dt"});
     require_positive(options.rel_tol, {"", 0, "rel_tol"});
     require_positive(options.abs_tol, {"", 0, "abs_tol"});
+    require_positive(options.max_contact_step_s, {"", 0, "max_contact_step_s"});
     const auto start = std::chrono::steady_clock::now();
     const detail::Geometry g = detail::make_geometry(model);
     const detail::BaseMotion base(excitation, options.g_mps2);

@@ -90,6 +90,12 @@ struct Options {
     /// far below central difference at 1e-4 s (1e-3).
     double rel_tol = 1e-9;
     double abs_tol = 1e-11;      ///< absolute tolerance (rad, m, rad/s, m/s)
+    /// Longest rock / slide-rock step, s. Steps also end at every input sample, so this binds
+    /// only on records sampled coarser and after the excitation. Impacts and slip stops are
+    /// searched inside a step, the force events (friction exceeded, lift-off) by their sign at
+    /// its ends: a step must not span two crossings of one (a rocking half-cycle of the
+    /// smallest blocks is ~0.1 s).
+    double max_contact_step_s = 0.02;
     /// Settling (Zeno) rule: after an impact whose rebound would lift the block by less than
     /// this angle (free-rocking energy estimate), the block is set flat with theta = theta' = 0.
     double settle_rebound_rad = 1e-7;

@@ -44,6 +44,10 @@ TEST_CASE("simulate rejects inconsistent inputs and settings", "[dynamics][error
     o.rel_tol = 0.0;
     CHECK_THROWS_MATCHES(dynamics::simulate(model, e, o), InputError,
                          Message("rel_tol: value 0 must be a finite number > 0"));
+    o = test::opts();
+    o.max_contact_step_s = 0.0;
+    CHECK_THROWS_MATCHES(dynamics::simulate(model, e, o), InputError,
+                         Message("max_contact_step_s: value 0 must be a finite number > 0"));
     CHECK_THROWS_MATCHES(dynamics::make_block_model(block::Block::uniform(0.15, 0.6, 38.0), 0.3,
                                                     std::nullopt, std::nullopt, 0.5),
                          InputError,
