@@ -64,15 +64,28 @@ block::Block parse_block(const po::variables_map& vm) {
     }
     const double b = kv.at("b"), h = kv.at("h"), m = kv.at("m");
     if (!vm.count("cg") && !vm.count("inertia")) return block::Block::uniform(b, h, m);
-    // General block: the base is 2b wide; --cg x,y puts the CG x from the left edge, y up.
+    // General block: the base is 2b wide; --cg x,y puts the CG x from the left edge, y up (the
+    // form of issue 5); --cg x=..,h=.. the CG x right of the base's centre and h up, as
+    // `classify` and `rock` take it.
     double b_left = b, cg_h = h;
     if (vm.count("cg")) {
-        const auto xy = parse_double_list(vm["cg"].as<std::string>(), "--cg");
-        if (xy.size() != 2) throw UsageError("--cg: expected x,y (m)");
-        require_in_range(xy[0], 0.0, 2.0 * b, {"", 0, "--cg x (from the left edge, m)"}, false, false);
-        require_positive(xy[1], {"", 0, "--cg y (height, m)"});
-        b_left = xy[0];
-        cg_h = xy[1];
+        const std::string text = vm["cg"].as<std::string>();
+        if (text.find('=') != std::string::npos) {
+            const auto cg = parse_key_values(text, "--cg", {"x", "h"});
+            if (cg.count("x")) {
+                require_in_range(cg.at("x"), -b, b, {"", 0, "--cg x (right of the centre, m)"}, false, false);
+                b_left = b + cg.at("x");
+            }
+            if (cg.count("h")) cg_h = cg.at("h");
+            require_positive(cg_h, {"", 0, "--cg h (height, m)"});
+        } else {
+            const auto xy = parse_double_list(text, "--cg");
+            if (xy.size() != 2) throw UsageError("--cg: expected x,y or x=..,h=.. (m)");
+            require_in_range(xy[0], 0.0, 2.0 * b, {"", 0, "--cg x (from the left edge, m)"}, false, false);
+            require_positive(xy[1], {"", 0, "--cg y (height, m)"});
+            b_left = xy[0];
+            cg_h = xy[1];
+        }
     }
     const double ic = vm.count("inertia") ? vm["inertia"].as<double>()
                                           : m * (b * b + h * h) / 3.0;  // uniform 2b x 2h
@@ -153,7 +166,9 @@ int run(const std::vector<std::string>& args) {
     po::options_description desc("simulate options");
     desc.add_options()
         ("block", po::value<std::string>()->required(), "b=half-width,h=CG height,m=mass (m, kg)")
-        ("cg", po::value<std::string>(), "x,y: CG x from the left edge and y above the base (m)")
+        ("cg", po::value<std::string>(),
+         "x,y: CG x from the left edge and y above the base (m); or x=OFFSET,h=HEIGHT: x right "
+         "of the base's centre, as classify and rock take it")
         ("inertia", po::value<double>(), "I_c about the CG (kg m^2)")
         ("top", po::value<double>(), "height of the top corners for top_accel (m; default 2 h)")
         ("mu", po::value<double>()->required(), "static friction coefficient")

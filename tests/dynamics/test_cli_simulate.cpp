@@ -37,6 +37,25 @@ TEST_CASE("simulate --integrator cd --out writes a CSV with units", "[dynamics][
     std::filesystem::remove(out);
 }
 
+TEST_CASE("simulate --cg takes classify's x=OFFSET,h=HEIGHT as well as x,y from the left edge",
+          "[dynamics][cli]") {
+    const std::string common = "simulate --block b=0.15,h=0.6,m=38 --inertia 3.5 --mu 0.6 "
+                               "--sine 0.6g,1.5Hz,3s,ramp=0.5s --json";
+    const auto left_edge = run_cli(common + " --cg 0.2,0.5");
+    const auto offset = run_cli(common + " --cg x=0.05,h=0.5");
+    const auto centred = run_cli(common + " --cg x=-0.05,h=0.5");
+    REQUIRE(left_edge.exit_code == 0);
+    REQUIRE(offset.exit_code == 0);
+    REQUIRE(centred.exit_code == 0);
+    const auto a = nlohmann::json::parse(left_edge.out), b = nlohmann::json::parse(offset.out),
+               c = nlohmann::json::parse(centred.out);
+    CHECK(a["rock_max_rad"].get<double>() > 0.0);
+    CHECK(a["rock_max_rad"] == b["rock_max_rad"]);
+    CHECK(a["impacts"] == b["impacts"]);
+    // The mirror-image CG changes the answer: the offset is read, not ignored.
+    CHECK(a["rock_max_rad"] != c["rock_max_rad"]);
+}
+
 TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][errors]") {
     struct Case { std::string args, expect; int code; };
     const std::vector<Case> cases = {
@@ -46,6 +65,8 @@ TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][erro
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --restitution 1.5 --sine 0.5g,2Hz,1s", "--restitution", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --inertia -1 --sine 0.5g,2Hz,1s", "--inertia", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --top 0.3 --sine 0.5g,2Hz,1s", "--top", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg x=0.1,h=0.5 --sine 0.5g,2Hz,1s", "--cg x (right of the centre", 3},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg 0.1 --sine 0.5g,2Hz,1s", "--cg: expected x,y or x=..,h=..", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2", "exactly one of --motion and --sine", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz", "--sine", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz,1s --integrator rk", "--integrator", 2},
