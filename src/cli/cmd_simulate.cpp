@@ -67,14 +67,16 @@ block::Block parse_block(const po::variables_map& vm) {
     // General block: the base is 2b wide; --cg x,y puts the CG x from the left edge, y up (the
     // form of issue 5); --cg x=..,h=.. the CG x right of the base's centre and h up, as
     // `classify` and `rock` take it.
-    double b_left = b, cg_h = h;
+    double b_left = b, b_right = b, cg_h = h;
     if (vm.count("cg")) {
         const std::string text = vm["cg"].as<std::string>();
         if (text.find('=') != std::string::npos) {
             const auto cg = parse_key_values(text, "--cg", {"x", "h"});
             if (cg.count("x")) {
-                require_in_range(cg.at("x"), -b, b, {"", 0, "--cg x (right of the centre, m)"}, false, false);
-                b_left = b + cg.at("x");
+                const double x = cg.at("x");
+                require_in_range(x, -b, b, {"", 0, "--cg x (right of the centre, m)"}, false, false);
+                b_left = b + x;
+                b_right = b - x;
             }
             if (cg.count("h")) cg_h = cg.at("h");
             require_positive(cg_h, {"", 0, "--cg h (height, m)"});
@@ -84,13 +86,19 @@ block::Block parse_block(const po::variables_map& vm) {
             require_in_range(xy[0], 0.0, 2.0 * b, {"", 0, "--cg x (from the left edge, m)"}, false, false);
             require_positive(xy[1], {"", 0, "--cg y (height, m)"});
             b_left = xy[0];
+            b_right = 2.0 * b - xy[0];
             cg_h = xy[1];
         }
+        // As classify and rock: the uniform box's I_c belongs to its centre, not to a moved CG.
+        if (!vm.count("inertia"))
+            throw InputError({"", 0, "--inertia"},
+                             "a CG given by --cg needs the inertia I_c about it (kg m^2); a "
+                             "uniform-box default would be wrong");
     }
     const double ic = vm.count("inertia") ? vm["inertia"].as<double>()
                                           : m * (b * b + h * h) / 3.0;  // uniform 2b x 2h
     require_positive(ic, {"", 0, "--inertia (kg m^2)"});
-    return block::Block::general(b_left, 2.0 * b - b_left, cg_h, m, ic);
+    return block::Block::general(b_left, b_right, cg_h, m, ic);
 }
 
 std::string series_csv(const dynamics::SimulationResult& r, const std::string& label) {

@@ -15,7 +15,8 @@ SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
     require_positive(options.cd_dt_s, {"", 0, "--dt"});
     require_positive(options.rel_tol, {"", 0, "rel_tol"});
     require_positive(options.abs_tol, {"", 0, "abs_tol"});
-    require_positive(options.max_contact_step_s, {"", 0, "max_contact_step_s"});
+    // h_cap_ in the engine never exceeds 1 s.
+    require_in_range(options.max_contact_step_s, 0.0, 1.0, {"", 0, "max_contact_step_s (s)"}, false, true);
     const auto start = std::chrono::steady_clock::now();
     const detail::Geometry g = detail::make_geometry(model);
     const detail::BaseMotion base(excitation, options.g_mps2);

@@ -94,7 +94,7 @@ struct Options {
     /// only on records sampled coarser and after the excitation. Impacts and slip stops are
     /// searched inside a step, the force events (friction exceeded, lift-off) by their sign at
     /// its ends: a step must not span two crossings of one (a rocking half-cycle of the
-    /// smallest blocks is ~0.1 s).
+    /// smallest blocks is ~0.1 s). At most 1 s.
     double max_contact_step_s = 0.02;
     /// Settling (Zeno) rule: after an impact whose rebound would lift the block by less than
     /// this angle (free-rocking energy estimate), the block is set flat with theta = theta' = 0.

@@ -175,7 +175,7 @@ TEST_CASE("event-driven answer unchanged when contact steps are capped below the
     const auto elcentro = test::elcentro();
     const auto chichi = core::read_at2(FREESTAND_TEST_DATA "/RSN1546_CHICHI_TCU122-N.AT2");
     struct Case { const core::Record* rec; double half_width_m, pga_g, mu; };
-    for (const Case c : {Case{&elcentro, 0.15, 0.5, 0.2}, Case{&elcentro, 0.3, 0.9, 0.6},
+    for (const Case c : {Case{&elcentro, 0.3, 0.9, 0.6},
                          Case{&elcentro, 0.3, 0.9, 0.525}, Case{&elcentro, 0.15, 0.9, 0.45},
                          Case{&chichi, 0.3, 0.9, 0.6}, Case{&chichi, 0.3, 0.9, 0.525}}) {
         const auto model = dynamics::make_block_model(block::Block::uniform(c.half_width_m, 0.6, 38.0), c.mu);
@@ -187,7 +187,7 @@ TEST_CASE("event-driven answer unchanged when contact steps are capped below the
         const auto a = dynamics::simulate(model, e, o).summary;
         const auto b = dynamics::simulate(model, e, capped).summary;
         CAPTURE(c.rec->name, c.half_width_m, c.pga_g, c.mu);
-        CHECK(b.steps >= a.steps);
+        CHECK(b.steps > a.steps);  // the cap is applied
         CHECK(a.impacts == b.impacts);
         CHECK(a.mode_changes == b.mode_changes);
         CHECK(a.overturned == b.overturned);

@@ -47,7 +47,10 @@ TEST_CASE("simulate rejects inconsistent inputs and settings", "[dynamics][error
     o = test::opts();
     o.max_contact_step_s = 0.0;
     CHECK_THROWS_MATCHES(dynamics::simulate(model, e, o), InputError,
-                         Message("max_contact_step_s: value 0 must be a finite number > 0"));
+                         Message("max_contact_step_s (s): value 0 is out of range; expected (0, 1]"));
+    o.max_contact_step_s = 2.0;
+    CHECK_THROWS_MATCHES(dynamics::simulate(model, e, o), InputError,
+                         Message("max_contact_step_s (s): value 2 is out of range; expected (0, 1]"));
     CHECK_THROWS_MATCHES(dynamics::make_block_model(block::Block::uniform(0.15, 0.6, 38.0), 0.3,
                                                     std::nullopt, std::nullopt, 0.5),
                          InputError,
