@@ -198,25 +198,32 @@ private:
         const double c0 = -a.ax - dsig * g_.mu_k * a.G;
         const double c1 = -seg_.ax1 - dsig * g_.mu_k * seg_.G1;
         const double span = tb_ - t;
-        // Starting from u' = 0 the direction was chosen at the probe time t + delta (the start
-        // may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots before it.
-        const double delta = st_.v == 0.0 ? std::min(1e-9, 0.5 * span) : 0.0;
-        double tau = may_stop(st_.v, c0, c1, span, dsig)
-                         ? first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span)
-                         : std::numeric_limits<double>::infinity();
-        Ev ev = tau <= span ? Ev::stop : Ev::none;
-        if (st_.v == 0.0 && !(dsig * (c0 + c1 * delta) > 0.0)) {
-            tau = 0.0;  // pushed against its slip direction: a stop now
-            ev = Ev::stop;
-        }
-        if (seg_.G1 < 0.0) {
-            const double t_fly = -a.G / seg_.G1;
-            if (t_fly >= 0.0 && t_fly < std::min(tau, span)) {
-                tau = t_fly;
-                ev = Ev::lift;
+        double tau = span;
+        Ev ev = Ev::none;
+        // Most segments of a slide can neither stop nor lift off (the hot path of sliding
+        // records): the searches are skipped.
+        const bool stop_possible = may_stop(st_.v, c0, c1, span, dsig);
+        if (stop_possible || (seg_.G1 < 0.0 && !(-a.G / seg_.G1 >= span))) {
+            // Starting from u' = 0 the direction was chosen at the probe time t + delta (the
+            // start may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots
+            // before it.
+            const double delta = st_.v == 0.0 ? std::min(1e-9, 0.5 * span) : 0.0;
+            tau = stop_possible ? first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span)
+                                : std::numeric_limits<double>::infinity();
+            ev = tau <= span ? Ev::stop : Ev::none;
+            if (st_.v == 0.0 && !(dsig * (c0 + c1 * delta) > 0.0)) {
+                tau = 0.0;  // pushed against its slip direction: a stop now
+                ev = Ev::stop;
             }
+            if (seg_.G1 < 0.0) {
+                const double t_fly = -a.G / seg_.G1;
+                if (t_fly >= 0.0 && t_fly < std::min(tau, span)) {
+                    tau = t_fly;
+                    ev = Ev::lift;
+                }
+            }
+            if (ev == Ev::none) tau = span;
         }
-        if (ev == Ev::none) tau = span;
         st_.u += tau * (st_.v + tau * (0.5 * c0 + tau * c1 / 6.0));
         st_.v += tau * (c0 + 0.5 * c1 * tau);
         rec_.time_in(Mode::slide, tau);
@@ -419,43 +426,13 @@ public:
     double advance_slide_run(std::size_t k, double t, double horizon) {
         next_sample_ = k + 1;
         enter_segment(k);
-        double te = advance_slide(t);
-        bool seg_stale = false;
-        while (st_.mode == Mode::slide && te == tb_ && te < horizon) {
-            const std::size_t j = next_sample_++;
-            rec_.sample_slide(te, st_, bm_.sample(j));
-            seg_stale = slide_through(j);
-            if (!seg_stale) {
-                enter_segment(j);
-                te = advance_slide(te);
-            } else {
-                te = tb_;
-            }
+        for (;;) {
+            const double te = advance_slide(t);
+            if (st_.mode != Mode::slide || te < tb_ || te >= horizon) return te;
+            rec_.sample_slide(te, st_, bm_.sample(next_sample_));
+            enter_segment(next_sample_++);
+            t = te;
         }
-        if (seg_stale) enter_segment(next_sample_ - 1);
-        return te;
-    }
-
-    /// advance_slide over the whole segment j, from its start sample, when neither a stop nor a
-    /// lift-off can occur in it (the hot path of sliding records: the same arithmetic without
-    /// the event logic). False, with nothing changed, if one may.
-    bool slide_through(std::size_t j) {
-        double ax0, ax1, G0, G1;
-        bm_.segment(j, ax0, ax1, G0, G1);
-        const double dsig = static_cast<double>(st_.sigma);
-        const double c0 = -ax0 - dsig * g_.mu_k * G0;
-        const double c1 = -ax1 - dsig * g_.mu_k * G1;
-        const double t1 = bm_.t_k(j + 1);
-        const double span = t1 - tb_;
-        if (st_.v == 0.0 || may_stop(st_.v, c0, c1, span, dsig)) return false;
-        if (G1 < 0.0 && !(-G0 / G1 >= span)) return false;
-        rec_.step();
-        st_.u += span * (st_.v + span * (0.5 * c0 + span * c1 / 6.0));
-        st_.v += span * (c0 + 0.5 * c1 * span);
-        rec_.time_in(Mode::slide, span);
-        rec_.observe(st_);
-        tb_ = t1;
-        return true;
     }
 
     /// Accelerations (and trigonometry) of the current contact state if a contact run ended at
