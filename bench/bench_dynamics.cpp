@@ -103,13 +103,39 @@ double error(const dynamics::Summary& s, const dynamics::Summary& ref) {
     return std::max(es, er);
 }
 
+// A case on a record: the block, the excitation scaled to the case's PGA, the options every
+// configuration starts from, and the reference answer (event-driven at rel_tol 1e-13).
+struct SetUp {
+    dynamics::BlockModel m;
+    dynamics::Excitation e;
+    dynamics::Options o;
+    dynamics::Summary ref;
+};
+
+SetUp set_up(const Case& c, const core::Record& rec) {
+    double peak = 0.0;
+    for (double a : rec.accel_mps2) peak = std::max(peak, std::abs(a));
+    SetUp u{dynamics::make_block_model(block::Block::uniform(c.half_width_m, 0.6, 38.0), c.mu),
+            dynamics::excitation_from_record(rec, c.pga_g * 9.81 / peak), {}, {}};
+    u.o.record_series = false;
+    auto tight = u.o;
+    tight.rel_tol = 1e-13;
+    tight.abs_tol = 1e-15;
+    u.ref = dynamics::simulate(u.m, u.e, tight).summary;
+    return u;
+}
+
+dynamics::Options central_difference(dynamics::Options o, double dt_s) {
+    o.integrator = dynamics::Integrator::central_difference;
+    o.cd_dt_s = dt_s;
+    return o;
+}
+
 }  // namespace
 
 int main() {
     auto rec = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
     rec.accel_mps2.resize(static_cast<std::size_t>(20.0 / rec.dt_s) + 1);
-    double peak = 0.0;
-    for (double a : rec.accel_mps2) peak = std::max(peak, std::abs(a));
     // Slide: tan(alpha) = 0.25 > mu. Rock and slide-rock: tan(alpha) = 0.5; mu = 0.525 lies
     // between tan(alpha) and mu_crit at the peaks, so the block slide-rocks for ~0.3 s.
     const Case cases[] = {{"slide", 0.15, 0.5, 0.15}, {"rock", 0.3, 0.9, 0.6},
@@ -118,14 +144,8 @@ int main() {
                 "steps", "speedup");
     double floor_ratio = 0.0;
     for (const Case& c : cases) {
-        const auto m = dynamics::make_block_model(block::Block::uniform(c.half_width_m, 0.6, 38.0), c.mu);
-        const auto e = dynamics::excitation_from_record(rec, c.pga_g * 9.81 / peak);
-        dynamics::Options o;
-        o.record_series = false;
-        auto ot = o;
-        ot.rel_tol = 1e-13;
-        ot.abs_tol = 1e-15;
-        const dynamics::Summary ref = dynamics::simulate(m, e, ot).summary;
+        const SetUp u = set_up(c, rec);
+        const auto& o = u.o;
         std::vector<Config> configs = {{"event", o, 10}};
         for (double tol : {1e-10, 1e-6}) {
             auto ol = o;
@@ -133,38 +153,35 @@ int main() {
             ol.abs_tol = tol * 1e-2;
             configs.push_back({tol == 1e-10 ? "event tol 1e-10" : "event tol 1e-6", ol, 10});
         }
-        for (double dt : {1e-3, 1e-4}) {
-            auto oc = o;
-            oc.integrator = dynamics::Integrator::central_difference;
-            oc.cd_dt_s = dt;
-            configs.push_back({dt == 1e-3 ? "cd dt=1e-3" : "cd dt=1e-4", oc, dt == 1e-3 ? 3 : 1});
-        }
-        time_interleaved(m, e, configs, 15);
-        std::vector<Config> fine = {{"cd dt=1e-5", configs[3].o, 1}};
-        fine[0].o.cd_dt_s = 1e-5;
-        time_interleaved(m, e, fine, 3);
+        configs.push_back({"cd dt=1e-3", central_difference(o, 1e-3), 3});
+        configs.push_back({"cd dt=1e-4", central_difference(o, 1e-4), 1});
+        // The rock case's floor, timed in the same rounds: its Taylor steps chained alone.
+        const auto g = dynamics::detail::make_geometry(u.m);
+        const dynamics::detail::BaseMotion bm(u.e, o.g_mps2);
+        const bool rock = std::string_view(c.name) == "rock";
+        const std::size_t n_steps = rock ? dynamics::simulate(u.m, u.e, o).summary.steps : 0;
+        if (rock)
+            configs.push_back({"kernel chain", o, 10, [&] { rock_chain(g, bm, u.e.dt_s, n_steps, o); }});
+        time_interleaved(u.m, u.e, configs, 15);
+        std::vector<Config> fine = {{"cd dt=1e-5", central_difference(o, 1e-5), 1}};
+        time_interleaved(u.m, u.e, fine, 3);
         configs.push_back(fine[0]);
         const double t_ed = configs[0].best_s;
         for (const Config& k : configs) {
+            if (k.run) continue;
             std::printf("%-11s %-15s %12.3e %12.3e %10zu ", c.name, k.label, k.best_s,
-                        error(k.s, ref), k.s.steps);
+                        error(k.s, u.ref), k.s.steps);
             if (&k == &configs[0])
-                std::printf("%8s   (peak slide %.4g m, rotation %.4g rad)\n", "", ref.slide_max_m,
-                            ref.rock_max_rad);
+                std::printf("%8s   (peak slide %.4g m, rotation %.4g rad)\n", "", u.ref.slide_max_m,
+                            u.ref.rock_max_rad);
             else
                 std::printf("%7.1fx\n", k.best_s / t_ed);
         }
-        if (std::string_view(c.name) == "rock") {
-            const auto g = dynamics::detail::make_geometry(m);
-            const dynamics::detail::BaseMotion bm(e, o.g_mps2);
-            const std::size_t n = configs[0].s.steps;
-            std::vector<Config> floor = {{"event", o, 10}, {"cd dt=1e-4", configs[4].o, 1},
-                                         {"kernel chain", o, 10, [&] { rock_chain(g, bm, e.dt_s, n, o); }}};
-            time_interleaved(m, e, floor, 15);
-            floor_ratio = floor[1].best_s / floor[2].best_s;
+        if (rock) {
+            const double t_floor = configs[5].best_s;
+            floor_ratio = configs[4].best_s / t_floor;
             std::printf("%-11s %-15s %12.3e %12s %10zu %7.2fx   (Taylor steps chained alone: the "
-                        "floor; timed in rounds with event and cd 1e-4)\n", c.name, "kernel chain",
-                        floor[2].best_s, "-", n, floor[2].best_s / floor[0].best_s);
+                        "floor)\n", c.name, "kernel chain", t_floor, "-", n_steps, t_floor / t_ed);
         }
     }
     std::printf("\nrock: central difference at 1e-4 s over the kernel chain alone: %.1fx\n",
@@ -179,26 +196,16 @@ int main() {
         coarse.accel_mps2.clear();
         for (std::size_t i = 0; i < rec.accel_mps2.size(); i += every)
             coarse.accel_mps2.push_back(rec.accel_mps2[i]);
-        double peak_coarse = 0.0;
-        for (double a : coarse.accel_mps2) peak_coarse = std::max(peak_coarse, std::abs(a));
         std::printf("\nrecord decimated to dt = %.3f s\n%-11s %12s %12s %12s %12s %8s\n", coarse.dt_s,
                     "case", "event_s", "event_error", "cd_1e-4_s", "cd_error", "speedup");
         for (const Case& c : cases) {
-            const auto m = dynamics::make_block_model(block::Block::uniform(c.half_width_m, 0.6, 38.0), c.mu);
-            const auto e = dynamics::excitation_from_record(coarse, c.pga_g * 9.81 / peak_coarse);
-            dynamics::Options o;
-            o.record_series = false;
-            auto ot = o;
-            ot.rel_tol = 1e-13;
-            ot.abs_tol = 1e-15;
-            const dynamics::Summary ref = dynamics::simulate(m, e, ot).summary;
-            auto oc = o;
-            oc.integrator = dynamics::Integrator::central_difference;
-            std::vector<Config> configs = {{"event", o, 10}, {"cd dt=1e-4", oc, 1}};
-            time_interleaved(m, e, configs, 15);
+            const SetUp u = set_up(c, coarse);
+            std::vector<Config> configs = {{"event", u.o, 10},
+                                           {"cd dt=1e-4", central_difference(u.o, 1e-4), 1}};
+            time_interleaved(u.m, u.e, configs, 15);
             const double t_ed = configs[0].best_s, t_cd = configs[1].best_s;
             std::printf("%-11s %12.3e %12.3e %12.3e %12.3e %7.1fx\n", c.name, t_ed,
-                        error(configs[0].s, ref), t_cd, error(configs[1].s, ref), t_cd / t_ed);
+                        error(configs[0].s, u.ref), t_cd, error(configs[1].s, u.ref), t_cd / t_ed);
         }
     }
     return 0;
