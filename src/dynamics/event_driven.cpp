@@ -200,10 +200,12 @@ private:
         const double span = tb_ - t;
         double tau = span;
         Ev ev = Ev::none;
+        // G = 0 (lift-off) at t + t_fly; never while G does not fall.
+        const double t_fly = seg_.G1 < 0.0 ? -a.G / seg_.G1 : std::numeric_limits<double>::infinity();
         // Most segments of a slide can neither stop nor lift off (the hot path of sliding
         // records): the searches are skipped.
         const bool stop_possible = may_stop(st_.v, c0, c1, span, dsig);
-        if (stop_possible || (seg_.G1 < 0.0 && !(-a.G / seg_.G1 >= span))) {
+        if (stop_possible || !(t_fly >= span)) {
             // Starting from u' = 0 the direction was chosen at the probe time t + delta (the
             // start may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots
             // before it.
@@ -215,12 +217,9 @@ private:
                 tau = 0.0;  // pushed against its slip direction: a stop now
                 ev = Ev::stop;
             }
-            if (seg_.G1 < 0.0) {
-                const double t_fly = -a.G / seg_.G1;
-                if (t_fly >= 0.0 && t_fly < std::min(tau, span)) {
-                    tau = t_fly;
-                    ev = Ev::lift;
-                }
+            if (t_fly >= 0.0 && t_fly < std::min(tau, span)) {
+                tau = t_fly;
+                ev = Ev::lift;
             }
             if (ev == Ev::none) tau = span;
         }
