@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "assess/materials.hpp"
 #include "assess/toml_reader.hpp"
@@ -36,7 +37,10 @@ const std::vector<std::string> component_keys{"name",
                                               "mu_s",
                                               "mu_k",
                                               "restitution",
+                                              "mu_s_range",
+                                              "restitution_range",
                                               "allowable_slide_m",
+                                              "allowable_relative_m",
                                               "required_overturn_fs",
                                               "assumptions"};
 const std::vector<std::string> site_keys{
@@ -137,38 +141,89 @@ void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assump
     }
 }
 
+// A [lower, upper] pair within range, lower <= upper.
+std::optional<std::array<double, 2>> read_bounds(TableReader& r, const std::string& key,
+                                                 Range range) {
+    const auto v = r.numbers(key, range, 2);
+    if (!v) return std::nullopt;
+    if ((*v)[0] > (*v)[1]) {
+        r.fail(key, fmt::format("expected [lower, upper] with lower <= upper, got [{}, {}]",
+                                (*v)[0], (*v)[1]));
+    }
+    return std::array<double, 2>{(*v)[0], (*v)[1]};
+}
+
+// Where the friction bounds come from: the case's range (which must hold the nominal value), or
+// METHODS.md s.7's default around the single measurement, stated as an assumption.
+void read_friction_bounds(TableReader& r, BaseContact& base, bool mu_given,
+                          std::vector<std::string>& assumptions) {
+    const auto range = read_bounds(r, "mu_s_range", Range{0.0, 2.0});
+    if (!range) {
+        base.mu_s_range = default_mu_s_range(base.mu_s);
+        base.mu_s_range_source = "default 0.8-1.2 x mu_s (METHODS.md s.7)";
+        assumptions.push_back(fmt::format(
+            "Friction bounds not given: mu_s in [{:.3g}, {:.3g}], 0.8 and 1.2 times the single "
+            "value {:.3g} (METHODS.md s.7); sliding demands use the lower bound, rocking, "
+            "overturning and the classification the upper.",
+            base.mu_s_range[0], base.mu_s_range[1], base.mu_s));
+        return;
+    }
+    base.mu_s_range = *range;
+    base.mu_s_range_source = "case file (mu_s_range)";
+    if (!mu_given) {
+        // Only the range is known: its middle is the nominal value the report echoes.
+        base.mu_s = (base.mu_s_range[0] + base.mu_s_range[1]) / 2.0;
+        base.mu_k = base.mu_s;
+    } else if (base.mu_s < base.mu_s_range[0] || base.mu_s > base.mu_s_range[1]) {
+        r.fail("mu_s_range", fmt::format("mu_s = {} lies outside [{}, {}]", base.mu_s,
+                                         base.mu_s_range[0], base.mu_s_range[1]));
+    }
+}
+
 void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
     const Range mu_range{0.0, 2.0};
     const Range r_range{0.0, 1.0};
+    const bool named = r.has("base_material");
     if (const auto name = r.string("base_material")) {
         const Material* m = find_material(*name);
         if (m == nullptr) {
             r.fail("base_material", fmt::format("unknown material \"{}\"; expected one of {}",
                                                 *name, material_names()));
         }
-        c.base.material = m->name;
-        c.base.mu_s = m->mu_s;
-        c.base.restitution = m->restitution;
-        c.base.source = "material table (METHODS.md s.7)";
-    } else if (!r.has("mu_s")) {
-        r.fail("mu_s", fmt::format("missing required key (give base_material, one of {}, or mu_s "
-                                   "in [0, 2])",
+        c.base = material_contact(*m);
+    } else if (!r.has("mu_s") && !r.has("mu_s_range")) {
+        r.fail("mu_s", fmt::format("missing required key (give base_material, one of {}, mu_s "
+                                   "in [0, 2] or mu_s_range)",
                                    material_names()));
     } else {
         c.base.source = "case file";
     }
-    if (const auto mu = r.number("mu_s", mu_range)) {
-        if (!c.base.material.empty()) c.base.source += "; mu_s from the case file";
+    const auto mu = r.number("mu_s", mu_range);
+    if (mu) {
+        if (named) c.base.source += "; mu_s from the case file";
         c.base.mu_s = *mu;
     }
+    read_friction_bounds(r, c.base, mu.has_value() || named, assumptions);
     const auto mu_k = r.number("mu_k", Range{0.0, c.base.mu_s});
     c.base.mu_k = mu_k.value_or(c.base.mu_s);
     if (!mu_k) assumptions.push_back("mu_k not given: taken equal to mu_s.");
     if (const auto rest = r.number("restitution", r_range)) c.base.restitution = *rest;
-    if (!c.base.restitution) {
+    c.base.restitution_range = read_bounds(r, "restitution_range", r_range);
+    if (c.base.restitution_range) {
+        const auto& rr = *c.base.restitution_range;
+        if (c.base.restitution && (*c.base.restitution < rr[0] || *c.base.restitution > rr[1])) {
+            r.fail("restitution_range", fmt::format("restitution = {} lies outside [{}, {}]",
+                                                    *c.base.restitution, rr[0], rr[1]));
+        }
+    } else if (c.base.restitution) {
+        assumptions.push_back(fmt::format(
+            "Restitution bounds not given: from Housner's r of each direction to the measured "
+            "{:.3g} (METHODS.md s.7); rocking and overturning use the upper bound.",
+            *c.base.restitution));
+    } else {
         assumptions.push_back(
-            "No restitution given or tabulated: Housner's r = 1 - 2 M R^2 "
-            "sin^2(alpha) / I_O (METHODS.md s.1).");
+            "No restitution given or tabulated: Housner's r = 1 - 2 M R^2 sin^2(alpha) / I_O "
+            "(METHODS.md s.1) is both bounds.");
     }
 }
 
@@ -195,6 +250,7 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     }
     read_base(r, c, assumptions);
     c.allowable_slide_m = r.required_number("allowable_slide_m", Range{0.0, 10.0, false, true});
+    c.allowable_relative_m = r.number("allowable_relative_m", Range{0.0, 10.0, false, true});
     c.required_overturn_fs = r.number("required_overturn_fs", Range{1.0, 10.0}).value_or(1.5);
     r.finish(component_keys);
     return c;
@@ -304,7 +360,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
 
 Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
     Options o;
-    o.histories_per_level = static_cast<int>(r.integer("histories_per_level", 1, 100).value_or(5));
+    o.histories_per_level = static_cast<int>(r.integer("histories_per_level", 1, 100).value_or(7));
     o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, 9007199254740991LL).value_or(1));
     if (const auto records = r.strings("seed_records")) {
         for (const std::string& rec : *records) {
@@ -352,6 +408,15 @@ block::Block Component::block(Direction d) const {
     // Before the inertia is known (while reading p_radps) only R and alpha are used.
     return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg,
                                  uniform_inertia(mass_kg, g, cg_height_m));
+}
+
+std::array<double, 2> default_mu_s_range(double mu_s) { return {0.8 * mu_s, 1.2 * mu_s}; }
+
+Case with_base_material(Case c, const std::string& material) {
+    const Material* m = find_material(material);
+    if (m == nullptr) throw std::invalid_argument("with_base_material: unknown " + material);
+    c.component.base = material_contact(*m);
+    return c;
 }
 
 Case parse_case(const std::string& text, const std::string& file_label) {

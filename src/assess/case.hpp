@@ -26,14 +26,27 @@ struct PlanarGeometry {
     std::string inertia_source;    ///< how I_c was obtained, for the report
 };
 
-/// Base friction and restitution, with where each value came from.
+/// Base friction and restitution, with where each value came from, and their bounds
+/// (METHODS.md s.7: single measurements, so checks use bounds, not best estimates).
 struct BaseContact {
     std::string material;               ///< METHODS.md s.7 name, or "" for explicit values
-    double mu_s = 0.0;                  ///< static friction coefficient
-    double mu_k = 0.0;                  ///< kinetic friction coefficient
-    std::optional<double> restitution;  ///< on angular velocity; Housner's formula when absent
+    double mu_s = 0.0;                  ///< static friction coefficient (nominal)
+    double mu_k = 0.0;                  ///< kinetic friction coefficient (nominal)
+    std::optional<double> restitution;  ///< measured, on angular velocity; Housner's when absent
     std::string source;                 ///< e.g. "material table (METHODS.md s.7)" or "case file"
+    /// [lower, upper] static friction; the default is 0.8 and 1.2 x mu_s (METHODS.md s.7).
+    std::array<double, 2> mu_s_range{0.0, 0.0};
+    std::string mu_s_range_source;
+    /// [lower, upper] restitution given by the case; absent: from Housner's value of each
+    /// direction to the measured r (both Housner's when none is measured).
+    std::optional<std::array<double, 2>> restitution_range;
+
+    /// mu_k / mu_s, applied to both friction bounds (1 when mu_s = 0).
+    double kinetic_ratio() const { return mu_s > 0.0 ? mu_k / mu_s : 1.0; }
 };
+
+/// Default friction bounds of METHODS.md s.7: 0.8 and 1.2 times the single measurement.
+std::array<double, 2> default_mu_s_range(double mu_s);
 
 /// The free-standing component (issue 6, [component]).
 struct Component {
@@ -48,7 +61,9 @@ struct Component {
     std::optional<double> fixed_base_frequency_hz;
     std::optional<std::array<double, 2>> free_rocking_band_hz;
     BaseContact base;
-    double allowable_slide_m = 0.0;     ///< clearance / slack the component may slide
+    double allowable_slide_m = 0.0;     ///< absolute slide allowed: clearance to walls, neighbours
+    /// Relative displacement allowed between joined units (slack of a transfer tunnel), m.
+    std::optional<double> allowable_relative_m;
     double required_overturn_fs = 1.5;  ///< required alpha / theta_max (METHODS.md s.5a)
 
     const PlanarGeometry& plane(Direction d) const { return d == Direction::x ? x : y; }
@@ -92,7 +107,7 @@ const char* to_string(SimulatePolicy p);
 
 /// Run options (issue 6, [options]).
 struct Options {
-    int histories_per_level = 5;
+    int histories_per_level = 7;  ///< METHODS.md s.6 step 5: >= 7 lets the mean govern
     std::uint64_t seed = 1;
     std::vector<std::filesystem::path> seed_records;  ///< resolved against the case's folder
     SimulatePolicy simulate = SimulatePolicy::automatic;
@@ -106,6 +121,10 @@ struct Case {
     Options options;
     std::vector<std::string> assumptions;  ///< defaults the parser applied, in words
 };
+
+/// The case with its base replaced by material m's whole property set (friction bounds, mu_k =
+/// mu_s, tabulated restitution), exactly as a case file naming only `base_material = m` reads.
+Case with_base_material(Case c, const std::string& material);
 
 /// Parses a case file. Throws IoError if it cannot be read, InputError on any bad content
 /// (syntax, unknown key, missing key, wrong type, out-of-range value), naming file:line:key.

@@ -8,6 +8,7 @@
 
 #include "assess/verdict.hpp"
 #include "core/measures.hpp"
+#include "core/statistics.hpp"
 #include "core/units.hpp"
 #include "rocking/checks.hpp"
 #include "rocking/equivalent_linear.hpp"
@@ -79,14 +80,20 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     return out;
 }
 
-Sliding closed_form_sliding(const Case& c, const BaseContact& base, Direction d, Mode mode,
-                            const LevelDemand& dem, HistoryBank& bank) {
+// ASCE 4 and (with_energy) the energy estimate at the lower friction bound, when the block
+// slides there. The energy estimate is informational and its DeltaD is the histories'
+// displacement, so it is given at simulated levels only: whether a level shows it then
+// depends on that level alone, never on the order the levels ran in.
+Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction d, Mode mode,
+                            const LevelDemand& dem, HistoryBank& bank, bool with_energy) {
     Sliding out;
-    out.mu_e = sliding::effective_friction(base.mu_s, dem.pga_v_g);
+    out.mu_s = lower.mu_s;
+    out.mu_e = sliding::effective_friction(lower.mu_s, dem.pga_v_g);
     out.c_s_mps2 = 2.0 * out.mu_e * units::g_mps2;
     if (mode == Mode::rest || mode == Mode::rock) {
-        out.reason = mode == Mode::rest ? "at rest: the sliding methods do not apply"
-                                        : "the block rocks with friction holding: no sliding";
+        out.reason = mode == Mode::rest
+                         ? "at rest at the lower friction bound: the sliding methods do not apply"
+                         : "rocks with friction holding at the lower friction bound: no sliding";
         return out;
     }
     const sliding::Crossing cross =
@@ -97,61 +104,71 @@ Sliding closed_form_sliding(const Case& c, const BaseContact& base, Direction d,
     }
     // DeltaD of the energy method is the table (ground) displacement of the matched histories,
     // as in METHODS.md s.4's worked example (DeltaD = 0.040 m at 0.2 g).
-    out.pgd_m = bank.mean_pgd_m(d, dem.pga_g);
-    out.pgd_source = fmt::format("mean PGD of the {} matched {} histories",
-                                 c.options.histories_per_level, d == Direction::x ? "h1" : "h2");
     sliding::SlidingInput in;
-    in.mu_s = base.mu_s;
+    in.mu_s = lower.mu_s;
     in.av_g = dem.pga_v_g;
-    in.pgd_m = out.pgd_m;
     in.pga_h_g = dem.pga_of(d);
+    if (with_energy) {
+        out.pgd_m = bank.mean_pgd_m(d, dem.pga_g);
+        out.pgd_source = fmt::format("mean PGD of the {} matched {} histories",
+                                     c.options.histories_per_level,
+                                     d == Direction::x ? "h1" : "h2");
+        in.pgd_m = out.pgd_m;
+    }
     const sliding::SlidingEstimate est = sliding::estimate_sliding(in, *cross.f_hz);
     out.f_es_hz = est.f_es_hz;
     out.slide_asce_m = est.slide_asce_m;
-    out.slide_energy_m = est.slide_energy_m;
+    if (with_energy) out.slide_energy_m = est.slide_energy_m;
     std::vector<std::string> reasons;
     if (!est.slide_asce_m) reasons.push_back("ASCE 4: " + est.slide_asce_reason);
-    if (!est.slide_energy_m) reasons.push_back("energy: " + est.slide_energy_reason);
+    if (!with_energy) {
+        reasons.push_back("energy: given at simulated levels only (informational; its DeltaD "
+                          "is the histories' displacement)");
+    } else if (!est.slide_energy_m) {
+        reasons.push_back("energy: " + est.slide_energy_reason);
+    }
     out.reason = fmt::format("{}", fmt::join(reasons, "; "));
     return out;
 }
 
-rocking::ElBlockResult equivalent_linear(const Case& c, const BaseContact& base,
+rocking::ElBlockResult equivalent_linear(const Case& c, const ContactBound& upper,
                                          const block::Block& blk, Direction d,
                                          const LevelDemand& dem) {
-    auto& cached = dem.el_cache[d == Direction::x ? 0 : 1];
-    const bool cacheable = base.restitution == c.component.base.restitution;
-    if (cacheable && cached) return *cached;
+    const std::optional<double> r =
+        upper.housner ? std::nullopt : std::optional<double>(upper.restitution);
+    const std::pair<int, double> key{d == Direction::x ? 0 : 1, r.value_or(-1.0)};
+    if (const auto it = dem.el_cache.find(key); it != dem.el_cache.end()) return it->second;
     rocking::ElOptions opt;
     opt.pga_h_g = dem.pga_of(d);
     opt.pga_v_g = dem.pga_v_g;
-    opt.restitution = base.restitution;
+    opt.restitution = r;
     opt.fs_required = c.component.required_overturn_fs;
     rocking::VerticalDemand vertical;
     vertical.ratio = c.site.vertical_ratio;
     rocking::ElBlockResult result =
         rocking::equivalent_linear_rocking(blk, dem.sa_vh_damped, vertical, opt);
-    if (cacheable) cached = result;
+    dem.el_cache.emplace(key, result);
     return result;
 }
 
 // The s.5a estimate is computed only for the rocking modes: at rest or sliding the verdict does
 // not read it, and it dominates the closed-form cost.
-Rocking closed_form_rocking(const Case& c, const BaseContact& base, const block::Block& blk,
-                            Direction d, Mode mode, double mu_s, const LevelDemand& dem) {
+Rocking closed_form_rocking(const Case& c, const ContactBound& upper, const block::Block& blk,
+                            Direction d, Mode mode, const LevelDemand& dem) {
     Rocking out;
     const block::Edge e = blk.critical_edge();
     out.alpha_rad = blk.alpha_rad(e);
     out.R_m = blk.R_m(e);
     out.p_radps = blk.p_radps(e);
-    out.restitution = base.restitution.value_or(blk.housner_restitution(e));
+    out.restitution = upper.restitution;
     out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
     out.ishiyama_v_mps = rocking::ishiyama_velocity_mps(blk, e);
     const double A = dem.pga_of(d) / (1.0 - dem.pga_v_g);
     if (mode == Mode::rock || mode == Mode::slide_rock) {
-        const rocking::ElBlockResult el = equivalent_linear(c, base, blk, d, dem);
+        const rocking::ElBlockResult el = equivalent_linear(c, upper, blk, d, dem);
         const rocking::ElResult& g = el.governing();
         out.gate_passed = g.gate_exceeded;
+        out.gate_g = g.gate_g;
         out.theta_rad = g.theta0_rad;
         out.overturn_predicted = g.overturning_predicted;
         out.overturn_fs = g.fs;
@@ -159,7 +176,20 @@ Rocking closed_form_rocking(const Case& c, const BaseContact& base, const block:
     }
     if (mode == Mode::rest) out.amplification_estimate = 1.0;
     // Sliding caps the block's acceleration at about mu g (METHODS.md s.5).
-    if (mode == Mode::slide) out.amplification_estimate = std::min(1.0, mu_s / A);
+    if (mode == Mode::slide) out.amplification_estimate = std::min(1.0, upper.mu_s / A);
+    return out;
+}
+
+Initiation classify(const block::Block& blk, double mu_s, const LevelDemand& dem, Direction d) {
+    const sliding::PeakInitiation peak =
+        sliding::classify_peak(blk, mu_s, dem.pga_of(d), dem.pga_v_g);
+    const sliding::Initiation& gi = peak.governing();
+    Initiation out;
+    out.mode = to_mode(gi.mode);
+    out.a_ratio = gi.A;
+    out.mu_s = mu_s;
+    out.tan_alpha = gi.tan_alpha;
+    out.mu_crit = gi.mu_crit;
     return out;
 }
 
@@ -229,10 +259,40 @@ LevelDemand level_demand(const Site& site, double pga_g) {
                        std::nullopt};
 }
 
-dynamics::BlockModel block_model(const Component& comp, const BaseContact& base, Direction d) {
+DirectionBounds direction_bounds(const Component& comp, Direction d) {
+    const BaseContact& base = comp.base;
     const block::Block blk = comp.block(d);
+    // A very squat block has a negative Housner value: no rebound.
+    const double housner = std::max(0.0, blk.housner_restitution(blk.critical_edge()));
+    double r_lo = housner;
+    double r_hi = housner;
+    bool hi_is_housner = true;
+    if (base.restitution_range) {
+        r_lo = (*base.restitution_range)[0];
+        r_hi = (*base.restitution_range)[1];
+        hi_is_housner = false;
+    } else if (base.restitution) {
+        r_lo = std::min(housner, *base.restitution);
+        r_hi = std::max(housner, *base.restitution);
+        hi_is_housner = *base.restitution <= housner;
+    }
+    const double ratio = base.kinetic_ratio();
+    DirectionBounds out;
+    out.restitution_lower = r_lo;
+    out.sliding = ContactBound{base.mu_s_range[0], ratio * base.mu_s_range[0], r_hi,
+                               hi_is_housner, "lower friction bound"};
+    out.rocking = ContactBound{base.mu_s_range[1], ratio * base.mu_s_range[1], r_hi,
+                               hi_is_housner, "upper friction and restitution bounds"};
+    return out;
+}
+
+dynamics::BlockModel block_model(const Component& comp, const ContactBound& contact,
+                                 Direction d) {
+    const block::Block blk = comp.block(d);
+    const std::optional<double> r =
+        contact.housner ? std::nullopt : std::optional<double>(contact.restitution);
     // Top corners at twice the CG height: the uniform-block default of the simulator.
-    return dynamics::make_block_model(blk, base.mu_s, base.mu_k, base.restitution);
+    return dynamics::make_block_model(blk, contact.mu_s, contact.mu_k, r);
 }
 
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g) {
@@ -240,77 +300,99 @@ dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g
     return dynamics::excitation_from_record(h, pga_g, &set.v, pga_g);
 }
 
-Simulation simulate_level(const Case& c, const BaseContact& base, Direction d, double pga_g,
-                          HistoryBank& bank, Mode mode) {
-    const dynamics::BlockModel model = block_model(c.component, base, d);
+namespace {
+
+Stats stats_of(const std::vector<double>& values) {
+    if (values.empty()) return Stats{};
+    return Stats{core::mean(values), core::quantile(values, 0.84),
+                 *std::max_element(values.begin(), values.end())};
+}
+
+bool same_contact(const ContactBound& a, const ContactBound& b) {
+    return a.mu_s == b.mu_s && a.mu_k == b.mu_k && a.restitution == b.restitution &&
+           a.housner == b.housner;
+}
+
+}  // namespace
+
+Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
+                          double pga_g, HistoryBank& bank, bool rocking_mode) {
+    const dynamics::BlockModel slide_model = block_model(c.component, bounds.sliding, d);
+    const dynamics::BlockModel rock_model = block_model(c.component, bounds.rocking, d);
     dynamics::Options opt;
     opt.record_series = false;
     opt.g_mps2 = c.site.g_mps2;
     Simulation sim;
+    sim.sliding_bound = bounds.sliding;
+    sim.rocking_bound = bounds.rocking;
+    sim.bounds_differ = !same_contact(bounds.sliding, bounds.rocking);
     const auto& sets = bank.sets();
     sim.histories = static_cast<int>(sets.size());
-    int standing = 0;
+    sim.mean_governs = sim.histories >= min_histories_for_mean;
+    std::vector<double> slide, residual, rock_over_alpha, rock_rad, amplification;
     double worst = -1.0;
     for (std::size_t k = 0; k < sets.size(); ++k) {
-        const dynamics::Summary s =
-            dynamics::simulate(model, excitation(sets[k], d, pga_g), opt).summary;
-        sim.slide_max_mean_m += s.slide_max_m;
-        sim.slide_max_max_m = std::max(sim.slide_max_max_m, s.slide_max_m);
-        sim.slide_residual_mean_m += s.slide_residual_m;
-        sim.slide_residual_max_m = std::max(sim.slide_residual_max_m, s.slide_residual_m);
-        sim.amplification_mean += s.amplification;
-        sim.amplification_max = std::max(sim.amplification_max, s.amplification);
-        if (s.overturned) {
-            sim.overturned_fraction += 1.0;
+        const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
+        const dynamics::Summary s_slide = dynamics::simulate(slide_model, ex, opt).summary;
+        const dynamics::Summary s_rock =
+            sim.bounds_differ ? dynamics::simulate(rock_model, ex, opt).summary : s_slide;
+        slide.push_back(s_slide.slide_max_m);
+        residual.push_back(s_slide.slide_residual_m);
+        amplification.push_back(s_rock.amplification);
+        const bool overturned = s_slide.overturned || s_rock.overturned;
+        if (overturned) {
+            ++sim.overturned;
         } else {
-            ++standing;
-            sim.rock_max_over_alpha_mean += s.rock_max_over_alpha;
-            sim.rock_max_over_alpha_max =
-                std::max(sim.rock_max_over_alpha_max, s.rock_max_over_alpha);
+            rock_over_alpha.push_back(s_rock.rock_max_over_alpha);
+            rock_rad.push_back(s_rock.rock_max_rad);
         }
         // Governing history: an overturned one, else the largest rocking (rocking modes) or slip.
-        const bool rocking = mode == Mode::rock || mode == Mode::slide_rock;
-        const double score = s.overturned ? 1e9 : (rocking ? s.rock_max_over_alpha : s.slide_max_m);
+        const double score =
+            overturned ? 1e9 : (rocking_mode ? s_rock.rock_max_over_alpha : s_slide.slide_max_m);
         if (score > worst) {
             worst = score;
             sim.governing_history = static_cast<int>(k);
         }
     }
-    const double n = static_cast<double>(sets.size());
-    sim.slide_max_mean_m /= n;
-    sim.slide_residual_mean_m /= n;
-    sim.amplification_mean /= n;
-    sim.overturned_fraction /= n;
-    if (standing > 0) sim.rock_max_over_alpha_mean /= static_cast<double>(standing);
+    sim.slide_m = stats_of(slide);
+    sim.slide_residual_m = stats_of(residual);
+    sim.rock_over_alpha = stats_of(rock_over_alpha);
+    sim.rock_rad = stats_of(rock_rad);
+    sim.amplification = stats_of(amplification);
+    sim.overturn_ci = core::clopper_pearson(sim.overturned, sim.histories);
     return sim;
 }
 
-LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
-                           const LevelDemand& demand, HistoryBank& bank) {
+LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand,
+                           HistoryBank& bank) {
     LevelResult r;
     r.pga_g = demand.pga_g;
     r.pga_v_g = demand.pga_v_g;
     r.direction = d;
     const block::Block blk = c.component.block(d);
-    const sliding::PeakInitiation peak =
-        sliding::classify_peak(blk, base.mu_s, demand.pga_of(d), demand.pga_v_g);
-    const sliding::Initiation& gi = peak.governing();
-    r.initiation.mode = to_mode(gi.mode);
-    r.initiation.a_ratio = gi.A;
-    r.initiation.mu_s = base.mu_s;
-    r.initiation.tan_alpha = gi.tan_alpha;
-    r.initiation.mu_crit = gi.mu_crit;
+    r.bounds = direction_bounds(c.component, d);
+    r.initiation = classify(blk, r.bounds.rocking.mu_s, demand, d);
+    r.initiation_lower = classify(blk, r.bounds.sliding.mu_s, demand, d);
     r.flexible = screen_flexible(c.component, blk, d, demand);
-    r.sliding = closed_form_sliding(c, base, d, r.initiation.mode, demand, bank);
-    r.rocking = closed_form_rocking(c, base, blk, d, r.initiation.mode, base.mu_s, demand);
-    const SimulationNeed need =
-        simulation_need(r, c.component.allowable_slide_m, c.options.simulate);
+    r.sliding = closed_form_sliding(c, r.bounds.sliding, d, r.initiation_lower.mode, demand,
+                                    bank, false);
+    r.rocking = closed_form_rocking(c, r.bounds.rocking, blk, d, r.initiation.mode, demand);
+    const double allowable = c.component.allowable_slide_m;
+    const double fs = c.component.required_overturn_fs;
+    r.screen = screen_level(r, allowable, fs);
+    const SimulationNeed need = simulation_need(r.screen, c.options.simulate);
     r.simulation_reason = need.reason;
     if (need.run) {
-        r.simulation = simulate_level(c, base, d, demand.pga_g, bank, r.initiation.mode);
+        const bool rocking_mode =
+            r.initiation.mode == Mode::rock || r.initiation.mode == Mode::slide_rock;
+        r.simulation = simulate_level(c, r.bounds, d, demand.pga_g, bank, rocking_mode);
+        // The energy estimate needs the histories' DeltaD: now they exist.
+        r.sliding = closed_form_sliding(c, r.bounds.sliding, d, r.initiation_lower.mode,
+                                        demand, bank, true);
     }
-    if (bank.generated()) r.rocking.pgv_mps = bank.mean_pgv_mps(d, demand.pga_g);
-    r.verdict = decide_level(r, c.component.allowable_slide_m, c.component.required_overturn_fs);
+    if (r.simulation) r.rocking.pgv_mps = bank.mean_pgv_mps(d, demand.pga_g);
+    r.verdict = decide_level(r, allowable, fs);
+    r.trail = decision_trail(r, allowable, fs);
     return r;
 }
 

@@ -2,6 +2,8 @@
 /// One PGA level in one direction: classification, closed forms, and (when needed) the
 /// simulation over the level's histories (METHODS.md s.6 steps 1-4).
 #include <array>
+#include <map>
+#include <utility>
 #include <optional>
 #include <vector>
 
@@ -23,9 +25,10 @@ struct LevelDemand {
     spectra::Spectrum h5;                 ///< 5%-damped horizontal target of direction x
     spectra::Spectrum sa_vh_slide;        ///< SA_VH at the sliding damping (METHODS.md s.4)
     rocking::DampedSpectra sa_vh_damped;  ///< SA_VH at any damping (METHODS.md s.5a)
-    /// Equivalent-linear rocking per direction (x, y), computed on first need. It does not
-    /// depend on the friction, so the material trials reuse it (they keep the restitution).
-    mutable std::array<std::optional<rocking::ElBlockResult>, 2> el_cache;
+    /// Equivalent-linear rocking by (direction, restitution; -1 for Housner's), computed on
+    /// first need. It does not depend on the friction, so material trials with the same
+    /// restitution reuse it.
+    mutable std::map<std::pair<int, double>, rocking::ElBlockResult> el_cache;
     std::optional<spectra::Spectrum> h5_y;  ///< direction y's own 5% target (target_y_file)
     std::optional<double> pga_y_g;          ///< direction y's PGA from its file, g
 
@@ -50,19 +53,24 @@ spectra::Spectrum scaled_target(const spectra::Spectrum& file, double factor,
 /// Frequencies the design spectra are tabulated on, Hz.
 std::vector<double> design_frequencies();
 
-/// Evaluates one level and direction with the given base contact (the case's, or a trial
-/// material's). Histories are generated through bank only when a check needs them.
-LevelResult evaluate_level(const Case& c, const BaseContact& base, Direction d,
-                           const LevelDemand& demand, HistoryBank& bank);
+/// The friction and restitution bounds of direction d (METHODS.md s.6 step 6, s.7).
+DirectionBounds direction_bounds(const Component& comp, Direction d);
 
-/// The simulator's model of the component in direction d on the given base.
-dynamics::BlockModel block_model(const Component& comp, const BaseContact& base, Direction d);
+/// Evaluates one level and direction of the case (its own base, or the base of a trial case
+/// made by with_base_material). Histories are generated through bank only when a simulation
+/// runs.
+LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand,
+                           HistoryBank& bank);
+
+/// The simulator's model of the component in direction d with one bound's contact.
+dynamics::BlockModel block_model(const Component& comp, const ContactBound& contact, Direction d);
 
 /// The excitation of history k in direction d at the demand's PGA (horizontal and vertical).
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g);
 
-/// Simulates every history; also returns the index of the governing one.
-Simulation simulate_level(const Case& c, const BaseContact& base, Direction d, double pga_g,
-                          HistoryBank& bank, Mode mode);
+/// Simulates every history at both bounds (once when they coincide) and gathers the
+/// statistics of METHODS.md s.6 step 5; rocking_mode picks the governing history's measure.
+Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
+                          double pga_g, HistoryBank& bank, bool rocking_mode);
 
 }  // namespace freestand::assess

@@ -1,5 +1,7 @@
 #include "assess/materials.hpp"
 
+#include "assess/case.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -29,6 +31,18 @@ const Material* find_material(const std::string& name) {
         if (lower(m.name) == key) return &m;
     }
     return nullptr;
+}
+
+BaseContact material_contact(const Material& m) {
+    BaseContact b;
+    b.material = m.name;
+    b.mu_s = m.mu_s;
+    b.mu_k = m.mu_s;
+    b.restitution = m.restitution;
+    b.source = "material table (METHODS.md s.7)";
+    b.mu_s_range = default_mu_s_range(m.mu_s);
+    b.mu_s_range_source = "default 0.8-1.2 x mu_s (METHODS.md s.7)";
+    return b;
 }
 
 std::string material_names() {

@@ -19,6 +19,12 @@ const std::vector<Material>& materials();
 /// Looks a material up by name, ignoring case; nullptr when unknown.
 const Material* find_material(const std::string& name);
 
+struct BaseContact;
+
+/// The base contact of a case naming only `base_material = m`: tabulated mu_s, mu_k = mu_s,
+/// tabulated restitution (absent: Housner's), default friction bounds (METHODS.md s.7).
+BaseContact material_contact(const Material& m);
+
 /// Names joined with ", " for error messages.
 std::string material_names();
 

@@ -17,39 +17,108 @@ namespace {
 
 constexpr std::array<Direction, 2> directions{Direction::x, Direction::y};
 
-std::vector<LevelResult> evaluate_all(const Case& c, const BaseContact& base,
-                                      const std::vector<LevelDemand>& demands, HistoryBank& bank) {
+std::vector<LevelResult> evaluate_all(const Case& c, const std::vector<LevelDemand>& demands,
+                                      HistoryBank& bank) {
     std::vector<LevelResult> out;
     for (const LevelDemand& dem : demands) {
-        for (Direction d : directions) out.push_back(evaluate_level(c, base, d, dem, bank));
+        for (Direction d : directions) out.push_back(evaluate_level(c, d, dem, bank));
     }
     return out;
 }
 
-Verdict worst_of(const std::vector<LevelResult>& levels) {
-    return levels.empty() ? Verdict{} : levels[governing_index(levels)].verdict;
+bool any_failure(const std::vector<LevelResult>& levels, Failure a, Failure b) {
+    return std::any_of(levels.begin(), levels.end(), [&](const LevelResult& l) {
+        return l.verdict.failure == a || l.verdict.failure == b;
+    });
 }
 
-// METHODS.md s.6 step 5: the same pipeline for each material; the weakest that passes.
-// Only the friction changes: mu_k keeps the case's mu_k / mu_s ratio and the restitution stays
-// the case's (the table's r was measured on steel specimens, not on this component).
-Upgrade search_materials(const Case& c, const std::vector<LevelDemand>& demands,
-                         HistoryBank& bank) {
-    Upgrade up;
-    up.needed = true;
-    const BaseContact& own = c.component.base;
-    const double kinetic_ratio = own.mu_s > 0.0 ? own.mu_k / own.mu_s : 1.0;
-    for (const Material& m : materials()) {
-        BaseContact trial = own;
-        trial.material = m.name;
-        trial.mu_s = m.mu_s;
-        trial.mu_k = m.mu_s * kinetic_ratio;
-        trial.source = "upgrade trial";
-        const std::vector<LevelResult> levels = evaluate_all(c, trial, demands, bank);
-        up.trials.push_back(MaterialTrial{m.name, m.mu_s, worst_of(levels)});
-        if (!up.recommended && passes(up.trials.back().verdict)) up.recommended = m.name;
+std::string range_text(const std::array<double, 2>& r) {
+    return fmt::format("mu_s {:.3g}-{:.3g}", r[0], r[1]);
+}
+
+// Why the recommended material helps, from how the own base failed and which way the
+// friction moves (METHODS.md s.6 step 7: a lower friction can be the answer).
+std::string mechanism(const BaseContact& own, const std::vector<LevelResult>& own_levels,
+                      const MaterialTrial& chosen) {
+    const bool rocked =
+        any_failure(own_levels, Failure::overturns, Failure::rocking_fs_below_required);
+    const bool slid = any_failure(own_levels, Failure::slides_beyond_allowable,
+                                  Failure::slides_beyond_allowable);
+    const std::string change = fmt::format("{} instead of {}", range_text(chosen.mu_s_range),
+                                           range_text(own.mu_s_range));
+    const double mu_new = (chosen.mu_s_range[0] + chosen.mu_s_range[1]) / 2.0;
+    const double mu_own = (own.mu_s_range[0] + own.mu_s_range[1]) / 2.0;
+    if (mu_new < mu_own && rocked) {
+        return "lower friction, " + change +
+               ": it slides instead of rocking over, and the slide stays within the allowable";
     }
-    return up;
+    if (mu_new > mu_own && slid) {
+        return "higher friction, " + change + ": it slides less or stays at rest";
+    }
+    if (mu_new == mu_own) {
+        return "same friction, restitution " +
+               (chosen.restitution ? fmt::format("{:.2f}", *chosen.restitution)
+                                   : std::string("Housner's")) +
+               ": every level passes";
+    }
+    return change + ": every level passes";
+}
+
+// A passing headline: the governing level's verdict, with the largest clearance any level
+// needs and every open condition.
+Governing passing_headline(const std::vector<LevelResult>& levels) {
+    Governing g = governing_of(levels);
+    g.verdict.clearance_m = clearance_needed_m(levels);
+    if (g.verdict.clearance_m >= no_motion_slide_m) {
+        g.verdict.kind = VerdictKind::acceptable_with_clearance;
+    }
+    g.verdict.conditions = open_conditions(levels);
+    return g;
+}
+
+// The verdict of a set of levels, as a case's own base and every material trial report it.
+Governing headline(const std::vector<LevelResult>& levels) {
+    const Governing g = governing_of(levels);
+    return passes(g.verdict) ? passing_headline(levels) : g;
+}
+
+struct Search {
+    Upgrade upgrade;
+    std::vector<LevelResult> recommended_levels;
+};
+
+// METHODS.md s.6 step 7: each material is the case reassessed with that material's whole
+// property set, through evaluate_all as for the case itself (with_base_material makes the case
+// a file naming only that material would give); the first in table order that passes.
+Search search_materials(const Case& c, const std::vector<LevelDemand>& demands,
+                        HistoryBank& bank) {
+    Search out;
+    out.upgrade.needed = true;
+    for (const Material& m : materials()) {
+        const Case trial_case = with_base_material(c, m.name);
+        std::vector<LevelResult> levels = evaluate_all(trial_case, demands, bank);
+        MaterialTrial t;
+        t.material = m.name;
+        t.mu_s_range = trial_case.component.base.mu_s_range;
+        t.restitution = m.restitution;
+        t.governing = headline(levels);
+        t.passes = passes(t.governing.verdict);
+        out.upgrade.trials.push_back(t);
+        if (t.passes && !out.upgrade.recommended) {
+            out.upgrade.recommended = m.name;
+            out.recommended_levels = std::move(levels);
+        }
+    }
+    return out;
+}
+
+// Failing levels read "change base material to M" once M is known, else stay "anchor".
+void apply_remedy(std::vector<LevelResult>& levels, const std::optional<std::string>& material) {
+    for (LevelResult& l : levels) {
+        if (passes(l.verdict) || !material) continue;
+        l.verdict.kind = VerdictKind::change_material;
+        l.verdict.material = *material;
+    }
 }
 
 // Echo of the user target files (names, damping, scaling) and how the other dampings follow.
@@ -122,16 +191,35 @@ std::vector<std::string> pipeline_assumptions(const Case& c) {
                     "checks (the worst case, METHODS.md s.5).",
                     c.site.vertical_ratio));
     out.push_back(
-        "Sliding: the simulation (peak and residual slip, max over the histories) governs when "
-        "it was run; it is run when the ASCE 4 and energy estimates straddle the allowable. "
-        "Otherwise the larger closed form governs, or the smaller when both exceed the "
-        "allowable.");
+        "Decision (METHODS.md s.6 step 4): the screen (static criteria; ASCE 4 sliding at the "
+        "lower friction bound; the equivalent-linear rocking estimate at the upper bounds) "
+        "decides a level it passes. A level that fails the screen is simulated and the "
+        "simulation governs it, pass or fail; only simulate = \"never\" lets the screen decide a "
+        "failure. The energy-conservation estimate is informational: it neither decides nor "
+        "triggers a simulation.");
+    out.push_back(fmt::format(
+        "Statistics (METHODS.md s.6 step 5): with {} or more histories the mean of the peak "
+        "responses governs, with fewer the maximum; the 84th percentile is reported. Any "
+        "overturned history fails the level; overturning is reported as overturned / simulated "
+        "with its exact (Clopper-Pearson) 95% interval.",
+        min_histories_for_mean));
     out.push_back(
-        "Rocking is decided by the time-history simulation when it was run, else by the "
-        "equivalent-linear screen (METHODS.md s.5a).");
+        "Bounds (METHODS.md s.6 step 6): sliding demands (ASCE 4 and the simulated slip) use the "
+        "lower friction bound; rocking, overturning and the classification use the upper "
+        "friction and restitution bounds, with mu_k / mu_s kept at each bound.");
     out.push_back(
-        "Upgrade trials change only the static friction (mu_k keeps the case's mu_k/mu_s); "
-        "the restitution stays the case's.");
+        "Base-material search (METHODS.md s.6 step 7): each material of the table is assessed "
+        "with its whole property set (tabulated mu_s with default bounds 0.8-1.2 x mu_s, mu_k = "
+        "mu_s, the tabulated restitution as the measured r) exactly as a case naming it; the "
+        "first material in table order that passes every level is recommended.");
+    if (c.component.allowable_relative_m) {
+        out.push_back(fmt::format(
+            "Joined units: the allowable relative displacement {:.1f} mm (slack of the "
+            "connection between units) applies between units that move separately. This case "
+            "is assessed as one rigid body (braced units), whose relative displacement is zero "
+            "by that assumption; the absolute slide is checked against the clearance {:.1f} mm.",
+            *c.component.allowable_relative_m * 1000.0, c.component.allowable_slide_m * 1000.0));
+    }
     return out;
 }
 
@@ -175,13 +263,30 @@ AssessmentResult assess(const Case& c) {
     HistoryBank bank(res.input);
     std::vector<LevelDemand> demands;
     for (double pga : c.site.pga_g) demands.push_back(level_demand(c.site, pga));
-    res.levels = evaluate_all(res.input, c.component.base, demands, bank);
-    const bool own_fails = std::any_of(res.levels.begin(), res.levels.end(),
-                                       [](const LevelResult& l) { return !passes(l.verdict); });
-    if (own_fails) res.upgrade = search_materials(res.input, demands, bank);
-    apply_upgrade(res.levels, res.upgrade);
-    res.overall = overall_verdict(res.levels, res.upgrade);
-    res.governing_level = governing_index(res.levels);
+    res.levels = evaluate_all(res.input, demands, bank);
+    res.own = headline(res.levels);
+    if (passes(res.own.verdict)) {
+        res.overall = res.own;
+    } else {
+        Search search = search_materials(res.input, demands, bank);
+        res.upgrade = std::move(search.upgrade);
+        // res.own stays the own base's failing verdict (kind anchor): on its own base the
+        // component must be anchored; the levels then name the remedy.
+        apply_remedy(res.levels, res.upgrade.recommended);
+        if (res.upgrade.recommended) {
+            res.overall = passing_headline(search.recommended_levels);
+            res.overall.verdict.kind = VerdictKind::change_material;
+            res.overall.verdict.material = *res.upgrade.recommended;
+            const auto chosen =
+                std::find_if(res.upgrade.trials.begin(), res.upgrade.trials.end(),
+                             [&](const MaterialTrial& t) { return t.material == *res.upgrade.recommended; });
+            res.overall.verdict.mechanism =
+                mechanism(c.component.base, res.levels, *chosen);
+            res.overall_from_trial = true;
+        } else {
+            res.overall = res.own;
+        }
+    }
     res.plots = plot_data(res, demands, bank);
     res.assumptions = pipeline_assumptions(c);
     res.limits = limits(res, bank);
@@ -198,9 +303,20 @@ AssessmentResult assess(const Case& c) {
             }
         }
     }
-    for (const LevelResult& l : res.levels)
-        res.simulations_run += l.simulation ? l.simulation->histories : 0;
+    for (const LevelResult& l : res.levels) {
+        if (l.simulation) {
+            res.simulations_run +=
+                l.simulation->histories * (l.simulation->bounds_differ ? 2 : 1);
+        }
+    }
     return res;
+}
+
+Upgrade search_materials(const Case& c) {
+    HistoryBank bank(c);
+    std::vector<LevelDemand> demands;
+    for (double pga : c.site.pga_g) demands.push_back(level_demand(c.site, pga));
+    return search_materials(c, demands, bank).upgrade;
 }
 
 Case with_pga_levels(Case c, const std::vector<double>& pga_g) {

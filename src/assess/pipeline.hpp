@@ -14,6 +14,11 @@ namespace freestand::assess {
 /// Throws InputError for bad seed records, NumericalError if a stage fails to converge.
 AssessmentResult assess(const Case& c);
 
+/// The base-material search of METHODS.md s.6 step 7 on its own: every material of the table
+/// assessed as assess() assesses a case naming it (used by assess() when the case's own base
+/// fails, and by tests for every case).
+Upgrade search_materials(const Case& c);
+
 /// Returns the case with its PGA levels replaced (the command line's --pga). Levels must be in
 /// (0, 3] g and strictly increasing: InputError with field "--pga" otherwise.
 Case with_pga_levels(Case c, const std::vector<double>& pga_g);

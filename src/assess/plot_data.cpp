@@ -42,8 +42,7 @@ std::optional<std::size_t> governing_simulated(const std::vector<LevelResult>& l
     std::optional<std::size_t> gov;
     for (std::size_t i = 0; i < levels.size(); ++i) {
         if (!levels[i].simulation) continue;
-        if (!gov || &more_severe(levels[i].verdict, levels[*gov].verdict) == &levels[i].verdict)
-            gov = i;
+        if (!gov || !more_severe(levels[*gov].verdict, levels[i].verdict)) gov = i;
     }
     return gov;
 }
@@ -66,20 +65,33 @@ void add_histories(PlotData& p, const AssessmentResult& r, const LevelResult& lv
     };
     p.ground_motion.push_back(history_series("horizontal", t, in_g(ex.horizontal_mps2)));
     p.ground_motion.push_back(history_series("vertical", t, in_g(ex.vertical_mps2)));
-    const dynamics::BlockModel model =
-        block_model(r.input.component, r.input.component.base, lvl.direction);
     dynamics::Options opt;
     opt.g_mps2 = r.input.site.g_mps2;
-    const dynamics::SimulationResult sim = dynamics::simulate(model, ex, opt);
-    std::vector<double> ts, slip, rot;
-    const double alpha = lvl.rocking.alpha_rad;
-    for (const dynamics::Sample& s : sim.series) {
+    // Slip at the sliding bound, rotation at the rocking bound: the runs the verdict read.
+    const Simulation& lsim = *lvl.simulation;
+    const dynamics::SimulationResult slide_run = dynamics::simulate(
+        block_model(r.input.component, lsim.sliding_bound, lvl.direction), ex, opt);
+    const dynamics::SimulationResult rock_run =
+        lsim.bounds_differ
+            ? dynamics::simulate(
+                  block_model(r.input.component, lsim.rocking_bound, lvl.direction), ex, opt)
+            : slide_run;
+    std::vector<double> ts, slip;
+    for (const dynamics::Sample& s : slide_run.series) {
         ts.push_back(s.time_s);
         slip.push_back(s.slide_m);
+    }
+    std::vector<double> tr, rot;
+    const double alpha = lvl.rocking.alpha_rad;
+    for (const dynamics::Sample& s : rock_run.series) {
+        tr.push_back(s.time_s);
         rot.push_back(s.rotation_rad / alpha);
     }
-    p.slip.push_back(history_series("slip", ts, slip));
-    p.rotation.push_back(history_series("theta / alpha", ts, rot));
+    p.slip.push_back(history_series(fmt::format("slip, mu_s {:.3f}", lsim.sliding_bound.mu_s), ts, slip));
+    p.rotation.push_back(history_series(
+        fmt::format("theta / alpha, mu_s {:.3f}, r {:.3f}", lsim.rocking_bound.mu_s,
+                    lsim.rocking_bound.restitution),
+        tr, rot));
     p.governing = fmt::format("PGA {:.3f} g, direction {}, history {} of {}", lvl.pga_g,
                               to_string(lvl.direction), lvl.simulation->governing_history + 1,
                               lvl.simulation->histories);
@@ -113,7 +125,7 @@ PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& de
     for (Direction d : {Direction::x, Direction::y})
         p.initiation.push_back(initiation_diagram(r, d));
     const std::optional<std::size_t> gov = governing_simulated(r.levels);
-    const LevelResult& shown = r.levels.at(gov ? *gov : r.governing_level);
+    const LevelResult& shown = r.levels.at(gov ? *gov : r.own.level);
     // The demand of the shown level (levels are built from the same PGA list, so equal exactly).
     const auto demand = std::find_if(demands.begin(), demands.end(),
                                      [&](const LevelDemand& d) { return d.pga_g == shown.pga_g; });

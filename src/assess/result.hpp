@@ -16,31 +16,56 @@ enum class Mode { rest, slide, rock, slide_rock };
 /// "rest", "slide", "rock", "slide-rock".
 const char* to_string(Mode m);
 
-/// Which model settled a verdict (issue 6: "each with its margin and the model that decided it").
+/// Which model settled a verdict or a check (METHODS.md s.6).
 enum class Model {
     static_initiation,          ///< METHODS.md s.2 static thresholds
     asce4_sliding,              ///< METHODS.md s.4 ASCE 4 equivalent-linear sliding
-    energy_sliding,             ///< METHODS.md s.4 energy conservation
-    simulation_slide,           ///< METHODS.md s.3 time-history simulation, peak slip
-    simulation_residual,        ///< METHODS.md s.3 time-history simulation, residual slip
     equivalent_linear_rocking,  ///< METHODS.md s.5a screen
+    simulation_slide,           ///< METHODS.md s.3 time-history simulation, peak slip
     simulation_rocking,         ///< METHODS.md s.3 time-history simulation, rocking / overturning
-    no_motion,                  ///< METHODS.md s.2 low-motion threshold (peak slip < 1 mm)
 };
 const char* to_string(Model m);
 
-/// Verdicts in increasing severity (the overall verdict is the most severe).
-enum class VerdictKind { acceptable, acceptable_with_clearance, upgrade_material, anchor };
+/// Verdicts in increasing severity. A level that fails is `anchor` until the base-material
+/// search finds a material that passes every level; then it reads `change_material`.
+enum class VerdictKind { acceptable, acceptable_with_clearance, change_material, anchor };
 const char* to_string(VerdictKind k);
+
+/// What failed at a level (none when it passes).
+/// screen_inconclusive: the screen cannot show the level safe and no simulation was allowed.
+enum class Failure {
+    none,
+    slides_beyond_allowable,
+    rocking_fs_below_required,
+    overturns,
+    screen_inconclusive
+};
+const char* to_string(Failure f);
 
 /// A verdict with its margin (capacity / demand, >= 1 passes) and the model that decided it.
 struct Verdict {
     VerdictKind kind = VerdictKind::acceptable;
-    std::optional<double> margin;  ///< capacity / demand; absent when unbounded (no demand)
+    Failure failure = Failure::none;
+    /// The demand is negligible (METHODS.md s.2 low-motion threshold, or a closed form that
+    /// finds no motion): the report says "no motion" instead of a ratio; margin is then empty.
+    bool no_motion = false;
+    std::optional<double> margin;  ///< capacity / demand
     std::string margin_basis;      ///< what the ratio compares, e.g. "allowable / ASCE 4 slide"
     Model decided_by = Model::static_initiation;
-    double clearance_m = 0.0;  ///< clearance needed (acceptable_with_clearance), m
-    std::string material;      ///< material to upgrade to (upgrade_material)
+    double clearance_m = 0.0;  ///< sliding demand the clearance must cover, m
+    std::string material;      ///< material to change to (change_material)
+    std::string mechanism;     ///< why the material change helps, in words
+    /// Open conditions the verdict carries (a raised flexible-body flag at a passing level).
+    std::vector<std::string> conditions;
+};
+
+/// Where a verdict comes from: the level (index into the levels it was taken from) and the
+/// level's verdict. Every part of a headline (level, model, margin) comes from this one level.
+struct Governing {
+    std::size_t level = 0;
+    double pga_g = 0.0;
+    Direction direction = Direction::x;
+    Verdict verdict;
 };
 
 /// Static classification at the level's peak accelerations (METHODS.md s.2, s.5: vertical
@@ -64,19 +89,38 @@ struct FlexibleFlag {
     std::string reason;               ///< why raised or not, in words
 };
 
-/// Closed-form sliding estimates (METHODS.md s.4).
+/// The friction and restitution a check ran with, and which bound each is (METHODS.md s.6
+/// step 6, s.7).
+struct ContactBound {
+    double mu_s = 0.0;
+    double mu_k = 0.0;
+    double restitution = 0.0;
+    bool housner = false;  ///< r is Housner's of each edge (restitution shows the critical edge's)
+    std::string name;      ///< "lower friction bound" or "upper friction and restitution bounds"
+};
+
+/// Both bounds of one direction: sliding demands at the lower friction, rocking, overturning
+/// and the classification at the upper friction and restitution.
+struct DirectionBounds {
+    ContactBound sliding;
+    ContactBound rocking;
+    double restitution_lower = 0.0;  ///< reported; no check reads it
+};
+
+/// Closed-form sliding estimates (METHODS.md s.4) at the lower friction bound.
 struct Sliding {
+    double mu_s = 0.0;  ///< the friction they used (the lower bound)
     double mu_e = 0.0;
     double c_s_mps2 = 0.0;
     double pgd_m = 0.0;      ///< peak ground displacement used by the energy method
     std::string pgd_source;  ///< where DeltaD came from
     std::optional<double> f_es_hz;
     std::optional<double> slide_asce_m;
-    std::optional<double> slide_energy_m;
-    std::string reason;  ///< why a value is absent ("" when both present)
+    std::optional<double> slide_energy_m;  ///< informational: never decides nor triggers
+    std::string reason;                    ///< why a value is absent ("" when both present)
 };
 
-/// Closed-form rocking and overturning checks (METHODS.md s.5, s.5a).
+/// Closed-form rocking and overturning checks (METHODS.md s.5, s.5a) at the upper bounds.
 struct Rocking {
     double alpha_rad = 0.0;
     double R_m = 0.0;
@@ -86,6 +130,7 @@ struct Rocking {
     double ishiyama_v_mps = 0.0;            ///< velocity bound below which it cannot overturn
     std::optional<double> pgv_mps;          ///< mean PGV of the histories, when they were generated
     bool gate_passed = false;               ///< s.5a gate: PGA > (1 - 0.4 A_v) tan(alpha)
+    double gate_g = 0.0;                    ///< the gate (1 - 0.4 A_v) tan(alpha), g
     std::optional<double> theta_rad;        ///< s.5a estimate; absent when gated out or overturning
     bool overturn_predicted = false;        ///< s.5a found no theta below alpha
     std::optional<double> overturn_fs;      ///< alpha / theta; absent when no rocking predicted
@@ -93,19 +138,48 @@ struct Rocking {
     std::optional<double> amplification_estimate;  ///< slide: ~mu/A; rest: 1; rock: absent
 };
 
-/// Aggregated time-history simulation over the level's histories (METHODS.md s.3).
+/// One check of the screen (METHODS.md s.6 step 4).
+struct ScreenCheck {
+    bool applies = false;  ///< the block moves in this way at the check's bound
+    bool passed = true;
+    Verdict verdict;       ///< what the check alone concludes (meaningful when it applies)
+    std::string text;      ///< the comparison in words, e.g. "ASCE 4 142 mm > allowable 50 mm"
+};
+
+/// The screen of a level: static criteria, ASCE 4 sliding, equivalent-linear rocking.
+struct Screen {
+    ScreenCheck rest;   ///< at rest at the lower friction bound (then it rests at both)
+    ScreenCheck slide;  ///< ASCE 4 at the lower friction bound
+    ScreenCheck rock;   ///< s.5a estimate at the upper bounds
+    bool passed = true;
+};
+
+/// Mean, 84th percentile and maximum of a peak response over the histories (METHODS.md s.6
+/// step 5).
+struct Stats {
+    double mean = 0.0;
+    double p84 = 0.0;  ///< empirical, linear between order statistics (Hyndman-Fan type 7)
+    double max = 0.0;
+};
+
+/// Aggregated time-history simulation over the level's histories (METHODS.md s.3, s.6).
 struct Simulation {
     int histories = 0;
-    double slide_max_mean_m = 0.0;
-    double slide_max_max_m = 0.0;
-    double slide_residual_mean_m = 0.0;  ///< |residual|, mean over histories
-    double slide_residual_max_m = 0.0;
-    double rock_max_over_alpha_mean = 0.0;  ///< over histories that did not overturn
-    double rock_max_over_alpha_max = 0.0;
-    double overturned_fraction = 0.0;
-    double amplification_mean = 0.0;  ///< top acceleration / PGA
-    double amplification_max = 0.0;
-    int governing_history = 0;  ///< index of the worst history
+    bool mean_governs = false;  ///< >= 7 histories: the mean governs; fewer: the maximum
+    ContactBound sliding_bound;
+    ContactBound rocking_bound;
+    bool bounds_differ = false;  ///< two runs per history (else one serves both)
+    Stats slide_m;               ///< peak |slip| at the sliding bound, m
+    Stats slide_residual_m;      ///< |slip| at the end at the sliding bound, m
+    Stats rock_over_alpha;       ///< peak theta / alpha at the rocking bound (standing histories)
+    Stats rock_rad;              ///< peak theta at the rocking bound (standing histories), rad
+    int overturned = 0;          ///< histories overturned at either bound
+    std::array<double, 2> overturn_ci{0.0, 0.0};  ///< Clopper-Pearson 95% of overturned / n
+    Stats amplification;  ///< top acceleration / PGA at the rocking bound
+    int governing_history = 0;  ///< index of the worst history (0-based)
+
+    /// The statistic that governs: the mean with >= 7 histories, else the maximum.
+    double governing(const Stats& s) const { return mean_governs ? s.mean : s.max; }
 };
 
 /// One PGA level in one direction.
@@ -113,26 +187,34 @@ struct LevelResult {
     double pga_g = 0.0;
     double pga_v_g = 0.0;
     Direction direction = Direction::x;
-    Initiation initiation;
+    DirectionBounds bounds;
+    Initiation initiation;        ///< at the upper friction bound (classification, rocking)
+    Initiation initiation_lower;  ///< at the lower friction bound (sliding)
     FlexibleFlag flexible;
     Sliding sliding;
     Rocking rocking;
+    Screen screen;
     std::optional<Simulation> simulation;
     std::string simulation_reason;  ///< why it was run or skipped
     Verdict verdict;
+    /// Screen result -> why simulated -> what governed, one line each (the decision trail).
+    std::vector<std::string> trail;
 };
 
-/// One material of the upgrade search (METHODS.md s.6 step 5).
+/// One material of the base-material search (METHODS.md s.6 step 7): the case reassessed with
+/// that material's whole property set, through the same code as a case naming it.
 struct MaterialTrial {
     std::string material;
-    double mu_s = 0.0;
-    Verdict verdict;  ///< worst over levels and directions with this material
+    std::array<double, 2> mu_s_range{0.0, 0.0};
+    std::optional<double> restitution;  ///< tabulated r; Housner's where the table has none
+    bool passes = false;
+    Governing governing;  ///< the trial's governing level and its verdict
 };
 
 struct Upgrade {
     bool needed = false;                     ///< the case's own base failed somewhere
     std::vector<MaterialTrial> trials;       ///< in METHODS.md s.7 order
-    std::optional<std::string> recommended;  ///< weakest material that passes
+    std::optional<std::string> recommended;  ///< first material in table order that passes
 };
 
 /// A plotted curve.
@@ -177,8 +259,13 @@ struct HistoryCheck {
 struct AssessmentResult {
     Case input;
     std::vector<LevelResult> levels;  ///< by PGA, then direction x, y
-    Verdict overall;
-    std::size_t governing_level = 0;  ///< index into levels of the most severe verdict
+    /// The case's own base: its governing level among `levels`.
+    Governing own;
+    /// The headline: the own base's when it passes; else the recommended material's governing
+    /// level (index into that trial's levels, not into `levels`), or the own base's failing
+    /// level with kind anchor. Level, model and margin always come from one level.
+    Governing overall;
+    bool overall_from_trial = false;  ///< overall.level indexes the recommended trial's levels
     Upgrade upgrade;
     PlotData plots;
     std::vector<std::string> assumptions;  ///< case defaults plus pipeline choices

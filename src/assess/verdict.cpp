@@ -1,9 +1,11 @@
 #include "assess/verdict.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace freestand::assess {
 
@@ -27,18 +29,12 @@ const char* to_string(Model m) {
             return "static initiation criterion (METHODS.md s.2)";
         case Model::asce4_sliding:
             return "ASCE 4 equivalent-linear sliding (METHODS.md s.4)";
-        case Model::energy_sliding:
-            return "energy-conservation sliding (METHODS.md s.4)";
-        case Model::simulation_slide:
-            return "time-history simulation, peak slip (METHODS.md s.3)";
-        case Model::simulation_residual:
-            return "time-history simulation, residual slip (METHODS.md s.3)";
         case Model::equivalent_linear_rocking:
             return "equivalent-linear rocking estimate (METHODS.md s.5a)";
+        case Model::simulation_slide:
+            return "time-history simulation, peak slip (METHODS.md s.3)";
         case Model::simulation_rocking:
             return "time-history simulation, rocking and overturning (METHODS.md s.3)";
-        case Model::no_motion:
-            return "low-motion threshold: peak slip < 1 mm (METHODS.md s.2)";
     }
     return "";
 }
@@ -49,196 +45,369 @@ const char* to_string(VerdictKind k) {
             return "acceptable";
         case VerdictKind::acceptable_with_clearance:
             return "acceptable_with_clearance";
-        case VerdictKind::upgrade_material:
-            return "upgrade_material";
+        case VerdictKind::change_material:
+            return "change_material";
         case VerdictKind::anchor:
             return "anchor";
     }
     return "";
 }
 
+const char* to_string(Failure f) {
+    switch (f) {
+        case Failure::none:
+            return "none";
+        case Failure::slides_beyond_allowable:
+            return "slides beyond the allowable";
+        case Failure::rocking_fs_below_required:
+            return "rocking factor of safety below the required";
+        case Failure::overturns:
+            return "overturns";
+        case Failure::screen_inconclusive:
+            return "screen inconclusive (no simulation)";
+    }
+    return "";
+}
+
 namespace {
 
-double larger_closed_form_slide(const Sliding& s) {
-    return std::max(s.slide_asce_m.value_or(0.0), s.slide_energy_m.value_or(0.0));
+double mm(double m) { return m * 1000.0; }
+
+Verdict no_motion(Model model, std::string basis) {
+    Verdict v;
+    v.no_motion = true;
+    v.decided_by = model;
+    v.margin_basis = std::move(basis);
+    return v;
 }
 
-bool closed_form_slide_available(const Sliding& s) {
-    return s.slide_asce_m.has_value() || s.slide_energy_m.has_value();
-}
-
-bool slides(const LevelResult& level) {
-    if (level.initiation.mode == Mode::slide || level.initiation.mode == Mode::slide_rock)
-        return true;
-    return level.simulation && level.simulation->slide_max_max_m >= no_motion_slide_m;
-}
-
-bool rocks(const LevelResult& level) {
-    return level.initiation.mode == Mode::rock || level.initiation.mode == Mode::slide_rock;
-}
-
-Verdict slide_verdict(const LevelResult& level, double allowable_m) {
-    struct Estimate {
-        Model model;
-        double value_m;
-    };
-    std::vector<Estimate> chosen;
-    const Sliding& s = level.sliding;
-    if (level.simulation) {
-        // The simulation is the reference (METHODS.md s.4): peak and residual over the histories.
-        chosen.push_back({Model::simulation_slide, level.simulation->slide_max_max_m});
-        chosen.push_back({Model::simulation_residual, level.simulation->slide_residual_max_m});
-    } else if (level.initiation.mode != Mode::rock) {
-        if (s.slide_asce_m) chosen.push_back({Model::asce4_sliding, *s.slide_asce_m});
-        if (s.slide_energy_m) chosen.push_back({Model::energy_sliding, *s.slide_energy_m});
+// Sliding demand against the allowable (absolute clearance).
+Verdict slide_demand_verdict(double slide_m, double allowable_m, Model model,
+                             const std::string& what) {
+    if (slide_m < no_motion_slide_m) {
+        return no_motion(model, fmt::format("{} {:.2f} mm < 1 mm (no motion)", what, mm(slide_m)));
     }
     Verdict v;
-    if (chosen.empty()) {
-        // The spectrum never reaches C_s: ASCE 4 says the body does not slide.
-        v.decided_by = Model::asce4_sliding;
-        v.margin_basis = "ASCE 4: the sliding spectrum never reaches C_s";
-        return v;
-    }
-    auto by_value = [](const Estimate& a, const Estimate& b) { return a.value_m < b.value_m; };
-    const Estimate hi = *std::max_element(chosen.begin(), chosen.end(), by_value);
-    const Estimate lo = *std::min_element(chosen.begin(), chosen.end(), by_value);
-    // Without a simulation the closed forms agree (or the case forbids simulating): when even
-    // the smaller exceeds the allowable it decides the failure; otherwise the larger governs.
-    const Estimate gov = (!level.simulation && lo.value_m > allowable_m) ? lo : hi;
-    v.decided_by = gov.model;
-    v.margin_basis = "allowable slide / governing slide";
-    if (gov.value_m > 0.0) v.margin = allowable_m / gov.value_m;
-    if (gov.value_m < no_motion_slide_m) {
-        v.kind = VerdictKind::acceptable;
-    } else if (gov.value_m <= allowable_m) {
+    v.decided_by = model;
+    v.margin = allowable_m / slide_m;
+    v.margin_basis = fmt::format("allowable slide {:.1f} mm / {} {:.1f} mm", mm(allowable_m),
+                                 what, mm(slide_m));
+    v.clearance_m = slide_m;
+    if (slide_m <= allowable_m) {
         v.kind = VerdictKind::acceptable_with_clearance;
-        v.clearance_m = gov.value_m;
     } else {
-        v.kind = VerdictKind::upgrade_material;
-        v.clearance_m = gov.value_m;
+        v.kind = VerdictKind::anchor;
+        v.failure = Failure::slides_beyond_allowable;
     }
     return v;
 }
 
-Verdict rock_verdict(const LevelResult& level, double required_fs) {
+Verdict fs_verdict(double fs, double required_fs, Model model, const std::string& what) {
     Verdict v;
+    v.decided_by = model;
+    v.margin = fs / required_fs;
     v.margin_basis =
-        fmt::format("factor of safety alpha / theta_max over required {}", required_fs);
-    if (level.simulation) {
-        const Simulation& sim = *level.simulation;
-        v.decided_by = Model::simulation_rocking;
-        if (sim.overturned_fraction > 0.0) {
-            v.margin = 0.0;
-        } else if (sim.rock_max_over_alpha_max > 0.0) {
-            v.margin = 1.0 / sim.rock_max_over_alpha_max / required_fs;
-        }
-    } else {
-        const Rocking& r = level.rocking;
-        v.decided_by = Model::equivalent_linear_rocking;
-        if (r.overturn_predicted) {
-            v.margin = 0.0;
-        } else if (r.overturn_fs) {
-            v.margin = *r.overturn_fs / required_fs;
-        }
+        fmt::format("factor of safety alpha / theta_max = {:.2f} ({}) over required {:.2f}", fs,
+                    what, required_fs);
+    if (*v.margin < 1.0) {
+        v.kind = VerdictKind::anchor;
+        v.failure = Failure::rocking_fs_below_required;
     }
-    v.kind = (!v.margin || *v.margin >= 1.0) ? VerdictKind::acceptable : VerdictKind::anchor;
     return v;
+}
+
+Verdict overturn_verdict(Model model, std::string basis) {
+    Verdict v;
+    v.kind = VerdictKind::anchor;
+    v.failure = Failure::overturns;
+    v.decided_by = model;
+    v.margin = 0.0;
+    v.margin_basis = std::move(basis);
+    return v;
+}
+
+// The more severe of two partial verdicts; a passing result keeps the larger clearance need.
+Verdict combine(const Verdict& a, const Verdict& b) {
+    Verdict out = more_severe(b, a) ? b : a;
+    if (passes(out)) {
+        out.clearance_m = std::max(a.clearance_m, b.clearance_m);
+        if (out.clearance_m >= no_motion_slide_m) out.kind = VerdictKind::acceptable_with_clearance;
+        if (out.no_motion && out.clearance_m >= no_motion_slide_m) out.no_motion = false;
+    }
+    return out;
+}
+
+Verdict inconclusive(Model model, std::string basis) {
+    Verdict v;
+    v.kind = VerdictKind::anchor;
+    v.failure = Failure::screen_inconclusive;
+    v.decided_by = model;
+    v.margin_basis = std::move(basis);
+    return v;
+}
+
+ScreenCheck check(Verdict v, std::string text) {
+    ScreenCheck c;
+    c.applies = true;
+    c.passed = passes(v);
+    c.verdict = std::move(v);
+    c.text = std::move(text);
+    return c;
+}
+
+ScreenCheck rest_check(const Initiation& lower) {
+    const double threshold = std::min(lower.mu_s, lower.tan_alpha);
+    Verdict v;
+    v.decided_by = Model::static_initiation;
+    std::string text = fmt::format("A = {:.3f} <= min(mu_s {:.3f}, tan alpha {:.3f}): at rest",
+                                   lower.a_ratio, lower.mu_s, lower.tan_alpha);
+    if (lower.a_ratio > 0.0) {
+        v.margin = threshold / lower.a_ratio;
+        v.margin_basis = "static threshold min(mu_s lower bound, tan alpha) / A";
+    } else {
+        v = no_motion(Model::static_initiation, "no horizontal acceleration");
+    }
+    return check(std::move(v), std::move(text));
+}
+
+ScreenCheck slide_check(const Sliding& s, double allowable_m) {
+    if (s.slide_asce_m) {
+        Verdict v =
+            slide_demand_verdict(*s.slide_asce_m, allowable_m, Model::asce4_sliding, "ASCE 4 slide");
+        const bool ok = passes(v);
+        return check(std::move(v),
+                     fmt::format("ASCE 4 slide at mu_s {:.3f}: {:.1f} mm {} allowable {:.1f} mm",
+                                 s.mu_s, mm(*s.slide_asce_m), ok ? "<=" : ">", mm(allowable_m)));
+    }
+    if (s.c_s_mps2 > 0.0 && !s.f_es_hz) {
+        // ASCE 4: the body does not slide when SA_VH never reaches C_s.
+        return check(no_motion(Model::asce4_sliding, "ASCE 4: SA_VH never reaches C_s"),
+                     fmt::format("ASCE 4 at mu_s {:.3f}: SA_VH never reaches C_s = {:.3f} m/s^2, "
+                                 "no sliding",
+                                 s.mu_s, s.c_s_mps2));
+    }
+    return check(inconclusive(Model::asce4_sliding, "no closed-form sliding demand: " + s.reason),
+                 "the block slides but no closed form applies (" + s.reason + ")");
+}
+
+ScreenCheck rock_check(const Rocking& r, double required_fs) {
+    const Model m = Model::equivalent_linear_rocking;
+    if (r.overturn_predicted) {
+        return check(overturn_verdict(m, "equivalent-linear estimate finds no theta below alpha"),
+                     "equivalent-linear estimate: overturning predicted");
+    }
+    if (!r.gate_passed) {
+        // The static criterion (vertical taken fully downward) predicts uplift; the gate's
+        // 0.4 A_v reduction does not. A screen must not pass on the less conservative of two.
+        return check(inconclusive(m, "static criterion predicts uplift, the equivalent-linear "
+                                     "gate (1 - 0.4 A_v) tan(alpha) does not"),
+                     fmt::format("static uplift (A > tan alpha) but PGA below the "
+                                 "equivalent-linear gate {:.3f} g: the screens disagree",
+                                 r.gate_g));
+    }
+    if (!r.overturn_fs || !r.theta_rad || *r.theta_rad < no_motion_rock_rad) {
+        return check(no_motion(m, "equivalent-linear theta below 0.003 rad (no motion)"),
+                     "equivalent-linear theta below 0.003 rad: no motion");
+    }
+    Verdict v = fs_verdict(*r.overturn_fs, required_fs, m, "equivalent-linear");
+    const bool ok = passes(v);
+    return check(std::move(v), fmt::format("equivalent-linear FS {:.2f} {} required {:.2f}",
+                                           *r.overturn_fs, ok ? ">=" : "<", required_fs));
+}
+
+bool rocking_mode(Mode m) { return m == Mode::rock || m == Mode::slide_rock; }
+bool sliding_mode(Mode m) { return m == Mode::slide || m == Mode::slide_rock; }
+
+Verdict screen_verdict(const Screen& s) {
+    std::optional<Verdict> out;
+    for (const ScreenCheck* c : {&s.rest, &s.slide, &s.rock}) {
+        if (!c->applies) continue;
+        out = out ? combine(*out, c->verdict) : c->verdict;
+    }
+    return out.value_or(Verdict{});
+}
+
+std::string flexible_condition(const LevelResult& l) {
+    return fmt::format(
+        "flexible-body flag at PGA {:.3f} g, {} ({}): a flexible body may uplift below the "
+        "static threshold (frequency-induced rocking), which the rigid-block models accepting "
+        "this level cannot show",
+        l.pga_g, to_string(l.direction), l.flexible.basis);
+}
+
+std::string stat_name(const Simulation& sim) {
+    return sim.mean_governs ? fmt::format("mean of {}", sim.histories)
+                            : fmt::format("max of {}", sim.histories);
 }
 
 }  // namespace
 
-SimulationNeed simulation_need(const LevelResult& closed, double allowable_slide_m,
-                               SimulatePolicy policy) {
-    if (policy == SimulatePolicy::never) return {false, "options.simulate = \"never\""};
-    if (policy == SimulatePolicy::always) return {true, "options.simulate = \"always\""};
-    switch (closed.initiation.mode) {
-        case Mode::rest:
-            return {false, "at rest by the static criteria (METHODS.md s.2)"};
-        case Mode::rock:
-        case Mode::slide_rock:
-            return {true,
-                    "rocking: the equivalent-linear estimate is a screen, the simulation is "
-                    "the reference (METHODS.md s.5a)"};
-        case Mode::slide:
+Screen screen_level(const LevelResult& closed, double allowable_slide_m, double required_fs) {
+    Screen s;
+    if (closed.initiation_lower.mode == Mode::rest) {
+        // At rest at the lower friction bound means at rest at the upper one too.
+        s.rest = rest_check(closed.initiation_lower);
+    }
+    if (sliding_mode(closed.initiation_lower.mode)) {
+        s.slide = slide_check(closed.sliding, allowable_slide_m);
+    }
+    if (rocking_mode(closed.initiation.mode)) s.rock = rock_check(closed.rocking, required_fs);
+    s.passed = s.rest.passed && s.slide.passed && s.rock.passed;
+    return s;
+}
+
+SimulationNeed simulation_need(const Screen& screen, SimulatePolicy policy) {
+    switch (policy) {
+        case SimulatePolicy::never:
+            return {false, screen.passed
+                               ? "not simulated: the screen passed (options.simulate = \"never\")"
+                               : "not simulated although the screen failed: options.simulate = "
+                                 "\"never\", so the screen decides the failure"};
+        case SimulatePolicy::always:
+            return {true, screen.passed
+                              ? "simulated because options.simulate = \"always\"; the screen "
+                                "passed and decides, the simulation is reported beside it"
+                              : "simulated: the screen failed, so the simulation is required and "
+                                "governs (METHODS.md s.6 step 4)"};
+        case SimulatePolicy::automatic:
             break;
     }
-    if (!closed_form_slide_available(closed.sliding)) {
-        return {true, "the block slides by the static criterion but no closed form applies"};
+    if (screen.passed) return {false, "not simulated: the screen passed"};
+    return {true,
+            "simulated: the screen failed, so the simulation is required and governs "
+            "(METHODS.md s.6 step 4)"};
+}
+
+Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs) {
+    const std::string stat = stat_name(sim);
+    if (sim.overturned > 0) {
+        return overturn_verdict(
+            Model::simulation_rocking,
+            fmt::format("{} of {} histories overturned (95% interval {:.0f}-{:.0f}%); any "
+                        "overturn fails the level",
+                        sim.overturned, sim.histories, 100.0 * sim.overturn_ci[0],
+                        100.0 * sim.overturn_ci[1]));
     }
-    const Sliding& s = closed.sliding;
-    const double hi = larger_closed_form_slide(s);
-    const double lo = std::min(s.slide_asce_m.value_or(hi), s.slide_energy_m.value_or(hi));
-    if (hi <= allowable_slide_m) return {false, "both closed-form slides are within the allowable"};
-    if (lo > allowable_slide_m) return {false, "both closed-form slides exceed the allowable"};
-    return {true, "the closed-form slides straddle the allowable: the simulation decides"};
+    const Verdict slide = slide_demand_verdict(sim.governing(sim.slide_m), allowable_slide_m,
+                                               Model::simulation_slide,
+                                               fmt::format("simulated peak slip ({})", stat));
+    Verdict rock;
+    const double theta_rad = sim.governing(sim.rock_rad);
+    const double theta_over_alpha = sim.governing(sim.rock_over_alpha);
+    if (theta_rad < no_motion_rock_rad) {
+        rock = no_motion(Model::simulation_rocking,
+                         fmt::format("simulated peak rotation ({}) {:.4f} rad < 0.003 rad (no "
+                                     "motion)",
+                                     stat, theta_rad));
+    } else {
+        rock = fs_verdict(1.0 / theta_over_alpha, required_fs, Model::simulation_rocking,
+                          fmt::format("simulated, {}", stat));
+    }
+    if (slide.no_motion && rock.no_motion) {
+        return no_motion(Model::simulation_rocking,
+                         fmt::format("simulated ({}) peak slip {:.2f} mm < 1 mm and peak rotation "
+                                     "{:.4f} rad < 0.003 rad (no motion)",
+                                     stat, mm(sim.governing(sim.slide_m)), theta_rad));
+    }
+    return combine(slide, rock);
 }
 
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs) {
-    if (level.initiation.mode == Mode::rest && !slides(level)) {
-        Verdict v;
-        v.decided_by = level.simulation ? Model::no_motion : Model::static_initiation;
-        v.margin_basis = "static threshold min(mu_s, tan alpha) / A";
-        const double threshold = std::min(level.initiation.mu_s, level.initiation.tan_alpha);
-        if (level.initiation.a_ratio > 0.0) v.margin = threshold / level.initiation.a_ratio;
-        return v;
+    Verdict v = screen_verdict(level.screen);
+    if (!level.screen.passed && level.simulation) {
+        v = simulation_verdict(*level.simulation, allowable_slide_m, required_fs);
     }
-    std::optional<Verdict> result;
-    if (slides(level)) result = slide_verdict(level, allowable_slide_m);
-    if (rocks(level)) {
-        const Verdict r = rock_verdict(level, required_fs);
-        result = result ? more_severe(*result, r) : r;
+    if (level.flexible.raised && passes(v)) v.conditions.push_back(flexible_condition(level));
+    return v;
+}
+
+std::vector<std::string> decision_trail(const LevelResult& level, double allowable_slide_m,
+                                        double required_fs) {
+    std::vector<std::string> out;
+    const Screen& s = level.screen;
+    std::vector<std::string> checks;
+    for (const auto& [name, c] : {std::pair{"static", &s.rest}, std::pair{"sliding", &s.slide},
+                                  std::pair{"rocking", &s.rock}}) {
+        if (c->applies) checks.push_back(fmt::format("{}: {} ({})", name, c->text,
+                                                     c->passed ? "passes" : "fails"));
     }
-    return *result;
+    out.push_back(fmt::format("screen {}: {}", s.passed ? "passed" : "failed",
+                              fmt::join(checks, "; ")));
+    out.push_back(level.simulation_reason);
+    if (level.simulation) {
+        const Simulation& sim = *level.simulation;
+        out.push_back(fmt::format(
+            "{} histories ({} governs): peak slip mean/84th/max {:.1f}/{:.1f}/{:.1f} mm at "
+            "mu_s {:.3f}; theta/alpha {:.3f}/{:.3f}/{:.3f} at mu_s {:.3f}, r {:.3f}; "
+            "overturned {}/{}",
+            sim.histories, sim.mean_governs ? "the mean" : "the maximum", mm(sim.slide_m.mean),
+            mm(sim.slide_m.p84), mm(sim.slide_m.max), sim.sliding_bound.mu_s,
+            sim.rock_over_alpha.mean, sim.rock_over_alpha.p84, sim.rock_over_alpha.max,
+            sim.rocking_bound.mu_s, sim.rocking_bound.restitution, sim.overturned,
+            sim.histories));
+        if (s.passed) {
+            // Reported beside the screen, which decides: say so when the two disagree.
+            const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs);
+            out.push_back(fmt::format(
+                "the screen decides; the simulation beside it gives {}, margin {}{}",
+                passes(beside) ? "a pass" : "a FAILURE", margin_text(beside),
+                passes(beside) ? "" : ": the screen is not conservative here"));
+        }
+    }
+    const Verdict& v = level.verdict;
+    out.push_back(fmt::format("governed by {}: {}, margin {} ({})", to_string(v.decided_by),
+                              passes(v) ? std::string("passes")
+                                        : fmt::format("fails ({})", to_string(v.failure)),
+                              margin_text(v), v.margin_basis));
+    return out;
 }
 
 bool passes(const Verdict& v) {
     return v.kind == VerdictKind::acceptable || v.kind == VerdictKind::acceptable_with_clearance;
 }
 
-const Verdict& more_severe(const Verdict& a, const Verdict& b) {
-    if (a.kind != b.kind) return a.kind > b.kind ? a : b;
-    if (a.clearance_m != b.clearance_m) return a.clearance_m > b.clearance_m ? a : b;
-    if (a.margin.has_value() != b.margin.has_value()) return a.margin ? a : b;
-    if (a.margin && *b.margin < *a.margin) return b;
-    return a;
+bool more_severe(const Verdict& a, const Verdict& b) {
+    if (passes(a) != passes(b)) return !passes(a);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double ma = a.no_motion ? inf : a.margin.value_or(inf);
+    const double mb = b.no_motion ? inf : b.margin.value_or(inf);
+    if (ma != mb) return ma < mb;
+    return a.clearance_m > b.clearance_m;
 }
 
-std::size_t governing_index(const std::vector<LevelResult>& levels) {
+Governing governing_of(const std::vector<LevelResult>& levels) {
     std::size_t gov = 0;
     for (std::size_t i = 1; i < levels.size(); ++i) {
-        if (&more_severe(levels[gov].verdict, levels[i].verdict) != &levels[gov].verdict) gov = i;
+        if (more_severe(levels[i].verdict, levels[gov].verdict)) gov = i;
     }
-    return gov;
+    const LevelResult& l = levels.at(gov);
+    return Governing{gov, l.pga_g, l.direction, l.verdict};
 }
 
-Verdict overall_verdict(const std::vector<LevelResult>& levels, const Upgrade& upgrade) {
-    if (levels.empty()) return Verdict{};
-    const Verdict& worst = levels[governing_index(levels)].verdict;
-    if (passes(worst)) return worst;
-    if (upgrade.recommended) {
-        for (const MaterialTrial& t : upgrade.trials) {
-            if (t.material != *upgrade.recommended) continue;
-            Verdict v = t.verdict;
-            v.kind = VerdictKind::upgrade_material;
-            v.material = t.material;
-            return v;
-        }
+double clearance_needed_m(const std::vector<LevelResult>& levels) {
+    double out = 0.0;
+    for (const LevelResult& l : levels) {
+        if (passes(l.verdict)) out = std::max(out, l.verdict.clearance_m);
     }
-    Verdict v = worst;
-    v.kind = VerdictKind::anchor;
-    v.material.clear();
-    return v;
+    return out;
 }
 
-void apply_upgrade(std::vector<LevelResult>& levels, const Upgrade& upgrade) {
-    for (LevelResult& level : levels) {
-        if (level.verdict.kind != VerdictKind::upgrade_material) continue;
-        if (upgrade.recommended) {
-            level.verdict.material = *upgrade.recommended;
-        } else {
-            level.verdict.kind = VerdictKind::anchor;
-        }
+std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels) {
+    std::vector<std::string> where;
+    std::string basis;
+    for (const LevelResult& l : levels) {
+        if (l.verdict.conditions.empty()) continue;
+        where.push_back(fmt::format("{:.3f} g {}", l.pga_g, to_string(l.direction)));
+        basis = l.flexible.basis;
     }
+    if (where.empty()) return {};
+    return {fmt::format(
+        "flexible-body flag raised at levels the rigid model accepts (PGA {}; {}): a flexible "
+        "body may uplift below the static threshold (frequency-induced rocking, METHODS.md s.2), "
+        "which the rigid-block models cannot show. The verdict holds at these levels only if the "
+        "component is shown to respond as a rigid body (fixed-base frequency well above the "
+        "band) or by test; freestand has no flexible-body model yet.",
+        fmt::join(where, ", "), basis)};
 }
 
 std::string verdict_text(const Verdict& v) {
@@ -247,16 +416,24 @@ std::string verdict_text(const Verdict& v) {
             return "free-standing acceptable";
         case VerdictKind::acceptable_with_clearance: {
             // Whole mm, rounded up; the 1e-9 guards against 0.047000000001 -> 48.
-            const double mm = std::ceil(v.clearance_m * 1000.0 - 1e-9);
-            return fmt::format("acceptable with clearance >= {:.0f} mm", mm);
+            const double clear_mm = std::ceil(v.clearance_m * 1000.0 - 1e-9);
+            return fmt::format("acceptable with clearance >= {:.0f} mm", clear_mm);
         }
-        case VerdictKind::upgrade_material:
-            return v.material.empty() ? "upgrade base material"
-                                      : "upgrade base material to " + v.material;
+        case VerdictKind::change_material: {
+            std::string out = v.material.empty() ? "change base material"
+                                                 : "change base material to " + v.material;
+            if (!v.mechanism.empty()) out += " (" + v.mechanism + ")";
+            return out;
+        }
         case VerdictKind::anchor:
             return "anchor";
     }
     return "";
+}
+
+std::string margin_text(const Verdict& v) {
+    if (v.no_motion) return "no motion";
+    return v.margin ? fmt::format("{:.2f}", *v.margin) : "n/a";
 }
 
 }  // namespace freestand::assess

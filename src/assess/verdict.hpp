@@ -1,6 +1,12 @@
 #pragma once
 /// The anchoring decision (METHODS.md s.6) as pure functions of the checks' results, so every
 /// branch can be tested on hand-built inputs.
+///
+/// Policy: the screen (static criteria, ASCE 4 sliding at the lower friction bound, the
+/// equivalent-linear rocking estimate at the upper bounds) decides a level that passes it. A
+/// level that fails the screen needs the time-history simulation, which then governs it, pass
+/// or fail; only `simulate = "never"` lets the screen decide a failure. The energy-conservation
+/// estimate is informational: it neither decides nor triggers anything.
 #include <string>
 #include <vector>
 
@@ -8,52 +14,61 @@
 
 namespace freestand::assess {
 
-/// Below this peak slip the response is "no motion" (METHODS.md s.2), m.
+/// Below both thresholds the response is "no motion" (METHODS.md s.2).
 inline constexpr double no_motion_slide_m = 1e-3;
+inline constexpr double no_motion_rock_rad = 0.003;
+/// With at least this many histories the mean of the peaks governs, else the maximum
+/// (METHODS.md s.6 step 5).
+inline constexpr int min_histories_for_mean = 7;
 
-/// Whether to simulate a level, and why (issue 6 "model only what the scene needs").
+/// The screen of one level from its initiation (both bounds), sliding and rocking results.
+Screen screen_level(const LevelResult& closed, double allowable_slide_m, double required_fs);
+
+/// Whether to simulate a level, and why (issue 12: "auto" and "always" give the same verdict).
 struct SimulationNeed {
     bool run = false;
     std::string reason;
 };
 
-/// Policy "auto": rest -> no; slide -> only when the ASCE 4 and energy estimates straddle the
-/// allowable (one within, one beyond) or no closed form applies although the block slides;
-/// rock and slide-rock -> always (the s.5a estimate is a screen, the simulation the reference).
-/// "always" / "never" override. Reads only initiation, sliding and rocking of `closed`.
-SimulationNeed simulation_need(const LevelResult& closed, double allowable_slide_m,
-                               SimulatePolicy policy);
+/// "never": no. "always": yes. "auto": exactly when the screen failed.
+SimulationNeed simulation_need(const Screen& screen, SimulatePolicy policy);
 
-/// Verdict of one level with the case's own base. Sliding (modes slide, slide-rock, or any
-/// simulated slip >= 1 mm) against allowable_slide_m: with a simulation, the larger of its peak
-/// and residual slip (max over histories) governs (the reference, METHODS.md s.4); without, the
-/// closed forms: the larger governs, except that when both exceed the allowable the smaller
-/// decides the failure. Failing gives upgrade_material (material set after the search).
-/// Rocking (rock, slide-rock) is decided by the simulation when run (any overturned history,
-/// or alpha / theta_max below required_fs, fails), otherwise by the s.5a factor of safety;
-/// failing gives anchor. The more severe of the two is returned.
+/// The simulation's verdict: sliding at the sliding bound (governing statistic of the peak slip
+/// against the allowable), rocking at the rocking bound (any overturn fails; the governing
+/// statistic of theta_max / alpha against 1 / FS_required); the more severe of the two.
+Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs);
+
+/// The level's verdict: the screen's when it passed (a simulation run then is reported beside
+/// it), the simulation's when the screen failed and it ran, else the screen's failure.
+/// Carries the flexible-body open condition when the flag is raised at a passing level.
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs);
+
+/// Screen result -> why simulated -> what governed, one line each.
+std::vector<std::string> decision_trail(const LevelResult& level, double allowable_slide_m,
+                                        double required_fs);
 
 /// True for acceptable and acceptable_with_clearance.
 bool passes(const Verdict& v);
 
-/// The more severe of two verdicts: higher kind; for equal kinds the larger clearance, then
-/// the smaller margin.
-const Verdict& more_severe(const Verdict& a, const Verdict& b);
+/// True when a is strictly more severe than b: a failure over a pass; then the smaller margin
+/// (a "no motion" verdict has none and is the least severe); then the larger clearance.
+bool more_severe(const Verdict& a, const Verdict& b);
 
-/// Index of the most severe verdict in levels (0 when empty).
-std::size_t governing_index(const std::vector<LevelResult>& levels);
+/// The most severe level (the first on ties) with its verdict. levels must not be empty.
+Governing governing_of(const std::vector<LevelResult>& levels);
 
-/// Overall verdict: the most severe level verdict when all pass; otherwise "upgrade base
-/// material to M" with the recommended material's governing verdict, or "anchor" with the
-/// governing failing level's margin and model when no material passes.
-Verdict overall_verdict(const std::vector<LevelResult>& levels, const Upgrade& upgrade);
+/// Largest clearance any level needs, m (0 when none slides measurably).
+double clearance_needed_m(const std::vector<LevelResult>& levels);
 
-/// Sets the material (or anchor) of failing slide levels once the upgrade search is done.
-void apply_upgrade(std::vector<LevelResult>& levels, const Upgrade& upgrade);
+/// Open conditions of every level (flexible-body flag at passing levels), merged in order.
+std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels);
 
 /// The verdict line: "free-standing acceptable", "acceptable with clearance >= 47 mm",
-/// "upgrade base material to steel" or "anchor". The clearance is rounded up to whole mm.
+/// "change base material to steel (higher friction: ...)" or "anchor". The clearance is rounded
+/// up to whole mm.
 std::string verdict_text(const Verdict& v);
+
+/// "1.15", or "no motion" when the demand is negligible.
+std::string margin_text(const Verdict& v);
 
 }  // namespace freestand::assess

@@ -17,7 +17,8 @@ const char* const usage = "CASE.toml [--out DIR] [--pga 0.1,0.2]";
 int run(const std::vector<std::string>& args) {
     po::options_description desc("options");
     desc.add_options()("case", po::value<std::string>()->required(), "case file (TOML)")(
-        "out", po::value<std::string>(), "output folder (default: reports/<case stem>/)")(
+        "out", po::value<std::string>(),
+        "output folder (default: out/<case stem>/ in the working directory)")(
         "pga", po::value<std::string>(), "PGA levels in g replacing the case's, e.g. 0.1,0.2");
     const auto vm = parse_options("assess", usage, desc, args, {"case"});
     if (!vm) return 0;
@@ -26,7 +27,7 @@ int run(const std::vector<std::string>& args) {
     if (vm->count("pga")) pga = parse_double_list((*vm)["pga"].as<std::string>(), "--pga");
     const std::filesystem::path out = vm->count("out")
                                           ? std::filesystem::path((*vm)["out"].as<std::string>())
-                                          : std::filesystem::path("reports") / case_file.stem();
+                                          : std::filesystem::path("out") / case_file.stem();
     const auto start = std::chrono::steady_clock::now();
     const report::CaseRun r = report::run_case(case_file, pga, build_commit);
     const double assess_s =

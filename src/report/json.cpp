@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "assess/verdict.hpp"
@@ -26,15 +27,92 @@ ordered_json num(double v) {
 }
 ordered_json num(const std::optional<double>& v) { return v ? num(*v) : ordered_json(nullptr); }
 
+ordered_json text_or_null(const std::string& s) {
+    return s.empty() ? ordered_json(nullptr) : ordered_json(s);
+}
+
+ordered_json pair_json(const std::array<double, 2>& v) { return {num(v[0]), num(v[1])}; }
+
 ordered_json verdict_json(const Verdict& v) {
     ordered_json j;
     j["verdict"] = verdict_text(v);
     j["kind"] = to_string(v.kind);
-    j["margin"] = num(v.margin);
+    j["failure"] = to_string(v.failure);
+    j["no_motion"] = v.no_motion;
+    // "no motion" is said instead of a ratio: no number that could be read as a margin.
+    j["margin"] = v.no_motion ? ordered_json(nullptr) : num(v.margin);
     j["margin_basis"] = v.margin_basis;
     j["decided_by"] = to_string(v.decided_by);
     j["clearance_m"] = num(v.clearance_m);
-    j["material"] = v.material.empty() ? ordered_json(nullptr) : ordered_json(v.material);
+    j["material"] = text_or_null(v.material);
+    j["mechanism"] = text_or_null(v.mechanism);
+    j["conditions"] = v.conditions;
+    return j;
+}
+
+ordered_json level_ref_json(const Governing& g) {
+    return {
+        {"pga_g", num(g.pga_g)}, {"direction", to_string(g.direction)}, {"level_index", g.level}};
+}
+
+// A headline verdict with its one governing level; from_trial names the material whose trial
+// the level belongs to (null: a level of the case's own base).
+ordered_json headline_json(const Governing& g, const std::optional<std::string>& from_trial) {
+    ordered_json j = verdict_json(g.verdict);
+    ordered_json where = level_ref_json(g);
+    where["from_material_trial"] = from_trial ? ordered_json(*from_trial) : ordered_json(nullptr);
+    j["governing"] = where;
+    return j;
+}
+
+ordered_json contact_json(const ContactBound& b) {
+    return {{"mu_s", num(b.mu_s)},
+            {"mu_k", num(b.mu_k)},
+            {"restitution", num(b.restitution)},
+            {"housner", b.housner}};
+}
+
+ordered_json bounds_json(const DirectionBounds& b) {
+    return {{"sliding", contact_json(b.sliding)},
+            {"rocking", contact_json(b.rocking)},
+            {"restitution_lower", num(b.restitution_lower)}};
+}
+
+ordered_json check_json(const ScreenCheck& c) {
+    return {{"applies", c.applies},
+            {"passed", c.passed},
+            {"text", c.text},
+            {"margin", c.verdict.no_motion ? ordered_json(nullptr) : num(c.verdict.margin)},
+            {"no_motion", c.verdict.no_motion}};
+}
+
+ordered_json screen_json(const Screen& s) {
+    return {{"passed", s.passed},
+            {"rest", check_json(s.rest)},
+            {"slide", check_json(s.slide)},
+            {"rock", check_json(s.rock)}};
+}
+
+ordered_json stats_json(const Stats& s) {
+    return {{"mean", num(s.mean)}, {"p84", num(s.p84)}, {"max", num(s.max)}};
+}
+
+ordered_json simulation_json(const std::optional<Simulation>& sim) {
+    if (!sim) return nullptr;
+    ordered_json j;
+    j["histories"] = sim->histories;
+    j["mean_governs"] = sim->mean_governs;
+    j["bounds_differ"] = sim->bounds_differ;
+    j["slide_m"] = stats_json(sim->slide_m);
+    j["slide_residual_m"] = stats_json(sim->slide_residual_m);
+    // Over the histories that stayed standing: none when every history overturned.
+    const bool standing = sim->overturned < sim->histories;
+    j["rock_over_alpha"] = standing ? stats_json(sim->rock_over_alpha) : ordered_json(nullptr);
+    j["rock_rad"] = standing ? stats_json(sim->rock_rad) : ordered_json(nullptr);
+    j["overturned"] = sim->overturned;
+    j["overturn_ci"] = pair_json(sim->overturn_ci);
+    j["amplification"] = stats_json(sim->amplification);
+    j["governing_history"] = sim->governing_history;
     return j;
 }
 
@@ -43,7 +121,9 @@ ordered_json level_json(const LevelResult& l) {
     j["pga_g"] = num(l.pga_g);
     j["pga_v_g"] = num(l.pga_v_g);
     j["direction"] = to_string(l.direction);
+    j["bounds"] = bounds_json(l.bounds);
     j["mode"] = to_string(l.initiation.mode);
+    j["mode_lower_friction"] = to_string(l.initiation_lower.mode);
     j["a_ratio"] = num(l.initiation.a_ratio);
     j["mu_s"] = num(l.initiation.mu_s);
     j["tan_alpha"] = num(l.initiation.tan_alpha);
@@ -55,6 +135,7 @@ ordered_json level_json(const LevelResult& l) {
                      {"peak_psa_in_band_g", num(l.flexible.peak_psa_in_band_g)},
                      {"uplift_a_g", num(l.flexible.uplift_a_g)},
                      {"reason", l.flexible.reason}};
+    j["slide_mu_s"] = num(l.sliding.mu_s);
     j["mu_e"] = num(l.sliding.mu_e);
     j["c_s_mps2"] = num(l.sliding.c_s_mps2);
     j["f_es_hz"] = num(l.sliding.f_es_hz);
@@ -62,19 +143,6 @@ ordered_json level_json(const LevelResult& l) {
     j["slide_asce_m"] = num(l.sliding.slide_asce_m);
     j["slide_energy_m"] = num(l.sliding.slide_energy_m);
     j["sliding_reason"] = l.sliding.reason;
-    const auto& sim = l.simulation;
-    j["simulated"] = sim.has_value();
-    j["simulation_reason"] = l.simulation_reason;
-    j["histories"] = sim ? ordered_json(sim->histories) : ordered_json(nullptr);
-    j["slide_sim_max_m"] = sim ? num(sim->slide_max_max_m) : ordered_json(nullptr);
-    j["slide_sim_mean_m"] = sim ? num(sim->slide_max_mean_m) : ordered_json(nullptr);
-    j["slide_residual_max_m"] = sim ? num(sim->slide_residual_max_m) : ordered_json(nullptr);
-    j["slide_residual_mean_m"] = sim ? num(sim->slide_residual_mean_m) : ordered_json(nullptr);
-    j["rock_max_over_alpha"] = sim ? num(sim->rock_max_over_alpha_max) : ordered_json(nullptr);
-    j["rock_mean_over_alpha"] = sim ? num(sim->rock_max_over_alpha_mean) : ordered_json(nullptr);
-    j["overturned_fraction"] = sim ? num(sim->overturned_fraction) : ordered_json(nullptr);
-    j["amplification_sim_max"] = sim ? num(sim->amplification_max) : ordered_json(nullptr);
-    j["amplification_sim_mean"] = sim ? num(sim->amplification_mean) : ordered_json(nullptr);
     j["amplification_estimate"] = num(l.rocking.amplification_estimate);
     const Rocking& rk = l.rocking;
     j["rocking"] = {{"alpha_rad", num(rk.alpha_rad)},
@@ -85,14 +153,36 @@ ordered_json level_json(const LevelResult& l) {
                     {"ishiyama_v_mps", num(rk.ishiyama_v_mps)},
                     {"pgv_mps", num(rk.pgv_mps)},
                     {"el_gate_exceeded", rk.gate_passed},
+                    {"el_gate_g", num(rk.gate_g)},
                     {"el_theta_rad", num(rk.theta_rad)},
                     {"el_overturn_predicted", rk.overturn_predicted},
                     {"el_overturn_fs", num(rk.overturn_fs)},
                     {"el_spectral_margin", num(rk.spectral_margin)}};
-    j["verdict"] = verdict_text(l.verdict);
-    j["margin"] = num(l.verdict.margin);
-    j["margin_basis"] = l.verdict.margin_basis;
-    j["decided_by"] = to_string(l.verdict.decided_by);
+    j["screen"] = screen_json(l.screen);
+    j["simulated"] = l.simulation.has_value();
+    j["simulation_reason"] = l.simulation_reason;
+    j["simulation"] = simulation_json(l.simulation);
+    j["verdict"] = verdict_json(l.verdict);
+    j["trail"] = l.trail;
+    return j;
+}
+
+ordered_json upgrade_json(const Upgrade& up) {
+    ordered_json j;
+    j["needed"] = up.needed;
+    j["recommended"] = up.recommended ? ordered_json(*up.recommended) : ordered_json(nullptr);
+    ordered_json trials = ordered_json::array();
+    for (const MaterialTrial& t : up.trials) {
+        ordered_json tj;
+        tj["material"] = t.material;
+        tj["mu_s_range"] = pair_json(t.mu_s_range);
+        tj["restitution"] = num(t.restitution);
+        tj["passes"] = t.passes;
+        tj["governing"] = level_ref_json(t.governing);
+        tj["verdict"] = verdict_json(t.governing.verdict);
+        trials.push_back(tj);
+    }
+    j["trials"] = trials;
     return j;
 }
 
@@ -120,7 +210,12 @@ ordered_json case_json(const Case& c) {
     comp["mu_s"] = num(k.base.mu_s);
     comp["mu_k"] = num(k.base.mu_k);
     comp["restitution"] = num(k.base.restitution);
+    comp["mu_s_range"] = pair_json(k.base.mu_s_range);
+    comp["mu_s_range_source"] = k.base.mu_s_range_source;
+    comp["restitution_range"] =
+        k.base.restitution_range ? pair_json(*k.base.restitution_range) : ordered_json(nullptr);
     comp["allowable_slide_m"] = num(k.allowable_slide_m);
+    comp["allowable_relative_m"] = num(k.allowable_relative_m);
     comp["required_overturn_fs"] = num(k.required_overturn_fs);
     ordered_json site;
     site["design"] = c.site.design;
@@ -149,29 +244,18 @@ Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, st
 
 ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
     ordered_json j;
-    j["verdict"] = verdict_text(r.overall);
-    j["overall"] = verdict_json(r.overall);
-    if (!r.levels.empty()) {
-        const LevelResult& g = r.levels[r.governing_level];
-        j["governing"] = {{"pga_g", num(g.pga_g)}, {"direction", to_string(g.direction)}};
-    }
+    j["verdict"] = verdict_text(r.overall.verdict);
+    const std::optional<std::string> trial =
+        r.overall_from_trial ? std::optional<std::string>(r.overall.verdict.material.empty()
+                                                              ? r.upgrade.recommended.value_or("")
+                                                              : r.overall.verdict.material)
+                             : std::nullopt;
+    j["overall"] = headline_json(r.overall, trial);
+    j["own"] = headline_json(r.own, std::nullopt);
     ordered_json levels = ordered_json::array();
     for (const LevelResult& l : r.levels) levels.push_back(level_json(l));
     j["levels"] = levels;
-    ordered_json up;
-    up["needed"] = r.upgrade.needed;
-    up["recommended"] =
-        r.upgrade.recommended ? ordered_json(*r.upgrade.recommended) : ordered_json(nullptr);
-    ordered_json trials = ordered_json::array();
-    for (const MaterialTrial& t : r.upgrade.trials) {
-        ordered_json tj = verdict_json(t.verdict);
-        tj["material"] = t.material;
-        tj["mu_s"] = num(t.mu_s);
-        tj["passes"] = passes(t.verdict);
-        trials.push_back(tj);
-    }
-    up["trials"] = trials;
-    j["upgrade"] = up;
+    j["upgrade"] = upgrade_json(r.upgrade);
     j["histories_generated"] = r.histories_generated;
     j["simulations_run"] = r.simulations_run;
     ordered_json checks = ordered_json::array();

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "report/svg.hpp"
 
@@ -82,11 +83,144 @@ Figure history_figure(const std::string& file, const std::string& title, const s
     return Figure{file, caption, render_svg(p)};
 }
 
+// Points (PGA, value) of one curve; a level without the value adds nothing.
+struct Curve {
+    std::vector<double> pga_g;
+    std::vector<double> value;
+    void add(double pga, double v) {
+        pga_g.push_back(pga);
+        value.push_back(v);
+    }
+    bool empty() const { return pga_g.empty(); }
+};
+
+// Adds a curve drawn with a dot at each level (simulated curves may have a single point).
+void add_curve(Plot& p, const std::string& label, const Curve& c, const std::string& color,
+               bool dashed) {
+    if (c.empty()) return;
+    Line l{label, c.pga_g, c.value, color, 1.5, dashed};
+    l.points = true;
+    p.lines.push_back(std::move(l));
+}
+
+// A horizontal reference line across the levels' PGA range (from 0, the axis origin).
+void add_limit(Plot& p, const std::string& label, double y, double pga_max_g) {
+    p.lines.push_back(Line{label, {0.0, pga_max_g}, {y, y}, "#000000", 1.0, false});
+}
+
+std::vector<const assess::LevelResult*> levels_of(const assess::AssessmentResult& r,
+                                                  assess::Direction d) {
+    std::vector<const assess::LevelResult*> out;
+    for (const assess::LevelResult& l : r.levels) {
+        if (l.direction == d) out.push_back(&l);
+    }
+    return out;
+}
+
+double pga_max_g(const std::vector<const assess::LevelResult*>& levels) {
+    double out = 0.0;
+    for (const assess::LevelResult* l : levels) out = std::max(out, l->pga_g);
+    return out;
+}
+
+// Sliding demand against PGA: the ASCE 4 screen and the energy estimate at the lower friction
+// bound, the simulated statistics where simulated, and the allowable.
+std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, assess::Direction d) {
+    const auto levels = levels_of(r, d);
+    Curve asce, energy, mean, p84, max;
+    for (const assess::LevelResult* l : levels) {
+        if (l->sliding.slide_asce_m) asce.add(l->pga_g, *l->sliding.slide_asce_m * 1000.0);
+        if (l->sliding.slide_energy_m) energy.add(l->pga_g, *l->sliding.slide_energy_m * 1000.0);
+        if (!l->simulation) continue;
+        const assess::Stats& s = l->simulation->slide_m;
+        mean.add(l->pga_g, s.mean * 1000.0);
+        p84.add(l->pga_g, s.p84 * 1000.0);
+        max.add(l->pga_g, s.max * 1000.0);
+    }
+    if (asce.empty() && energy.empty() && mean.empty()) return std::nullopt;
+    const char* dir = assess::to_string(d);
+    const double allowable_mm = r.input.component.allowable_slide_m * 1000.0;
+    Plot p;
+    p.title = fmt::format("Sliding demand against PGA, direction {}", dir);
+    p.x = Axis{"PGA (g)", false, 0.0, {}};
+    p.y = Axis{"peak slide (mm)", false, 0.0, {}};
+    add_curve(p, "ASCE 4 at the lower friction bound (screen)", asce, palette[0], false);
+    add_curve(p, "energy conservation (informational)", energy, palette[1], true);
+    add_curve(p, "simulated mean", mean, palette[2], false);
+    add_curve(p, "simulated 84th percentile", p84, palette[4], false);
+    add_curve(p, "simulated maximum", max, palette[3], false);
+    add_limit(p, fmt::format("allowable slide {:.1f} mm (clearance)", allowable_mm), allowable_mm,
+              pga_max_g(levels));
+    return Figure{fmt::format("demand-slide-{}.svg", dir),
+                  fmt::format("Sliding demand against PGA, direction {}: ASCE 4 at the lower "
+                              "friction bound (the screen), energy conservation (dashed, "
+                              "informational: it never decides), the simulated mean, 84th "
+                              "percentile and maximum at the simulated levels, and the allowable "
+                              "slide.",
+                              dir),
+                  render_svg(p)};
+}
+
+// theta_max / alpha against PGA: the equivalent-linear screen and the simulated statistics of
+// the standing histories at the rocking bound, the limit 1 / FS_required, and the overturns.
+std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, assess::Direction d) {
+    const auto levels = levels_of(r, d);
+    Curve screen, mean, p84, max;
+    std::vector<Marker> overturns;
+    for (const assess::LevelResult* l : levels) {
+        if (l->rocking.theta_rad && l->rocking.alpha_rad > 0.0)
+            screen.add(l->pga_g, *l->rocking.theta_rad / l->rocking.alpha_rad);
+        if (!l->simulation) continue;
+        const assess::Simulation& sim = *l->simulation;
+        if (sim.overturned > 0) {
+            // Drawn at theta / alpha = 1, where the block goes over.
+            overturns.push_back(
+                Marker{fmt::format("{}/{} overturned", sim.overturned, sim.histories), l->pga_g,
+                       1.0, "#000000"});
+        }
+        // The statistics cover the standing histories only: none when all went over.
+        if (sim.overturned >= sim.histories) continue;
+        mean.add(l->pga_g, sim.rock_over_alpha.mean);
+        p84.add(l->pga_g, sim.rock_over_alpha.p84);
+        max.add(l->pga_g, sim.rock_over_alpha.max);
+    }
+    if (screen.empty() && mean.empty() && overturns.empty()) return std::nullopt;
+    const char* dir = assess::to_string(d);
+    const double fs = r.input.component.required_overturn_fs;
+    Plot p;
+    p.title = fmt::format("Rocking demand against PGA, direction {}", dir);
+    // Room above theta / alpha = 1 and right of the last level for the overturn labels; no
+    // plotted value exceeds 1 (standing histories, estimates below alpha).
+    p.x = Axis{"PGA (g)", false, 0.0, {}};
+    if (!overturns.empty()) p.x.max = 1.25 * pga_max_g(levels);
+    p.y = Axis{"theta_max / alpha", false, 0.0, 1.2};
+    add_curve(p, "equivalent-linear estimate at the upper bounds (screen)", screen, palette[0],
+              true);
+    add_curve(p, "simulated mean (standing histories)", mean, palette[2], false);
+    add_curve(p, "simulated 84th percentile", p84, palette[4], false);
+    add_curve(p, "simulated maximum", max, palette[3], false);
+    add_limit(p, fmt::format("1 / FS required = 1 / {:.2f} = {:.3f}", fs, 1.0 / fs), 1.0 / fs,
+              p.x.max.value_or(pga_max_g(levels)));
+    p.markers = std::move(overturns);
+    return Figure{fmt::format("demand-rock-{}.svg", dir),
+                  fmt::format("Rocking demand against PGA, direction {}: peak rotation over the "
+                              "slenderness angle, equivalent-linear estimate (dashed, the screen) "
+                              "and simulated mean, 84th percentile and maximum of the histories "
+                              "that stayed standing, against the limit 1 / FS required; levels "
+                              "with overturned histories are marked at theta / alpha = 1.",
+                              dir),
+                  render_svg(p)};
+}
+
 }  // namespace
 
 std::vector<Figure> figures(const assess::AssessmentResult& r) {
     std::vector<Figure> out;
     for (const auto& d : r.plots.initiation) out.push_back(initiation_figure(r, d));
+    for (assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
+        if (auto f = slide_demand_figure(r, d)) out.push_back(std::move(*f));
+        if (auto f = rock_demand_figure(r, d)) out.push_back(std::move(*f));
+    }
     out.push_back(spectra_figure(r));
     if (!r.plots.ground_motion.empty()) {
         const std::string g = r.plots.governing;

@@ -24,6 +24,7 @@ std::string fixed(const std::optional<double>& v, int precision) {
     return v ? fixed(*v, precision) : none;
 }
 std::string mm(const std::optional<double>& v_m) { return v_m ? fixed(*v_m * 1000.0, 1) : none; }
+std::string yes_no(bool b) { return b ? "yes" : "no"; }
 
 mstch::map input(std::string name, std::string value, std::string unit, std::string note = "") {
     return mstch::map{{"name", std::move(name)},
@@ -35,8 +36,37 @@ mstch::map input(std::string name, std::string value, std::string unit, std::str
 std::string pair(double a, double b, int precision) {
     return fixed(a, precision) + ", " + fixed(b, precision);
 }
+std::string bounds_text(double lower, double upper, int precision) {
+    return fmt::format("[{}]", pair(lower, upper, precision));
+}
 
-mstch::array inputs(const Case& c) {
+// The first level of a direction carries that direction's bounds (they do not vary with PGA).
+const LevelResult* first_level(const std::vector<LevelResult>& levels, Direction d) {
+    for (const LevelResult& l : levels) {
+        if (l.direction == d) return &l;
+    }
+    return nullptr;
+}
+
+std::string restitution_note(const BaseContact& b, const DirectionBounds& bounds) {
+    if (b.restitution_range) return "restitution_range (case file)";
+    if (b.restitution) {
+        return fmt::format(
+            "from Housner's value of the critical edge to the measured r = {:.3f} "
+            "(METHODS.md s.7)",
+            *b.restitution);
+    }
+    return bounds.rocking.housner ? "Housner's value of the critical edge (no measured r)" : "";
+}
+
+std::string statistic_rule(int histories) {
+    return fmt::format(
+        "the mean of the peaks governs with >= {} histories, else the maximum: "
+        "here the {}",
+        min_histories_for_mean, histories >= min_histories_for_mean ? "mean" : "maximum");
+}
+
+mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
     const Component& k = c.component;
     mstch::array out;
     out.push_back(input("mass", fixed(k.mass_kg, 1), "kg"));
@@ -59,77 +89,135 @@ mstch::array inputs(const Case& c) {
                         "Hz"));
     out.push_back(input("base material", k.base.material.empty() ? none : k.base.material, "",
                         k.base.source));
-    out.push_back(input("static friction mu_s", fixed(k.base.mu_s, 3), "-"));
-    out.push_back(input("kinetic friction mu_k", fixed(k.base.mu_k, 3), "-"));
-    out.push_back(input("restitution r",
+    out.push_back(input("static friction mu_s (nominal)", fixed(k.base.mu_s, 3), "-"));
+    out.push_back(input("static friction bounds [lower, upper]",
+                        bounds_text(k.base.mu_s_range[0], k.base.mu_s_range[1], 3), "-",
+                        k.base.mu_s_range_source));
+    out.push_back(input("kinetic friction mu_k (nominal)", fixed(k.base.mu_k, 3), "-",
+                        "mu_k / mu_s applied to both friction bounds"));
+    out.push_back(input("restitution r (nominal)",
                         k.base.restitution ? fixed(*k.base.restitution, 3) : "Housner", "-"));
-    out.push_back(
-        input("allowable slide (clearance)", fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
+    for (Direction d : {Direction::x, Direction::y}) {
+        const LevelResult* l = first_level(levels, d);
+        if (!l) continue;
+        out.push_back(
+            input(fmt::format("restitution bounds, {} [lower, upper]", to_string(d)),
+                  bounds_text(l->bounds.restitution_lower, l->bounds.rocking.restitution, 3), "-",
+                  restitution_note(k.base, l->bounds)));
+    }
+    out.push_back(input("allowable slide (absolute: clearance)",
+                        fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
+    if (k.allowable_relative_m) {
+        out.push_back(input("allowable relative displacement (joined units)",
+                            fixed(*k.allowable_relative_m * 1000.0, 1), "mm",
+                            "a braced pair is one rigid body: the relative displacement is zero "
+                            "in this model"));
+    }
     out.push_back(
         input("required overturning factor of safety", fixed(k.required_overturn_fs, 2), "-"));
     out.push_back(
         input("design spectrum", c.site.design == "rg1.60" ? "US NRC RG 1.60" : c.site.design, ""));
-    std::string levels;
-    for (double p : c.site.pga_g) levels += (levels.empty() ? "" : ", ") + fixed(p, 3);
-    out.push_back(input("PGA levels (horizontal)", levels, "g"));
+    std::string pga_levels;
+    for (double p : c.site.pga_g) pga_levels += (pga_levels.empty() ? "" : ", ") + fixed(p, 3);
+    out.push_back(input("PGA levels (horizontal)", pga_levels, "g"));
     out.push_back(input("vertical / horizontal PGA", fixed(c.site.vertical_ratio, 4), "-"));
     out.push_back(
         input("damping of the sliding spectrum", fixed(c.site.sliding_damping * 100.0, 1), "%"));
     out.push_back(input("gravity", fixed(c.site.g_mps2, 3), "m/s^2"));
-    out.push_back(input("histories per level", std::to_string(c.options.histories_per_level), ""));
+    out.push_back(input("histories per level", std::to_string(c.options.histories_per_level), "",
+                        statistic_rule(c.options.histories_per_level)));
     out.push_back(input("simulate", to_string(c.options.simulate), ""));
     return out;
 }
 
-std::string margin_text(const Verdict& v) { return v.margin ? fixed(*v.margin, 2) : "unbounded"; }
+std::string mode_text(const LevelResult& l) {
+    std::string out = to_string(l.initiation.mode);
+    if (l.initiation_lower.mode != l.initiation.mode)
+        out += fmt::format(" (lower mu: {})", to_string(l.initiation_lower.mode));
+    return out;
+}
 
-mstch::map level_row(const LevelResult& l) {
-    const auto& sim = l.simulation;
-    std::string amp = none;
-    if (sim) {
-        amp = fixed(sim->amplification_max, 2) + " (sim max)";
-    } else if (l.rocking.amplification_estimate) {
-        amp = "~" + fixed(*l.rocking.amplification_estimate, 2);
-    } else {
-        amp = "1.3-11 (rocking, measured range)";
+std::string el_fs_text(const LevelResult& l) {
+    if (l.initiation.mode != Mode::rock && l.initiation.mode != Mode::slide_rock)
+        return "not rocking";
+    if (l.rocking.overturn_predicted) return "overturns";
+    if (l.rocking.overturn_fs) return fixed(*l.rocking.overturn_fs, 2);
+    if (!l.rocking.gate_passed) return "no uplift";
+    return none;
+}
+
+std::string amplification_estimate(const LevelResult& l) {
+    if (l.rocking.amplification_estimate)
+        return fmt::format("~{:.2f}", *l.rocking.amplification_estimate);
+    return "1.3-11 (rocking, measured range)";
+}
+
+std::string stats_text(const Stats& s, double scale, int precision) {
+    return fmt::format("{:.{}f} / {:.{}f} / {:.{}f}", s.mean * scale, precision, s.p84 * scale,
+                       precision, s.max * scale, precision);
+}
+
+std::string overturned_text(const Simulation& sim) {
+    return fmt::format("{}/{} [{:.0f}%, {:.0f}%]", sim.overturned, sim.histories,
+                       100.0 * sim.overturn_ci[0], 100.0 * sim.overturn_ci[1]);
+}
+
+std::string level_verdict_text(const Verdict& v) {
+    return passes(v) ? verdict_text(v)
+                     : fmt::format("{} ({})", verdict_text(v), to_string(v.failure));
+}
+
+// Which contact bound the deciding model ran at (METHODS.md s.6 step 6).
+std::string governing_bound(const LevelResult& l) {
+    switch (l.verdict.decided_by) {
+        case Model::static_initiation:
+        case Model::asce4_sliding:
+        case Model::simulation_slide:
+            return l.bounds.sliding.name.empty() ? "lower friction bound" : l.bounds.sliding.name;
+        case Model::equivalent_linear_rocking:
+        case Model::simulation_rocking:
+            return l.bounds.rocking.name.empty() ? "upper friction and restitution bounds"
+                                                 : l.bounds.rocking.name;
     }
-    std::string el_fs = none;
-    if (l.initiation.mode != Mode::rock && l.initiation.mode != Mode::slide_rock) {
-        el_fs = "not rocking";
-    } else if (l.rocking.overturn_predicted) {
-        el_fs = "overturns";
-    } else if (l.rocking.overturn_fs) {
-        el_fs = fixed(*l.rocking.overturn_fs, 2);
-    } else if (!l.rocking.gate_passed) {
-        el_fs = "no uplift";
-    }
-    return mstch::map{
-        {"pga", fixed(l.pga_g, 3)},
-        {"pga_v", fixed(l.pga_v_g, 3)},
-        {"dir", std::string(to_string(l.direction))},
-        {"mode", std::string(to_string(l.initiation.mode))},
-        {"flex", std::string(l.flexible.raised ? "FLAG" : "")},
-        {"a_ratio", fixed(l.initiation.a_ratio, 3)},
-        {"slide_asce", mm(l.sliding.slide_asce_m)},
-        {"slide_energy", mm(l.sliding.slide_energy_m)},
-        {"sim_max", sim ? mm(sim->slide_max_max_m) : none},
-        {"sim_residual", sim ? mm(sim->slide_residual_max_m) : none},
-        {"rock_sim", sim ? fixed(sim->rock_max_over_alpha_max, 3) : none},
-        {"el_fs", el_fs},
-        {"overturned", sim ? fixed(sim->overturned_fraction * 100.0, 0) + "%" : none},
-        {"amplification", amp},
-        {"verdict", verdict_text(l.verdict)},
-        {"margin", margin_text(l.verdict)},
-        {"decided_by", std::string(to_string(l.verdict.decided_by))},
-        {"simulation_reason", l.simulation_reason + "."},
-        {"sliding_reason", l.sliding.reason},
-    };
+    return none;
 }
 
 mstch::array text_list(const std::vector<std::string>& items) {
     mstch::array out;
     for (const std::string& s : items) out.push_back(mstch::map{{"text", s}});
     return out;
+}
+
+mstch::map level_row(const LevelResult& l) {
+    const auto& sim = l.simulation;
+    // Rotation statistics cover the standing histories: none when every history overturned.
+    const bool standing = sim && sim->overturned < sim->histories;
+    return mstch::map{
+        {"pga", fixed(l.pga_g, 3)},
+        {"pga_v", fixed(l.pga_v_g, 3)},
+        {"dir", std::string(to_string(l.direction))},
+        {"mode", mode_text(l)},
+        {"flex", std::string(l.flexible.raised ? "FLAG" : "")},
+        {"a_ratio", fixed(l.initiation.a_ratio, 3)},
+        {"screen", yes_no(l.screen.passed)},
+        {"slide_asce", mm(l.sliding.slide_asce_m)},
+        {"slide_energy", mm(l.sliding.slide_energy_m)},
+        {"el_fs", el_fs_text(l)},
+        {"amplification_estimate", amplification_estimate(l)},
+        {"histories",
+         sim ? fmt::format("{} ({})", sim->histories, sim->mean_governs ? "mean" : "max") : none},
+        {"sim_slide", sim ? stats_text(sim->slide_m, 1000.0, 1) : none},
+        {"sim_residual", sim ? mm(sim->slide_residual_m.max) : none},
+        {"rock_sim", standing ? stats_text(sim->rock_over_alpha, 1.0, 3) : none},
+        {"overturned", sim ? overturned_text(*sim) : none},
+        {"amplification", sim ? fixed(sim->amplification.max, 2) : none},
+        {"verdict", level_verdict_text(l.verdict)},
+        {"margin", margin_text(l.verdict)},
+        {"decided_by", std::string(to_string(l.verdict.decided_by))},
+        {"bound", governing_bound(l)},
+        {"trail", text_list(l.trail)},
+        {"sliding_reason", l.sliding.reason},
+    };
 }
 
 mstch::array flex_notes(const std::vector<LevelResult>& levels) {
@@ -146,26 +234,64 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
     return out;
 }
 
-std::string upgrade_summary(const Upgrade& up) {
-    return up.recommended
-               ? "the weakest material that passes every level is " + *up.recommended + "."
-               : "no material of METHODS.md s.7 passes every level.";
+std::string level_name(double pga_g, Direction d) {
+    return fmt::format("PGA {:.3f} g, direction {}", pga_g, to_string(d));
+}
+
+std::string base_name(const BaseContact& b) {
+    return b.material.empty() ? fmt::format("mu_s {:.3f}", b.mu_s) : b.material;
+}
+
+// The case's own base beside a headline that is not its own pass: one level, as the headline.
+std::string own_base_line(const AssessmentResult& r) {
+    const Verdict& v = r.own.verdict;
+    return fmt::format("Case's own base ({}): {} at {}: {}, decided by {}, margin {}",
+                       base_name(r.input.component.base), passes(v) ? "governed" : "fails",
+                       level_name(r.own.pga_g, r.own.direction),
+                       passes(v) ? verdict_text(v) : std::string(to_string(v.failure)),
+                       to_string(v.decided_by), margin_text(v));
+}
+
+bool shows_own_base(const AssessmentResult& r) {
+    const VerdictKind k = r.overall.verdict.kind;
+    return k == VerdictKind::change_material || k == VerdictKind::anchor;
+}
+
+std::string upgrade_summary(const AssessmentResult& r) {
+    if (!r.upgrade.recommended) return "no material of METHODS.md s.7 passes every level: anchor.";
+    const std::string& why = r.overall.verdict.mechanism;
+    return fmt::format(
+        "{} is recommended, the first material in METHODS.md s.7 order that "
+        "passes every level{}.",
+        *r.upgrade.recommended, why.empty() ? "" : ": " + why);
+}
+
+mstch::array trial_rows(const Upgrade& up) {
+    mstch::array out;
+    for (const MaterialTrial& t : up.trials) {
+        const Governing& g = t.governing;
+        const Verdict& v = g.verdict;
+        out.push_back(
+            mstch::map{{"material", t.material},
+                       {"mu_s_range", bounds_text(t.mu_s_range[0], t.mu_s_range[1], 3)},
+                       {"restitution", t.restitution ? fixed(*t.restitution, 3) : "Housner"},
+                       {"passes", yes_no(t.passes)},
+                       {"governing", fmt::format("{:.3f} g, {}", g.pga_g, to_string(g.direction))},
+                       {"verdict", verdict_text(v)},
+                       {"failure", passes(v) ? "" : std::string(to_string(v.failure))},
+                       {"decided_by", std::string(to_string(v.decided_by))},
+                       {"margin", margin_text(v)}});
+    }
+    return out;
+}
+
+std::string margin_with_basis(const Verdict& v) {
+    return v.margin_basis.empty() ? margin_text(v)
+                                  : fmt::format("{} ({})", margin_text(v), v.margin_basis);
 }
 
 mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vector<Figure>& figs) {
-    const LevelResult* gov = r.levels.empty() ? nullptr : &r.levels[r.governing_level];
-    mstch::array trials;
-    for (const MaterialTrial& t : r.upgrade.trials) {
-        const std::string failing = t.verdict.kind == VerdictKind::anchor
-                                        ? "does not pass: rocking / overturning"
-                                        : "does not pass: slides beyond the allowable";
-        trials.push_back(
-            mstch::map{{"material", t.material},
-                       {"mu_s", fixed(t.mu_s, 2)},
-                       {"verdict", passes(t.verdict) ? verdict_text(t.verdict) : failing},
-                       {"margin", margin_text(t.verdict)},
-                       {"decided_by", std::string(to_string(t.verdict.decided_by))}});
-    }
+    const Verdict& v = r.overall.verdict;
     mstch::array levels;
     for (const LevelResult& l : r.levels) levels.push_back(level_row(l));
     mstch::array checks;
@@ -183,19 +309,18 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
     return mstch::map{
         {"component_name", r.input.component.name},
         {"description", r.input.component.description},
-        {"verdict", verdict_text(r.overall)},
-        {"verdict_kind", std::string(to_string(r.overall.kind))},
-        {"verdict_margin", margin_text(r.overall) +
-                               (r.overall.material.empty() ? "" : " with " + r.overall.material)},
-        {"verdict_margin_basis", r.overall.margin_basis},
-        {"verdict_decided_by", std::string(to_string(r.overall.decided_by))},
-        {"governing",
-         gov ? fmt::format("PGA {:.3f} g, direction {}", gov->pga_g, to_string(gov->direction))
-             : none},
+        {"verdict", verdict_text(v)},
+        {"verdict_kind", std::string(to_string(v.kind))},
+        {"verdict_margin", margin_with_basis(v)},
+        {"verdict_decided_by", std::string(to_string(v.decided_by))},
+        {"governing", headline_level(r)},
+        {"conditions", text_list(v.conditions)},
+        {"has_own_base", shows_own_base(r)},
+        {"own_base", own_base_line(r)},
         {"upgrade_needed", r.upgrade.needed},
-        {"upgrade_summary", upgrade_summary(r.upgrade)},
-        {"trials", trials},
-        {"inputs", inputs(r.input)},
+        {"upgrade_summary", upgrade_summary(r)},
+        {"trials", trial_rows(r.upgrade)},
+        {"inputs", inputs(r.input, r.levels)},
         {"levels", levels},
         {"flex_notes", flex_notes(r.levels)},
         {"figures", figures},
@@ -227,6 +352,15 @@ class EscapeGuard {
 };
 
 }  // namespace
+
+std::string headline_level(const AssessmentResult& r) {
+    std::string out = level_name(r.overall.pga_g, r.overall.direction);
+    if (r.overall_from_trial) {
+        const std::string& m = r.overall.verdict.material;
+        out += " with " + (m.empty() ? r.upgrade.recommended.value_or("the recommended base") : m);
+    }
+    return out;
+}
 
 std::string markdown_escape(const std::string& text) {
     std::string out;

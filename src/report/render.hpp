@@ -28,6 +28,10 @@ Rendered render(const assess::AssessmentResult& r, const Stamp& stamp);
 /// (core::write_file_atomic). Throws IoError naming the file that failed.
 void write_report(const std::filesystem::path& dir, const Rendered& rendered);
 
+/// The headline's governing level, "PGA 0.400 g, direction x", with " with <material>" when it
+/// is a level of the recommended material's trial (AssessmentResult::overall_from_trial).
+std::string headline_level(const assess::AssessmentResult& r);
+
 /// Escapes text for a Markdown document (see render()).
 std::string markdown_escape(const std::string& text);
 

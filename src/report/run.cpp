@@ -21,17 +21,13 @@ CaseRun run_case(const std::filesystem::path& case_file,
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {
-    std::string where;
-    if (!r.levels.empty()) {
-        const auto& g = r.levels[r.governing_level];
-        where = fmt::format("governing PGA {:.3f} g, direction {}, ", g.pga_g,
-                            assess::to_string(g.direction));
-    }
-    const std::string with = r.overall.material.empty() ? "" : " with " + r.overall.material;
-    return fmt::format("{}: {} ({}margin{} {}, decided by {})", r.input.component.name,
-                       assess::verdict_text(r.overall), where, with,
-                       r.overall.margin ? fmt::format("{:.2f}", *r.overall.margin) : "unbounded",
-                       assess::to_string(r.overall.decided_by));
+    const assess::Verdict& v = r.overall.verdict;
+    std::string out =
+        fmt::format("{}: {} (governing {}, margin {}, decided by {})", r.input.component.name,
+                    assess::verdict_text(v), headline_level(r), assess::margin_text(v),
+                    assess::to_string(v.decided_by));
+    for (const std::string& c : v.conditions) out += "; open condition: " + c;
+    return out;
 }
 
 }  // namespace freestand::report

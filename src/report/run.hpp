@@ -21,8 +21,9 @@ struct CaseRun {
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit);
 
-/// The one-line verdict the commands print: "<name>: <verdict> (governing ..., margin ..., by
-/// ...)".
+/// The one-line verdict the commands print, all from the headline's one governing level:
+/// "<name>: <verdict> (governing PGA 0.400 g, direction x[ with <material>], margin 1.15 | no
+/// motion, decided by <model>)" and "; open condition: ..." for each open condition.
 std::string verdict_line(const assess::AssessmentResult& r);
 
 }  // namespace freestand::report

@@ -108,6 +108,17 @@ std::string points_attr(const std::vector<double>& x, const std::vector<double>&
     return out;
 }
 
+std::string vertex_dots(const Line& l, const Scale& sx, const Scale& sy) {
+    std::string out;
+    const std::size_t n = std::min(l.x.size(), l.y.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!sx.contains(l.x[i]) || !sy.contains(l.y[i])) continue;
+        out += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"/>\n",
+                           sx(l.x[i]), sy(l.y[i]), l.color);
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string xml_escape(const std::string& text) {
@@ -210,6 +221,7 @@ std::string render_svg(const Plot& plot) {
             "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}/>\n",
             points_attr(l.x, l.y, sx, sy), l.color, l.width,
             l.dashed ? " stroke-dasharray=\"5 3\"" : "");
+        if (l.points) out += vertex_dots(l, sx, sy);
     }
     for (const Marker& m : plot.markers) {
         if (!sx.contains(m.x) || !sy.contains(m.y)) continue;

@@ -24,6 +24,7 @@ struct Line {
     std::string color = "#1f77b4";
     double width = 1.5;
     bool dashed = false;
+    bool points = false;  ///< also a dot at each vertex, so a single point stays visible
 };
 
 /// A filled polygon in data coordinates, drawn under the lines.

@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -43,7 +44,7 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
         const Case c =
             read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (std::string(name) + ".toml"));
         CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
-        CHECK(c.options.histories_per_level == 5);
+        CHECK(c.options.histories_per_level == 7);  // METHODS.md s.6 step 5: the mean governs
     }
 }
 
@@ -89,7 +90,68 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     CHECK(c.site.sliding_damping == 0.10);
     CHECK(c.options.simulate == SimulatePolicy::automatic);
     CHECK(c.options.seed == 1);
-    CHECK(c.assumptions.size() == 4);  // mu_k, inertia, restitution, vertical ratio
+    CHECK(c.options.histories_per_level == 7);
+    // friction bounds, mu_k, inertia, restitution, vertical ratio
+    CHECK(c.assumptions.size() == 5);
+    CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.8 * 0.3, 1.2 * 0.3});
+    CHECK(c.component.base.mu_s_range_source == "default 0.8-1.2 x mu_s (METHODS.md s.7)");
+    CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {
+        return a.rfind("Friction bounds not given: mu_s in [0.24, 0.36]", 0) == 0;
+    }));
+    CHECK_FALSE(c.component.base.restitution_range.has_value());
+    CHECK_FALSE(c.component.allowable_relative_m.has_value());
+}
+
+TEST_CASE("friction and restitution bounds from the case", "[assess][case][bounds]") {
+    const std::string with_ranges = base_component +
+                                    "mu_s_range = [0.25, 0.4]\nrestitution = 0.9\n"
+                                    "restitution_range = [0.85, 0.95]\n"
+                                    "allowable_relative_m = 0.025\n" +
+                                    base_site;
+    const Case c = parse_case(with_ranges, "case.toml");
+    CHECK(c.component.base.mu_s == 0.3);
+    CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.25, 0.4});
+    CHECK(c.component.base.mu_s_range_source == "case file (mu_s_range)");
+    CHECK(c.component.base.restitution_range == std::array<double, 2>{0.85, 0.95});
+    CHECK(*c.component.allowable_relative_m == 0.025);
+    // A range alone gives the nominal value as its middle.
+    std::string only_range = base_component;
+    only_range.replace(only_range.find("mu_s = 0.3"), 10, "mu_s_range = [0.2, 0.4]");
+    const Case r = parse_case(only_range + base_site, "case.toml");
+    CHECK(r.component.base.mu_s == Approx(0.3));
+    CHECK(r.component.base.mu_k == Approx(0.3));
+}
+
+TEST_CASE("bound errors name the key and the reason", "[assess][case][bounds]") {
+    CHECK(error_of(base_component + "mu_s_range = [0.4, 0.2]\n" + base_site) ==
+          "case.toml:9: component.mu_s_range: expected [lower, upper] with lower <= upper, got "
+          "[0.4, 0.2]");
+    CHECK(error_of(base_component + "mu_s_range = [0.1, 0.2]\n" + base_site) ==
+          "case.toml:9: component.mu_s_range: mu_s = 0.3 lies outside [0.1, 0.2]");
+    CHECK(error_of(base_component + "restitution_range = [0.5, 1.2]\n" + base_site)
+              .find("component.restitution_range") != std::string::npos);
+    CHECK(error_of(base_component + "restitution = 0.9\nrestitution_range = [0.5, 0.8]\n" +
+                   base_site) ==
+          "case.toml:10: component.restitution_range: restitution = 0.9 lies outside [0.5, 0.8]");
+}
+
+TEST_CASE("a material trial case reads as a case naming only that material",
+          "[assess][case][bounds]") {
+    std::string named = base_component;
+    named.replace(named.find("mu_s = 0.3"), 10, "base_material = \"aluminium\"");
+    const Case direct = parse_case(named + base_site, "case.toml");
+    const Case trial = with_base_material(parse_case(base_component + base_site, "case.toml"),
+                                          "aluminium");
+    const BaseContact& a = direct.component.base;
+    const BaseContact& b = trial.component.base;
+    CHECK(a.material == b.material);
+    CHECK(a.mu_s == b.mu_s);
+    CHECK(a.mu_k == b.mu_k);
+    CHECK(a.restitution == b.restitution);
+    CHECK(*b.restitution == 0.97);
+    CHECK(a.mu_s_range == b.mu_s_range);
+    CHECK(b.mu_s_range == std::array<double, 2>{0.8 * 0.48, 1.2 * 0.48});
+    CHECK(a.restitution_range == b.restitution_range);
 }
 
 TEST_CASE("case errors name file, line, key and the allowed range", "[assess][case]") {

@@ -1,5 +1,5 @@
-// Verdict logic of METHODS.md s.6 on hand-built inputs: every branch of decide_level,
-// simulation_need, overall_verdict and verdict_text.
+// The decision policy of METHODS.md s.6 on hand-built inputs: the screen, when to simulate,
+// the simulation's statistics, severity, headline text.
 #include <catch2/catch.hpp>
 
 #include "assess/verdict.hpp"
@@ -11,197 +11,232 @@ namespace {
 constexpr double allowable = 0.050;
 constexpr double fs_required = 1.5;
 
-LevelResult level(Mode mode, double a_ratio = 0.3) {
+LevelResult level(Mode upper, Mode lower, double a_ratio = 0.3) {
     LevelResult l;
     l.pga_g = 0.3;
-    l.initiation.mode = mode;
+    l.initiation.mode = upper;
     l.initiation.a_ratio = a_ratio;
-    l.initiation.mu_s = 0.15;
+    l.initiation.mu_s = 0.18;
     l.initiation.tan_alpha = 0.43;
+    l.initiation_lower = l.initiation;
+    l.initiation_lower.mode = lower;
+    l.initiation_lower.mu_s = 0.12;
     return l;
 }
 
-LevelResult sliding(double asce_m, double energy_m) {
-    LevelResult l = level(Mode::slide);
+LevelResult sliding(double asce_m, std::optional<double> energy_m = std::nullopt) {
+    LevelResult l = level(Mode::slide, Mode::slide);
+    l.sliding.mu_s = 0.12;
+    l.sliding.c_s_mps2 = 2.2;
     l.sliding.f_es_hz = 1.2;
     l.sliding.slide_asce_m = asce_m;
     l.sliding.slide_energy_m = energy_m;
     return l;
 }
 
-Simulation sim(double slide_max_m, double residual_m, double rock_over_alpha = 0.0,
-               double overturned = 0.0) {
+LevelResult rocking(std::optional<double> el_fs, bool gate = true, bool overturn = false) {
+    LevelResult l = level(Mode::rock, Mode::rock, 0.6);
+    l.rocking.alpha_rad = 0.4;
+    l.rocking.gate_passed = gate;
+    l.rocking.overturn_predicted = overturn;
+    l.rocking.overturn_fs = el_fs;
+    if (el_fs) l.rocking.theta_rad = 0.4 / *el_fs;
+    return l;
+}
+
+Stats same(double v) { return Stats{v, v, v}; }
+
+Simulation sim(int n, Stats slide_m, Stats rock_over_alpha = {}, int overturned = 0) {
     Simulation s;
-    s.histories = 5;
-    s.slide_max_max_m = slide_max_m;
-    s.slide_residual_max_m = residual_m;
-    s.rock_max_over_alpha_max = rock_over_alpha;
-    s.overturned_fraction = overturned;
+    s.histories = n;
+    s.mean_governs = n >= min_histories_for_mean;
+    s.slide_m = slide_m;
+    s.rock_over_alpha = rock_over_alpha;
+    s.rock_rad = Stats{0.4 * rock_over_alpha.mean, 0.4 * rock_over_alpha.p84,
+                       0.4 * rock_over_alpha.max};
+    s.overturned = overturned;
     return s;
+}
+
+// The pipeline's order: screen, then (when the policy says so) the simulation, then decide.
+LevelResult decided(LevelResult l, std::optional<Simulation> s = std::nullopt) {
+    l.screen = screen_level(l, allowable, fs_required);
+    l.simulation = s;
+    l.verdict = decide_level(l, allowable, fs_required);
+    return l;
 }
 
 }  // namespace
 
-TEST_CASE("rest: free-standing acceptable by the static criterion", "[assess][verdict]") {
-    const Verdict v = decide_level(level(Mode::rest, 0.1), allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable);
-    CHECK(v.decided_by == Model::static_initiation);
-    CHECK(*v.margin == Approx(0.15 / 0.1));  // min(mu_s, tan alpha) / A
-    CHECK(verdict_text(v) == "free-standing acceptable");
-}
-
-TEST_CASE("slide: closed forms within the allowable, the larger governs", "[assess][verdict]") {
-    const Verdict v = decide_level(sliding(0.020, 0.030), allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable_with_clearance);
-    CHECK(v.decided_by == Model::energy_sliding);
-    CHECK(v.clearance_m == 0.030);
-    CHECK(*v.margin == Approx(0.050 / 0.030));
-    CHECK(verdict_text(v) == "acceptable with clearance >= 30 mm");
-}
-
-TEST_CASE("slide: both closed forms beyond the allowable, the smaller decides the failure",
+TEST_CASE("rest at the lower friction bound passes the screen on the static criterion",
           "[assess][verdict]") {
-    const Verdict v = decide_level(sliding(0.080, 0.300), allowable, fs_required);
-    CHECK(v.kind == VerdictKind::upgrade_material);
-    CHECK(v.decided_by == Model::asce4_sliding);
-    CHECK(*v.margin == Approx(0.050 / 0.080));
+    const LevelResult l = decided(level(Mode::rest, Mode::rest, 0.1));
+    CHECK(l.screen.passed);
+    CHECK(l.screen.rest.applies);
+    CHECK_FALSE(l.screen.slide.applies);
+    CHECK(l.verdict.kind == VerdictKind::acceptable);
+    CHECK(l.verdict.decided_by == Model::static_initiation);
+    CHECK(*l.verdict.margin == Approx(0.12 / 0.1));  // min(mu_s lower, tan alpha) / A
+    CHECK_FALSE(simulation_need(l.screen, SimulatePolicy::automatic).run);
 }
 
-TEST_CASE("slide: a simulation governs when run (peak or residual)", "[assess][verdict]") {
-    LevelResult l = sliding(0.040, 0.300);
-    l.simulation = sim(0.012, 0.009);
-    Verdict v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable_with_clearance);
-    CHECK(v.decided_by == Model::simulation_slide);
-    CHECK(verdict_text(v) == "acceptable with clearance >= 12 mm");
-    l.simulation =
-        sim(0.060, 0.061);  // residual larger than the peak cannot happen, but it governs
-    v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::upgrade_material);
-    CHECK(v.decided_by == Model::simulation_residual);
+TEST_CASE("sliding at the lower bound only: ASCE 4 screens it", "[assess][verdict]") {
+    LevelResult l = sliding(0.030);
+    l.initiation.mode = Mode::rest;  // at rest at the upper bound, slides at the lower
+    l = decided(l);
+    CHECK(l.screen.slide.applies);
+    CHECK_FALSE(l.screen.rock.applies);
+    CHECK(l.verdict.kind == VerdictKind::acceptable_with_clearance);
+    CHECK(l.verdict.decided_by == Model::asce4_sliding);
+    CHECK(l.verdict.clearance_m == 0.030);
+    CHECK(*l.verdict.margin == Approx(0.050 / 0.030));
 }
 
-TEST_CASE("slide below 1 mm is no motion, and no closed form means no slide", "[assess][verdict]") {
-    LevelResult l = sliding(0.0004, 0.0008);
-    CHECK(decide_level(l, allowable, fs_required).kind == VerdictKind::acceptable);
-    LevelResult none = level(Mode::slide);
-    const Verdict v = decide_level(none, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable);
-    CHECK(v.decided_by == Model::asce4_sliding);
-    CHECK_FALSE(v.margin.has_value());
+TEST_CASE("the energy estimate neither decides nor triggers a simulation", "[assess][verdict]") {
+    const LevelResult l = decided(sliding(0.030, 0.600));  // energy 12x the allowable
+    CHECK(l.screen.passed);
+    CHECK(l.verdict.decided_by == Model::asce4_sliding);
+    CHECK(l.verdict.clearance_m == 0.030);
+    for (SimulatePolicy p : {SimulatePolicy::automatic, SimulatePolicy::never})
+        CHECK_FALSE(simulation_need(l.screen, p).run);
 }
 
-TEST_CASE("rock without simulation: the equivalent-linear factor of safety decides",
+TEST_CASE("a failed screen requires the simulation, which governs pass and fail",
           "[assess][verdict]") {
-    LevelResult l = level(Mode::rock, 0.6);
-    l.rocking.overturn_fs = 2.0;
-    Verdict v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable);
-    CHECK(v.decided_by == Model::equivalent_linear_rocking);
-    CHECK(*v.margin == Approx(2.0 / 1.5));
-    l.rocking.overturn_fs = 1.2;
-    CHECK(decide_level(l, allowable, fs_required).kind == VerdictKind::anchor);
-    l.rocking.overturn_fs.reset();
-    l.rocking.overturn_predicted = true;
-    v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::anchor);
-    CHECK(*v.margin == 0.0);
-    CHECK(verdict_text(v) == "anchor");
+    LevelResult l = sliding(0.080);
+    l.screen = screen_level(l, allowable, fs_required);
+    CHECK_FALSE(l.screen.passed);
+    CHECK(simulation_need(l.screen, SimulatePolicy::automatic).run);
+    CHECK(simulation_need(l.screen, SimulatePolicy::always).run);
+    // Seven histories: the mean governs (20 mm), not the maximum (60 mm).
+    l = decided(l, sim(7, Stats{0.020, 0.030, 0.060}));
+    CHECK(l.verdict.kind == VerdictKind::acceptable_with_clearance);
+    CHECK(l.verdict.decided_by == Model::simulation_slide);
+    CHECK(l.verdict.clearance_m == 0.020);
+    CHECK(*l.verdict.margin == Approx(2.5));
+    // Five histories: the maximum governs, and fails.
+    l = decided(l, sim(5, Stats{0.020, 0.030, 0.060}));
+    CHECK(l.verdict.kind == VerdictKind::anchor);
+    CHECK(l.verdict.failure == Failure::slides_beyond_allowable);
+    CHECK(*l.verdict.margin == Approx(0.050 / 0.060));
 }
 
-TEST_CASE("rock with simulation: any overturned history anchors", "[assess][verdict]") {
-    LevelResult l = level(Mode::rock, 0.6);
-    l.rocking.overturn_fs = 5.0;  // the screen says fine; the reference decides
-    l.simulation = sim(0.0, 0.0, 0.5, 0.2);
-    Verdict v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::anchor);
-    CHECK(v.decided_by == Model::simulation_rocking);
-    l.simulation = sim(0.0, 0.0, 0.5, 0.0);
-    v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable);
-    CHECK(*v.margin == Approx((1.0 / 0.5) / 1.5));
-    l.simulation = sim(0.0, 0.0, 0.8, 0.0);  // FS 1.25 < 1.5
-    CHECK(decide_level(l, allowable, fs_required).kind == VerdictKind::anchor);
+TEST_CASE("simulate = never lets the screen decide a failure and says so", "[assess][verdict]") {
+    LevelResult l = sliding(0.080);
+    l.screen = screen_level(l, allowable, fs_required);
+    const SimulationNeed need = simulation_need(l.screen, SimulatePolicy::never);
+    CHECK_FALSE(need.run);
+    CHECK(need.reason.find("the screen decides the failure") != std::string::npos);
+    l = decided(l);
+    CHECK(l.verdict.kind == VerdictKind::anchor);
+    CHECK(l.verdict.decided_by == Model::asce4_sliding);
+    CHECK(*l.verdict.margin == Approx(0.050 / 0.080));
 }
 
-TEST_CASE("slide-rock: the worse of the sliding and rocking verdicts", "[assess][verdict]") {
-    LevelResult l = level(Mode::slide_rock, 0.6);
-    l.simulation = sim(0.020, 0.010, 0.3, 0.0);
-    Verdict v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable_with_clearance);
-    CHECK(v.decided_by == Model::simulation_slide);
-    l.simulation = sim(0.020, 0.010, 0.9, 0.0);
-    v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::anchor);
-    CHECK(v.decided_by == Model::simulation_rocking);
+TEST_CASE("a passing screen decides even when a simulation is reported beside it",
+          "[assess][verdict]") {
+    LevelResult l = decided(sliding(0.030), sim(7, same(0.070)));
+    CHECK(l.verdict.decided_by == Model::asce4_sliding);
+    CHECK(l.verdict.kind == VerdictKind::acceptable_with_clearance);
+    const auto trail = decision_trail(l, allowable, fs_required);
+    REQUIRE(trail.size() == 5);
+    CHECK(trail[3].find("a FAILURE") != std::string::npos);
+    CHECK(trail[3].find("the screen is not conservative here") != std::string::npos);
 }
 
-TEST_CASE("rest with a simulation that shows slip is judged on the slip", "[assess][verdict]") {
-    LevelResult l = level(Mode::rest, 0.1);
-    l.simulation = sim(0.0, 0.0);
-    CHECK(decide_level(l, allowable, fs_required).decided_by == Model::no_motion);
-    l.simulation = sim(0.004, 0.002);
-    const Verdict v = decide_level(l, allowable, fs_required);
-    CHECK(v.kind == VerdictKind::acceptable_with_clearance);
-    CHECK(v.decided_by == Model::simulation_slide);
+TEST_CASE("rocking screen: equivalent-linear FS, overturning, disagreeing gate",
+          "[assess][verdict]") {
+    LevelResult ok = decided(rocking(3.0));
+    CHECK(ok.screen.passed);
+    CHECK(ok.verdict.decided_by == Model::equivalent_linear_rocking);
+    CHECK(*ok.verdict.margin == Approx(2.0));
+    LevelResult low = decided(rocking(1.2));
+    CHECK_FALSE(low.screen.passed);
+    CHECK(low.verdict.failure == Failure::rocking_fs_below_required);
+    LevelResult over = decided(rocking(std::nullopt, true, true));
+    CHECK(over.verdict.failure == Failure::overturns);
+    CHECK(*over.verdict.margin == 0.0);
+    // The static criterion predicts uplift, the gate does not: inconclusive, so simulate.
+    LevelResult gate = decided(rocking(std::nullopt, false));
+    CHECK_FALSE(gate.screen.passed);
+    CHECK(gate.verdict.failure == Failure::screen_inconclusive);
+    CHECK(simulation_need(gate.screen, SimulatePolicy::automatic).run);
 }
 
-TEST_CASE("when to simulate", "[assess][verdict]") {
-    CHECK_FALSE(simulation_need(level(Mode::rest), allowable, SimulatePolicy::automatic).run);
-    CHECK(simulation_need(level(Mode::rest), allowable, SimulatePolicy::always).run);
-    CHECK_FALSE(simulation_need(level(Mode::rock), allowable, SimulatePolicy::never).run);
-    CHECK(simulation_need(level(Mode::rock), allowable, SimulatePolicy::automatic).run);
-    CHECK(simulation_need(level(Mode::slide_rock), allowable, SimulatePolicy::automatic).run);
-    CHECK_FALSE(simulation_need(sliding(0.02, 0.04), allowable, SimulatePolicy::automatic).run);
-    CHECK_FALSE(simulation_need(sliding(0.06, 0.40), allowable, SimulatePolicy::automatic).run);
-    const SimulationNeed open =
-        simulation_need(sliding(0.04, 0.40), allowable, SimulatePolicy::automatic);
-    CHECK(open.run);
-    CHECK(open.reason == "the closed-form slides straddle the allowable: the simulation decides");
-    // Exactly at the allowable counts as within it.
-    CHECK_FALSE(simulation_need(sliding(0.05, 0.05), allowable, SimulatePolicy::automatic).run);
-    CHECK(simulation_need(level(Mode::slide), allowable, SimulatePolicy::automatic).run);
+TEST_CASE("simulated rocking: any overturn fails; theta/alpha against 1/FS; no motion",
+          "[assess][verdict]") {
+    LevelResult l = rocking(1.2);
+    l = decided(l, sim(7, same(0.0), Stats{0.1, 0.2, 0.3}, 1));
+    CHECK(l.verdict.failure == Failure::overturns);
+    CHECK(*l.verdict.margin == 0.0);
+    CHECK(l.verdict.margin_basis.find("1 of 7 histories overturned") != std::string::npos);
+    l = decided(l, sim(7, same(0.0), Stats{0.4, 0.5, 0.9}));
+    CHECK(l.verdict.decided_by == Model::simulation_rocking);
+    CHECK(*l.verdict.margin == Approx(1.0 / (0.4 * 1.5)));
+    CHECK(passes(l.verdict));
+    l = decided(l, sim(7, same(0.0), Stats{0.001, 0.002, 0.005}));
+    CHECK(l.verdict.no_motion);
+    CHECK_FALSE(l.verdict.margin.has_value());
+    CHECK(margin_text(l.verdict) == "no motion");
 }
 
-TEST_CASE("overall verdict: worst level, upgrade, or anchor", "[assess][verdict]") {
-    std::vector<LevelResult> levels{level(Mode::rest, 0.1), sliding(0.02, 0.03)};
-    for (auto& l : levels) l.verdict = decide_level(l, allowable, fs_required);
-    Upgrade up;
-    Verdict v = overall_verdict(levels, up);
-    CHECK(v.kind == VerdictKind::acceptable_with_clearance);
-    CHECK(governing_index(levels) == 1);
+TEST_CASE("the flexible-body flag becomes an open condition of a passing level",
+          "[assess][verdict]") {
+    LevelResult l = level(Mode::rest, Mode::rest, 0.1);
+    l.flexible.raised = true;
+    l.flexible.basis = "fixed-base 7.50 Hz";
+    l = decided(l);
+    REQUIRE(l.verdict.conditions.size() == 1);
+    const auto merged = open_conditions({l});
+    REQUIRE(merged.size() == 1);
+    CHECK(merged[0].find("PGA 0.300 g x") != std::string::npos);
+    LevelResult failing = sliding(0.080);
+    failing.flexible.raised = true;
+    failing = decided(failing);
+    CHECK(failing.verdict.conditions.empty());
+}
 
-    levels.push_back(sliding(0.08, 0.30));
-    levels.back().verdict = decide_level(levels.back(), allowable, fs_required);
-    up.needed = true;
-    Verdict pass;
-    pass.kind = VerdictKind::acceptable;
-    pass.margin = 1.2;
+TEST_CASE("severity: failures first, then the smaller margin; no motion is least severe",
+          "[assess][verdict]") {
+    Verdict pass_small;
+    pass_small.margin = 1.1;
+    Verdict pass_big;
+    pass_big.margin = 3.0;
+    Verdict quiet;
+    quiet.no_motion = true;
     Verdict fail;
-    fail.kind = VerdictKind::upgrade_material;
-    up.trials = {{"plywood", 0.15, fail}, {"HDPE", 0.32, pass}, {"steel", 0.72, pass}};
-    up.recommended = "HDPE";
-    v = overall_verdict(levels, up);
-    CHECK(v.kind == VerdictKind::upgrade_material);
-    CHECK(verdict_text(v) == "upgrade base material to HDPE");
-    CHECK(*v.margin == 1.2);
-    apply_upgrade(levels, up);
-    CHECK(verdict_text(levels.back().verdict) == "upgrade base material to HDPE");
-
-    up.recommended.reset();
-    levels.back().verdict = decide_level(levels.back(), allowable, fs_required);
-    v = overall_verdict(levels, up);
-    CHECK(v.kind == VerdictKind::anchor);
-    CHECK(v.decided_by == Model::asce4_sliding);
-    apply_upgrade(levels, up);
-    CHECK(levels.back().verdict.kind == VerdictKind::anchor);
+    fail.kind = VerdictKind::anchor;
+    fail.margin = 0.9;
+    CHECK(more_severe(pass_small, pass_big));
+    CHECK(more_severe(pass_big, quiet));
+    CHECK(more_severe(fail, pass_small));
+    CHECK_FALSE(more_severe(pass_big, pass_small));
+    std::vector<LevelResult> levels(3);
+    levels[0].verdict = pass_big;
+    levels[1].verdict = pass_small;
+    levels[1].pga_g = 0.2;
+    levels[2].verdict = quiet;
+    const Governing g = governing_of(levels);
+    CHECK(g.level == 1);
+    CHECK(g.pga_g == 0.2);
+    CHECK(*g.verdict.margin == 1.1);
 }
 
-TEST_CASE("clearance is rounded up to whole millimetres", "[assess][verdict]") {
+TEST_CASE("verdict and margin text", "[assess][verdict]") {
     Verdict v;
+    CHECK(verdict_text(v) == "free-standing acceptable");
     v.kind = VerdictKind::acceptable_with_clearance;
-    v.clearance_m = 0.047;
+    v.clearance_m = 0.047000000001;
     CHECK(verdict_text(v) == "acceptable with clearance >= 47 mm");
     v.clearance_m = 0.0471;
     CHECK(verdict_text(v) == "acceptable with clearance >= 48 mm");
+    v.kind = VerdictKind::change_material;
+    v.material = "aluminium";
+    v.mechanism = "lower friction: it slides instead of rocking over";
+    CHECK(verdict_text(v) ==
+          "change base material to aluminium (lower friction: it slides instead of rocking over)");
+    v.kind = VerdictKind::anchor;
+    CHECK(verdict_text(v) == "anchor");
+    v.margin = 0.5;
+    CHECK(margin_text(v) == "0.50");
 }

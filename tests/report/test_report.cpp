@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -6,8 +8,10 @@
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 #include "report/json.hpp"
+#include "report/plots.hpp"
 #include "report/regress.hpp"
 #include "report/render.hpp"
+#include "report/run.hpp"
 #include "report/sha256.hpp"
 #include "report/svg.hpp"
 #include "support/run_cli.hpp"
@@ -21,6 +25,7 @@ namespace {
 const std::string hostile = "<script>alert('x')</script> & [link](javascript:alert(1)) | *b*";
 
 // A hand-built result: the report must render it without running any physics.
+// Level 0 (x) rests (no motion); level 1 (y) slides, was simulated and governs.
 assess::AssessmentResult hand_result() {
     assess::AssessmentResult r;
     r.input.component.name = hostile;
@@ -30,20 +35,91 @@ assess::AssessmentResult hand_result() {
     r.input.component.cg_height_m = 1.0;
     r.input.component.base.mu_s = 0.3;
     r.input.component.base.mu_k = 0.3;
+    r.input.component.base.mu_s_range = {0.24, 0.36};
     r.input.component.allowable_slide_m = 0.05;
     r.input.site.pga_g = {0.2};
+    assess::LevelResult rest;
+    rest.pga_g = 0.2;
+    rest.direction = assess::Direction::x;
+    rest.verdict.no_motion = true;
+    rest.verdict.margin_basis = "no horizontal acceleration";
+    rest.trail = {"screen passed: at rest", "not simulated: the screen passed"};
+    r.levels.push_back(rest);
     assess::LevelResult l;
     l.pga_g = 0.2;
+    l.direction = assess::Direction::y;
     l.initiation.mode = assess::Mode::slide;
     l.sliding.slide_asce_m = 0.0123456;
+    l.sliding.slide_energy_m = 0.02;
     l.simulation_reason = hostile;
+    l.screen.passed = false;
+    assess::Simulation sim;
+    sim.histories = 7;
+    sim.mean_governs = true;
+    sim.slide_m = {0.010, 0.011, 0.012};
+    sim.rock_over_alpha = {0.1, 0.2, 0.3};
+    sim.overturn_ci = {0.0, 0.41};
+    l.simulation = sim;
     l.verdict.kind = assess::VerdictKind::acceptable_with_clearance;
     l.verdict.clearance_m = 0.0123456;
     l.verdict.margin = 4.05;
-    l.verdict.decided_by = assess::Model::asce4_sliding;
+    l.verdict.margin_basis = "allowable / simulated peak slip";
+    l.verdict.decided_by = assess::Model::simulation_slide;
+    l.trail = {"screen failed: ASCE 4 12.3 mm", "simulated: the screen failed",
+               "governed by the simulation"};
     r.levels.push_back(l);
-    r.overall = l.verdict;
+    r.own = assess::Governing{1, l.pga_g, l.direction, l.verdict};
+    r.overall = r.own;
     r.assumptions = {hostile};
+    return r;
+}
+
+// A case whose own base fails, with the headline from the recommended material's trial.
+assess::AssessmentResult changed_material_result() {
+    assess::AssessmentResult r = hand_result();
+    r.input.component.name = "Box";
+    r.input.component.base.material = "steel";
+    assess::Verdict own = r.levels[1].verdict;
+    own.kind = assess::VerdictKind::change_material;
+    own.failure = assess::Failure::overturns;
+    own.material = "aluminium";
+    own.margin = 0.0;
+    own.decided_by = assess::Model::simulation_rocking;
+    r.levels[1].verdict = own;
+    r.own = assess::Governing{1, 0.2, assess::Direction::y, own};
+    assess::Verdict trial;
+    trial.kind = assess::VerdictKind::acceptable_with_clearance;
+    trial.clearance_m = 0.02;
+    trial.margin = 2.46;
+    trial.decided_by = assess::Model::simulation_slide;
+    r.overall = assess::Governing{3, 0.4, assess::Direction::x, trial};
+    r.overall.verdict.kind = assess::VerdictKind::change_material;
+    r.overall.verdict.material = "aluminium";
+    r.overall.verdict.mechanism = "lower friction: it slides instead of rocking over";
+    r.overall_from_trial = true;
+    r.upgrade.needed = true;
+    r.upgrade.recommended = "aluminium";
+    assess::MaterialTrial plywood;
+    plywood.material = "plywood";
+    plywood.mu_s_range = {0.12, 0.18};
+    plywood.restitution = 0.94;
+    plywood.governing = assess::Governing{1, 0.2, assess::Direction::y, own};
+    plywood.governing.verdict.kind = assess::VerdictKind::anchor;
+    plywood.governing.verdict.failure = assess::Failure::slides_beyond_allowable;
+    assess::MaterialTrial alu;
+    alu.material = "aluminium";
+    alu.mu_s_range = {0.384, 0.576};
+    alu.passes = true;
+    alu.governing = assess::Governing{3, 0.4, assess::Direction::x, trial};
+    r.upgrade.trials = {plywood, alu};
+    return r;
+}
+
+// A result whose headline is "no motion": no ratio may be printed for it.
+assess::AssessmentResult no_motion_result() {
+    assess::AssessmentResult r = hand_result();
+    r.overall = assess::Governing{0, 0.2, assess::Direction::x, r.levels[0].verdict};
+    r.own = r.overall;
     return r;
 }
 
@@ -123,19 +199,157 @@ TEST_CASE("the HTML report is self-contained", "[report][html]") {
 TEST_CASE("numbers are formatted with fixed precision and the stamp is present", "[report][json]") {
     const Rendered out = render(hand_result(), stamp());
     CHECK(out.markdown.find("| 12.3 |") != std::string::npos);  // ASCE 4 slide in mm, 1 decimal
+    CHECK(out.markdown.find("| 10.0 / 11.0 / 12.0 |") != std::string::npos);  // simulated, mm
+    CHECK(out.markdown.find("| 0/7 \\[0%, 41%\\] |") != std::string::npos);
     const auto j = nlohmann::ordered_json::parse(out.json);
     CHECK(j.at("verdict") == "acceptable with clearance >= 13 mm");
-    CHECK(j.at("levels").at(0).at("slide_asce_m") == 0.0123456);
+    const auto& level = j.at("levels").at(1);
+    CHECK(level.at("slide_asce_m") == 0.0123456);
+    CHECK(level.at("slide_energy_m") == 0.02);
     CHECK(j.at("levels").at(0).at("slide_energy_m").is_null());
     CHECK(j.at("stamp").at("input_sha256") == sha256_hex("case bytes"));
     CHECK(j.at("stamp").at("commit") == "abc123");
     CHECK(j.at("stamp").at("seed") == 7);
     for (const char* key :
-         {"pga_g", "direction", "mode", "slide_asce_m", "slide_energy_m", "slide_sim_max_m",
-          "rock_max_over_alpha", "overturned_fraction", "verdict", "decided_by"}) {
-        CHECK(j.at("levels").at(0).contains(key));
+         {"pga_g", "direction", "bounds", "mode", "mode_lower_friction", "slide_asce_m",
+          "slide_energy_m", "screen", "simulation", "verdict", "trail"}) {
+        CHECK(level.contains(key));
     }
-    CHECK(j.contains("upgrade"));
+    const auto& sim = level.at("simulation");
+    CHECK(sim.at("histories") == 7);
+    CHECK(sim.at("mean_governs") == true);
+    CHECK(sim.at("slide_m").at("p84") == 0.011);
+    CHECK(sim.at("rock_over_alpha").at("max") == 0.3);
+    CHECK(sim.at("overturn_ci") == nlohmann::ordered_json::array({0.0, 0.41}));
+    CHECK(j.at("levels").at(0).at("simulation").is_null());
+    CHECK(level.at("verdict").at("decided_by") ==
+          assess::to_string(assess::Model::simulation_slide));
+    CHECK(level.at("trail").size() == 3);
+    CHECK(j.at("upgrade").at("trials").empty());
+    CHECK(j.at("case").at("component").at("mu_s_range") ==
+          nlohmann::ordered_json::array({0.24, 0.36}));
+    CHECK(j.at("case").at("component").at("restitution_range").is_null());
+    CHECK(j.at("case").at("component").at("allowable_relative_m").is_null());
+}
+
+TEST_CASE("JSON: overall and own name their one governing level", "[report][json]") {
+    const auto j = nlohmann::ordered_json::parse(render(changed_material_result(), stamp()).json);
+    const auto& overall = j.at("overall");
+    CHECK(overall.at("kind") == "change_material");
+    CHECK(overall.at("material") == "aluminium");
+    CHECK(overall.at("mechanism") == "lower friction: it slides instead of rocking over");
+    CHECK(overall.at("margin") == 2.46);
+    CHECK(overall.at("no_motion") == false);
+    CHECK(overall.at("failure") == "none");
+    CHECK(overall.at("conditions").empty());
+    CHECK(overall.at("governing").at("pga_g") == 0.4);
+    CHECK(overall.at("governing").at("direction") == "x");
+    CHECK(overall.at("governing").at("level_index") == 3);
+    CHECK(overall.at("governing").at("from_material_trial") == "aluminium");
+    const auto& own = j.at("own");
+    CHECK(own.at("failure") == assess::to_string(assess::Failure::overturns));
+    CHECK(own.at("margin") == 0.0);
+    CHECK(own.at("governing").at("pga_g") == 0.2);
+    CHECK(own.at("governing").at("direction") == "y");
+    CHECK(own.at("governing").at("level_index") == 1);
+    CHECK(own.at("governing").at("from_material_trial").is_null());
+    const auto& up = j.at("upgrade");
+    CHECK(up.at("recommended") == "aluminium");
+    REQUIRE(up.at("trials").size() == 2);
+    const auto& ply = up.at("trials").at(0);
+    CHECK(ply.at("material") == "plywood");
+    CHECK(ply.at("mu_s_range") == nlohmann::ordered_json::array({0.12, 0.18}));
+    CHECK(ply.at("restitution") == 0.94);
+    CHECK(ply.at("passes") == false);
+    CHECK(ply.at("governing").at("level_index") == 1);
+    CHECK(ply.at("verdict").at("kind") == "anchor");
+    CHECK(up.at("trials").at(1).at("restitution").is_null());  // Housner's
+}
+
+TEST_CASE("the headline comes from one level, with the own base beside a material change",
+          "[report][headline]") {
+    const auto r = changed_material_result();
+    const Rendered out = render(r, stamp());
+    CHECK(out.markdown.find("- Governing level: PGA 0.400 g, direction x with aluminium\n") !=
+          std::string::npos);
+    CHECK(out.markdown.find("- Margin: 2.46\n") != std::string::npos);
+    CHECK(out.markdown.find("- Case's own base (steel): fails at PGA 0.200 g, direction y: "
+                            "overturns, decided by time-history simulation, rocking") !=
+          std::string::npos);
+    CHECK(out.markdown.find("margin 0.00\n") != std::string::npos);
+    // The search table and its conclusion.
+    CHECK(out.markdown.find("| plywood | \\[0.120, 0.180\\] | 0.940 | no | 0.200 g, y | anchor | "
+                            "slides beyond the allowable |") != std::string::npos);
+    CHECK(out.markdown.find("| aluminium | \\[0.384, 0.576\\] | Housner | yes | 0.400 g, x |") !=
+          std::string::npos);
+    CHECK(out.markdown.find("aluminium is recommended") != std::string::npos);
+    CHECK(out.html.find("Case&#39;s own base (steel)") != std::string::npos);
+    CHECK(verdict_line(r) ==
+          "Box: change base material to aluminium (lower friction: it slides instead of rocking "
+          "over) (governing PGA 0.400 g, direction x with aluminium, margin 2.46, decided by " +
+              std::string(assess::to_string(assess::Model::simulation_slide)) + ")");
+    // A passing own base has no "own base" line.
+    CHECK(render(hand_result(), stamp()).markdown.find("Case's own base") == std::string::npos);
+}
+
+TEST_CASE("a negligible demand reads \"no motion\", never a ratio", "[report][headline]") {
+    auto r = no_motion_result();
+    r.overall.verdict.conditions = {"flexible-body flag " + hostile};
+    const Rendered out = render(r, stamp());
+    CHECK(out.markdown.find("- Margin: no motion (no horizontal acceleration)\n") !=
+          std::string::npos);
+    CHECK(out.markdown.find("| free-standing acceptable | no motion |") != std::string::npos);
+    CHECK(out.markdown.find("- Open condition: flexible-body flag &lt;script>") !=
+          std::string::npos);
+    CHECK(out.html.find("<li>Open condition: flexible-body flag &lt;script&gt;") !=
+          std::string::npos);
+    const auto j = nlohmann::ordered_json::parse(out.json);
+    CHECK(j.at("overall").at("no_motion") == true);
+    CHECK(j.at("overall").at("margin").is_null());
+    CHECK(j.at("overall").at("conditions").size() == 1);
+    CHECK(j.at("levels").at(0).at("verdict").at("no_motion") == true);
+    CHECK(j.at("levels").at(0).at("verdict").at("margin").is_null());
+    const std::string line = verdict_line(r);
+    CHECK(line.find("margin no motion,") != std::string::npos);
+    CHECK(line.find("; open condition: flexible-body flag") != std::string::npos);
+}
+
+TEST_CASE("the decision trail lists each level's lines", "[report][trail]") {
+    const Rendered out = render(hand_result(), stamp());
+    const auto section = out.markdown.find("## Decision trail");
+    REQUIRE(section != std::string::npos);
+    CHECK(out.markdown.find("- PGA 0.200 g, y:\n"
+                            "  - screen failed: ASCE 4 12.3 mm\n"
+                            "  - simulated: the screen failed\n"
+                            "  - governed by the simulation\n",
+                            section) != std::string::npos);
+    CHECK(out.markdown.find("- PGA 0.200 g, x:\n  - screen passed: at rest\n", section) !=
+          std::string::npos);
+    CHECK(out.html.find("<li>governed by the simulation</li>") != std::string::npos);
+}
+
+TEST_CASE("demand figures are drawn from the levels", "[report][figures]") {
+    const auto find = [](const std::vector<Figure>& figs, const std::string& file) {
+        return std::find_if(figs.begin(), figs.end(),
+                            [&](const Figure& f) { return f.file == file; });
+    };
+    auto r = hand_result();
+    r.levels[1].simulation->overturned = 2;
+    const std::vector<Figure> figs = figures(r);
+    const auto slide = find(figs, "demand-slide-y.svg");
+    REQUIRE(slide != figs.end());
+    CHECK(slide->svg.find("allowable slide 50.0 mm (clearance)") != std::string::npos);
+    CHECK(slide->svg.find("simulated 84th percentile") != std::string::npos);
+    CHECK(slide->svg.find("energy conservation (informational)") != std::string::npos);
+    const auto rock = find(figs, "demand-rock-y.svg");
+    REQUIRE(rock != figs.end());
+    CHECK(rock->svg.find("1 / FS required = 1 / 1.50 = 0.667") != std::string::npos);
+    CHECK(rock->svg.find("2/7 overturned") != std::string::npos);
+    // Direction x has no slide, rotation or simulation data: no figure for it.
+    CHECK(find(figs, "demand-slide-x.svg") == figs.end());
+    CHECK(find(figs, "demand-rock-x.svg") == figs.end());
+    // The Markdown report links the figure written next to it.
+    CHECK(render(r, stamp()).markdown.find("(demand-slide-y.svg)") != std::string::npos);
 }
 
 TEST_CASE("rendering twice gives identical bytes", "[report][determinism]") {
@@ -212,6 +426,21 @@ TEST_CASE("assess CLI: two runs give byte-identical files", "[report][cli][deter
         CHECK(test::slurp(e.path()) == test::slurp(dir / "b" / e.path().filename()));
     }
     CHECK(files >= 6);  // report.md, report.html, result.json and the figures
+    fs::remove_all(dir);
+}
+
+TEST_CASE("assess CLI: the default output folder is out/<case stem>/ of the working directory",
+          "[report][cli]") {
+    const fs::path dir = temp_dir("default_out");
+    small_case(dir, "small");
+    // run_cli works in the source tree; this run must work in its own folder.
+    const std::string cmd = "cd '" + dir.string() + "' && '" + FREESTAND_EXE +
+                            "' assess small.toml >'" + (dir / "stdout.txt").string() + "' 2>&1";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    CHECK(fs::exists(dir / "out" / "small" / "report.md"));
+    CHECK(fs::exists(dir / "out" / "small" / "result.json"));
+    CHECK_FALSE(fs::exists(dir / "reports"));
+    CHECK(test::slurp(dir / "stdout.txt").find("wrote out/small") != std::string::npos);
     fs::remove_all(dir);
 }
 

@@ -1,0 +1,101 @@
+// Issue 12's consistency checks on every shipped case: a material trial is the assessment of
+// the case edited to name that material, and the verdict does not depend on simulate = "auto"
+// or "always" (METHODS.md s.6 steps 4 and 7).
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "assess/materials.hpp"
+#include "assess/pipeline.hpp"
+#include "assess/verdict.hpp"
+#include "core/file_io.hpp"
+
+namespace fs = std::filesystem;
+using namespace freestand;
+using namespace freestand::assess;
+
+namespace {
+
+std::vector<fs::path> shipped_cases() {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(fs::path(FREESTAND_SOURCE_DIR) / "cases")) {
+        if (e.path().extension() == ".toml") out.push_back(e.path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// The case file's text with its base replaced by `base_material = material` alone, as a user
+// would edit it.
+std::string edited_case_text(const fs::path& file, const std::string& material) {
+    toml::table root = toml::parse(core::read_text_file(file), file.string());
+    toml::table& comp = *root["component"].as_table();
+    for (const char* key :
+         {"base_material", "mu_s", "mu_k", "restitution", "mu_s_range", "restitution_range"}) {
+        comp.erase(key);
+    }
+    comp.insert("base_material", material);
+    std::ostringstream text;
+    text << root;
+    return text.str();
+}
+
+void check_same_verdict(const Governing& direct, const Governing& trial) {
+    CHECK(passes(direct.verdict) == passes(trial.verdict));
+    CHECK(direct.verdict.failure == trial.verdict.failure);
+    if (passes(direct.verdict)) CHECK(direct.verdict.kind == trial.verdict.kind);
+    CHECK(direct.verdict.decided_by == trial.verdict.decided_by);
+    CHECK(direct.verdict.no_motion == trial.verdict.no_motion);
+    CHECK(direct.level == trial.level);
+    CHECK(direct.pga_g == trial.pga_g);
+    CHECK(direct.direction == trial.direction);
+    REQUIRE(direct.verdict.margin.has_value() == trial.verdict.margin.has_value());
+    if (direct.verdict.margin) {
+        CHECK(*direct.verdict.margin == Approx(*trial.verdict.margin).epsilon(1e-9).margin(1e-12));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("every material trial equals a direct assessment of the edited case",
+          "[assess][policy][materials]") {
+    for (const fs::path& file : shipped_cases()) {
+        const Case c = read_case(file);
+        const Upgrade search = search_materials(c);
+        for (const Material& m : materials()) {
+            INFO(file.filename().string() << " with " << m.name);
+            const Case edited = parse_case(edited_case_text(file, m.name), file.string());
+            const AssessmentResult direct = assess::assess(edited);
+            const auto trial =
+                std::find_if(search.trials.begin(), search.trials.end(),
+                             [&](const MaterialTrial& t) { return t.material == m.name; });
+            REQUIRE(trial != search.trials.end());
+            check_same_verdict(direct.own, trial->governing);
+            CHECK(trial->mu_s_range == edited.component.base.mu_s_range);
+        }
+    }
+}
+
+TEST_CASE("simulate = \"auto\" and \"always\" give the same verdict on every shipped case",
+          "[assess][policy][simulate]") {
+    for (const fs::path& file : shipped_cases()) {
+        INFO(file.filename().string());
+        Case c = read_case(file);
+        c.options.simulate = SimulatePolicy::automatic;
+        const AssessmentResult automatic = assess::assess(c);
+        c.options.simulate = SimulatePolicy::always;
+        const AssessmentResult always = assess::assess(c);
+        CHECK(verdict_text(automatic.overall.verdict) == verdict_text(always.overall.verdict));
+        check_same_verdict(automatic.overall, always.overall);
+        check_same_verdict(automatic.own, always.own);
+        REQUIRE(automatic.levels.size() == always.levels.size());
+        for (std::size_t i = 0; i < automatic.levels.size(); ++i) {
+            CHECK(verdict_text(automatic.levels[i].verdict) ==
+                  verdict_text(always.levels[i].verdict));
+            CHECK(margin_text(automatic.levels[i].verdict) ==
+                  margin_text(always.levels[i].verdict));
+        }
+    }
+}
