@@ -45,7 +45,8 @@ const std::vector<std::string> component_keys{"name",
                                               "assumptions"};
 const std::vector<std::string> site_keys{
     "design",        "target_h_file",   "target_h10_file", "target_y_file",   "target_y10_file",
-    "target_v_file", "pga_g",           "vertical_ratio",  "sliding_damping", "g_mps2"};
+    "target_v_file", "pga_g",           "vertical_ratio",  "sliding_damping", "g_mps2",
+    "energy_highpass_hz", "energy_table_displacement_m"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
                                            "simulate"};
 
@@ -322,6 +323,33 @@ std::optional<UserTargets> read_targets(TableReader& r, const std::filesystem::p
     return u;
 }
 
+// DeltaD of the energy method: a table per level, or the histories high-passed at a corner.
+void read_energy_displacement(TableReader& r, Site& s, std::vector<std::string>& assumptions) {
+    const auto corner = r.number("energy_highpass_hz", Range{0.0, 10.0, false, true});
+    s.energy_highpass_hz = corner.value_or(0.5);
+    s.energy_table_displacement_m =
+        r.numbers("energy_table_displacement_m", Range{0.0, 10.0, false, true});
+    if (s.energy_table_displacement_m) {
+        if (corner) {
+            r.fail("energy_highpass_hz", "energy_highpass_hz and energy_table_displacement_m "
+                                         "are not used together (the table replaces the "
+                                         "high-passed histories)");
+        }
+        if (s.energy_table_displacement_m->size() != s.pga_g.size()) {
+            r.fail("energy_table_displacement_m",
+                   fmt::format("expected one displacement per PGA level ({}), got {}",
+                               s.pga_g.size(), s.energy_table_displacement_m->size()));
+        }
+        return;
+    }
+    if (!corner) {
+        assumptions.push_back(
+            "energy_highpass_hz not given: the energy method's DeltaD is the histories' peak "
+            "displacement after a zero-phase 0.5 Hz high-pass (the thesis's test band, "
+            "METHODS.md s.4).");
+    }
+}
+
 Site read_site(TableReader& r, std::vector<std::string>& assumptions,
                const std::filesystem::path& case_dir) {
     Site s;
@@ -354,6 +382,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
     // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
     s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
+    read_energy_displacement(r, s, assumptions);
     r.finish(site_keys);
     return s;
 }

@@ -99,6 +99,11 @@ struct Site {
     double vertical_ratio = 2.0 / 3.0;  ///< vertical PGA / horizontal PGA
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
     double g_mps2 = 9.81;               ///< gravity used throughout the case
+    /// Corner of the zero-phase high-pass that turns a history's displacement into the energy
+    /// method's DeltaD (METHODS.md s.4: the thesis's test band started at 0.5 Hz), Hz.
+    double energy_highpass_hz = 0.5;
+    /// DeltaD per PGA level given by the case (table displacements), m; replaces the high-pass.
+    std::optional<std::vector<double>> energy_table_displacement_m;
 };
 
 /// When to run the time-history simulation (issue 6, [options] simulate).

@@ -10,6 +10,7 @@
 #include "core/measures.hpp"
 #include "core/readers.hpp"
 #include "assess/level.hpp"
+#include "sliding/table_displacement.hpp"
 #include "spectra/design.hpp"
 
 namespace freestand::assess {
@@ -114,8 +115,10 @@ const std::vector<HistorySet>& HistoryBank::sets() {
     for (const HistorySet& s : sets_) {
         const core::GroundMotion gx = core::measure(s.h1);
         const core::GroundMotion gy = core::measure(s.h2);
-        unit_pgd_x_m_.push_back(gx.pgd_m);
-        unit_pgd_y_m_.push_back(gy.pgd_m);
+        // The high-pass is linear, so the displacement at 1 g scales with the level.
+        const double corner_hz = case_->site.energy_highpass_hz;
+        unit_hp_disp_x_m_.push_back(sliding::highpass_peak_displacement_m(s.h1, corner_hz));
+        unit_hp_disp_y_m_.push_back(sliding::highpass_peak_displacement_m(s.h2, corner_hz));
         unit_pgv_x_mps_.push_back(gx.pgv_mps);
         unit_pgv_y_mps_.push_back(gy.pgv_mps);
     }
@@ -138,9 +141,9 @@ double scaled_mean(const std::vector<double>& unit, double pga_g) {
 }
 }  // namespace
 
-double HistoryBank::mean_pgd_m(Direction d, double pga_g) {
+double HistoryBank::mean_highpass_displacement_m(Direction d, double pga_g) {
     sets();
-    return scaled_mean(d == Direction::x ? unit_pgd_x_m_ : unit_pgd_y_m_, pga_g);
+    return scaled_mean(d == Direction::x ? unit_hp_disp_x_m_ : unit_hp_disp_y_m_, pga_g);
 }
 
 double HistoryBank::mean_pgv_mps(Direction d, double pga_g) {

@@ -36,8 +36,9 @@ class HistoryBank {
 
     /// The horizontal record of a direction scaled to pga_g, in m/s^2.
     static core::Record scaled(const core::Record& unit, double pga_g);
-    /// Mean peak ground displacement of the direction's horizontal records at pga_g, m.
-    double mean_pgd_m(Direction d, double pga_g);
+    /// Mean peak displacement of the direction's horizontal records at pga_g after the
+    /// case's zero-phase high-pass (site.energy_highpass_hz), m: the energy method's DeltaD.
+    double mean_highpass_displacement_m(Direction d, double pga_g);
     /// Mean peak ground velocity of the direction's horizontal records at pga_g, m/s.
     double mean_pgv_mps(Direction d, double pga_g);
 
@@ -49,8 +50,8 @@ class HistoryBank {
     const Case* case_;
     bool generated_ = false;
     std::vector<HistorySet> sets_;
-    std::vector<double> unit_pgd_x_m_;
-    std::vector<double> unit_pgd_y_m_;
+    std::vector<double> unit_hp_disp_x_m_;
+    std::vector<double> unit_hp_disp_y_m_;
     std::vector<double> unit_pgv_x_mps_;
     std::vector<double> unit_pgv_y_mps_;
 };

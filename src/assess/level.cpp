@@ -16,6 +16,7 @@
 #include "sliding/asce.hpp"
 #include "sliding/initiation.hpp"
 #include "sliding/spectrum_input.hpp"
+#include "sliding/table_displacement.hpp"
 #include "spectra/design.hpp"
 
 namespace freestand::assess {
@@ -80,12 +81,34 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     return out;
 }
 
-// ASCE 4 and (with_energy) the energy estimate at the lower friction bound, when the block
-// slides there. The energy estimate is informational and its DeltaD is the histories'
-// displacement, so it is given at simulated levels only: whether a level shows it then
-// depends on that level alone, never on the order the levels ran in.
+// DeltaD of the energy method (METHODS.md s.4): the case's table displacement for the level,
+// else the histories' peak displacement after the zero-phase high-pass, which exists only where
+// the histories are used (histories_used). Empty, with the reason, when neither applies, so
+// whether a level shows the estimate depends on that level alone.
+std::optional<double> energy_delta_d(const Case& c, Direction d, const LevelDemand& dem,
+                                     HistoryBank& bank, bool histories_used, Sliding& out) {
+    if (dem.table_delta_d_m) {
+        out.delta_d_source = "case table (site.energy_table_displacement_m)";
+        return dem.table_delta_d_m;
+    }
+    if (!histories_used) {
+        out.delta_d_source = "not computed: informational, and its DeltaD needs the histories, "
+                             "which this level did not use";
+        return std::nullopt;
+    }
+    out.highpass_hz = c.site.energy_highpass_hz;
+    out.delta_d_source = fmt::format(
+        "mean peak displacement of the {} matched {} histories after a zero-phase {:.3g} Hz "
+        "high-pass (order-{} Butterworth, forward and backward)",
+        c.options.histories_per_level, d == Direction::x ? "h1" : "h2", c.site.energy_highpass_hz,
+        sliding::highpass_order);
+    return bank.mean_highpass_displacement_m(d, dem.pga_g);
+}
+
+// ASCE 4 and the (informational) energy estimate at the lower friction bound, when the block
+// slides there.
 Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction d, Mode mode,
-                            const LevelDemand& dem, HistoryBank& bank, bool with_energy) {
+                            const LevelDemand& dem, HistoryBank& bank, bool histories_used) {
     Sliding out;
     out.mu_s = lower.mu_s;
     out.mu_e = sliding::effective_friction(lower.mu_s, dem.pga_v_g);
@@ -102,28 +125,23 @@ Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction 
         out.reason = "ASCE 4: " + cross.reason;
         return out;
     }
-    // DeltaD of the energy method is the table (ground) displacement of the matched histories,
-    // as in METHODS.md s.4's worked example (DeltaD = 0.040 m at 0.2 g).
     sliding::SlidingInput in;
     in.mu_s = lower.mu_s;
     in.av_g = dem.pga_v_g;
     in.pga_h_g = dem.pga_of(d);
-    if (with_energy) {
-        out.pgd_m = bank.mean_pgd_m(d, dem.pga_g);
-        out.pgd_source = fmt::format("mean PGD of the {} matched {} histories",
-                                     c.options.histories_per_level,
-                                     d == Direction::x ? "h1" : "h2");
-        in.pgd_m = out.pgd_m;
+    const std::optional<double> delta_d = energy_delta_d(c, d, dem, bank, histories_used, out);
+    if (delta_d) {
+        out.delta_d_m = *delta_d;
+        in.pgd_m = *delta_d;
     }
     const sliding::SlidingEstimate est = sliding::estimate_sliding(in, *cross.f_hz);
     out.f_es_hz = est.f_es_hz;
     out.slide_asce_m = est.slide_asce_m;
-    if (with_energy) out.slide_energy_m = est.slide_energy_m;
+    if (delta_d) out.slide_energy_m = est.slide_energy_m;
     std::vector<std::string> reasons;
     if (!est.slide_asce_m) reasons.push_back("ASCE 4: " + est.slide_asce_reason);
-    if (!with_energy) {
-        reasons.push_back("energy: given at simulated levels only (informational; its DeltaD "
-                          "is the histories' displacement)");
+    if (!delta_d) {
+        reasons.push_back("energy: " + out.delta_d_source);
     } else if (!est.slide_energy_m) {
         reasons.push_back("energy: " + est.slide_energy_reason);
     }
@@ -234,7 +252,7 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
     sa_vh_slide.frequency_hz = f;
     for (double fi : f) sa_vh_slide.psa_g.push_back(slide.psa_g(fi));
     LevelDemand out{pga_g, site.vertical_ratio * pga_g, h5, std::move(sa_vh_slide),
-                    std::move(damped), {}, std::nullopt, std::nullopt};
+                    std::move(damped), {}, std::nullopt, std::nullopt, std::nullopt};
     if (y5) {
         out.h5_y = std::move(y5);
         // Same factor as x: y's PGA is its file's rigid limit at that scale (equal files: pga_g).
@@ -244,8 +262,9 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
 }
 }  // namespace
 
-LevelDemand level_demand(const Site& site, double pga_g) {
-    if (site.targets) return user_level_demand(site, *site.targets, pga_g);
+namespace {
+// The RG 1.60 demand of a level.
+LevelDemand rg160_level_demand(const Site& site, double pga_g) {
     std::vector<spectra::Spectrum> damped;
     damped.reserve(rg160_dampings.size());
     for (double d : rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
@@ -256,7 +275,24 @@ LevelDemand level_demand(const Site& site, double pga_g) {
                        rocking::DampedSpectra(std::move(damped)),
                        {},
                        std::nullopt,
+                       std::nullopt,
                        std::nullopt};
+}
+
+// The case's table displacement of the level with this PGA (the table follows site.pga_g).
+std::optional<double> table_delta_d(const Site& site, double pga_g) {
+    if (!site.energy_table_displacement_m) return std::nullopt;
+    const auto it = std::find(site.pga_g.begin(), site.pga_g.end(), pga_g);
+    if (it == site.pga_g.end()) return std::nullopt;
+    return site.energy_table_displacement_m->at(static_cast<std::size_t>(it - site.pga_g.begin()));
+}
+}  // namespace
+
+LevelDemand level_demand(const Site& site, double pga_g) {
+    LevelDemand out = site.targets ? user_level_demand(site, *site.targets, pga_g)
+                                   : rg160_level_demand(site, pga_g);
+    out.table_delta_d_m = table_delta_d(site, pga_g);
+    return out;
 }
 
 DirectionBounds direction_bounds(const Component& comp, Direction d) {

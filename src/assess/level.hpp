@@ -36,6 +36,9 @@ struct LevelDemand {
     const spectra::Spectrum& h5_of(Direction d) const {
         return d == Direction::y && h5_y ? *h5_y : h5;
     }
+    /// The case's DeltaD for this level (site.energy_table_displacement_m), m.
+    std::optional<double> table_delta_d_m;
+
     /// Horizontal PGA of direction d, g.
     double pga_of(Direction d) const {
         return d == Direction::y && pga_y_g ? *pga_y_g : pga_g;

@@ -329,6 +329,12 @@ Case with_pga_levels(Case c, const std::vector<double>& pga_g) {
                                                 pga_g[i], pga_g[i - 1]));
         }
     }
+    if (c.site.energy_table_displacement_m && c.site.energy_table_displacement_m->size() != pga_g.size()) {
+        throw InputError(where, fmt::format("the case gives site.energy_table_displacement_m for "
+                                            "{} levels; --pga gives {}: the table cannot follow",
+                                            c.site.energy_table_displacement_m->size(),
+                                            pga_g.size()));
+    }
     c.site.pga_g = pga_g;
     return c;
 }

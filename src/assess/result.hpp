@@ -112,8 +112,11 @@ struct Sliding {
     double mu_s = 0.0;  ///< the friction they used (the lower bound)
     double mu_e = 0.0;
     double c_s_mps2 = 0.0;
-    double pgd_m = 0.0;      ///< peak ground displacement used by the energy method
-    std::string pgd_source;  ///< where DeltaD came from
+    /// DeltaD of the energy method (METHODS.md s.4): the table displacement, m; 0 when the
+    /// estimate was not made.
+    double delta_d_m = 0.0;
+    std::string delta_d_source;          ///< where DeltaD came from, in words
+    std::optional<double> highpass_hz;   ///< corner of the zero-phase high-pass, when used
     std::optional<double> f_es_hz;
     std::optional<double> slide_asce_m;
     std::optional<double> slide_energy_m;  ///< informational: never decides nor triggers

@@ -139,7 +139,9 @@ ordered_json level_json(const LevelResult& l) {
     j["mu_e"] = num(l.sliding.mu_e);
     j["c_s_mps2"] = num(l.sliding.c_s_mps2);
     j["f_es_hz"] = num(l.sliding.f_es_hz);
-    j["pgd_m"] = l.sliding.f_es_hz ? num(l.sliding.pgd_m) : ordered_json(nullptr);
+    j["delta_d_m"] = l.sliding.slide_energy_m ? num(l.sliding.delta_d_m) : ordered_json(nullptr);
+    j["delta_d_source"] = l.sliding.delta_d_source;
+    j["energy_highpass_hz"] = num(l.sliding.highpass_hz);
     j["slide_asce_m"] = num(l.sliding.slide_asce_m);
     j["slide_energy_m"] = num(l.sliding.slide_energy_m);
     j["sliding_reason"] = l.sliding.reason;
@@ -225,6 +227,14 @@ ordered_json case_json(const Case& c) {
     site["vertical_ratio"] = num(c.site.vertical_ratio);
     site["sliding_damping"] = num(c.site.sliding_damping);
     site["g_mps2"] = num(c.site.g_mps2);
+    site["energy_highpass_hz"] =
+        c.site.energy_table_displacement_m ? ordered_json(nullptr) : num(c.site.energy_highpass_hz);
+    ordered_json table = ordered_json(nullptr);
+    if (c.site.energy_table_displacement_m) {
+        table = ordered_json::array();
+        for (double v : *c.site.energy_table_displacement_m) table.push_back(num(v));
+    }
+    site["energy_table_displacement_m"] = table;
     ordered_json opt;
     opt["histories_per_level"] = c.options.histories_per_level;
     opt["seed"] = c.options.seed;

@@ -1,6 +1,7 @@
 #include "report/render.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <mstch/mstch.hpp>
 
@@ -66,6 +67,16 @@ std::string statistic_rule(int histories) {
         min_histories_for_mean, histories >= min_histories_for_mean ? "mean" : "maximum");
 }
 
+std::string energy_delta_d_text(const Site& site) {
+    if (site.energy_table_displacement_m) {
+        std::vector<std::string> mm_values;
+        for (double v : *site.energy_table_displacement_m) mm_values.push_back(fixed(v * 1000.0, 1));
+        return fmt::format("case table per level: {} mm", fmt::join(mm_values, ", "));
+    }
+    return fmt::format("histories' peak displacement after a zero-phase {:.3g} Hz high-pass",
+                       site.energy_highpass_hz);
+}
+
 mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
     const Component& k = c.component;
     mstch::array out;
@@ -105,6 +116,8 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
                   bounds_text(l->bounds.restitution_lower, l->bounds.rocking.restitution, 3), "-",
                   restitution_note(k.base, l->bounds)));
     }
+    out.push_back(input("energy method's DeltaD", energy_delta_d_text(c.site), "",
+                        "informational estimate only (METHODS.md s.4)"));
     out.push_back(input("allowable slide (absolute: clearance)",
                         fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
     if (k.allowable_relative_m) {
@@ -201,6 +214,7 @@ mstch::map level_row(const LevelResult& l) {
         {"a_ratio", fixed(l.initiation.a_ratio, 3)},
         {"screen", yes_no(l.screen.passed)},
         {"slide_asce", mm(l.sliding.slide_asce_m)},
+        {"delta_d", l.sliding.slide_energy_m ? mm(l.sliding.delta_d_m) : none},
         {"slide_energy", mm(l.sliding.slide_energy_m)},
         {"el_fs", el_fs_text(l)},
         {"amplification_estimate", amplification_estimate(l)},

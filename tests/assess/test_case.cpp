@@ -91,8 +91,8 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     CHECK(c.options.simulate == SimulatePolicy::automatic);
     CHECK(c.options.seed == 1);
     CHECK(c.options.histories_per_level == 7);
-    // friction bounds, mu_k, inertia, restitution, vertical ratio
-    CHECK(c.assumptions.size() == 5);
+    // friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
+    CHECK(c.assumptions.size() == 6);
     CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.8 * 0.3, 1.2 * 0.3});
     CHECK(c.component.base.mu_s_range_source == "default 0.8-1.2 x mu_s (METHODS.md s.7)");
     CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {
@@ -257,4 +257,26 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
 
 TEST_CASE("a missing case file is an IoError", "[assess][case]") {
     CHECK_THROWS_AS(read_case("/nonexistent/case.toml"), IoError);
+}
+
+TEST_CASE("energy DeltaD keys: a corner or a table with one value per level",
+          "[assess][case][energy]") {
+    const Case d = parse_case(base_component + base_site, "case.toml");
+    CHECK(d.site.energy_highpass_hz == 0.5);
+    CHECK_FALSE(d.site.energy_table_displacement_m.has_value());
+    const Case corner = parse_case(base_component + base_site + "energy_highpass_hz = 0.3\n",
+                                   "case.toml");
+    CHECK(corner.site.energy_highpass_hz == 0.3);
+    const Case table = parse_case(
+        base_component + base_site + "energy_table_displacement_m = [0.02, 0.04]\n", "case.toml");
+    CHECK(*table.site.energy_table_displacement_m == std::vector<double>{0.02, 0.04});
+    CHECK(error_of(base_component + base_site + "energy_table_displacement_m = [0.02]\n") ==
+          "case.toml:11: site.energy_table_displacement_m: expected one displacement per PGA "
+          "level (2), got 1");
+    CHECK(error_of(base_component + base_site +
+                   "energy_highpass_hz = 0.5\nenergy_table_displacement_m = [0.02, 0.04]\n")
+              .find("site.energy_highpass_hz: energy_highpass_hz and energy_table_displacement_m "
+                    "are not used together") != std::string::npos);
+    CHECK(error_of(base_component + base_site + "energy_highpass_hz = 0\n")
+              .find("site.energy_highpass_hz") != std::string::npos);
 }

@@ -1,5 +1,6 @@
 // The pipeline end to end on small cases (one level, at most one history).
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 
 #include "assess/pipeline.hpp"
@@ -55,8 +56,11 @@ TEST_CASE("glove box at 0.2 g: the ASCE 4 estimate by hand at the lower friction
     REQUIRE(x.simulation.has_value());
     CHECK(x.verdict.decided_by == Model::simulation_slide);
     CHECK(r.histories_generated == 1);
-    // Simulated levels also show the (informational) energy estimate with the histories' PGD.
-    CHECK(x.sliding.pgd_m > 0.0);
+    // Simulated levels also show the (informational) energy estimate; its DeltaD is the
+    // histories' displacement after the zero-phase 0.5 Hz high-pass (METHODS.md s.4).
+    CHECK(x.sliding.delta_d_m > 0.0);
+    CHECK(*x.sliding.highpass_hz == 0.5);
+    CHECK(x.sliding.delta_d_source.find("zero-phase 0.5 Hz high-pass") != std::string::npos);
     CHECK(x.sliding.slide_energy_m.has_value());
     // The flexible-body flag is raised beside the slide mode (band 1.7-4.9 Hz given).
     CHECK(x.flexible.raised);
@@ -83,5 +87,48 @@ TEST_CASE("seed records must come in threes per history", "[assess][pipeline]") 
         CHECK(std::string(e.what()).find(
                   "options.seed_records: expected 3 records (h1, h2, v) per history, 3 in "
                   "all for histories_per_level = 1, got 1") != std::string::npos);
+    }
+}
+
+TEST_CASE("a table displacement replaces the high-passed histories, at every sliding level",
+          "[assess][pipeline][energy]") {
+    Case c = glovebox({0.2}, 1);
+    c.options.simulate = SimulatePolicy::never;  // no histories at all
+    c.site.energy_table_displacement_m = std::vector<double>{0.040};
+    const AssessmentResult r = assess::assess(c);
+    const Sliding& s = r.levels.at(0).sliding;
+    CHECK(r.histories_generated == 0);
+    CHECK(s.delta_d_m == 0.040);
+    CHECK_FALSE(s.highpass_hz.has_value());
+    CHECK(s.delta_d_source == "case table (site.energy_table_displacement_m)");
+    // METHODS.md s.4: 0.5 w^2 d^2 + 4 mu_e g d - g DeltaD = 0 at the lower friction bound.
+    const double w = 2.0 * 3.141592653589793 * *s.f_es_hz;
+    const double a = 0.5 * w * w;
+    const double b = 4.0 * s.mu_e * 9.81;
+    const double q = 9.81 * 0.040;
+    CHECK(*s.slide_energy_m == Approx((-b + std::sqrt(b * b + 4.0 * a * q)) / (2.0 * a)));
+    // The estimate is informational: the level was decided by the screen (never simulate).
+    CHECK(r.levels.at(0).verdict.decided_by == Model::asce4_sliding);
+}
+
+TEST_CASE("without histories and without a table the energy estimate says why it is absent",
+          "[assess][pipeline][energy]") {
+    Case c = glovebox({0.2}, 1);
+    c.options.simulate = SimulatePolicy::never;
+    const AssessmentResult r = assess::assess(c);
+    const Sliding& s = r.levels.at(0).sliding;
+    CHECK_FALSE(s.slide_energy_m.has_value());
+    CHECK(s.reason.find("energy: not computed") != std::string::npos);
+}
+
+TEST_CASE("a --pga override cannot drop the per-level table", "[assess][pipeline][energy]") {
+    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    c.site.energy_table_displacement_m = std::vector<double>{0.02, 0.04, 0.06, 0.08};
+    try {
+        with_pga_levels(c, {0.2});
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()).find("energy_table_displacement_m for 4 levels; --pga gives 1") !=
+              std::string::npos);
     }
 }

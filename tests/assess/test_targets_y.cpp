@@ -199,11 +199,11 @@ TEST_CASE("direction y's file sets y's demand; SA_VH combines x and y",
     CHECK(y3.initiation.a_ratio == Approx(1.5 * y1.initiation.a_ratio).epsilon(1e-12));
     CHECK(y3.flexible.peak_psa_in_band_g ==
           Approx(1.5 * y1.flexible.peak_psa_in_band_g).epsilon(1e-9));
-    // History h2 is matched to y's file (h1 to x's): the energy method's PGD follows it.
-    REQUIRE(x1.sliding.pgd_m > 0.0);
-    REQUIRE(y1.sliding.pgd_m > 0.0);
-    REQUIRE(y3.sliding.pgd_m > 0.0);
-    CHECK(x3.sliding.pgd_m == x1.sliding.pgd_m);
-    CHECK(y3.sliding.pgd_m == Approx(1.5 * y1.sliding.pgd_m).epsilon(0.05));
+    // History h2 is matched to y's file (h1 to x's): the energy method's DeltaD follows it.
+    REQUIRE(x1.sliding.delta_d_m > 0.0);
+    REQUIRE(y1.sliding.delta_d_m > 0.0);
+    REQUIRE(y3.sliding.delta_d_m > 0.0);
+    CHECK(x3.sliding.delta_d_m == x1.sliding.delta_d_m);
+    CHECK(y3.sliding.delta_d_m == Approx(1.5 * y1.sliding.delta_d_m).epsilon(0.05));
     CHECK(y3.pga_g == 0.2);  // levels stay keyed by the level's (direction x's) PGA
 }
