@@ -7,22 +7,10 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/readers.hpp"
+#include "core/text_parse.hpp"
 #include "core/units.hpp"
 
 namespace freestand::core {
-
-namespace {
-
-/// Parses one number token; std::from_chars rejects what strtod would half-accept.
-bool parse_double(std::string_view token, double& value) {
-    const char* first = token.data();
-    const char* last = token.data() + token.size();
-    if (first != last && *first == '+') ++first;
-    auto [ptr, ec] = std::from_chars(first, last, value);
-    return ec == std::errc() && ptr == last;
-}
-
-}  // namespace
 
 Record read_at2(const std::filesystem::path& path) {
     const std::string file = path.string();
@@ -33,6 +21,7 @@ Record read_at2(const std::filesystem::path& path) {
         if (!std::getline(in, line))
             throw InputError({file, i + 1, ""}, "file ends inside the four-line AT2 header");
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        text::check_record_line_length(line, file, i + 1);
         header[i] = line;
     }
     if (header[2].find("UNITS OF G") == std::string::npos)
@@ -50,7 +39,7 @@ Record read_at2(const std::filesystem::path& path) {
     if (npts_parse.ec != std::errc() || npts <= 0 || npts > 100'000'000)
         throw InputError({file, 4, "NPTS"}, "expected a point count between 1 and 1e8; got \"" + npts_text + "\"");
     double dt_s = 0.0;
-    if (!parse_double(m[2].str(), dt_s) || !std::isfinite(dt_s) || dt_s <= 0.0)
+    if (!text::parse_double(m[2].str(), dt_s) || !std::isfinite(dt_s) || dt_s <= 0.0)
         throw InputError({file, 4, "DT"}, "expected a time step > 0 s; got \"" + m[2].str() + "\"");
 
     Record rec;
@@ -62,11 +51,12 @@ Record read_at2(const std::filesystem::path& path) {
     int line_no = 4;
     while (std::getline(in, line)) {
         ++line_no;
+        text::check_record_line_length(line, file, line_no);
         std::istringstream tokens(line);
         std::string token;
         while (tokens >> token) {
             double a_g = 0.0;
-            if (!parse_double(token, a_g))
+            if (!text::parse_double(token, a_g))
                 throw InputError({file, line_no, "acceleration"},
                                  "expected a number in g; got \"" + token + "\"");
             if (!std::isfinite(a_g))

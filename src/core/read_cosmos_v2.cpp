@@ -248,6 +248,8 @@ std::vector<double> CosmosParser::data_values(std::size_t data_index, const Fort
 
 Record CosmosParser::parse() {
     if (lines_.empty()) throw InputError(at(0, ""), "empty file; expected a COSMOS V2 text header");
+    for (std::size_t i = 0; i < lines_.size(); ++i)
+        text::check_record_line_length(lines_[i], file_, static_cast<int>(i + 1));
     static const std::regex text_lines(R"(with\s+(\d+)\s+text\s+lines)", std::regex::icase);
     std::smatch m;
     if (!std::regex_search(lines_[0], m, text_lines))

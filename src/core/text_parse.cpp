@@ -4,6 +4,10 @@
 #include <cctype>
 #include <charconv>
 
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
 namespace freestand::core::text {
 
 bool parse_double(std::string_view token, double& value) {
@@ -40,6 +44,14 @@ std::vector<std::string> split_lines(const std::string& text) {
         start = end + 1;
     }
     return lines;
+}
+
+void check_record_line_length(const std::string& line, const std::string& file, int line_no) {
+    if (line.size() <= max_record_line_chars) return;
+    throw InputError({file, line_no, ""},
+                     fmt::format("line is {} characters long; this record format has lines of "
+                                 "about 80 characters, and at most {} are accepted",
+                                 line.size(), max_record_line_chars));
 }
 
 bool istarts_with(std::string_view s, std::string_view prefix) {

@@ -1,5 +1,6 @@
 #pragma once
 /// Small text-parsing helpers shared by the record readers (internal to core).
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,6 +16,14 @@ std::string_view trim(std::string_view s);
 
 /// ASCII lower-case copy.
 std::string lower(std::string_view s);
+
+/// Longest line the AT2 and COSMOS readers accept. Both formats write lines of about 80
+/// characters; the cap bounds the header patterns' work (std::regex recurses per character, so
+/// a 50,000-character line overflowed the stack).
+inline constexpr std::size_t max_record_line_chars = 1024;
+
+/// Throws InputError at file:line_no unless line has at most max_record_line_chars characters.
+void check_record_line_length(const std::string& line, const std::string& file, int line_no);
 
 /// Splits text into lines without their '\n' or "\r\n" and drops a leading UTF-8 BOM.
 /// Line i of the result is line i + 1 of the file.

@@ -75,3 +75,16 @@ TEST_CASE("AT2 reader rejects an absurd NPTS as an input error", "[core][at2]") 
     const auto p = write_temp("hugenpts.AT2", header + "NPTS=  99999999999999999999, DT= .0100 SEC\n 0.1\n");
     CHECK_THROWS_WITH(core::read_at2(p), Catch::Contains(":4: NPTS: expected a point count between 1 and 1e8"));
 }
+
+TEST_CASE("AT2 reader refuses an overlong header line instead of overflowing the stack",
+          "[core][at2][hardening]") {
+    // Issue 16: NPTS= with 50,000 digits crashed the header pattern (exit 139).
+    const auto p = write_temp("long.AT2", header + "NPTS= " + std::string(50000, '1') +
+                                              ", DT= .0100 SEC\n 0.1 -0.2\n 0.3\n");
+    try {
+        core::read_record(p);
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()).find(":4: line is 50021 characters long") != std::string::npos);
+    }
+}

@@ -148,3 +148,25 @@ TEST_CASE("COSMOS V2 reader checks block counts and field widths", "[core][cosmo
     const auto r = variant("nodata", "      20 acceleration pts", "      20 velocity pts");
     CHECK_THROWS_WITH(core::read_cosmos_v2(r), Contains(":46: data header: expected a line like"));
 }
+
+TEST_CASE("COSMOS V2 reader refuses overlong lines instead of overflowing the stack",
+          "[core][cosmos][hardening]") {
+    // Issue 16: a 50,000-blank data line and a 300,000-character units field crashed the
+    // reader (std::regex recurses per character). Both are now an error naming the line.
+    const fs::path blanks = variant("long_blanks", "      20 acceleration pts",
+                                    std::string(50000, ' ') + "\n      20 acceleration pts");
+    try {
+        core::read_record(blanks);
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Contains(":46: line is 50000 characters long"));
+    }
+    const fs::path units =
+        variant("long_units", "units=cm/sec2 (04)", "units=" + std::string(300000, 'c'));
+    try {
+        core::read_record(units);
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Contains("characters long; this record format has lines of about 80"));
+    }
+}
