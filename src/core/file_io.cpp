@@ -1,5 +1,12 @@
 #include "core/file_io.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fmt/format.h>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -43,6 +50,8 @@ bool is_input(const std::filesystem::path& path) {
 
 }  // namespace
 
+bool is_input_file(const std::filesystem::path& path) { return is_input(path); }
+
 std::string read_input_file(const std::filesystem::path& path) {
     std::string text = read_text_file(path);
     const std::lock_guard<std::mutex> lock(inputs_mutex);
@@ -50,30 +59,51 @@ std::string read_input_file(const std::filesystem::path& path) {
     return text;
 }
 
+void write_new_file(const std::filesystem::path& path, std::string_view contents) {
+    const int fd =
+        ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0) throw IoError(path.string() + ": cannot create: " + std::strerror(errno));
+    std::size_t done = 0;
+    while (done < contents.size()) {
+        const ssize_t n = ::write(fd, contents.data() + done, contents.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int err = errno;
+            ::close(fd);
+            throw IoError(path.string() + ": write failed: " + std::strerror(err));
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::close(fd) != 0) throw IoError(path.string() + ": write failed: " + std::strerror(errno));
+}
+
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents) {
+    namespace fs = std::filesystem;
     if (is_input(path))
         throw IoError(path.string() + ": refusing to overwrite an input file of this run");
+    const fs::file_type existing = fs::symlink_status(path).type();
+    if (existing != fs::file_type::not_found && existing != fs::file_type::regular) {
+        throw IoError(path.string() + ": exists and is not a regular file (" +
+                      (existing == fs::file_type::symlink ? "a symbolic link" : "a device, FIFO or folder") +
+                      "); refusing to replace it");
+    }
     std::error_code ec;
     if (path.has_parent_path()) {
-        std::filesystem::create_directories(path.parent_path(), ec);
+        fs::create_directories(path.parent_path(), ec);
         if (ec) throw IoError(path.parent_path().string() + ": cannot create directory: " + ec.message());
     }
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw IoError(tmp.string() + ": cannot open file for writing");
-        out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp, ec);
-            throw IoError(tmp.string() + ": write failed");
-        }
+    static std::atomic<unsigned> counter{0};
+    fs::path tmp = path;
+    tmp += fmt::format(".freestand-tmp-{}-{}", ::getpid(), counter++);
+    try {
+        write_new_file(tmp, contents);
+    } catch (...) {
+        fs::remove(tmp, ec);
+        throw;
     }
-    std::filesystem::rename(tmp, path, ec);
+    fs::rename(tmp, path, ec);
     if (ec) {
-        std::filesystem::remove(tmp, ec);
+        fs::remove(tmp, ec);
         throw IoError(path.string() + ": cannot move temporary file into place");
     }
 }

@@ -15,9 +15,18 @@ std::string read_text_file(const std::filesystem::path& path);
 /// instead of a lost input.
 std::string read_input_file(const std::filesystem::path& path);
 
-/// Writes text to path atomically: a temporary file beside it, then rename, so a reader never
-/// sees a half-written file. Creates missing parent directories. Throws IoError on failure, and
-/// before writing anything if path is a file read by read_input_file.
+/// True when path names a file read by read_input_file in this process.
+bool is_input_file(const std::filesystem::path& path);
+
+/// Creates path (which must not exist; a symlink is not followed) and writes contents to it.
+/// Throws IoError naming the path.
+void write_new_file(const std::filesystem::path& path, std::string_view contents);
+
+/// Writes text to path atomically: a temporary file of a unique name beside it, then rename, so
+/// a reader never sees a half-written file and concurrent writers do not share a temporary.
+/// Creates missing parent directories. Throws IoError before writing anything if path is a
+/// file read by read_input_file, or exists and is not a regular file (a device, a FIFO, a
+/// symlink, a folder: never replaced).
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
 
 }  // namespace freestand::core

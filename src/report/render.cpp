@@ -7,6 +7,8 @@
 
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
+#include "core/publish.hpp"
+#include "report/references.hpp"
 
 namespace freestand::report {
 
@@ -195,6 +197,13 @@ std::string governing_bound(const LevelResult& l) {
     return none;
 }
 
+mstch::array reference_list() {
+    mstch::array out;
+    for (const Reference& r : references())
+        out.push_back(mstch::map{{"key", r.key}, {"text", r.text}});
+    return out;
+}
+
 mstch::array text_list(const std::vector<std::string>& items) {
     mstch::array out;
     for (const std::string& s : items) out.push_back(mstch::map{{"text", s}});
@@ -342,6 +351,7 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"history_checks", checks},
         {"assumptions", text_list(r.assumptions)},
         {"limits", text_list(r.limits)},
+        {"references", reference_list()},
         {"stamp_version", stamp.tool_version},
         {"stamp_commit", stamp.commit},
         {"stamp_case_file", stamp.case_file},
@@ -423,10 +433,12 @@ Rendered render(const AssessmentResult& r, const Stamp& stamp) {
 }
 
 void write_report(const std::filesystem::path& dir, const Rendered& rendered) {
-    for (const Figure& f : rendered.figures) core::write_file_atomic(dir / f.file, f.svg);
-    core::write_file_atomic(dir / "report.md", rendered.markdown);
-    core::write_file_atomic(dir / "report.html", rendered.html);
-    core::write_file_atomic(dir / "result.json", rendered.json);
+    std::vector<core::OutputFile> files;
+    for (const Figure& f : rendered.figures) files.push_back({f.file, f.svg});
+    files.push_back({"report.md", rendered.markdown});
+    files.push_back({"report.html", rendered.html});
+    files.push_back({"result.json", rendered.json});
+    core::publish_folder(dir, files);
 }
 
 }  // namespace freestand::report

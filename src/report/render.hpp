@@ -24,8 +24,9 @@ struct Rendered {
 /// newlines folded to spaces.
 Rendered render(const assess::AssessmentResult& r, const Stamp& stamp);
 
-/// Writes report.md, report.html, result.json and the figures into dir, each atomically
-/// (core::write_file_atomic). Throws IoError naming the file that failed.
+/// Publishes report.md, report.html, result.json and the figures as the whole content of dir
+/// (core::publish_folder: all old or all new for any reader; only a folder freestand owns is
+/// replaced). Throws IoError naming the path, before anything is written where it can.
 void write_report(const std::filesystem::path& dir, const Rendered& rendered);
 
 /// The headline's governing level, "PGA 0.400 g, direction x", with " with <material>" when it

@@ -196,6 +196,22 @@ TEST_CASE("the HTML report is self-contained", "[report][html]") {
           out.html.find("<h2>Inputs</h2>"));
 }
 
+TEST_CASE("both reports end with the references, methods document and thesis included",
+          "[report][references]") {
+    const Rendered out = render(hand_result(), stamp());
+    for (const std::string* text : {&out.markdown, &out.html}) {
+        const auto refs = text->find("References");
+        REQUIRE(refs != std::string::npos);
+        CHECK(refs < text->find("Reproducibility"));
+        for (const char* key : {"methods.md", "ASCE 4-16", "SRP 3.7.1", "RG 1.60",
+                                "Housner 1963", "Shenton 1996", "Ishiyama 1982",
+                                "Saraswat 2017"}) {
+            INFO(key);
+            CHECK(text->find(key, refs) != std::string::npos);
+        }
+    }
+}
+
 TEST_CASE("numbers are formatted with fixed precision and the stamp is present", "[report][json]") {
     const Rendered out = render(hand_result(), stamp());
     CHECK(out.markdown.find("| 12.3 |") != std::string::npos);  // ASCE 4 slide in mm, 1 decimal
@@ -502,5 +518,35 @@ TEST_CASE("regress CLI errors", "[report][cli][regress]") {
                                           (dir / "cases").string() + "'");
     CHECK(bad_golden.exit_code == 3);
     CHECK(bad_golden.err.find("result.json: not valid JSON") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("assess refuses outputs that would replace an input or a special file, before "
+          "writing anything",
+          "[report][cli][hardening]") {
+    const fs::path dir = temp_dir("refuse_outputs");
+    const fs::path c = small_case(dir, "small");
+    // Issue 16 defect 5: the case file is named like an output of the run, in the output folder.
+    REQUIRE(test::run_cli("assess '" + c.string() + "' --out '" + (dir / "out").string() + "'")
+                .exit_code == 0);
+    fs::copy_file(c, dir / "out" / "report.md", fs::copy_options::overwrite_existing);
+    const auto before = test::slurp(dir / "out" / "spectra.svg");
+    fs::remove(dir / "out" / "result.json");
+    const auto self = test::run_cli("assess '" + (dir / "out" / "report.md").string() +
+                                    "' --out '" + (dir / "out").string() + "'");
+    CHECK(self.exit_code == 5);
+    CHECK(self.err.find("refusing to overwrite an input file of this run") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "out" / "result.json"));  // nothing was written
+    CHECK(test::slurp(dir / "out" / "spectra.svg") == before);
+    // Issue 16 defect 1: a device, a symlink are never replaced.
+    const auto device = test::run_cli("assess '" + c.string() + "' --out /dev/null");
+    CHECK(device.exit_code == 5);
+    CHECK(fs::is_character_file("/dev/null"));
+    fs::create_directory_symlink(dir / "out", dir / "link");
+    const auto link =
+        test::run_cli("assess '" + c.string() + "' --out '" + (dir / "link").string() + "'");
+    CHECK(link.exit_code == 5);
+    CHECK(link.err.find("is a symbolic link") != std::string::npos);
+    CHECK(fs::is_symlink(dir / "link"));
     fs::remove_all(dir);
 }

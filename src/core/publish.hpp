@@ -1,0 +1,37 @@
+#pragma once
+/// Publishing a run's output folder as a whole (issue 16): a reader of the folder sees all of
+/// the previous run's files or all of this run's, never a mix, and two runs into one folder do
+/// not interleave.
+///
+/// Holding an exclusive lock on the parent folder (flock), the files are written into a fresh
+/// staging folder beside the target, the target is renamed aside and the staging folder
+/// renamed into its place; the old folder is then removed. Between the two renames the folder
+/// is briefly absent, never mixed, so a reader that opens the folder once and reads its files
+/// through it sees one run. Files in the target that neither this run nor the previous one
+/// wrote (a user's note, say) are carried over as hard links. Left-overs of killed runs
+/// (staging and renamed-aside folders) are removed by the next publish.
+///
+/// Only a folder freestand owns is replaced: absent, empty, or marked by the file
+/// `.freestand-run` a previous publish left. Anything else is an IoError before anything is
+/// written, as are: a target that is a symlink or not a folder, an entry that is not a regular
+/// file, and a file of the run that would replace an input the process read
+/// (core::read_input_file).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace freestand::core {
+
+/// One file of a run's output folder: a plain file name (no '/') and its contents.
+struct OutputFile {
+    std::string name;
+    std::string contents;
+};
+
+/// Name of the marker file that makes a folder replaceable by the next run.
+inline constexpr const char* run_marker = ".freestand-run";
+
+/// Publishes files as the whole content of dir (see above). Throws IoError naming the path.
+void publish_folder(const std::filesystem::path& dir, const std::vector<OutputFile>& files);
+
+}  // namespace freestand::core

@@ -1,0 +1,17 @@
+#pragma once
+/// The sources the reports cite: the project's methods document and the standards and papers
+/// behind each model (issue 13 s.4). One list, so every report cites the same text.
+#include <string>
+#include <vector>
+
+namespace freestand::report {
+
+struct Reference {
+    std::string key;   ///< short label used in the text, e.g. "ASCE 4-16"
+    std::string text;  ///< full citation
+};
+
+/// In report order: the methods document first, then standards, then papers.
+const std::vector<Reference>& references();
+
+}  // namespace freestand::report

@@ -1,0 +1,180 @@
+// Output safety (issue 16 defects 1, 4, 5): no special file is replaced, a run's folder is
+// published whole, concurrent runs do not mix, and inputs are checked before anything is written.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/publish.hpp"
+
+namespace fs = std::filesystem;
+using namespace freestand;
+using Catch::Contains;
+
+namespace {
+
+fs::path fresh(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("freestand_publish_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::vector<core::OutputFile> run_files(const std::string& tag, bool with_figure = true) {
+    std::vector<core::OutputFile> out{{"report.md", "report " + tag + "\n"},
+                                      {"result.json", "{\"run\": \"" + tag + "\"}\n"}};
+    if (with_figure) out.push_back({"figure.svg", "<svg>" + tag + "</svg>\n"});
+    return out;
+}
+
+// A file of an open folder, or "" when it is gone.
+std::string read_at(int dir_fd, const char* name) {
+    const int fd = ::openat(dir_fd, name, O_RDONLY);
+    if (fd < 0) return "";
+    std::string out;
+    char buffer[256];
+    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;)
+        out.append(buffer, static_cast<std::size_t>(n));
+    ::close(fd);
+    return out;
+}
+
+std::size_t entries(const fs::path& dir) {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), {}));
+}
+
+}  // namespace
+
+TEST_CASE("write_file_atomic never replaces a device, a FIFO or a symlink",
+          "[core][io][hardening]") {
+    const fs::path dir = fresh("special");
+    CHECK_THROWS_WITH(core::write_file_atomic("/dev/null", "x"),
+                      Contains("/dev/null: exists and is not a regular file"));
+    CHECK(fs::is_character_file("/dev/null"));
+    REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
+    CHECK_THROWS_WITH(core::write_file_atomic(dir / "fifo", "x"),
+                      Contains("exists and is not a regular file"));
+    CHECK(fs::is_fifo(dir / "fifo"));
+    core::write_file_atomic(dir / "target.txt", "kept\n");
+    fs::create_symlink(dir / "target.txt", dir / "link.txt");
+    CHECK_THROWS_WITH(core::write_file_atomic(dir / "link.txt", "x"),
+                      Contains("(a symbolic link); refusing to replace it"));
+    CHECK(core::read_text_file(dir / "target.txt") == "kept\n");
+    CHECK(fs::is_symlink(dir / "link.txt"));
+    // No temporary is left behind by a refusal or a success.
+    core::write_file_atomic(dir / "plain.txt", "a\n");
+    for (const auto& e : fs::directory_iterator(dir))
+        CHECK(e.path().filename().string().find("freestand-tmp") == std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("publish_folder writes a new folder whole, marked as freestand's",
+          "[core][io][publish]") {
+    const fs::path root = fresh("new");
+    core::publish_folder(root / "out" / "case", run_files("A"));
+    CHECK(core::read_text_file(root / "out" / "case" / "report.md") == "report A\n");
+    CHECK(fs::is_regular_file(root / "out" / "case" / core::run_marker));
+    CHECK(entries(root / "out" / "case") == 4);
+    CHECK(entries(root / "out") == 1);  // no staging or aside folder left
+    fs::remove_all(root);
+}
+
+TEST_CASE("a republish replaces the previous run's files, keeps hand-added ones",
+          "[core][io][publish]") {
+    const fs::path root = fresh("again");
+    const fs::path dir = root / "case";
+    core::publish_folder(dir, run_files("A", true));
+    std::ofstream(dir / "notes.txt") << "mine\n";
+    core::publish_folder(dir, run_files("B", false));
+    CHECK(core::read_text_file(dir / "result.json") == "{\"run\": \"B\"}\n");
+    CHECK_FALSE(fs::exists(dir / "figure.svg"));  // written by run A only: gone with it
+    CHECK(core::read_text_file(dir / "notes.txt") == "mine\n");
+    CHECK(entries(root) == 1);
+    fs::remove_all(root);
+}
+
+TEST_CASE("publish_folder refuses before writing anything", "[core][io][publish][hardening]") {
+    const fs::path root = fresh("refuse");
+    SECTION("a folder it does not own") {
+        fs::create_directories(root / "mine");
+        std::ofstream(root / "mine" / "thesis.tex") << "x";
+        CHECK_THROWS_WITH(core::publish_folder(root / "mine", run_files("A")),
+                          Contains("was not written by freestand"));
+        CHECK(entries(root / "mine") == 1);
+    }
+    SECTION("a symlink, a file, a FIFO inside") {
+        core::publish_folder(root / "real", run_files("A"));
+        fs::create_directory_symlink(root / "real", root / "link");
+        CHECK_THROWS_WITH(core::publish_folder(root / "link", run_files("B")),
+                          Contains("is a symbolic link"));
+        std::ofstream(root / "file") << "x";
+        CHECK_THROWS_WITH(core::publish_folder(root / "file", run_files("B")),
+                          Contains("exists and is not a folder"));
+        REQUIRE(::mkfifo((root / "real" / "pipe").c_str(), 0600) == 0);
+        CHECK_THROWS_WITH(core::publish_folder(root / "real", run_files("B")),
+                          Contains("pipe: is not a regular file"));
+        CHECK(core::read_text_file(root / "real" / "report.md") == "report A\n");
+    }
+    SECTION("an output that is an input of the run") {
+        core::publish_folder(root / "out", run_files("A"));
+        CHECK(core::read_input_file(root / "out" / "report.md") == "report A\n");
+        CHECK_THROWS_WITH(core::publish_folder(root / "out", run_files("B")),
+                          Contains("refusing to overwrite an input file"));
+        CHECK(core::read_text_file(root / "out" / "result.json") == "{\"run\": \"A\"}\n");
+    }
+    for (const auto& e : fs::directory_iterator(root))
+        CHECK(e.path().filename().string().find(".freestand-") == std::string::npos);
+    fs::remove_all(root);
+}
+
+TEST_CASE("concurrent runs into one folder leave one run's files, never a mix",
+          "[core][io][publish][hardening]") {
+    const fs::path root = fresh("race");
+    const fs::path dir = root / "case";
+    std::vector<std::thread> runs;
+    std::atomic<int> running{4};
+    for (int t = 0; t < 4; ++t) {
+        runs.emplace_back([&, t] {
+            for (int i = 0; i < 25; ++i)
+                core::publish_folder(dir, run_files(std::to_string(t) + "-" + std::to_string(i)));
+            --running;
+        });
+    }
+    // A reader that opens the folder once and reads both files through it (as a reader of a
+    // run's outputs should) sees one run's files, or none while the folder is being swapped.
+    int consistent = 0;
+    for (int probe = 0; running > 0 && probe < 1000000; ++probe) {
+        const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+        if (dfd < 0) continue;
+        const std::string md = read_at(dfd, "report.md");
+        const std::string json = read_at(dfd, "result.json");
+        ::close(dfd);
+        if (md.empty() || json.empty()) continue;  // the old folder was removed meanwhile
+        const std::string tag = md.substr(7, md.size() - 8);
+        CHECK(json == "{\"run\": \"" + tag + "\"}\n");
+        ++consistent;
+    }
+    for (auto& r : runs) r.join();
+    CHECK(consistent > 0);
+    CHECK(entries(dir) == 4);
+    CHECK(entries(root) == 1);
+    fs::remove_all(root);
+}
+
+TEST_CASE("left-overs of killed runs are cleaned by the next publish", "[core][io][publish]") {
+    const fs::path root = fresh("stale");
+    fs::create_directories(root / ".case.freestand-old-1-0");
+    // A staging folder of a run that died before it could publish.
+    fs::create_directories(root / ".case.freestand-stage-4194305-0");
+    core::publish_folder(root / "case", run_files("A"));
+    CHECK(entries(root) == 1);
+    fs::remove_all(root);
+}
