@@ -14,10 +14,23 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::core {
 
 std::string read_text_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto type = std::filesystem::status(path, ec).type();
+    if (type == std::filesystem::file_type::directory)
+        throw IoError(path.string() + ": is a folder; expected a file");
+    if (type == std::filesystem::file_type::regular) {
+        const auto bytes = static_cast<double>(std::filesystem::file_size(path, ec));
+        if (!ec && bytes > limits::max_input_bytes) {
+            throw IoError(fmt::format("{}: {:.4g} bytes; input files are limited to {:.4g} bytes "
+                                      "(README, Limits)",
+                                      path.string(), bytes, limits::max_input_bytes));
+        }
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw IoError(path.string() + ": cannot open file for reading");
     std::ostringstream buffer;

@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/limits.hpp"
 #include "core/readers.hpp"
 #include "core/text_parse.hpp"
 #include "core/units.hpp"
@@ -36,8 +37,10 @@ Record read_at2(const std::filesystem::path& path) {
     long npts = 0;
     const std::string npts_text = m[1].str();
     const auto npts_parse = std::from_chars(npts_text.data(), npts_text.data() + npts_text.size(), npts);
-    if (npts_parse.ec != std::errc() || npts <= 0 || npts > 100'000'000)
-        throw InputError({file, 4, "NPTS"}, "expected a point count between 1 and 1e8; got \"" + npts_text + "\"");
+    if (npts_parse.ec != std::errc() || npts <= 0 || static_cast<double>(npts) > limits::max_samples)
+        throw InputError({file, 4, "NPTS"}, fmt::format("expected a point count between 1 and {:g} "
+                                                        "(README, Limits); got \"{}\"",
+                                                        limits::max_samples, npts_text));
     double dt_s = 0.0;
     if (!text::parse_double(m[2].str(), dt_s) || !std::isfinite(dt_s) || dt_s <= 0.0)
         throw InputError({file, 4, "DT"}, "expected a time step > 0 s; got \"" + m[2].str() + "\"");

@@ -21,6 +21,7 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/readers.hpp"
+#include "core/limits.hpp"
 #include "core/text_parse.hpp"
 #include "core/units.hpp"
 
@@ -99,7 +100,7 @@ const std::string& CosmosParser::line(std::size_t index, const std::string& what
 
 // Regex-matched digit strings; from_chars keeps absurd lengths an InputError, not std::out_of_range.
 std::size_t CosmosParser::count(const std::string& digits, std::size_t index, const std::string& field) const {
-    constexpr std::size_t max_count = 100'000'000;
+    constexpr auto max_count = static_cast<std::size_t>(limits::max_samples);
     std::size_t value = 0;
     const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec != std::errc() || ptr != digits.data() + digits.size() || value > max_count)

@@ -9,6 +9,9 @@
 namespace freestand::core {
 
 Record read_record(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw IoError(path.string() + ": is a folder; expected a record file");
     const std::string ext = text::lower(path.extension().string());
     if (ext == ".at2") return read_at2(path);
     if (ext == ".v2" || ext == ".v2c") return read_cosmos_v2(path);

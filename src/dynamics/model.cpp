@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 #include "dynamics/simulate.hpp"
 
@@ -118,7 +119,12 @@ Excitation sine_excitation(const SineSpec& spec) {
     if (spec.dt_s != 0.0) require_positive(spec.dt_s, {"", 0, "--sine dt (s)"});
     const double dt_target =
         spec.dt_s > 0.0 ? spec.dt_s : std::min(0.005, 1.0 / (400.0 * spec.frequency_hz));
+    core::limits::require_within(spec.frequency_hz, core::limits::max_frequency_hz,
+                                 {"", 0, "--sine frequency (Hz)"}, "the sine's frequency");
     const double steps = std::ceil(spec.duration_s / dt_target - 1e-9);
+    core::limits::require_within(steps + 1.0, core::limits::max_samples,
+                                 {"", 0, "--sine duration (s)"},
+                                 "the sine's sampling (duration / step)");
     Excitation e;
     e.label = fmt::format("sine {} g, {} Hz, {} s", spec.amplitude_g, spec.frequency_hz,
                           spec.duration_s);

@@ -1,6 +1,7 @@
 #include <chrono>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "dynamics/integrators.hpp"
 
 namespace freestand::dynamics {
@@ -17,6 +18,16 @@ SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
     require_positive(options.abs_tol, {"", 0, "abs_tol"});
     // h_cap_ in the engine never exceeds 1 s.
     require_in_range(options.max_contact_step_s, 0.0, 1.0, {"", 0, "max_contact_step_s (s)"}, false, true);
+    core::limits::require_within(static_cast<double>(excitation.horizontal_mps2.size()),
+                                 core::limits::max_samples, {"", 0, "excitation"},
+                                 "the excitation's samples");
+    if (options.integrator == Integrator::central_difference) {
+        const double duration_s =
+            excitation.dt_s * static_cast<double>(excitation.horizontal_mps2.size()) +
+            options.tail_s;
+        core::limits::require_within(duration_s / options.cd_dt_s, core::limits::max_fixed_steps,
+                                     {"", 0, "--dt"}, "central difference (duration / dt)");
+    }
     const auto start = std::chrono::steady_clock::now();
     const detail::Geometry g = detail::make_geometry(model);
     const detail::BaseMotion base(excitation, options.g_mps2);

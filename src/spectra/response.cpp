@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 
 namespace freestand::spectra {
@@ -247,7 +248,15 @@ void check_inputs(const core::Record& record, const std::vector<double>& damping
     if (frequency_hz.empty())
         throw InputError(SourceLocation{"", 0, "frequency_hz"},
                          "no frequency given; expected at least one");
-    for (double f : frequency_hz) require_positive(f, SourceLocation{"", 0, "frequency_hz"});
+    core::limits::require_within(static_cast<double>(frequency_hz.size()),
+                                 core::limits::max_frequencies,
+                                 SourceLocation{"", 0, "frequency_hz"}, "the spectrum's frequencies");
+    for (double f : frequency_hz) {
+        require_positive(f, SourceLocation{"", 0, "frequency_hz"});
+        core::limits::require_within(f, core::limits::max_frequency_hz,
+                                     SourceLocation{"", 0, "frequency_hz"},
+                                     "a response-spectrum frequency (Hz)");
+    }
 }
 
 /// Validated inputs, then one stepper per (damping, frequency), damping-major.

@@ -73,7 +73,7 @@ TEST_CASE("AT2 reader reports a missing file as an I/O error", "[core][at2]") {
 
 TEST_CASE("AT2 reader rejects an absurd NPTS as an input error", "[core][at2]") {
     const auto p = write_temp("hugenpts.AT2", header + "NPTS=  99999999999999999999, DT= .0100 SEC\n 0.1\n");
-    CHECK_THROWS_WITH(core::read_at2(p), Catch::Contains(":4: NPTS: expected a point count between 1 and 1e8"));
+    CHECK_THROWS_WITH(core::read_at2(p), Catch::Contains(":4: NPTS: expected a point count between 1 and 1e+07 (README, Limits)"));
 }
 
 TEST_CASE("AT2 reader refuses an overlong header line instead of overflowing the stack",

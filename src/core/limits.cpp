@@ -1,0 +1,14 @@
+#include "core/limits.hpp"
+
+#include <fmt/format.h>
+
+namespace freestand::core::limits {
+
+void require_within(double needed, double limit, const SourceLocation& where,
+                    std::string_view what) {
+    if (needed <= limit) return;
+    throw InputError(where, fmt::format("{}: {:.4g} is above the limit {:.4g} (README, Limits)",
+                                        what, needed, limit));
+}
+
+}  // namespace freestand::core::limits

@@ -1,0 +1,29 @@
+#pragma once
+/// Sizes every stage bounds before it allocates or loops (issue 16: nothing runs unbounded).
+/// Each is documented in the README's "Limits" table; exceeding one is an InputError (exit 3)
+/// naming the parameter, what the request needs and the limit.
+#include <cstddef>
+#include <string_view>
+
+#include "core/errors.hpp"
+
+namespace freestand::core::limits {
+
+/// Samples of any record, read or generated (10 million: 28 h at 0.01 s, 80 MB of doubles).
+inline constexpr double max_samples = 1e7;
+/// Highest frequency of a response spectrum or a sine input, Hz. Above a record's Nyquist
+/// frequency its pseudo-acceleration is its PGA; sub-stepping to T / 20 there costs without end.
+inline constexpr double max_frequency_hz = 1000.0;
+/// Frequencies of one response-spectrum request.
+inline constexpr double max_frequencies = 1e5;
+/// Bytes of one input file (a record, a case, a spectrum) read into memory.
+inline constexpr double max_input_bytes = 512.0 * 1024.0 * 1024.0;
+/// Steps of one fixed-step integration (central difference: duration / dt).
+inline constexpr double max_fixed_steps = 1e8;
+
+/// Throws InputError at where unless needed <= limit (a NaN need counts as too large):
+/// "<what>: <needed> is above the limit <limit> (README, Limits)".
+void require_within(double needed, double limit, const SourceLocation& where,
+                    std::string_view what);
+
+}  // namespace freestand::core::limits

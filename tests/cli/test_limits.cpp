@@ -1,0 +1,49 @@
+// Issue 16 defect 3: every size is bounded before allocation (exit 3 naming the limit), and
+// defect 9: a folder given as an input file is an I/O error. Each command here hung, ran out
+// of memory or crashed before.
+#include <catch2/catch.hpp>
+
+#include "support/run_cli.hpp"
+
+using freestand::test::run_cli;
+using Catch::Contains;
+
+namespace {
+const std::string block = "--block b=0.15,h=0.6,m=38 --mu 0.5 ";
+const std::string record = "tests/data/RSN175_IMPVALL.H_H-E12140.AT2 ";
+}  // namespace
+
+TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
+          "[cli][limits][hardening]") {
+    struct Probe {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Probe> probes{
+        {"simulate " + block + "--sine 0.1g,2Hz,1e9s",
+         "the sine's sampling (duration / step): 8e+11 is above the limit 1e+07"},
+        {"simulate " + block + "--sine 0.5g,1e9Hz,10s",
+         "the sine's frequency: 1e+09 is above the limit 1000"},
+        {"simulate " + block + "--sine 0.5g,2Hz,10s --integrator cd --dt 1e-12",
+         "central difference (duration / dt): 2e+13 is above the limit 1e+08"},
+        {"spectrum " + record + "--frequencies 1e8",
+         "a response-spectrum frequency (Hz): 1e+08 is above the limit 1000"},
+        {"spectrum " + record + "--frequencies 1e300",
+         "a response-spectrum frequency (Hz): 1e+300 is above the limit 1000"},
+    };
+    for (const Probe& p : probes) {
+        INFO(p.args);
+        const auto r = run_cli(p.args);
+        CHECK(r.exit_code == 3);
+        CHECK_THAT(r.err, Contains(p.message));
+        CHECK_THAT(r.err, Contains("(README, Limits)"));
+    }
+}
+
+TEST_CASE("a folder where a file is expected is an I/O error", "[cli][hardening]") {
+    const auto r = run_cli("assess cases");
+    CHECK(r.exit_code == 5);
+    CHECK_THAT(r.err, Contains("cases: is a folder; expected a file"));
+    const auto s = run_cli("spectrum tests/data");
+    CHECK(s.exit_code == 5);
+}
