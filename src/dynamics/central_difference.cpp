@@ -163,7 +163,7 @@ private:
         }
         if (!armed_) return;
         armed_ = false;
-        const Contact c = land(g_, f);
+        const Contact c = land(g_, f, o_.flat_landing_window_s);
         rec_.impact(t1, std::abs(f.phid), std::abs(c.om), false);
         st_.u = c.u;
         st_.v = c.v;

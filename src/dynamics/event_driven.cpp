@@ -656,7 +656,7 @@ private:
             return te;
         }
         armed_ = false;
-        const Contact c = land(g_, st_.fl);
+        const Contact c = land(g_, st_.fl, o_.flat_landing_window_s);
         rec_.impact(te, std::abs(st_.fl.phid), std::abs(c.om), false);
         st_.u = c.u;
         st_.v = c.v;

@@ -181,7 +181,7 @@ double lowest_corner(const Geometry& g, const Flight& f, int& s_out) {
     return std::min(y_right, y_left);
 }
 
-Contact land(const Geometry& g, const Flight& f) {
+Contact land(const Geometry& g, const Flight& f, double flat_window_s) {
     Contact c;
     lowest_corner(g, f, c.s);
     c.th = std::max(0.0, -static_cast<double>(c.s) * f.phi);
@@ -189,7 +189,10 @@ Contact land(const Geometry& g, const Flight& f) {
     const double ds = static_cast<double>(c.s);
     const double sn = std::sin(g.alpha[i] - c.th), cs = std::cos(g.alpha[i] - c.th);
     c.u = f.X - ds * g.b[i] + ds * g.R[i] * sn;
-    if (c.th <= 1e-12) {
+    // Gap of the far edge: it closes at about the vertical speed (Options::flat_landing_window_s).
+    const double far_gap = (g.b[0] + g.b[1]) * std::sin(c.th);
+    const bool together = f.Yd < 0.0 && far_gap <= -f.Yd * flat_window_s;
+    if (c.th <= 1e-12 || together) {
         // Both edges strike together: the vertical velocity stops; friction removes at most
         // mu_k times the vertical impulse from the horizontal velocity (Coulomb impact).
         c.flat = true;

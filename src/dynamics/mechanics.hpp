@@ -135,13 +135,14 @@ Flight to_flight(const Geometry& g, int s, double u, double v, double th, double
 double lowest_corner(const Geometry& g, const Flight& f, int& s_out);
 
 /// Contact state after a flight ends with the lowest corner touching: sticking, perfectly
-/// plastic impact conserving angular momentum about that corner (a flat landing keeps the
-/// horizontal velocity less the Coulomb impulse mu_k |Yd|).
+/// plastic impact conserving angular momentum about that corner; or a flat landing, when the
+/// tilt is nil or the far edge's gap closes within flat_window_s at the vertical speed, which
+/// keeps the horizontal velocity less the Coulomb impulse mu_k |Yd|.
 struct Contact {
     int s = 1;
     double u = 0, v = 0, th = 0, om = 0;
     bool flat = false;
 };
-Contact land(const Geometry& g, const Flight& f);
+Contact land(const Geometry& g, const Flight& f, double flat_window_s);
 
 }  // namespace freestand::dynamics::detail
