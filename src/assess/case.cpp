@@ -350,6 +350,22 @@ void read_energy_displacement(TableReader& r, Site& s, std::vector<std::string>&
     }
 }
 
+}  // namespace
+
+std::optional<std::string> weightless_level(const std::vector<double>& pga_g,
+                                            double vertical_ratio) {
+    for (double pga : pga_g) {
+        if (pga * vertical_ratio < 1.0) continue;
+        return fmt::format("PGA {} g with a vertical/horizontal ratio of {:.4g} gives a vertical "
+                           "PGA of {:.4g} g; at 1 g or more, taken downward as the static checks "
+                           "take it, the block is weightless: each level needs pga_g x ratio < 1",
+                           pga, vertical_ratio, pga * vertical_ratio);
+    }
+    return std::nullopt;
+}
+
+namespace {
+
 Site read_site(TableReader& r, std::vector<std::string>& assumptions,
                const std::filesystem::path& case_dir) {
     Site s;
@@ -378,6 +394,9 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         s.vertical_ratio = s.targets->v->spectrum.psa_g.back() / s.targets->zpa_h_g;
     } else if (!ratio) {
         assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
+    }
+    if (const auto bad = weightless_level(s.pga_g, s.vertical_ratio)) {
+        r.fail("pga_g", *bad);
     }
     // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);

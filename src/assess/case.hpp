@@ -131,6 +131,11 @@ struct Case {
 /// mu_s, tabulated restitution), exactly as a case file naming only `base_material = m` reads.
 Case with_base_material(Case c, const std::string& material);
 
+/// Why a set of levels cannot be assessed (a level whose vertical PGA, pga_g x vertical_ratio,
+/// reaches 1 g), or nothing.
+std::optional<std::string> weightless_level(const std::vector<double>& pga_g,
+                                            double vertical_ratio);
+
 /// Parses a case file. Throws IoError if it cannot be read, InputError on any bad content
 /// (syntax, unknown key, missing key, wrong type, out-of-range value), naming file:line:key.
 Case read_case(const std::filesystem::path& path);

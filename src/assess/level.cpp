@@ -119,6 +119,11 @@ Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction 
                          : "rocks with friction holding at the lower friction bound: no sliding";
         return out;
     }
+    if (out.c_s_mps2 <= 0.0) {
+        out.reason = "ASCE 4: frictionless base at the lower bound (C_s = 0): the method does "
+                     "not apply";
+        return out;
+    }
     const sliding::Crossing cross =
         sliding::lowest_crossing(dem.sa_vh_slide, out.c_s_mps2 / units::g_mps2);
     if (!cross.f_hz) {
@@ -188,6 +193,7 @@ Rocking closed_form_rocking(const Case& c, const ContactBound& upper, const bloc
         out.gate_passed = g.gate_exceeded;
         out.gate_g = g.gate_g;
         out.theta_rad = g.theta0_rad;
+        out.el_reason = g.theta0_reason;
         out.overturn_predicted = g.overturning_predicted;
         out.overturn_fs = g.fs;
         out.spectral_margin = g.spectral_margin;

@@ -335,6 +335,8 @@ Case with_pga_levels(Case c, const std::vector<double>& pga_g) {
                                             c.site.energy_table_displacement_m->size(),
                                             pga_g.size()));
     }
+    if (const auto bad = weightless_level(pga_g, c.site.vertical_ratio))
+        throw InputError(where, *bad);
     c.site.pga_g = pga_g;
     return c;
 }

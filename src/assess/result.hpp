@@ -135,6 +135,7 @@ struct Rocking {
     bool gate_passed = false;               ///< s.5a gate: PGA > (1 - 0.4 A_v) tan(alpha)
     double gate_g = 0.0;                    ///< the gate (1 - 0.4 A_v) tan(alpha), g
     std::optional<double> theta_rad;        ///< s.5a estimate; absent when gated out or overturning
+    std::string el_reason;                  ///< why theta_rad is absent, when it is
     bool overturn_predicted = false;        ///< s.5a found no theta below alpha
     std::optional<double> overturn_fs;      ///< alpha / theta; absent when no rocking predicted
     std::optional<double> spectral_margin;  ///< largest spectrum scale with theta < alpha

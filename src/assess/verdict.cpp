@@ -205,7 +205,10 @@ ScreenCheck rock_check(const Rocking& r, double required_fs) {
                                  "equivalent-linear gate {:.3f} g: the screens disagree",
                                  r.gate_g));
     }
-    if (!r.overturn_fs || !r.theta_rad || *r.theta_rad < no_motion_rock_rad) {
+    if (!r.theta_rad) {
+        return check(inconclusive(m, r.el_reason), r.el_reason);
+    }
+    if (!r.overturn_fs || *r.theta_rad < no_motion_rock_rad) {
         return check(no_motion(m, "equivalent-linear theta below 0.003 rad (no motion)"),
                      "equivalent-linear theta below 0.003 rad: no motion");
     }

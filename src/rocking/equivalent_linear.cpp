@@ -203,10 +203,18 @@ ElResult equivalent_linear_rocking(const Block& blk, Edge e, const DampedSpectra
                                    : vertical.ratio * r.pga_h_g;
     r.gate_g = (1.0 - 0.4 * r.pga_v_g) * blk.tan_alpha(e);
     r.gate_exceeded = r.pga_h_g > r.gate_g;
-    if (!(r.restitution > 0.0 && r.restitution < 1.0)) {
-        r.beta_e_reason = fmt::format("restitution r = {:.4g} is not in (0, 1): {}", r.restitution,
-                                      r.restitution >= 1.0 ? "no impact damping"
-                                                           : "the block does not rebound");
+    // beta_e = -ln(r) / pi reaches 100% at r = exp(-pi) = 0.043: no spectrum goes there.
+    const bool damping_beyond = r.restitution > 0.0 && r.restitution < 1.0 &&
+                                damping_from_restitution(r.restitution) >= 1.0;
+    if (!(r.restitution > 0.0 && r.restitution < 1.0) || damping_beyond) {
+        r.beta_e_reason =
+            damping_beyond
+                ? fmt::format("restitution r = {:.4g} gives a damping -ln(r) / pi = {:.3g}, 100% "
+                              "or more, beyond any demand spectrum",
+                              r.restitution, damping_from_restitution(r.restitution))
+                : fmt::format("restitution r = {:.4g} is not in (0, 1): {}", r.restitution,
+                              r.restitution >= 1.0 ? "no impact damping"
+                                                   : "the block does not rebound");
         const std::string why = "equivalent-linear estimate not applicable: " + r.beta_e_reason;
         r.spectral_margin_reason = why;
         // The gate needs no damping: below it the answer is still "no rocking".

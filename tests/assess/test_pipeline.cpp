@@ -132,3 +132,68 @@ TEST_CASE("a --pga override cannot drop the per-level table", "[assess][pipeline
               std::string::npos);
     }
 }
+
+TEST_CASE("documented values are assessed or refused at their key, never by an internal name",
+          "[assess][pipeline][hardening]") {
+    // Issue 16 defect 6.
+    Case c = glovebox({0.2}, 1);
+    SECTION("mu_s = 0: ASCE 4 does not apply, the simulation decides") {
+        c.component.base.mu_s = 0.0;
+        c.component.base.mu_k = 0.0;
+        c.component.base.mu_s_range = {0.0, 0.0};
+        const AssessmentResult r = assess::assess(c);
+        const LevelResult& l = r.levels.at(0);
+        CHECK_FALSE(l.screen.passed);
+        CHECK(l.screen.slide.verdict.failure == Failure::screen_inconclusive);
+        CHECK(l.sliding.reason.find("frictionless base") != std::string::npos);
+        REQUIRE(l.simulation.has_value());
+        CHECK(l.verdict.decided_by == Model::simulation_slide);
+    }
+    SECTION("restitution 0.001: the equivalent-linear damping would pass 100%") {
+        c = glovebox({0.6}, 1);
+        c.component.base.mu_s_range = {0.6, 0.6};
+        c.component.base.restitution_range = std::array<double, 2>{0.001, 0.001};
+        const AssessmentResult r = assess::assess(c);
+        const LevelResult& l = r.levels.at(0);
+        REQUIRE(l.screen.rock.applies);
+        CHECK(l.screen.rock.verdict.failure == Failure::screen_inconclusive);
+        CHECK(l.screen.rock.text.find("damping -ln(r) / pi = 2.2") != std::string::npos);
+        CHECK(l.simulation.has_value());
+    }
+}
+
+TEST_CASE("a level whose vertical PGA reaches 1 g is refused at pga_g", "[assess][pipeline]") {
+    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    try {
+        with_pga_levels(c, {0.5, 1.5});
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()).find("--pga: PGA 1.5 g with a vertical/horizontal ratio of "
+                                         "0.6667 gives a vertical PGA of 1 g") != std::string::npos);
+    }
+    CHECK_NOTHROW(with_pga_levels(c, {1.4}));
+}
+
+TEST_CASE("an extreme footprint is assessed, not refused with an internal damping",
+          "[assess][pipeline][hardening]") {
+    // Issue 16 defect 6: cg_to_edge_x_m = [100, 1e-9] gave "damping 2.57 out of range".
+    const Case c = parse_case(R"([component]
+name = "Needle"
+mass_kg = 100.0
+cg_height_m = 1.0
+cg_to_edge_x_m = [100, 1e-9]
+cg_to_edge_y_m = [0.3, 0.3]
+mu_s = 0.6
+allowable_slide_m = 0.05
+[site]
+pga_g = [0.3]
+[options]
+histories_per_level = 1
+)",
+                              (fs::path(FREESTAND_SOURCE_DIR) / "cases" / "needle.toml").string());
+    const AssessmentResult r = assess::assess(c);
+    const LevelResult& x = r.levels.at(0);
+    CHECK(x.initiation.mode != Mode::rest);
+    CHECK(x.simulation.has_value());
+    CHECK_FALSE(passes(r.own.verdict));
+}
