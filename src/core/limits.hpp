@@ -18,6 +18,13 @@ inline constexpr double max_frequency_hz = 1000.0;
 inline constexpr double max_frequencies = 1e5;
 /// Bytes of one input file (a record, a case, a spectrum) read into memory.
 inline constexpr double max_input_bytes = 512.0 * 1024.0 * 1024.0;
+/// Time step of a record, s: finer than 1 microsecond or coarser than 1 s is not a strong-motion
+/// record (and a 1e300 s step made every measure overflow).
+inline constexpr double min_dt_s = 1e-6;
+inline constexpr double max_dt_s = 1.0;
+/// Largest acceleration of a record or an excitation, m/s^2 (100 g): beyond it the products of
+/// the integrators overflow long before anything physical is left to compute.
+inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
 /// Steps of one fixed-step integration (central difference: duration / dt).
 inline constexpr double max_fixed_steps = 1e8;
 

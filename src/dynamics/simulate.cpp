@@ -1,10 +1,26 @@
 #include <chrono>
+#include <cmath>
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
 #include "dynamics/integrators.hpp"
 
 namespace freestand::dynamics {
+
+namespace {
+// Out-of-range physics is an input error (issue 16): --scale 1e308 reported 8e304 m.
+void require_accelerations(const Excitation& e) {
+    for (const auto* series : {&e.horizontal_mps2, &e.vertical_mps2}) {
+        for (double a : *series) {
+            if (!std::isfinite(a))
+                throw InputError({"", 0, "excitation"}, "an acceleration is not a finite number");
+            core::limits::require_within(std::abs(a), core::limits::max_abs_accel_mps2,
+                                         {"", 0, "excitation"},
+                                         "an excitation acceleration (m/s^2, 100 g)");
+        }
+    }
+}
+}  // namespace
 
 SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
                           const Options& options) {
@@ -18,6 +34,7 @@ SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
     require_positive(options.abs_tol, {"", 0, "abs_tol"});
     // h_cap_ in the engine never exceeds 1 s.
     require_in_range(options.max_contact_step_s, 0.0, 1.0, {"", 0, "max_contact_step_s (s)"}, false, true);
+    require_accelerations(excitation);
     core::limits::require_within(static_cast<double>(excitation.horizontal_mps2.size()),
                                  core::limits::max_samples, {"", 0, "excitation"},
                                  "the excitation's samples");

@@ -3,6 +3,9 @@
 // of memory or crashed before.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "support/run_cli.hpp"
 
 using freestand::test::run_cli;
@@ -30,6 +33,9 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
          "a response-spectrum frequency (Hz): 1e+08 is above the limit 1000"},
         {"spectrum " + record + "--frequencies 1e300",
          "a response-spectrum frequency (Hz): 1e+300 is above the limit 1000"},
+        // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0.
+        {"simulate " + block + "--motion " + record + "--scale 1e308",
+         "an excitation acceleration (m/s^2, 100 g): 3.585e+305 is above the limit 981"},
     };
     for (const Probe& p : probes) {
         INFO(p.args);
@@ -46,4 +52,17 @@ TEST_CASE("a folder where a file is expected is an I/O error", "[cli][hardening]
     CHECK_THAT(r.err, Contains("cases: is a folder; expected a file"));
     const auto s = run_cli("spectrum tests/data");
     CHECK(s.exit_code == 5);
+}
+
+TEST_CASE("a record time step outside [1e-6, 1] s is an input error", "[cli][limits][hardening]") {
+    // Defect 8: DT= 1e300 gave "pgd_m": null with exit 0.
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "freestand_limits_dt";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "big.AT2") << "PEER\nRECORD\nACCELERATION TIME SERIES IN UNITS OF G\n"
+                                      "NPTS= 3, DT= 1e300 SEC\n0.1 0.2 0.3\n";
+    const auto r = run_cli("spectrum '" + (dir / "big.AT2").string() + "' --json");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Contains("time step 1e+300 s is outside [1e-06, 1] s (README, Limits)"));
+    std::filesystem::remove_all(dir);
 }
