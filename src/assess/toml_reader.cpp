@@ -118,11 +118,24 @@ std::optional<long long> TableReader::integer(const std::string& key, long long 
     return v;
 }
 
+void TableReader::require_printable(const std::string& key, const std::string& text) const {
+    // Control characters (ESC, BEL, NUL...) in names would pass into terminals and reports.
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F) {
+            fail(key, fmt::format("contains the control character U+{:04X} at byte {}; expected "
+                                  "printable text",
+                                  static_cast<unsigned>(c), i + 1));
+        }
+    }
+}
+
 std::optional<std::string> TableReader::string(const std::string& key) {
     const toml::node* n = find(key);
     if (n == nullptr) return std::nullopt;
     const auto* s = n->as_string();
     if (s == nullptr) fail(key, fmt::format("expected a string, got {}", type_name(n->type())));
+    require_printable(key, s->get());
     return s->get();
 }
 
@@ -168,6 +181,7 @@ std::optional<std::vector<std::string>> TableReader::strings(const std::string& 
             fail(key, fmt::format("expected an array of strings, got {} element",
                                   type_name(element.type())));
         }
+        require_printable(key, s->get());
         out.push_back(s->get());
     }
     return out;

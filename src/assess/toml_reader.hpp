@@ -49,6 +49,8 @@ class TableReader {
     void finish(const std::vector<std::string>& allowed) const;
 
     [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+    /// Fails at key when text holds a control character (tab and line breaks excepted).
+    void require_printable(const std::string& key, const std::string& text) const;
 
   private:
     const toml::node* find(const std::string& key);

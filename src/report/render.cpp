@@ -386,6 +386,18 @@ std::string headline_level(const AssessmentResult& r) {
     return out;
 }
 
+namespace {
+// Control characters from input text (ESC, BEL, NUL...) must not reach a terminal or a
+// viewer raw: shown as \xNN.
+bool is_control(char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7F;
+}
+std::string visible_control(char c) {
+    return fmt::format("\\x{:02X}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+}
+}  // namespace
+
 std::string markdown_escape(const std::string& text) {
     std::string out;
     for (char c : text) {
@@ -413,7 +425,41 @@ std::string markdown_escape(const std::string& text) {
                 out += c;
                 break;
             default:
-                out += c;
+                if (is_control(c)) {
+                    out += visible_control(c);
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out;
+}
+
+std::string html_escape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                if (is_control(c) && c != '\n' && c != '\r' && c != '\t') {
+                    out += visible_control(c);
+                } else {
+                    out += c;
+                }
         }
     }
     return out;
@@ -427,7 +473,10 @@ Rendered render(const AssessmentResult& r, const Stamp& stamp) {
         EscapeGuard guard(markdown_escape);
         out.markdown = mstch::render(template_report_md, ctx);
     }
-    out.html = mstch::render(template_report_html, ctx);
+    {
+        EscapeGuard guard(html_escape);
+        out.html = mstch::render(template_report_html, ctx);
+    }
     out.json = to_json(r, stamp).dump(2) + "\n";
     return out;
 }

@@ -33,7 +33,10 @@ void write_report(const std::filesystem::path& dir, const Rendered& rendered);
 /// is a level of the recommended material's trial (AssessmentResult::overall_from_trial).
 std::string headline_level(const assess::AssessmentResult& r);
 
-/// Escapes text for a Markdown document (see render()).
+/// HTML text escape (& < > " ') that also shows control characters as \xNN.
+std::string html_escape(const std::string& text);
+
+/// Escapes text for a Markdown document (see render()); control characters show as \xNN.
 std::string markdown_escape(const std::string& text);
 
 }  // namespace freestand::report

@@ -280,3 +280,19 @@ TEST_CASE("energy DeltaD keys: a corner or a table with one value per level",
     CHECK(error_of(base_component + base_site + "energy_highpass_hz = 0\n")
               .find("site.energy_highpass_hz") != std::string::npos);
 }
+
+TEST_CASE("control characters in case text are refused at their key", "[assess][case][hardening]") {
+    // Issue 16 defect 10: ESC and BEL in a name passed raw into stdout and the reports.
+    std::string with_esc = base_component;
+    with_esc.replace(with_esc.find("\"Box\""), 5, "\"Box\\u001b[31m\"");
+    CHECK(error_of(with_esc + base_site) ==
+          "case.toml:2: component.name: contains the control character U+001B at byte 4; "
+          "expected printable text");
+    CHECK(error_of(base_component + "assumptions = [\"ring\\u0007\"]\n" + base_site)
+              .find("component.assumptions: contains the control character U+0007") !=
+          std::string::npos);
+    // Line breaks and tabs in free text stay allowed.
+    CHECK_NOTHROW(parse_case(base_component + "description = \"two\\nlines\\tand a tab\"\n" +
+                                 base_site,
+                             "case.toml"));
+}
