@@ -14,8 +14,12 @@
 namespace freestand::core {
 
 Record read_at2(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    std::istringstream in(read_input_file(path));
+    return parse_at2(read_input_file(path), path.string());
+}
+
+Record parse_at2(const std::string& text, const std::string& file) {
+    const std::filesystem::path path(file);
+    std::istringstream in(text);
     std::string line;
     std::string header[4];
     for (int i = 0; i < 4; ++i) {

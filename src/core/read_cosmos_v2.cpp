@@ -303,8 +303,12 @@ Record CosmosParser::parse() {
 
 }  // namespace
 
+Record parse_cosmos_v2(const std::string& text, const std::string& file_label) {
+    return CosmosParser(file_label, text::split_lines(text)).parse();
+}
+
 Record read_cosmos_v2(const std::filesystem::path& path) {
-    return CosmosParser(path.string(), text::split_lines(read_input_file(path))).parse();
+    return parse_cosmos_v2(read_input_file(path), path.string());
 }
 
 }  // namespace freestand::core

@@ -181,8 +181,12 @@ Record CsvParser::parse() {
 
 }  // namespace
 
+Record parse_csv(const std::string& text, const std::string& file_label) {
+    return CsvParser(file_label, text::split_lines(text)).parse();
+}
+
 Record read_csv(const std::filesystem::path& path) {
-    return CsvParser(path.string(), text::split_lines(read_input_file(path))).parse();
+    return parse_csv(read_input_file(path), path.string());
 }
 
 }  // namespace freestand::core

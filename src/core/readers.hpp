@@ -25,6 +25,12 @@ Record read_cosmos_v2(const std::filesystem::path& path);
 /// becomes t = 0. Optional "# name:" and "# component:" comments set those labels.
 Record read_csv(const std::filesystem::path& path);
 
+/// The same readers on text already in memory; file_label names the file in messages (and
+/// its stem names the record). The fuzz targets drive these.
+Record parse_at2(const std::string& text, const std::string& file_label);
+Record parse_cosmos_v2(const std::string& text, const std::string& file_label);
+Record parse_csv(const std::string& text, const std::string& file_label);
+
 /// Picks the reader from the extension, ignoring case: .AT2, .V2 or .V2C, .csv. Throws
 /// InputError (field "extension") otherwise.
 Record read_record(const std::filesystem::path& path);

@@ -123,10 +123,12 @@ void read_row(std::string_view text, const std::string& file, int line, ReadStat
 }  // namespace
 
 Spectrum read_spectrum_csv(const std::filesystem::path& path) {
-    const std::string text = core::read_input_file(path);
-    const std::string file = path.string();
+    return parse_spectrum_csv(core::read_input_file(path), path.string());
+}
+
+Spectrum parse_spectrum_csv(const std::string& text, const std::string& file) {
     ReadState st;
-    st.s.label = path.stem().string();
+    st.s.label = std::filesystem::path(file).stem().string();
     int line = 0;
     std::size_t pos = 0;
     while (pos < text.size()) {

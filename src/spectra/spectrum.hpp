@@ -25,6 +25,8 @@ std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_deca
 /// "frequency_hz,psa_g", then rows in strictly increasing frequency with PSA > 0.
 /// Throws InputError naming file and line.
 Spectrum read_spectrum_csv(const std::filesystem::path& path);
+/// The same on text in memory; file names the file in messages and its stem is the label.
+Spectrum parse_spectrum_csv(const std::string& text, const std::string& file);
 /// Writes the same format (atomically); comments are written as "# <line>".
 void write_spectrum_csv(const Spectrum& s, const std::filesystem::path& path,
                         const std::vector<std::string>& comments);

@@ -1,0 +1,15 @@
+// Fuzz target: the COSMOS V2 reader. Only freestand's own errors may escape.
+#include <cstdint>
+#include <string>
+
+#include "core/errors.hpp"
+#include "core/readers.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    try {
+        freestand::core::parse_cosmos_v2(text, "fuzz.V2");
+    } catch (const freestand::Error&) {
+    }
+    return 0;
+}
