@@ -7,6 +7,15 @@ execute_process(COMMAND git rev-parse --short=12 HEAD
   ERROR_QUIET RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0 OR commit STREQUAL "")
   set(commit "unknown")
+else()
+  # Tracked files changed since the commit: the build is not that commit, say so.
+  execute_process(COMMAND git status --porcelain --untracked-files=no
+    WORKING_DIRECTORY ${SOURCE_DIR}
+    OUTPUT_VARIABLE changes OUTPUT_STRIP_TRAILING_WHITESPACE
+    ERROR_QUIET RESULT_VARIABLE rc_status)
+  if(rc_status EQUAL 0 AND NOT changes STREQUAL "")
+    set(commit "${commit}-dirty")
+  endif()
 endif()
 set(text "// Generated at build time by cmake/commit_stamp.cmake.\nnamespace freestand::cli {\nextern const char* const build_commit;\nconst char* const build_commit = \"${commit}\";\n}  // namespace freestand::cli\n")
 set(old "")

@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 
 #include "assess/verdict.hpp"
+#include "core/file_io.hpp"
 #include "report/sha256.hpp"
 
 namespace freestand::report {
@@ -188,6 +190,12 @@ ordered_json upgrade_json(const Upgrade& up) {
     return j;
 }
 
+ordered_json inputs_json(const std::vector<StampedInput>& inputs) {
+    ordered_json out = ordered_json::array();
+    for (const StampedInput& i : inputs) out.push_back({{"file", i.file}, {"sha256", i.sha256}});
+    return out;
+}
+
 ordered_json case_json(const Case& c) {
     const Component& k = c.component;
     ordered_json comp;
@@ -247,9 +255,29 @@ ordered_json case_json(const Case& c) {
 
 }  // namespace
 
+std::vector<StampedInput> stamped_inputs(const Case& c) {
+    std::vector<StampedInput> out;
+    const std::filesystem::path dir = std::filesystem::path(c.file).parent_path();
+    auto add = [&](const std::string& given, const std::filesystem::path& path) {
+        out.push_back({given, sha256_hex(core::read_text_file(path))});
+    };
+    if (c.site.targets) {
+        const UserTargets& u = *c.site.targets;
+        auto target = [&](const TargetFile& t) {
+            const std::filesystem::path p(t.given);
+            add(t.given, p.is_absolute() ? p : dir / p);
+        };
+        target(u.h5);
+        for (const auto* t : {&u.h10, &u.v, &u.y5, &u.y10})
+            if (*t) target(**t);
+    }
+    for (const auto& r : c.options.seed_records) add(r.string(), r);
+    return out;
+}
+
 Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, std::uint64_t seed,
                  const std::string& commit) {
-    return Stamp{FREESTAND_VERSION, commit, sha256_hex(case_bytes), case_file, seed};
+    return Stamp{FREESTAND_VERSION, commit, sha256_hex(case_bytes), case_file, seed, {}};
 }
 
 ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
@@ -287,7 +315,8 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
                   {"commit", stamp.commit},
                   {"seed", stamp.seed},
                   {"input_sha256", stamp.input_sha256},
-                  {"case_file", stamp.case_file}};
+                  {"case_file", stamp.case_file},
+                  {"inputs", inputs_json(stamp.inputs)}};
     return j;
 }
 

@@ -3,23 +3,37 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "assess/result.hpp"
 
 namespace freestand::report {
 
 /// Reproducibility stamp (STYLE.md: stamp outputs with version, commit and input hash).
+/// One input file of a run and the SHA-256 of its bytes.
+struct StampedInput {
+    std::string file;  ///< path as the case or the command line gives it
+    std::string sha256;
+};
+
 struct Stamp {
     std::string tool_version;  ///< FREESTAND_VERSION
-    std::string commit;        ///< passed in by the CLI (build_commit), "unknown" outside git
+    /// The CLI's build_commit: 12 hex digits, "-dirty" appended when the build's tree had
+    /// uncommitted changes; "unknown" outside git.
+    std::string commit;
     std::string input_sha256;  ///< of the case file's bytes
     std::string case_file;     ///< path as given
     std::uint64_t seed = 0;
+    /// Every other input the run read: target spectra and seed records.
+    std::vector<StampedInput> inputs;
 };
 
 /// Stamp for a case file's bytes.
 Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, std::uint64_t seed,
                  const std::string& commit);
+
+/// The case's other input files (target spectra, seed records), hashed.
+std::vector<StampedInput> stamped_inputs(const assess::Case& c);
 
 /// Numbers are rounded to 10 significant digits so the file is stable across platforms;
 /// absent values are null. Key order is fixed (ordered_json).

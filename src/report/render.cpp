@@ -197,6 +197,13 @@ std::string governing_bound(const LevelResult& l) {
     return none;
 }
 
+mstch::array stamp_inputs(const Stamp& stamp) {
+    mstch::array out;
+    for (const StampedInput& i : stamp.inputs)
+        out.push_back(mstch::map{{"file", i.file}, {"sha256", i.sha256}});
+    return out;
+}
+
 mstch::array reference_list() {
     mstch::array out;
     for (const Reference& r : references())
@@ -357,6 +364,7 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"stamp_case_file", stamp.case_file},
         {"stamp_sha256", stamp.input_sha256},
         {"stamp_seed", std::to_string(stamp.seed)},
+        {"stamp_inputs", stamp_inputs(stamp)},
     };
 }
 

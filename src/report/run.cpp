@@ -15,8 +15,9 @@ CaseRun run_case(const std::filesystem::path& case_file,
     if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
     CaseRun run;
     run.result = assess::assess(c);
-    run.rendered =
-        render(run.result, make_stamp(bytes, case_file.string(), c.options.seed, commit));
+    Stamp stamp = make_stamp(bytes, case_file.string(), c.options.seed, commit);
+    stamp.inputs = stamped_inputs(c);
+    run.rendered = render(run.result, stamp);
     return run;
 }
 

@@ -556,3 +556,20 @@ TEST_CASE("control characters show as \\xNN in Markdown and HTML", "[report][esc
     CHECK(html_escape(std::string("a\x1b<b>\0c", 7)) == "a\\x1B&lt;b&gt;\\x00c");
     CHECK(html_escape("line\nbreak") == "line\nbreak");
 }
+
+TEST_CASE("the stamp hashes every input file, not only the case", "[report][cli][stamp]") {
+    // Issue 16: target spectra and seed records change a result as much as the case does.
+    const fs::path dir = temp_dir("stamp_inputs");
+    const auto r =
+        test::run_cli("assess cases/cabinet-user-target.toml --pga 0.1 --out '" + dir.string() + "'");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(test::slurp(dir / "result.json"));
+    const auto& inputs = j.at("stamp").at("inputs");
+    REQUIRE(inputs.size() >= 1);
+    for (const auto& i : inputs) {
+        const fs::path file = fs::path(FREESTAND_SOURCE_DIR) / "cases" / i.at("file").get<std::string>();
+        INFO(file);
+        CHECK(i.at("sha256") == sha256_hex(test::slurp(file)));
+    }
+    fs::remove_all(dir);
+}
