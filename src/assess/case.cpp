@@ -98,8 +98,7 @@ void read_geometry(TableReader& r, Component& c, std::vector<std::string>& assum
 
 // I_c of a uniform block filling the footprint and twice the CG height (METHODS.md s.1).
 double uniform_inertia(double mass_kg, const PlanarGeometry& g, double h_m) {
-    const double half_width = (g.b_left_m + g.b_right_m) / 2.0;
-    return mass_kg * (half_width * half_width + h_m * h_m) / 3.0;
+    return block::uniform_inertia_cg_kgm2(mass_kg, (g.b_left_m + g.b_right_m) / 2.0, h_m);
 }
 
 void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assumptions) {

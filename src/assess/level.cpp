@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "assess/verdict.hpp"
+#include "core/contract.hpp"
 #include "core/measures.hpp"
 #include "core/statistics.hpp"
 #include "core/units.hpp"
@@ -23,22 +24,7 @@ namespace freestand::assess {
 
 namespace {
 
-// RG 1.60 tabulates these dampings (METHODS.md s.8).
-constexpr std::array<double, 5> rg160_dampings{0.005, 0.02, 0.05, 0.07, 0.10};
 
-Mode to_mode(sliding::Mode m) {
-    switch (m) {
-        case sliding::Mode::rest:
-            return Mode::rest;
-        case sliding::Mode::slide:
-            return Mode::slide;
-        case sliding::Mode::rock:
-            return Mode::rock;
-        case sliding::Mode::slide_rock:
-            return Mode::slide_rock;
-    }
-    return Mode::rest;
-}
 
 spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
     const spectra::Spectrum h = spectra::rg160(pga_g, damping, false, design_frequencies());
@@ -209,7 +195,7 @@ Initiation classify(const block::Block& blk, double mu_s, const LevelDemand& dem
         sliding::classify_peak(blk, mu_s, dem.pga_of(d), dem.pga_v_g);
     const sliding::Initiation& gi = peak.governing();
     Initiation out;
-    out.mode = to_mode(gi.mode);
+    out.mode = gi.mode;
     out.a_ratio = gi.A;
     out.mu_s = mu_s;
     out.tan_alpha = gi.tan_alpha;
@@ -272,8 +258,8 @@ namespace {
 // The RG 1.60 demand of a level.
 LevelDemand rg160_level_demand(const Site& site, double pga_g) {
     std::vector<spectra::Spectrum> damped;
-    damped.reserve(rg160_dampings.size());
-    for (double d : rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
+    damped.reserve(spectra::rg160_dampings.size());
+    for (double d : spectra::rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
     return LevelDemand{pga_g,
                        site.vertical_ratio * pga_g,
                        spectra::rg160(pga_g, 0.05, false, design_frequencies()),
@@ -396,6 +382,8 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
             sim.governing_history = static_cast<int>(k);
         }
     }
+    FREESTAND_EXPECT(sim.histories > 0, "a simulated level has histories");
+    FREESTAND_EXPECT(sim.overturned <= sim.histories, "overturns are counted once per history");
     sim.slide_m = stats_of(slide);
     sim.slide_residual_m = stats_of(residual);
     sim.rock_over_alpha = stats_of(rock_over_alpha);

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "assess/case.hpp"
+#include "sliding/initiation.hpp"
 
 namespace freestand::assess {
 
-/// Initiating mode from rest (METHODS.md s.2).
-enum class Mode { rest, slide, rock, slide_rock };
-/// "rest", "slide", "rock", "slide-rock".
-const char* to_string(Mode m);
+/// Initiating mode from rest (METHODS.md s.2): the sliding stage's classification, one enum.
+using Mode = sliding::Mode;
+using sliding::to_string;
 
 /// Which model settled a verdict or a check (METHODS.md s.6).
 enum class Model {

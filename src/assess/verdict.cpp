@@ -9,20 +9,6 @@
 
 namespace freestand::assess {
 
-const char* to_string(Mode m) {
-    switch (m) {
-        case Mode::rest:
-            return "rest";
-        case Mode::slide:
-            return "slide";
-        case Mode::rock:
-            return "rock";
-        case Mode::slide_rock:
-            return "slide-rock";
-    }
-    return "rest";
-}
-
 const char* to_string(Model m) {
     switch (m) {
         case Model::static_initiation:

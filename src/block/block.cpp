@@ -7,6 +7,10 @@
 
 namespace freestand::block {
 
+double uniform_inertia_cg_kgm2(double mass_kg, double half_width_m, double cg_height_m) {
+    return mass_kg * (half_width_m * half_width_m + cg_height_m * cg_height_m) / 3.0;
+}
+
 Block Block::uniform(double half_width_m, double cg_height_m, double mass_kg) {
     require_positive(half_width_m, {"", 0, "b (half-width, m)"});
     require_positive(cg_height_m, {"", 0, "h (CG height, m)"});
@@ -16,7 +20,7 @@ Block Block::uniform(double half_width_m, double cg_height_m, double mass_kg) {
     blk.b_left_m = half_width_m;
     blk.b_right_m = half_width_m;
     blk.h_m = cg_height_m;
-    blk.inertia_cg_kgm2 = mass_kg * (half_width_m * half_width_m + cg_height_m * cg_height_m) / 3.0;
+    blk.inertia_cg_kgm2 = uniform_inertia_cg_kgm2(mass_kg, half_width_m, cg_height_m);
     return blk;
 }
 

@@ -9,6 +9,10 @@ enum class Edge { left, right };
 /// Sign convention of METHODS.md section 3: s = +1 right edge, -1 left edge.
 constexpr double edge_sign(Edge e) { return e == Edge::right ? 1.0 : -1.0; }
 
+/// I_c about the CG of a uniform rectangular block of half-width b and CG height h (height
+/// 2 h): M (b^2 + h^2) / 3, kg m^2 (METHODS.md s.1). The one copy of this formula.
+double uniform_inertia_cg_kgm2(double mass_kg, double half_width_m, double cg_height_m);
+
 /// Geometry and mass of a planar rigid block. Construct with uniform() or general(); both
 /// validate their inputs and throw InputError naming the offending field.
 struct Block {

@@ -96,7 +96,7 @@ block::Block parse_block(const po::variables_map& vm) {
                              "uniform-box default would be wrong");
     }
     const double ic = vm.count("inertia") ? vm["inertia"].as<double>()
-                                          : m * (b * b + h * h) / 3.0;  // uniform 2b x 2h
+                                          : block::uniform_inertia_cg_kgm2(m, b, h);
     require_positive(ic, {"", 0, "--inertia (kg m^2)"});
     return block::Block::general(b_left, b_right, cg_h, m, ic);
 }

@@ -1,5 +1,8 @@
 #pragma once
 /// Internal: state, excitation access and bookkeeping shared by the two integrators.
+#include <cmath>
+
+#include "core/contract.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -93,6 +96,15 @@ public:
     Recorder(const Geometry& g, const Options& o, double pga_mps2);
     /// Tracks peak slip and rotation of the state.
     void observe(const BlockState& st) {
+        // Contracts of every integrator's state at the points it reports.
+        FREESTAND_EXPECT(std::isfinite(st.u) && std::isfinite(st.v) && std::isfinite(st.th) &&
+                             std::isfinite(st.om),
+                         "integrator state is finite");
+        FREESTAND_EXPECT(st.s == 1 || st.s == -1, "active edge is +1 or -1");
+        FREESTAND_EXPECT(st.mode == Mode::flight || st.th >= -1e-9,
+                         "uplift angle is not negative in contact");
+        FREESTAND_EXPECT(st.mode != Mode::rest || (st.v == 0.0 && st.th == 0.0 && st.om == 0.0),
+                         "a block at rest does not move");
         if (st.mode == Mode::flight) {
             summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.fl.X));
             return;

@@ -43,7 +43,7 @@ Spectrum tabulate(double damping, std::string label, const std::vector<double>& 
 }
 
 // RG 1.60 Tables I and II (METHODS.md s.8): A / B / C / D per damping.
-constexpr std::array<double, 5> rg_damping{0.005, 0.02, 0.05, 0.07, 0.10};
+constexpr const std::array<double, 5>& rg_damping = rg160_dampings;
 constexpr std::array<Rg160Factors, 5> rg_horizontal{{{1.0, 4.96, 5.95, 3.20},
                                                      {1.0, 3.54, 4.25, 2.50},
                                                      {1.0, 2.61, 3.13, 2.05},

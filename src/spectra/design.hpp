@@ -1,10 +1,14 @@
 #pragma once
 /// Design spectra used as targets (METHODS.md s.8).
+#include <array>
 #include <vector>
 
 #include "spectra/spectrum.hpp"
 
 namespace freestand::spectra {
+
+/// The dampings RG 1.60 tabulates (METHODS.md s.8).
+inline constexpr std::array<double, 5> rg160_dampings{0.005, 0.02, 0.05, 0.07, 0.10};
 
 /// US NRC RG 1.60 at damping in {0.005, 0.02, 0.05, 0.07, 0.10}; other dampings in
 /// [0.005, 0.10] interpolate the factors on log damping (InputError outside). Horizontal or

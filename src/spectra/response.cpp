@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/contract.hpp"
 #include "core/errors.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
@@ -264,6 +265,7 @@ std::vector<Stepper> steppers_for(const core::Record& record, const std::vector<
                                   const std::vector<double>& frequency_hz,
                                   int min_steps_per_period) {
     check_inputs(record, dampings, frequency_hz);
+    FREESTAND_EXPECT(min_steps_per_period >= 0, "0 (one step per sample) or more sub-steps per period");
     std::vector<Stepper> steppers;
     steppers.reserve(dampings.size() * frequency_hz.size());
     for (double zeta : dampings)

@@ -1,0 +1,24 @@
+// Debug-only invariant checks (core/contract.hpp): a violated contract aborts, naming itself.
+#define FREESTAND_CHECK_CONTRACTS
+#include "core/contract.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
+
+TEST_CASE("a violated contract aborts; a kept one does nothing", "[core][contract]") {
+    FREESTAND_EXPECT(1 + 1 == 2, "arithmetic");
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        FREESTAND_EXPECT(1 + 1 == 3, "arithmetic");
+        std::_Exit(0);
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == SIGABRT);
+}
