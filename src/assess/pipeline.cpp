@@ -320,7 +320,7 @@ Upgrade search_materials(const Case& c) {
 }
 
 Case with_pga_levels(Case c, const std::vector<double>& pga_g) {
-    const SourceLocation where{"", 0, "--pga"};
+    const SourceLocation where{"", 0, "pga_levels"};
     if (pga_g.empty()) throw InputError(where, "expected at least one PGA level");
     for (std::size_t i = 0; i < pga_g.size(); ++i) {
         require_in_range(pga_g[i], 0.0, 3.0, where, false, true);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/flag_names.hpp"
 #include "core/errors.hpp"
 
 namespace freestand::cli {
@@ -54,6 +55,10 @@ int main(int argc, char** argv) {
     }
     try {
         return it->second.run(std::vector<std::string>(all.begin() + 1, all.end()));
+    } catch (const InputError& e) {
+        std::cerr << "freestand " << all[0] << ": error: " << cli::on_command_line(e).what()
+                  << "\n";
+        return static_cast<int>(e.code());
     } catch (const Error& e) {
         std::cerr << "freestand " << all[0] << ": error: " << e.what() << "\n";
         return static_cast<int>(e.code());

@@ -40,12 +40,18 @@ std::string format_location(const SourceLocation& where, const std::string& mess
 class InputError : public Error {
 public:
     InputError(SourceLocation where, const std::string& message)
-        : Error(ExitCode::input, format_location(where, message)), where_(std::move(where)) {}
-    explicit InputError(const std::string& message) : Error(ExitCode::input, message) {}
+        : Error(ExitCode::input, format_location(where, message)),
+          where_(std::move(where)),
+          message_(message) {}
+    explicit InputError(const std::string& message)
+        : Error(ExitCode::input, message), message_(message) {}
     const SourceLocation& where() const noexcept { return where_; }
+    /// The message without its location.
+    const std::string& message() const noexcept { return message_; }
 
 private:
     SourceLocation where_;
+    std::string message_;
 };
 
 /// Bad command line (unknown option, missing argument).

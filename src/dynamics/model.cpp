@@ -36,25 +36,25 @@ const char* overturn_criterion_name(OverturnCriterion criterion) {
 BlockModel make_block_model(const block::Block& block, double mu_s, std::optional<double> mu_k,
                             std::optional<double> restitution, std::optional<double> top_height_m) {
     if (!std::isfinite(mu_s) || mu_s < 0.0)
-        throw InputError({"", 0, "--mu"}, fmt::format("static friction must be >= 0; got {}", mu_s));
+        throw InputError({"", 0, "mu_s"}, fmt::format("static friction must be >= 0; got {}", mu_s));
     BlockModel m;
     m.block = block;
     m.mu_s = mu_s;
     m.mu_k = mu_k.value_or(mu_s);
     if (!std::isfinite(m.mu_k) || m.mu_k < 0.0 || m.mu_k > mu_s)
-        throw InputError({"", 0, "--mu-k"},
+        throw InputError({"", 0, "mu_k"},
                          fmt::format("kinetic friction must be in [0, mu_s = {}]; got {}", mu_s,
                                      m.mu_k));
     if (restitution) {
         const double r = *restitution;
         if (!std::isfinite(r) || r < 0.0 || r > 1.0)
-            throw InputError({"", 0, "--restitution"},
+            throw InputError({"", 0, "restitution"},
                              fmt::format("restitution must be in [0, 1]; got {}", r));
     }
     m.restitution = restitution;
     m.top_height_m = top_height_m.value_or(2.0 * block.h_m);
     if (!std::isfinite(m.top_height_m) || m.top_height_m < block.h_m)
-        throw InputError({"", 0, "--top"},
+        throw InputError({"", 0, "top_height_m"},
                          fmt::format("top height must be >= the CG height {} m; got {}", block.h_m,
                                      m.top_height_m));
     return m;
@@ -110,20 +110,20 @@ Excitation excitation_from_record(const core::Record& horizontal, double scale,
 
 Excitation sine_excitation(const SineSpec& spec) {
     if (!std::isfinite(spec.amplitude_g) || spec.amplitude_g < 0.0)
-        throw InputError({"", 0, "--sine amplitude"},
+        throw InputError({"", 0, "sine.amplitude_g"},
                          fmt::format("must be >= 0 g; got {}", spec.amplitude_g));
-    require_positive(spec.frequency_hz, {"", 0, "--sine frequency (Hz)"});
-    require_positive(spec.duration_s, {"", 0, "--sine duration (s)"});
+    require_positive(spec.frequency_hz, {"", 0, "sine.frequency_hz"});
+    require_positive(spec.duration_s, {"", 0, "sine.duration_s"});
     if (!std::isfinite(spec.ramp_s) || spec.ramp_s < 0.0)
-        throw InputError({"", 0, "--sine ramp"}, fmt::format("must be >= 0 s; got {}", spec.ramp_s));
-    if (spec.dt_s != 0.0) require_positive(spec.dt_s, {"", 0, "--sine dt (s)"});
+        throw InputError({"", 0, "sine.ramp_s"}, fmt::format("must be >= 0 s; got {}", spec.ramp_s));
+    if (spec.dt_s != 0.0) require_positive(spec.dt_s, {"", 0, "sine.dt_s"});
     const double dt_target =
         spec.dt_s > 0.0 ? spec.dt_s : std::min(0.005, 1.0 / (400.0 * spec.frequency_hz));
     core::limits::require_within(spec.frequency_hz, core::limits::max_frequency_hz,
-                                 {"", 0, "--sine frequency (Hz)"}, "the sine's frequency");
+                                 {"", 0, "sine.frequency_hz"}, "the sine's frequency");
     const double steps = std::ceil(spec.duration_s / dt_target - 1e-9);
     core::limits::require_within(steps + 1.0, core::limits::max_samples,
-                                 {"", 0, "--sine duration (s)"},
+                                 {"", 0, "sine.duration_s"},
                                  "the sine's sampling (duration / step)");
     Excitation e;
     e.label = fmt::format("sine {} g, {} Hz, {} s", spec.amplitude_g, spec.frequency_hz,

@@ -29,7 +29,7 @@ SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
         excitation.vertical_mps2.size() != excitation.horizontal_mps2.size())
         throw InputError({"", 0, "excitation vertical_mps2"},
                          "must be empty or as long as the horizontal samples");
-    require_positive(options.cd_dt_s, {"", 0, "--dt"});
+    require_positive(options.cd_dt_s, {"", 0, "cd_dt_s"});
     require_positive(options.rel_tol, {"", 0, "rel_tol"});
     require_positive(options.abs_tol, {"", 0, "abs_tol"});
     // h_cap_ in the engine never exceeds 1 s.
@@ -43,7 +43,7 @@ SimulationResult simulate(const BlockModel& model, const Excitation& excitation,
             excitation.dt_s * static_cast<double>(excitation.horizontal_mps2.size()) +
             options.tail_s;
         core::limits::require_within(duration_s / options.cd_dt_s, core::limits::max_fixed_steps,
-                                     {"", 0, "--dt"}, "central difference (duration / dt)");
+                                     {"", 0, "cd_dt_s"}, "central difference (duration / dt)");
     }
     const auto start = std::chrono::steady_clock::now();
     const detail::Geometry g = detail::make_geometry(model);

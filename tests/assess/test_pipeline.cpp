@@ -72,7 +72,7 @@ TEST_CASE("PGA override is validated", "[assess][pipeline]") {
         with_pga_levels(c, {0.0});
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()) == "--pga: value 0 is out of range; expected (0, 3]");
+        CHECK(std::string(e.what()) == "pga_levels: value 0 is out of range; expected (0, 3]");
     }
     CHECK_THROWS_AS(with_pga_levels(c, {}), InputError);
 }
@@ -168,7 +168,7 @@ TEST_CASE("a level whose vertical PGA reaches 1 g is refused at pga_g", "[assess
         with_pga_levels(c, {0.5, 1.5});
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()).find("--pga: PGA 1.5 g with a vertical/horizontal ratio of "
+        CHECK(std::string(e.what()).find("pga_levels: PGA 1.5 g with a vertical/horizontal ratio of "
                                          "0.6667 gives a vertical PGA of 1 g") != std::string::npos);
     }
     CHECK_NOTHROW(with_pga_levels(c, {1.4}));

@@ -66,3 +66,12 @@ TEST_CASE("a record time step outside [1e-6, 1] s is an input error", "[cli][lim
     CHECK_THAT(r.err, Contains("time step 1e+300 s is outside [1e-06, 1] s (README, Limits)"));
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("library parameters are shown as the options the user typed", "[cli][hardening]") {
+    // Issue 16: the dynamics library names cd_dt_s, sine.ramp_s and mu_s; the command line maps
+    // them to --dt, --sine and --mu in one place (cli/flag_names.hpp).
+    CHECK_THAT(run_cli("simulate " + block + "--sine 0.5g,2Hz,10s --integrator cd --dt -1").err,
+               Contains("simulate: error: --dt: value -1 must be a finite number > 0"));
+    CHECK_THAT(run_cli("simulate --block b=0.15,h=0.6,m=38 --mu -0.1 --sine 0.5g,2Hz,10s").err,
+               Contains("error: --mu: static friction must be >= 0; got -0.1"));
+}

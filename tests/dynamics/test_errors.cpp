@@ -10,15 +10,15 @@ using Catch::Matchers::Message;
 
 TEST_CASE("sine_excitation rejects bad parameters", "[dynamics][errors]") {
     CHECK_THROWS_MATCHES(dynamics::sine_excitation({-0.1, 2.0, 5.0, 0.0, 0.0}), InputError,
-                         Message("--sine amplitude: must be >= 0 g; got -0.1"));
+                         Message("sine.amplitude_g: must be >= 0 g; got -0.1"));
     CHECK_THROWS_MATCHES(dynamics::sine_excitation({0.5, 0.0, 5.0, 0.0, 0.0}), InputError,
-                         Message("--sine frequency (Hz): value 0 must be a finite number > 0"));
+                         Message("sine.frequency_hz: value 0 must be a finite number > 0"));
     CHECK_THROWS_MATCHES(dynamics::sine_excitation({0.5, 2.0, -1.0, 0.0, 0.0}), InputError,
-                         Message("--sine duration (s): value -1 must be a finite number > 0"));
+                         Message("sine.duration_s: value -1 must be a finite number > 0"));
     CHECK_THROWS_MATCHES(dynamics::sine_excitation({0.5, 2.0, 5.0, -1.0, 0.0}), InputError,
-                         Message("--sine ramp: must be >= 0 s; got -1"));
+                         Message("sine.ramp_s: must be >= 0 s; got -1"));
     CHECK_THROWS_MATCHES(dynamics::sine_excitation({0.5, 2.0, 5.0, 0.0, -0.01}), InputError,
-                         Message("--sine dt (s): value -0.01 must be a finite number > 0"));
+                         Message("sine.dt_s: value -0.01 must be a finite number > 0"));
 }
 
 TEST_CASE("excitation_from_record rejects a non-finite scale", "[dynamics][errors]") {
@@ -39,7 +39,7 @@ TEST_CASE("simulate rejects inconsistent inputs and settings", "[dynamics][error
     e = test::samples(0.01, {0.0, 1.0});
     auto o = test::opts(dynamics::Integrator::central_difference, -1e-4);
     CHECK_THROWS_MATCHES(dynamics::simulate(model, e, o), InputError,
-                         Message("--dt: value -0.0001 must be a finite number > 0"));
+                         Message("cd_dt_s: value -0.0001 must be a finite number > 0"));
     o = test::opts();
     o.rel_tol = 0.0;
     CHECK_THROWS_MATCHES(dynamics::simulate(model, e, o), InputError,
@@ -54,5 +54,5 @@ TEST_CASE("simulate rejects inconsistent inputs and settings", "[dynamics][error
     CHECK_THROWS_MATCHES(dynamics::make_block_model(block::Block::uniform(0.15, 0.6, 38.0), 0.3,
                                                     std::nullopt, std::nullopt, 0.5),
                          InputError,
-                         Message("--top: top height must be >= the CG height 0.6 m; got 0.5"));
+                         Message("top_height_m: top height must be >= the CG height 0.6 m; got 0.5"));
 }

@@ -143,14 +143,14 @@ TEST_CASE("vertical acceleration beyond g for an instant: free flight and landin
 TEST_CASE("bad model values name the option", "[dynamics][errors]") {
     const auto blk = block::Block::uniform(0.15, 0.6, 38.0);
     CHECK_THROWS_MATCHES(dynamics::make_block_model(blk, -0.1), InputError,
-                         Catch::Matchers::Message("--mu: static friction must be >= 0; got -0.1"));
+                         Catch::Matchers::Message("mu_s: static friction must be >= 0; got -0.1"));
     CHECK_THROWS_MATCHES(dynamics::make_block_model(blk, 0.3, 0.4), InputError,
-                         Catch::Matchers::Message("--mu-k: kinetic friction must be in [0, mu_s = 0.3]; got 0.4"));
+                         Catch::Matchers::Message("mu_k: kinetic friction must be in [0, mu_s = 0.3]; got 0.4"));
     CHECK_THROWS_MATCHES(dynamics::make_block_model(blk, 0.3, std::nullopt, 1.2), InputError,
-                         Catch::Matchers::Message("--restitution: restitution must be in [0, 1]; got 1.2"));
+                         Catch::Matchers::Message("restitution: restitution must be in [0, 1]; got 1.2"));
     CHECK_THROWS_AS(dynamics::sine_excitation({0.5, 0.0, 5.0, 0.0, 0.0}), InputError);
     CHECK_THROWS_WITH(dynamics::sine_excitation({0.5, 2.0, 5.0, -1.0, 0.0}),
-                      Catch::Matchers::Contains("--sine ramp"));
+                      Catch::Matchers::Contains("sine.ramp_s"));
 }
 
 TEST_CASE("coarse records (dt 0.02 s and 0.04 s) run to the end and agree with central difference",

@@ -1,0 +1,40 @@
+#pragma once
+/// The one place that maps a library parameter named in an InputError to the command-line
+/// option a user typed (issue 16: libraries name parameters, not flags).
+#include <map>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace freestand::cli {
+
+/// Library parameter -> command-line option.
+inline const std::map<std::string, std::string>& flag_names() {
+    static const std::map<std::string, std::string> names{
+        {"mu_s", "--mu"},
+        {"mu_k", "--mu-k"},
+        {"restitution", "--restitution"},
+        {"top_height_m", "--top"},
+        {"sine.amplitude_g", "--sine amplitude (g)"},
+        {"sine.frequency_hz", "--sine frequency (Hz)"},
+        {"sine.duration_s", "--sine duration (s)"},
+        {"sine.ramp_s", "--sine ramp (s)"},
+        {"sine.dt_s", "--sine dt (s)"},
+        {"cd_dt_s", "--dt"},
+        {"pga_levels", "--pga"},
+        {"frequency_hz", "--frequencies"},
+    };
+    return names;
+}
+
+/// The error as the command line should show it: a location-less parameter renamed to its
+/// option; anything else unchanged.
+inline InputError on_command_line(const InputError& e) {
+    const SourceLocation& w = e.where();
+    if (!w.file.empty() || w.line != 0) return e;
+    const auto it = flag_names().find(w.field);
+    if (it == flag_names().end()) return e;
+    return InputError(SourceLocation{"", 0, it->second}, e.message());
+}
+
+}  // namespace freestand::cli
