@@ -60,12 +60,10 @@ int run_classify(const std::vector<std::string>& args) {
         ("json", "print JSON");
     const auto vm = parse_options("classify", "--block b=..,h=.. --mu MU --a-g A [options]", desc, args);
     if (!vm) return 0;
-    const auto box = parse_key_values((*vm)["block"].as<std::string>(), "--block", {"b", "h", "m"});
-    const auto cg = vm->count("cg") ? parse_key_values((*vm)["cg"].as<std::string>(), "--cg", {"x", "h"})
-                                    : std::map<std::string, double>{};
     std::optional<double> inertia;
     if (vm->count("inertia")) inertia = parse_double((*vm)["inertia"].as<std::string>(), "--inertia");
-    const block::Block blk = sliding::make_block(sliding::box_spec(box, cg, inertia));
+    const block::Block blk = block_from_options((*vm)["block"].as<std::string>(),
+                                                opt_string(*vm, "cg"), inertia);
     const double mu = parse_double((*vm)["mu"].as<std::string>(), "--mu");
     const double a_g = parse_double((*vm)["a-g"].as<std::string>(), "--a-g");
     const double av_g = parse_double((*vm)["av-g"].as<std::string>(), "--av-g");

@@ -207,10 +207,8 @@ int run_rock(const std::vector<std::string>& args) {
     const auto vm = parse_options("rock", "--block b=..,h=..[,m=..] [--spectrum F.csv] [options]", desc,
                                   args);
     if (!vm) return 0;
-    const auto box = parse_key_values((*vm)["block"].as<std::string>(), "--block", {"b", "h", "m"});
-    const auto cg = vm->count("cg") ? parse_key_values((*vm)["cg"].as<std::string>(), "--cg", {"x", "h"})
-                                    : std::map<std::string, double>{};
-    const block::Block blk = sliding::make_block(sliding::box_spec(box, cg, opt_number(*vm, "inertia")));
+    const block::Block blk = block_from_options((*vm)["block"].as<std::string>(),
+                                                opt_string(*vm, "cg"), opt_number(*vm, "inertia"));
     const rocking::RockingInput in = read_input(*vm);
     const rocking::RockingChecks r = rocking::rocking_checks(blk, in);
     if (vm->count("json"))

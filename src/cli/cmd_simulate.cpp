@@ -56,50 +56,6 @@ dynamics::Excitation parse_motion(const std::string& text, double scale) {
     return dynamics::excitation_from_record(h, scale, &v, scale);
 }
 
-block::Block parse_block(const po::variables_map& vm) {
-    const auto kv = parse_key_values(vm["block"].as<std::string>(), "--block", {"b", "h", "m"});
-    for (const char* key : {"b", "h", "m"}) {
-        if (!kv.count(key)) throw UsageError(fmt::format("--block: missing key \"{}\"", key));
-        require_positive(kv.at(key), {"", 0, fmt::format("--block {}", key)});
-    }
-    const double b = kv.at("b"), h = kv.at("h"), m = kv.at("m");
-    if (!vm.count("cg") && !vm.count("inertia")) return block::Block::uniform(b, h, m);
-    // General block: the base is 2b wide; --cg x,y puts the CG x from the left edge, y up (the
-    // form of issue 5); --cg x=..,h=.. the CG x right of the base's centre and h up, as
-    // `classify` and `rock` take it.
-    double b_left = b, b_right = b, cg_h = h;
-    if (vm.count("cg")) {
-        const std::string text = vm["cg"].as<std::string>();
-        if (text.find('=') != std::string::npos) {
-            const auto cg = parse_key_values(text, "--cg", {"x", "h"});
-            if (cg.count("x")) {
-                const double x = cg.at("x");
-                require_in_range(x, -b, b, {"", 0, "--cg x (right of the centre, m)"}, false, false);
-                b_left = b + x;
-                b_right = b - x;
-            }
-            if (cg.count("h")) cg_h = cg.at("h");
-            require_positive(cg_h, {"", 0, "--cg h (height, m)"});
-        } else {
-            const auto xy = parse_double_list(text, "--cg");
-            if (xy.size() != 2) throw UsageError("--cg: expected x,y or x=..,h=.. (m)");
-            require_in_range(xy[0], 0.0, 2.0 * b, {"", 0, "--cg x (from the left edge, m)"}, false, false);
-            require_positive(xy[1], {"", 0, "--cg y (height, m)"});
-            b_left = xy[0];
-            b_right = 2.0 * b - xy[0];
-            cg_h = xy[1];
-        }
-        // As classify and rock: the uniform box's I_c belongs to its centre, not to a moved CG.
-        if (!vm.count("inertia"))
-            throw InputError({"", 0, "--inertia"},
-                             "a CG given by --cg needs the inertia I_c about it (kg m^2); a "
-                             "uniform-box default would be wrong");
-    }
-    const double ic = vm.count("inertia") ? vm["inertia"].as<double>()
-                                          : block::uniform_inertia_cg_kgm2(m, b, h);
-    require_positive(ic, {"", 0, "--inertia (kg m^2)"});
-    return block::Block::general(b_left, b_right, cg_h, m, ic);
-}
 
 std::string series_csv(const dynamics::SimulationResult& r, const std::string& label) {
     std::string out = fmt::format(
@@ -193,7 +149,10 @@ int run(const std::vector<std::string>& args) {
     if (!vm) return 0;
     if (vm->count("motion") == vm->count("sine"))
         throw UsageError("simulate: give exactly one of --motion and --sine");
-    const block::Block blk = parse_block(*vm);
+    std::optional<double> inertia;
+    if (vm->count("inertia")) inertia = (*vm)["inertia"].as<double>();
+    const block::Block blk = block_from_options((*vm)["block"].as<std::string>(),
+                                                opt_string(*vm, "cg"), inertia);
     const double mu = (*vm)["mu"].as<double>();
     std::optional<double> mu_k, r;
     if (vm->count("mu-k")) mu_k = (*vm)["mu-k"].as<double>();

@@ -23,6 +23,20 @@ inline const std::map<std::string, std::string>& flag_names() {
         {"cd_dt_s", "--dt"},
         {"pga_levels", "--pga"},
         {"frequency_hz", "--frequencies"},
+        // block::Block and sliding::box_spec, behind --block, --cg and --inertia
+        {"b (half-width, m)", "--block b (half-width, m)"},
+        {"h (half-height, m)", "--block h (half-height, m)"},
+        {"h (CG height, m)", "--block h (CG height, m)"},
+        {"m (mass, kg)", "--block m (mass, kg)"},
+        {"m", "--block m (mass, kg)"},
+        {"block b", "--block b"},
+        {"block h", "--block h"},
+        {"cg x", "--cg x (right of the base's centre, m)"},
+        {"cg h", "--cg h (height, m)"},
+        {"inertia", "--inertia"},
+        {"I_c (inertia about CG, kg m^2)", "--inertia (I_c about the CG, kg m^2)"},
+        {"b_left (CG to left edge, m)", "--cg (CG to the left edge, m)"},
+        {"b_right (CG to right edge, m)", "--cg (CG to the right edge, m)"},
     };
     return names;
 }

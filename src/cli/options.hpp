@@ -4,8 +4,11 @@
 #include <boost/program_options.hpp>
 #include <map>
 #include <optional>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "block/block.hpp"
 
 namespace freestand::cli {
 
@@ -27,5 +30,18 @@ double parse_double(const std::string& text, const std::string& option);
 /// "b=0.15,h=0.6,m=38" -> {{"b",0.15},{"h",0.6},{"m",38}}; keys must be in allowed.
 std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,
                                                const std::vector<std::string>& allowed);
+
+/// The option's text, when given.
+inline std::optional<std::string> opt_string(const po::variables_map& vm, const char* name) {
+    if (!vm.count(name)) return std::nullopt;
+    return vm[name].as<std::string>();
+}
+
+/// The block of --block b=HALF_WIDTH,h=HALF_HEIGHT[,m=KG], --cg and --inertia, one parser for
+/// classify, rock and simulate (sliding::box_spec / make_block: a uniform box unless a CG or an
+/// inertia is given; m defaults to 1 kg). --cg is x=OFFSET,h=HEIGHT (x right of the base's
+/// centre) or the positional x,y (x from the left edge, y up). InputError naming the field.
+block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
+                                std::optional<double> inertia_cg_kgm2);
 
 }  // namespace freestand::cli
