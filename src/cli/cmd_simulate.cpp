@@ -27,13 +27,7 @@ double with_suffix(std::string text, const std::string& suffix, const std::strin
 }
 
 dynamics::Excitation parse_sine(const std::string& text) {
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    for (std::size_t c = text.find(','); ; c = text.find(',', start)) {
-        parts.push_back(text.substr(start, c == std::string::npos ? std::string::npos : c - start));
-        if (c == std::string::npos) break;
-        start = c + 1;
-    }
+    const std::vector<std::string> parts = split_list(text);
     if (parts.size() < 3 || parts.size() > 4)
         throw UsageError(fmt::format("--sine: expected A g,f Hz,T s[,ramp=t s]; got \"{}\"", text));
     dynamics::SineSpec spec;
@@ -49,10 +43,12 @@ dynamics::Excitation parse_sine(const std::string& text) {
 }
 
 dynamics::Excitation parse_motion(const std::string& text, double scale) {
-    const std::size_t comma = text.find(',');
-    const core::Record h = core::read_record(text.substr(0, comma));
-    if (comma == std::string::npos) return dynamics::excitation_from_record(h, scale);
-    const core::Record v = core::read_record(text.substr(comma + 1));
+    const std::vector<std::string> files = split_list(text);
+    if (files.size() > 2 || files[0].empty() || (files.size() == 2 && files[1].empty()))
+        throw UsageError(fmt::format("--motion: expected FILE[,VERTICAL_FILE]; got \"{}\"", text));
+    const core::Record h = core::read_record(files[0]);
+    if (files.size() == 1) return dynamics::excitation_from_record(h, scale);
+    const core::Record v = core::read_record(files[1]);
     return dynamics::excitation_from_record(h, scale, &v, scale);
 }
 

@@ -42,27 +42,29 @@ double parse_double(const std::string& text, const std::string& option) {
     return value;
 }
 
-std::vector<double> parse_double_list(const std::string& text, const std::string& option) {
-    std::vector<double> values;
+std::vector<std::string> split_list(const std::string& text) {
+    std::vector<std::string> items;
     std::size_t start = 0;
-    while (start <= text.size()) {
+    while (true) {
         const std::size_t comma = text.find(',', start);
-        const std::size_t end = comma == std::string::npos ? text.size() : comma;
-        values.push_back(parse_double(text.substr(start, end - start), option));
-        if (comma == std::string::npos) break;
+        items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos
+                                                                       : comma - start));
+        if (comma == std::string::npos) return items;
         start = comma + 1;
     }
+}
+
+std::vector<double> parse_double_list(const std::string& text, const std::string& option) {
+    std::vector<double> values;
+    for (const std::string& item : split_list(text)) values.push_back(parse_double(item, option));
     return values;
 }
 
 std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,
                                                const std::vector<std::string>& allowed) {
     std::map<std::string, double> out;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t comma = text.find(',', start);
-        const std::size_t end = comma == std::string::npos ? text.size() : comma;
-        const std::string item = text.substr(start, end - start);
+    if (text.empty()) return out;
+    for (const std::string& item : split_list(text)) {
         const std::size_t eq = item.find('=');
         if (eq == std::string::npos)
             throw UsageError(fmt::format("{}: expected key=value; got \"{}\"", option, item));
@@ -74,8 +76,6 @@ std::map<std::string, double> parse_key_values(const std::string& text, const st
                                          fmt::join(allowed, ", ")));
         if (out.count(key)) throw UsageError(fmt::format("{}: key \"{}\" given twice", option, key));
         out[key] = parse_double(item.substr(eq + 1), option + " " + key);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
     }
     return out;
 }

@@ -21,6 +21,10 @@ std::optional<po::variables_map> parse_options(const std::string& command, const
                                                const std::vector<std::string>& args,
                                                const std::vector<std::string>& positional = {});
 
+/// "a,b,,c" -> {"a", "b", "", "c"}: the one comma splitter of option values; empty items are
+/// kept so that each caller can name them in its error.
+std::vector<std::string> split_list(const std::string& text);
+
 /// "0.05,0.1" -> {0.05, 0.1}; throws UsageError naming option on a bad number.
 std::vector<double> parse_double_list(const std::string& text, const std::string& option);
 

@@ -81,18 +81,13 @@ inline std::vector<double> frequencies_from(const po::variables_map& vm) {
 inline std::vector<std::filesystem::path> spectrum_paths(const std::string& text,
                                                          const std::string& option) {
     std::vector<std::filesystem::path> out;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = text.find(',', start);
-        const std::string item =
-            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    for (const std::string& item : split_list(text)) {
         if (item.empty())
             throw UsageError(fmt::format("{}: empty file name in \"{}\"; expected FILE[,FILE...]",
                                          option, text));
         out.emplace_back(item);
-        if (comma == std::string::npos) return out;
-        start = comma + 1;
     }
+    return out;
 }
 
 /// Column/key name of a damping: shortest round-trip text, e.g. 0.05 -> "0.05".
