@@ -260,6 +260,117 @@ public:
     /// Options::max_contact_step_s, the samples inside them evaluated on the polynomial.
     /// next_sample() is the first sample not recorded (the caller records the one at the time
     /// reached if it is a sample time).
+    // The events a contact step watches, in the order ties are resolved: impact, overturn,
+    // lift-off, then friction failure (rock) or slip stop (slide-rock), and after the
+    // excitation the pass beyond alpha.
+    std::array<Ev, 5> contact_events(bool tail) const {
+        std::array<Ev, 5> events = {Ev::impact, Ev::overturn, Ev::lift, Ev::none, Ev::none};
+        if (st_.mode == Mode::rock) {
+            events[3] = Ev::friction;
+            if (tail) events[4] = Ev::past_alpha;
+        } else {
+            events[3] = Ev::stop;
+        }
+        return events;
+    }
+
+    // The Taylor stepper's start state on the active edge ia, phi0 = alpha - theta.
+    ContactStart contact_start(std::size_t ia, double phi0) const {
+        ContactStart x0;
+        x0.mode = st_.mode;
+        x0.s = st_.s;
+        x0.sigma = st_.sigma;
+        x0.sn = st_.th == 0.0 ? g_.sin_alpha[ia] : std::sin(phi0);  // after an impact: theta = 0
+        x0.c = st_.th == 0.0 ? g_.cos_alpha[ia] : std::cos(phi0);
+        return x0;
+    }
+
+    // The step to try from t towards stop_at: the longest contact step and the last step's cap.
+    double contact_step_request(double t, double stop_at) const {
+        double h = std::min({stop_at - t, o_.max_contact_step_s, h_cap_});
+        // Sample times are k dt: a segment can be an ulp longer than dt (or the longest step), and a
+        // step an ulp short of the sample would leave a step of ~1e-15 s after it. An ulp of
+        // t grows with t (7e-15 s at 32 s), so the snap is a few ulps of t as well.
+        if (stop_at - (t + h) < std::max(1e-12 * h, 8.0 * eps * stop_at)) h = stop_at - t;
+        return h;
+    }
+
+    // Peak rotation inside a step (theta' from + to -): Newton on theta' with theta'' from the
+    // same polynomial; recorded unless an event ends the step before it.
+    void observe_peak_in_step(const ContactSeries& S, double t, double t1, double om0,
+                              double om1, Ev first, double t_ev) {
+        if (!(om0 > 0.0 && om1 <= 0.0)) return;
+        auto w = [&](double tt) {
+            return std::pair<double, double>{S.omega(tt - t), S.theta_dd(tt - t)};
+        };
+        // theta is stationary there: an error dt in the time moves it by theta'' dt^2 / 2,
+        // ~1e-16 rad for dt = 1e-6 of the step.
+        const double tp = newton_root(w, t, t1, om0, om1, 1e-6 * (t1 - t));
+        if (first == Ev::none || tp <= t_ev) {
+            BlockState peak = st_;
+            peak.th = S.theta(tp - t);
+            rec_.observe(peak);
+        }
+    }
+
+    struct StepEvent {
+        Ev first = Ev::none;
+        double t = 0.0;
+    };
+
+    // The first event of `events` inside the step [t, t1] (or none, at t1): the step-end values
+    // flag whether any can have happened; only then is each located on the step's polynomials.
+    template <class Dense, class AccelOnStep>
+    StepEvent first_contact_event(const std::array<Ev, 5>& events, const ContactSeries& S,
+                                  double t, double t1, double h, const Vec& x, const Vec& xn,
+                                  const Accel& acc0, const Accel& acc1, double alpha,
+                                  const Dense& dense, const AccelOnStep& accel_on_step) const {
+        Ev first = Ev::none;
+        double t_ev = t1;
+        // The event functions of `events` at the step end, written out: on a routine step
+        // none is negative and the loop below is skipped.
+        // sigma u' of a slide-rock step, whose zero is the stop event.
+        std::array<double, taylor_max_order + 1> sv;
+        Poly slip_poly{sv.data(), 0};
+        if (st_.mode == Mode::slide_rock) {
+            const double sig = static_cast<double>(st_.sigma);
+            slip_poly.n = S.nu - 1;
+            for (int j = 0; j < S.nu; ++j)
+                sv[static_cast<std::size_t>(j)] = sig * (j + 1) * S.u[static_cast<std::size_t>(j + 1)];
+        }
+        // Whether theta (impact) or sigma u' (slip stop) may drop below 0 in the step; see
+        // first_zero.
+        auto may_cross = [&](Poly f, double f1) {
+            if (f.a[0] > 0.0) return !stays_positive(f, h);
+            return f1 < 0.0 || (f.n >= 1 && f.a[1] > 0.0 && !stays_positive(f, h));
+        };
+        const double sig = static_cast<double>(st_.sigma);
+        const bool flagged =
+            may_cross(S.theta_poly(), xn[2]) || xn[2] > half_pi || acc1.N < 0.0 ||
+            (st_.mode == Mode::rock ? g_.mu_s * acc1.N < std::abs(acc1.F)
+                                    : may_cross(slip_poly, sig * xn[1])) ||
+            (events[4] == Ev::past_alpha && xn[2] > alpha);
+        for (Ev e : events) {
+            if (!flagged) break;
+            if (e == Ev::none) continue;
+            double te;
+            if (e == Ev::impact || e == Ev::stop) {
+                te = first_zero(e, e == Ev::impact ? S.theta_poly() : slip_poly, t, t1, h,
+                                dense, accel_on_step, S);
+                if (te < 0.0) continue;
+            } else {
+                const double v1 = event_value(e, xn, acc1);
+                if (!(v1 < 0.0)) continue;
+                te = locate_event(e, t, t1, event_value(e, x, acc0), v1, dense, accel_on_step, S);
+            }
+            if (te < t_ev || first == Ev::none) {
+                t_ev = te;
+                first = e;
+            }
+        }
+        return {first, t_ev};
+    }
+
     double advance_contact(std::size_t k, double t, double horizon) {
         next_sample_ = k + 1;
         const bool tail = t >= bm_.quiet_from_s();
@@ -268,21 +379,10 @@ public:
             rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
             return t;
         }
-        std::array<Ev, 5> events = {Ev::impact, Ev::overturn, Ev::lift, Ev::none, Ev::none};
-        if (st_.mode == Mode::rock) {
-            events[3] = Ev::friction;
-            if (tail) events[4] = Ev::past_alpha;
-        } else {
-            events[3] = Ev::stop;
-        }
-        ContactStart x0;
-        x0.mode = st_.mode;
-        x0.s = st_.s;
-        x0.sigma = st_.sigma;
+        const std::array<Ev, 5> events = contact_events(tail);
         const double alpha = g_.alpha[ia];
         double phi0 = alpha - st_.th;
-        x0.sn = st_.th == 0.0 ? g_.sin_alpha[ia] : std::sin(phi0);  // after an impact: theta = 0
-        x0.c = st_.th == 0.0 ? g_.cos_alpha[ia] : std::cos(phi0);
+        ContactStart x0 = contact_start(ia, phi0);
         std::size_t kseg = k;
         enter_segment(kseg);
         Accel acc0 = contact_accel(x0, x0.sn, x0.c, st_.om, seg_.at(t));
@@ -298,12 +398,8 @@ public:
             x0.ax1 = seg_.ax1;
             x0.G1 = seg_.G1;
             const double stop_at = tail ? horizon : std::min(tb_, horizon);
-            double h = std::min({stop_at - t, o_.max_contact_step_s, h_cap_});
-            // Sample times are k dt: a segment can be an ulp longer than dt (or the longest step), and a
-            // step an ulp short of the sample would leave a step of ~1e-15 s after it. An ulp of
-            // t grows with t (7e-15 s at 32 s), so the snap is a few ulps of t as well.
-            if (stop_at - (t + h) < std::max(1e-12 * h, 8.0 * eps * stop_at)) h = stop_at - t;
-            const double h_full = h;
+            const double h_full = contact_step_request(t, stop_at);
+            double h = h_full;
             h = taylor_contact_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_);
             // A tiny remainder up to a sample (an event an ulp before it) is stepped over; only
             // a step the tolerance itself cut below 1e-14 s means the integration is stuck.
@@ -328,64 +424,11 @@ public:
                 sin_cos_shift(x0.sn, x0.c, phi0, y[2] - x0.th, sn, c);
                 return contact_accel(x0, sn, c, y[3], seg_.at(tt));
             };
-            Ev first = Ev::none;
-            double t_ev = t1;
-            // The event functions of `events` at the step end, written out: on a routine step
-            // none is negative and the loop below is skipped.
-            // sigma u' of a slide-rock step, whose zero is the stop event.
-            std::array<double, taylor_max_order + 1> sv;
-            Poly slip_poly{sv.data(), 0};
-            if (st_.mode == Mode::slide_rock) {
-                const double sig = static_cast<double>(st_.sigma);
-                slip_poly.n = S.nu - 1;
-                for (int j = 0; j < S.nu; ++j)
-                    sv[static_cast<std::size_t>(j)] = sig * (j + 1) * S.u[static_cast<std::size_t>(j + 1)];
-            }
-            // Whether theta (impact) or sigma u' (slip stop) may drop below 0 in the step; see
-            // first_zero.
-            auto may_cross = [&](Poly f, double f1) {
-                if (f.a[0] > 0.0) return !stays_positive(f, h);
-                return f1 < 0.0 || (f.n >= 1 && f.a[1] > 0.0 && !stays_positive(f, h));
-            };
-            const double sig = static_cast<double>(st_.sigma);
-            const bool flagged =
-                may_cross(S.theta_poly(), xn[2]) || xn[2] > half_pi || acc1.N < 0.0 ||
-                (st_.mode == Mode::rock ? g_.mu_s * acc1.N < std::abs(acc1.F)
-                                        : may_cross(slip_poly, sig * xn[1])) ||
-                (events[4] == Ev::past_alpha && xn[2] > alpha);
-            for (Ev e : events) {
-                if (!flagged) break;
-                if (e == Ev::none) continue;
-                double te;
-                if (e == Ev::impact || e == Ev::stop) {
-                    te = first_zero(e, e == Ev::impact ? S.theta_poly() : slip_poly, t, t1, h,
-                                    dense, accel_on_step, S);
-                    if (te < 0.0) continue;
-                } else {
-                    const double v1 = event_value(e, xn, acc1);
-                    if (!(v1 < 0.0)) continue;
-                    te = locate_event(e, t, t1, event_value(e, x, acc0), v1, dense, accel_on_step, S);
-                }
-                if (te < t_ev || first == Ev::none) {
-                    t_ev = te;
-                    first = e;
-                }
-            }
-            // Peak rotation inside the step (theta' changes sign from + to -): Newton on theta',
-            // with theta'' from the same polynomial.
-            if (x[3] > 0.0 && xn[3] <= 0.0) {
-                auto w = [&](double tt) {
-                    return std::pair<double, double>{S.omega(tt - t), S.theta_dd(tt - t)};
-                };
-                // theta is stationary there: an error dt in the time moves it by theta'' dt^2 / 2,
-                // ~1e-16 rad for dt = 1e-6 of the step.
-                const double tp = newton_root(w, t, t1, x[3], xn[3], 1e-6 * (t1 - t));
-                if (first == Ev::none || tp <= t_ev) {
-                    BlockState peak = st_;
-                    peak.th = S.theta(tp - t);
-                    rec_.observe(peak);
-                }
-            }
+            const StepEvent ev = first_contact_event(events, S, t, t1, h, x, xn, acc0, acc1, alpha,
+                                                     dense, accel_on_step);
+            const Ev first = ev.first;
+            const double t_ev = ev.t;
+            observe_peak_in_step(S, t, t1, x[3], xn[3], first, t_ev);
             // Steps cross sample times only after the excitation.
             if (tail) record_samples(dense, first == Ev::none ? t1 : t_ev);
             if (first != Ev::none) {
