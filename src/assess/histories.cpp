@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "core/errors.hpp"
+#include "core/random.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
 #include "assess/level.hpp"
@@ -81,11 +82,8 @@ HistorySet generate_one(const Case& c, const motion::TargetSet& targets, std::si
 HistoryBank::HistoryBank(const Case& c) : case_(&c) {}
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
-    // splitmix64 (Steele, Lea & Flood 2014) of the pair.
-    std::uint64_t z = case_seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k + 1);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.
+    return core::splitmix64(case_seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k));
 }
 
 const std::vector<HistorySet>& HistoryBank::sets() {
