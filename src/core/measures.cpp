@@ -35,6 +35,14 @@ std::vector<double> displacement_m(const Record& record) {
     return cumulative_trapezoid(velocity_mps(record), record.dt_s);
 }
 
+std::vector<double> velocity_mps(const std::vector<double>& accel_mps2, double dt_s) {
+    return cumulative_trapezoid(accel_mps2, dt_s);
+}
+
+std::vector<double> displacement_m(const std::vector<double>& accel_mps2, double dt_s) {
+    return cumulative_trapezoid(cumulative_trapezoid(accel_mps2, dt_s), dt_s);
+}
+
 std::vector<double> arias_intensity_mps(const Record& record) {
     validate(record);
     std::vector<double> a2(record.size());

@@ -30,6 +30,11 @@ std::vector<double> velocity_mps(const Record& record);
 /// Ground displacement at each sample, m: d_0 = 0, d_i = d_{i-1} + dt (v_{i-1} + v_i) / 2.
 std::vector<double> displacement_m(const Record& record);
 
+/// The same trapezoidal integrals of bare samples (no validation: for the generator's inner
+/// loops, whose samples are finite by construction).
+std::vector<double> velocity_mps(const std::vector<double>& accel_mps2, double dt_s);
+std::vector<double> displacement_m(const std::vector<double>& accel_mps2, double dt_s);
+
 /// Cumulative Arias intensity at each sample, m/s: I_0 = 0,
 /// I_i = I_{i-1} + pi / (2 g) * dt (a_{i-1}^2 + a_i^2) / 2. The last value is I_a.
 std::vector<double> arias_intensity_mps(const Record& record);

@@ -110,6 +110,37 @@ void add_reason(std::string& reason, const std::string& text) {
     reason += text;
 }
 
+// Fills the realism measures of `a` (its peaks already set) and returns the failed ranges.
+std::string realism_failures(Acceptance& a, const Target& target) {
+    const RealismLimits& lim = target.realism;
+    a.realism = lim;
+    a.horizontal = target.horizontal;
+    a.zpa_g = zero_period_g(target.psa_5pct);
+    a.pga_over_zpa = a.pga_g / a.zpa_g;
+    if (a.pga_g > 0.0) {
+        a.va_mps_per_g = a.pgv_mps / a.pga_g;
+        a.da_m_per_g = a.pgd_m / a.pga_g;
+    }
+    if (a.pgv_mps > 0.0) a.adv2 = a.pga_g * units::g_mps2 * a.pgd_m / (a.pgv_mps * a.pgv_mps);
+    std::string why;
+    const auto outside = [](double v, const Range& r) { return v < r.min || v > r.max; };
+    if (outside(a.pga_over_zpa, lim.pga_over_zpa))
+        add_reason(why, fmt::format("PGA {:.3f} x ZPA outside {}-{}", a.pga_over_zpa,
+                                    lim.pga_over_zpa.min, lim.pga_over_zpa.max));
+    if (a.d5_75_s < lim.d5_75_min_s)
+        add_reason(why, fmt::format("D5-75 {:.2f} s < {} s", a.d5_75_s, lim.d5_75_min_s));
+    if (!target.horizontal) return why;
+    if (lim.va_mps_per_g && outside(a.va_mps_per_g, *lim.va_mps_per_g))
+        add_reason(why, fmt::format("V/A {:.3f} m/s/g outside {}-{}", a.va_mps_per_g,
+                                    lim.va_mps_per_g->min, lim.va_mps_per_g->max));
+    if (lim.adv2 && outside(a.adv2, *lim.adv2))
+        add_reason(why, fmt::format("AD/V^2 {:.3f} outside {}-{}", a.adv2, lim.adv2->min,
+                                    lim.adv2->max));
+    if (lim.da_max_m_per_g && a.da_m_per_g > *lim.da_max_m_per_g)
+        add_reason(why, fmt::format("D/A {:.3f} m/g > {}", a.da_m_per_g, *lim.da_max_m_per_g));
+    return why;
+}
+
 }  // namespace
 
 Acceptance check_acceptance(const core::Record& record, const Target& target) {
@@ -125,6 +156,7 @@ Acceptance check_acceptance(const core::Record& record, const Target& target) {
     a.d5_95_s = gm.d5_95_s;
     a.final_velocity_mps = gm.final_velocity_mps;
     a.final_displacement_m = gm.final_displacement_m;
+    a.arias_mps = gm.arias_mps;
 
     const std::vector<double> f = criteria::check_frequencies(record.dt_s);
     a.check_points = f.size();
@@ -165,7 +197,11 @@ Acceptance check_acceptance(const core::Record& record, const Target& target) {
         add_reason(why, fmt::format("final velocity {:.3g} m/s", a.final_velocity_mps));
     if (std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m)
         add_reason(why, fmt::format("final displacement {:.3g} m", a.final_displacement_m));
-    a.passed = why.empty();
+    a.srp_passed = why.empty();
+    const std::string realism = realism_failures(a, target);
+    a.realism_passed = realism.empty();
+    if (!a.realism_passed) add_reason(why, realism);
+    a.passed = a.srp_passed && a.realism_passed;
     return a;
 }
 

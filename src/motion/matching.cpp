@@ -1,15 +1,19 @@
 // Time-domain spectral matching with the improved tapered cosine wavelet (Al Atik & Abrahamson
 // 2010; Hancock et al. 2006, J. Earthq. Eng. 10:S1 67-89, RspMatch): per pass, find each
 // oscillator's peak time and sign, solve C b = dR for wavelet amplitudes (C_ij = response of
-// oscillator i at its peak time to wavelet j, in closed form), add sum b_j w_j. Two Gaussian
-// pulses with two constraint rows keep the final velocity and displacement at zero in the same
-// solve, so the baseline is corrected without a separate pass that would undo the match.
+// oscillator i at its peak time to wavelet j, in closed form), add sum b_j w_j. The same solve
+// holds the record's peak acceleration near the target's zero-period acceleration (rows on the
+// samples of the largest peaks), and after every pass the displacement-aware baseline correction
+// (baseline.hpp) brings the record to rest with the smallest peak displacement it can, so the
+// match converges on a record that is realistic as well as compatible (issue 13).
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
+#include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
 #include "motion/motion.hpp"
 #include "motion/wavelet.hpp"
@@ -31,12 +35,23 @@ constexpr int kMaxRaises = 2;
 // passes.
 constexpr double kNearBand = 0.04;
 constexpr int kCheckEvery = 3;
-// Cosine taper at both ends of the record before the exact baseline step.
-constexpr double kTaper_s = 0.5;
 // Wavelets are kept at >= 10 samples per cycle: coarser ones are poorly represented by their
 // samples (and the closed-form Jacobian no longer describes them); near-rigid oscillators above
 // that frequency respond quasi-statically to the lower-frequency wavelet placed at their peak.
 constexpr double kMaxWaveletCyclesPerSample = 0.1;
+// Peak-acceleration rows: at most this many peaks held per pass; the in-loop band is the
+// acceptance range [lo, hi] narrowed to [lo + 0.1 (hi - lo), hi - 0.2 (hi - lo)], aiming at its
+// middle, so that the band's edges are not met by rounding.
+constexpr std::size_t kPeakRows = 5;
+constexpr double kPgaBandLow = 0.1;
+constexpr double kPgaBandHigh = 0.2;
+// Baseline rows: a final displacement of this much per g of ZPA weighs like the whole target at
+// one frequency (a tenth of the RG 1.60 realism limit on D/A).
+constexpr double kBaselineDisplacement_m_per_g = 0.13;
+// Weight of a held spectral row whose oscillator peaks within kSameInstant_s of a held
+// acceleration peak.
+constexpr double kYield = 0.1;
+constexpr double kSameInstant_s = 0.02;
 
 double dot_support(const SampledWavelet& w, const std::vector<double>& weights) {
     double s = 0.0;
@@ -50,11 +65,32 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
     return s;
 }
 
+double value_at(const SampledWavelet& w, std::size_t i) {
+    return i >= w.first && i < w.first + w.values.size() ? w.values[i - w.first] : 0.0;
+}
+
 // Piecewise-linear interpolation of the samples passes a sinusoid of frequency f with gain
 // sinc^2(f dt); the closed-form response is of the continuous wavelet.
 double interpolation_gain(double f_hz, double dt_s) {
     const double x = units::pi * f_hz * dt_s;
     return x < 1e-8 ? 1.0 : std::pow(std::sin(x) / x, 2);
+}
+
+// Samples of the local maxima of |a|, largest first.
+std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
+    std::vector<std::pair<double, std::size_t>> found;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const double v = std::abs(a[i]);
+        const bool left = i == 0 || v >= std::abs(a[i - 1]);
+        const bool right = i + 1 == a.size() || v > std::abs(a[i + 1]);
+        if (left && right && v > 0.0) found.push_back({v, i});
+    }
+    std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+        return x.first != y.first ? x.first > y.first : x.second < y.second;
+    });
+    std::vector<std::size_t> out;
+    for (const auto& p : found) out.push_back(p.second);
+    return out;
 }
 
 struct Matcher {
@@ -65,36 +101,46 @@ struct Matcher {
     std::vector<double> f_wave;  // wavelet frequencies, sampled at >= 10 points per cycle
     std::vector<double> q;       // target PSA, m/s^2
     std::vector<double> upper;   // in-loop upper ratio: opt.upper inside the 1.3-cap band
+    double zpa_mps2 = 0.0;
+    double pga_low = 0.0, pga_high = 0.0, pga_aim = 0.0;  // in-loop PGA / ZPA band
     EndWeights ends;
+    BaselineCorrector baseline;
     std::array<Wavelet, 2> pulses;
     std::array<SampledWavelet, 2> pulse_samples;
     std::array<double, 2> pulse_v{}, pulse_d{};
 
-    Matcher(const Target& t, const MatchOptions& o, core::Record& r) : target(t), opt(o), rec(r) {
+    Matcher(const Target& t, const MatchOptions& o, core::Record& r)
+        : target(t), opt(o), rec(r), ends(end_weights(r.size(), r.dt_s)), baseline(r.size(), r.dt_s) {
         f = spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(rec.dt_s),
                                      opt.match_per_decade);
         for (double fi : f) {
-            f_wave.push_back(std::min(fi, kMaxWaveletCyclesPerSample / rec.dt_s));
+            const double cycles = fi > criteria::cap_high_hz ? opt.rigid_wavelet_cycles_per_sample
+                                                             : kMaxWaveletCyclesPerSample;
+            f_wave.push_back(std::min(fi, cycles / rec.dt_s));
             q.push_back(target.psa_5pct.psa_at(fi) * units::g_mps2);
             // No cap outside 0.2-25 Hz: holding a tight band there only makes competing peaks of
             // the long-period oscillators alternate.
             const bool capped = fi >= criteria::cap_low_hz && fi <= criteria::cap_high_hz;
             upper.push_back(capped ? opt.upper : kUncappedUpper);
         }
-        ends = end_weights(rec.size(), rec.dt_s);
-        const double T = rec.duration_s();
-        const double gamma = std::min(T / 12.0, 2.0);
-        pulses = {Wavelet::pulse(T / 3.0, gamma), Wavelet::pulse(2.0 * T / 3.0, gamma)};
+        pulses = BaselineCorrector::pulses(rec.duration_s());
         for (std::size_t k = 0; k < 2; ++k) {
             pulse_samples[k] = sample_wavelet(pulses[k], rec.dt_s, rec.size());
             pulse_v[k] = dot_support(pulse_samples[k], ends.velocity);
             pulse_d[k] = dot_support(pulse_samples[k], ends.displacement);
         }
+        zpa_mps2 = zero_period_g(target.psa_5pct) * units::g_mps2;
+        const Range& band = target.realism.pga_over_zpa;
+        const double width = band.max - band.min;
+        pga_low = band.min + kPgaBandLow * width;
+        pga_high = band.max - kPgaBandHigh * width;
+        pga_aim = 0.5 * (band.min + band.max);
     }
 
     struct Peaks {
         std::vector<double> r, sign, t;
-        double worst = -1.0;  // largest distance of a ratio outside [lower, upper], < 0 inside
+        std::vector<std::size_t> accel_rows;  // samples whose |a| is pulled to pga_aim ZPA
+        double worst = -1.0;  // largest distance of a ratio outside its band, < 0 inside
     };
 
     Peaks peaks() const {
@@ -106,66 +152,105 @@ struct Matcher {
             out.sign.push_back(p[i].sd_m > 0.0 ? -1.0 : 1.0);  // y = -omega^2 u
             out.t.push_back(p[i].time_s);
             const double ratio = out.r.back() / q[i];
-            const double miss = std::max(opt.lower - ratio, ratio - upper[i]);
-            out.worst = std::max(out.worst, miss);
+            out.worst = std::max(out.worst, std::max(opt.lower - ratio, ratio - upper[i]));
         }
+        const std::vector<std::size_t> by_size = peaks_by_size(rec.accel_mps2);
+        if (by_size.empty()) return out;
+        const double pga_ratio = std::abs(rec.accel_mps2[by_size.front()]) / zpa_mps2;
+        out.worst = std::max(out.worst, std::max(pga_low - pga_ratio, pga_ratio - pga_high));
+        if (pga_ratio < pga_low) out.accel_rows.push_back(by_size.front());
+        for (std::size_t k = 0; k < by_size.size() && k < kPeakRows; ++k)
+            if (std::abs(rec.accel_mps2[by_size[k]]) > pga_high * zpa_mps2)
+                out.accel_rows.push_back(by_size[k]);
         return out;
     }
 
-    // One linearised correction: C b = dR with the two baseline rows, then add the wavelets.
+    // True if t_s lies within kSameInstant_s of a sample held by a peak row.
+    bool peaks_on(const Peaks& pk, double t_s) const {
+        for (std::size_t sample : pk.accel_rows)
+            if (std::abs(static_cast<double>(sample) * rec.dt_s - t_s) <= kSameInstant_s)
+                return true;
+        return false;
+    }
+
+    // One linearised correction: rows in units of the target (spectral rows: change of the
+    // ratio; peak rows: change of |a| / ZPA; two rows keeping the final velocity and displacement
+    // at zero with two pulse columns, so the wavelets add no drift for the baseline step to
+    // remove), then add the wavelets.
     void pass(const Peaks& pk, double relaxation) {
         const std::size_t m = f.size();
-        const std::size_t n = m + 2;
+        const std::size_t cols = m + 2;
+        const std::size_t rows = m + 2 + pk.accel_rows.size();
         std::vector<Wavelet> waves;
+        std::vector<SampledWavelet> sampled;
         waves.reserve(m);
-        for (std::size_t j = 0; j < m; ++j)
+        sampled.reserve(m);
+        for (std::size_t j = 0; j < m; ++j) {
             waves.push_back(Wavelet::for_oscillator(f_wave[j], f[j], kDamping, pk.t[j]));
-        Eigen::MatrixXd c(n, n);
-        Eigen::VectorXd rhs(n);
+            sampled.push_back(sample_wavelet(waves.back(), rec.dt_s, rec.size()));
+        }
+        Eigen::MatrixXd c(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+        Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows));
+        const auto mv = static_cast<Eigen::Index>(m);
         for (std::size_t i = 0; i < m; ++i) {
+            const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = 0; j < m; ++j)
-                c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-                    interpolation_gain(f_wave[j], rec.dt_s) *
-                    wavelet_response(waves[j], f[i], kDamping, pk.t[i]);
+                c(ii, static_cast<Eigen::Index>(j)) = interpolation_gain(f_wave[j], rec.dt_s) *
+                                                      wavelet_response(waves[j], f[i], kDamping,
+                                                                       pk.t[i]) /
+                                                      q[i];
             for (std::size_t k = 0; k < 2; ++k)
-                c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(m + k)) =
-                    wavelet_response(pulses[k], f[i], kDamping, pk.t[i]);
+                c(ii, mv + static_cast<Eigen::Index>(k)) =
+                    wavelet_response(pulses[k], f[i], kDamping, pk.t[i]) / q[i];
             const double ratio = pk.r[i] / q[i];
             const bool inside = ratio >= opt.lower && ratio <= upper[i];
             const double want = inside ? pk.r[i] : opt.aim * q[i];
-            rhs(static_cast<Eigen::Index>(i)) = (want - pk.r[i]) * pk.sign[i];
+            rhs(ii) = (want - pk.r[i]) * pk.sign[i] / q[i];
+            // A rigid-range oscillator peaking on a held acceleration peak follows that peak: a
+            // row holding its ratio where it is would fight the peak row.
+            if (inside && peaks_on(pk, pk.t[i])) {
+                c.row(ii) *= kYield;
+                rhs(ii) *= kYield;
+            }
         }
-        const auto mv = static_cast<Eigen::Index>(m);
-        std::vector<SampledWavelet> sampled;
-        sampled.reserve(m);
+        // Baseline rows held firmly (kBaselineDisplacement_m_per_g, and that over the duration
+        // in velocity): drift the wavelets added would otherwise be removed afterwards by the
+        // baseline correction, and with it the long-period part of the match.
+        const double d_unit = kBaselineDisplacement_m_per_g * zpa_mps2 / units::g_mps2;
+        const double v_unit = d_unit / rec.duration_s();
         for (std::size_t j = 0; j < m; ++j) {
-            sampled.push_back(sample_wavelet(waves[j], rec.dt_s, rec.size()));
-            c(mv, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.velocity);
-            c(mv + 1, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.displacement);
+            c(mv, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.velocity) / v_unit;
+            c(mv + 1, static_cast<Eigen::Index>(j)) =
+                dot_support(sampled[j], ends.displacement) / d_unit;
         }
         for (std::size_t k = 0; k < 2; ++k) {
-            c(mv, mv + static_cast<Eigen::Index>(k)) = pulse_v[k];
-            c(mv + 1, mv + static_cast<Eigen::Index>(k)) = pulse_d[k];
+            c(mv, mv + static_cast<Eigen::Index>(k)) = pulse_v[k] / v_unit;
+            c(mv + 1, mv + static_cast<Eigen::Index>(k)) = pulse_d[k] / d_unit;
         }
-        rhs(mv) = -dot(ends.velocity, rec.accel_mps2);
-        rhs(mv + 1) = -dot(ends.displacement, rec.accel_mps2);
+        rhs(mv) = -dot(ends.velocity, rec.accel_mps2) / v_unit;
+        rhs(mv + 1) = -dot(ends.displacement, rec.accel_mps2) / d_unit;
+        for (std::size_t k = 0; k < pk.accel_rows.size(); ++k) {
+            const std::size_t sample = pk.accel_rows[k];
+            const auto row = static_cast<Eigen::Index>(m + 2 + k);
+            for (std::size_t j = 0; j < m; ++j)
+                c(row, static_cast<Eigen::Index>(j)) = value_at(sampled[j], sample) / zpa_mps2;
+            for (std::size_t k2 = 0; k2 < 2; ++k2)
+                c(row, mv + static_cast<Eigen::Index>(k2)) =
+                    value_at(pulse_samples[k2], sample) / zpa_mps2;
+            const double a = rec.accel_mps2[sample];
+            rhs(row) = (std::copysign(pga_aim * zpa_mps2, a) - a) / zpa_mps2;
+        }
         const Eigen::VectorXd b = solve_regularised(c, rhs);
         for (std::size_t j = 0; j < m; ++j)
             add_wavelet(sampled[j], relaxation * b(static_cast<Eigen::Index>(j)), rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
             add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)),
                         rec.accel_mps2);
+        baseline.minimise_displacement(rec.accel_mps2);
     }
 
-    // Rows scaled to unit max, columns to unit norm, then min |C x - r|^2 + lambda^2 |x|^2.
-    static Eigen::VectorXd solve_regularised(Eigen::MatrixXd c, Eigen::VectorXd rhs) {
-        for (Eigen::Index i = 0; i < c.rows(); ++i) {
-            const double s = c.row(i).cwiseAbs().maxCoeff();
-            if (s > 0.0) {
-                c.row(i) /= s;
-                rhs(i) /= s;
-            }
-        }
+    // Columns scaled to unit norm, then min |C x - r|^2 + lambda^2 |x|^2.
+    static Eigen::VectorXd solve_regularised(Eigen::MatrixXd c, const Eigen::VectorXd& rhs) {
         Eigen::VectorXd col(c.cols());
         for (Eigen::Index j = 0; j < c.cols(); ++j) {
             col(j) = c.col(j).norm();
@@ -181,28 +266,6 @@ struct Matcher {
         Eigen::VectorXd x = normal.ldlt().solve(c.transpose() * rhs);
         return x.cwiseQuotient(col);
     }
-
-    // Cosine taper of the first and last kTaper_s (long wavelets do not vanish at the record's
-    // ends: without it the record would start with a jump), then zero the final velocity and
-    // displacement exactly with the two pulses (2x2 solve; the pulses are < 1e-7 at the ends).
-    void zero_baseline(core::Record& r) const {
-        const std::size_t n = r.size();
-        const auto taper = std::min(n / 4, static_cast<std::size_t>(kTaper_s / r.dt_s));
-        for (std::size_t k = 0; k < taper; ++k) {
-            const double w =
-                0.5 *
-                (1.0 - std::cos(units::pi * static_cast<double>(k) / static_cast<double>(taper)));
-            r.accel_mps2[k] *= w;
-            r.accel_mps2[n - 1 - k] *= w;
-        }
-        const double v = dot(ends.velocity, r.accel_mps2);
-        const double d = dot(ends.displacement, r.accel_mps2);
-        const double det = pulse_v[0] * pulse_d[1] - pulse_v[1] * pulse_d[0];
-        const double b0 = (-v * pulse_d[1] + d * pulse_v[1]) / det;
-        const double b1 = (-d * pulse_v[0] + v * pulse_d[0]) / det;
-        add_wavelet(pulse_samples[0], b0, r.accel_mps2);
-        add_wavelet(pulse_samples[1], b1, r.accel_mps2);
-    }
 };
 
 }  // namespace
@@ -212,6 +275,9 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
     MatchResult res;
     res.record = std::move(record);
     Matcher m(target, options, res.record);
+    // Start at rest: a raw synthetic record drifts by metres, and removing that after the first
+    // pass would undo the long-period part of the match.
+    m.baseline.minimise_displacement(res.record.accel_mps2);
     int raises = 0;
     // The iterate closest to the band, kept in case the limit is reached.
     std::vector<double> best = res.record.accel_mps2;
@@ -224,13 +290,14 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
             best = res.record.accel_mps2;
         }
         if (pk.worst <= 0.0) {
-            m.zero_baseline(res.record);
+            m.baseline.correct(res.record.accel_mps2);
             res.acceptance = check_acceptance(res.record, target);
             res.iterations = it - 1;
             res.converged = true;
             if (res.acceptance.passed) return res;
             // Dips between the matching frequencies: raise the band a little, a few times; a PSD
-            // gap or a cap breach is not cured that way, so the caller tries another setting.
+            // gap, a cap breach or a realism range is not cured that way, so the caller tries
+            // another setting.
             if (++raises > kMaxRaises) return res;
             m.opt.lower += kRaise;
             m.opt.aim += kRaise;
@@ -241,7 +308,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
         if (pk.worst <= kNearBand && it - last_check >= kCheckEvery) {
             last_check = it;
             core::Record candidate = res.record;
-            m.zero_baseline(candidate);
+            m.baseline.correct(candidate.accel_mps2);
             Acceptance a = check_acceptance(candidate, target);
             if (a.passed) {
                 res.record = std::move(candidate);
@@ -253,7 +320,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
         m.pass(pk, options.relaxation);
     }
     res.record.accel_mps2 = best;
-    m.zero_baseline(res.record);
+    m.baseline.correct(res.record.accel_mps2);
     res.iterations = options.max_iterations;
     res.acceptance = check_acceptance(res.record, target);
     return res;

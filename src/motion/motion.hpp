@@ -12,6 +12,34 @@
 
 namespace freestand::motion {
 
+/// A closed range [min, max].
+struct Range {
+    double min = 0.0;
+    double max = 0.0;
+};
+
+/// Ranges a history must fall in to be consistent with the earthquakes behind its target
+/// (SRP 3.7.1 asks for realistic velocity, displacement and duration; NUREG/CR-6728 tabulates
+/// V/A and AD/V^2 by magnitude and distance; docs/methods.md s.8 "Realism"). PGA / ZPA and
+/// D5-75 apply to every target. V/A, AD/V^2 and D/A depend on the earthquakes behind a target:
+/// each is checked only when its range is set (rg160_realism() sets all three from the
+/// RG 1.60 basis, V/A 1.22 m/s/g and D/A 0.91 m/g of Newmark, Blume & Kapur 1973); unset, the
+/// ratio is reported and not checked.
+struct RealismLimits {
+    Range pga_over_zpa{1.0, 1.1};  ///< PGA / the target's zero-period acceleration
+    double d5_75_min_s = 6.0;      ///< 5-75% Arias duration
+    std::optional<Range> va_mps_per_g;     ///< PGV / PGA, m/s per g
+    std::optional<Range> adv2;             ///< PGA PGD / PGV^2 (PGA in m/s^2)
+    std::optional<double> da_max_m_per_g;  ///< PGD / PGA, m per g
+};
+
+/// The RG 1.60 defaults: V/A 0.8-2.0 m/s/g, AD/V^2 2-8, D/A at most 1.3 m/g.
+RealismLimits rg160_realism();
+
+/// Throws InputError naming the field (pga_over_zpa_range, d5_75_min_s, va_range_mps_per_g,
+/// adv2_range, da_max_m_per_g) unless every limit is finite and positive and each min < max.
+void validate_realism(const RealismLimits& limits);
+
 /// What one component must match.
 struct Target {
     spectra::Spectrum psa_5pct;                  ///< acceptance target; damping must be 0.05
@@ -19,7 +47,15 @@ struct Target {
     /// When set, the PSD is checked against the RG 1.60 horizontal target PSD
     /// (spectra::rg160_target_psd) at this PGA; unset for targets without a defined PSD.
     std::optional<double> rg160_psd_pga_g;
+    RealismLimits realism;
+    /// V/A, AD/V^2 and D/A are checked on horizontal components only (the NUREG/CR-6728 ratios
+    /// describe horizontal motion); PGA / ZPA and D5-75 on every component.
+    bool horizontal = true;
 };
+
+/// Zero-period acceleration of a target, g: its PSA at the highest tabulated frequency (RG 1.60:
+/// the PGA, PSA being flat above 33 Hz).
+double zero_period_g(const spectra::Spectrum& psa_5pct);
 
 /// Horizontal and vertical targets of one design.
 struct TargetSet {
@@ -33,6 +69,9 @@ struct TargetSet {
 
 /// RG 1.60 horizontal and vertical (5% and 10%), with the RG 1.60 target PSD on horizontals.
 TargetSet rg160_targets(double pga_g);
+
+/// Sets the realism limits of every target of the set (validated).
+void set_realism(TargetSet& targets, const RealismLimits& limits);
 
 /// Targets from a horizontal 5% spectrum (and optionally 10%); the vertical is
 /// vertical_ratio times the horizontal (2/3 is common). No target PSD.
@@ -65,6 +104,10 @@ struct MatchOptions {
     double relaxation = 1.0;    ///< fraction of the linearised correction applied per pass
     int max_iterations = 40;    ///< matching passes
     int match_per_decade = 30;  ///< matching frequencies per decade (checks are at 100)
+    /// Shortest wavelet, in cycles per sample, for oscillators above 25 Hz (0.1 elsewhere:
+    /// coarser wavelets are poorly represented by their samples). A target rising above its
+    /// zero-period value at 25-50 Hz (ASCE 7, EC8 below T_B) needs resonant content there.
+    double rigid_wavelet_cycles_per_sample = 0.1;
 };
 
 /// Everything the generator needs besides the targets.
@@ -82,9 +125,12 @@ struct GenerateOptions {
     int max_attempts = 6;
 };
 
-/// SRP 3.7.1 Option 1 Approach 2 acceptance of one record against its target.
+/// SRP 3.7.1 Option 1 Approach 2 acceptance of one record against its target, and the
+/// realism checks of its RealismLimits.
 struct Acceptance {
-    bool passed = false;
+    bool passed = false;           ///< srp_passed && realism_passed
+    bool srp_passed = false;       ///< every SRP 3.7.1 criterion
+    bool realism_passed = false;   ///< every realism range
     std::string reason;            ///< "" when passed, else every failed criterion, "; "-joined
     std::size_t check_points = 0;  ///< 5% ratio points, >= 100 per decade over 0.1-50 Hz
     double min_ratio = 0.0;        ///< computed / target over the check band
@@ -98,6 +144,14 @@ struct Acceptance {
     double pga_g = 0.0, pgv_mps = 0.0, pgd_m = 0.0;
     double d5_75_s = 0.0, d5_95_s = 0.0, duration_s = 0.0, dt_s = 0.0;
     double final_velocity_mps = 0.0, final_displacement_m = 0.0;
+    double arias_mps = 0.0;          ///< Arias intensity
+    double zpa_g = 0.0;              ///< the target's zero-period acceleration
+    double pga_over_zpa = 0.0;       ///< PGA / ZPA
+    double va_mps_per_g = 0.0;       ///< PGV / PGA
+    double adv2 = 0.0;               ///< PGA PGD / PGV^2, PGA in m/s^2
+    double da_m_per_g = 0.0;         ///< PGD / PGA
+    RealismLimits realism;           ///< the ranges checked
+    bool horizontal = true;          ///< V/A, AD/V^2, D/A apply (when their ranges are set)
 };
 
 /// Computes the acceptance report with spectra::psa_g at 100 points per decade 0.1-50 Hz.

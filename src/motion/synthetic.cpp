@@ -1,6 +1,12 @@
 // Random-phase stationary process shaped by an envelope and iterated on the spectral ratio in
-// the frequency domain (Gasparini & Vanmarcke 1976, SIMQKE): phases fixed, Fourier amplitudes of
-// the stationary process multiplied by target / computed PSA, envelope re-applied each pass.
+// the frequency domain (Gasparini & Vanmarcke 1976, SIMQKE): Fourier amplitudes of the
+// stationary process multiplied by target / computed PSA, envelope re-applied each pass. Two
+// additions keep the seed realistic (issue 13): each iterate is brought to rest with the least
+// displacement (baseline.hpp), so long-period amplitudes are sized on motion the final record
+// keeps rather than on a drift; and the peaks above the target's zero-period acceleration are
+// clipped and the phases taken from the clipped process (iterative clipping and filtering, the
+// crest-factor reduction of signal processing), which brings a Gaussian process's PGA of
+// 1.1-1.35 x ZPA into the realism band without changing its Fourier amplitudes.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,7 +15,9 @@
 #include <random>
 
 #include "core/errors.hpp"
+#include "core/random.hpp"
 #include "core/units.hpp"
+#include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
 #include "motion/fft.hpp"
 #include "motion/internal.hpp"
@@ -20,12 +28,8 @@ namespace freestand::motion {
 double uniform01(std::uint64_t draw) { return static_cast<double>(draw >> 11) * 0x1.0p-53; }
 
 std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt) {
-    std::uint64_t z =
-        seed ^ (component * 0x9E3779B97F4A7C15ull) ^ (attempt * 0xD1B54A32D192ED03ull);
-    z += 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    return core::splitmix64(seed ^ (component * 0x9E3779B97F4A7C15ull) ^
+                            (attempt * 0xD1B54A32D192ED03ull));
 }
 
 double envelope_at(const Envelope& e, double t_s, double duration_s) {
@@ -66,60 +70,116 @@ double interp_log(const std::vector<double>& f, const std::vector<double>& r, do
 
 }  // namespace
 
+namespace {
+
+// Crest-factor target of the seed: this far into the PGA / ZPA acceptance range.
+constexpr double kClipFraction = 0.3;
+
+// The stationary process X(f) = amp(f) unit(f) of one record, its envelope, and the record
+// built from them.
+struct Process {
+    std::size_t samples;
+    RealFft fft;
+    double df_hz;
+    std::vector<double> amp;
+    std::vector<std::complex<double>> unit;
+    std::vector<double> envelope;
+    std::vector<double> stationary;  // inverse FFT of amp unit, fft.size() samples
+    BaselineCorrector baseline;
+
+    Process(std::size_t n, double dt_s)
+        : samples(n),
+          fft(fft_size(n)),
+          df_hz(1.0 / (static_cast<double>(fft.size()) * dt_s)),
+          amp(fft.bins(), 0.0),
+          unit(fft.bins()),
+          envelope(n),
+          baseline(n, dt_s) {}
+
+    // Record = envelope x stationary process, brought to rest with the least displacement.
+    void build(core::Record& rec) {
+        std::vector<std::complex<double>> spec(fft.bins());
+        for (std::size_t k = 0; k < spec.size(); ++k) spec[k] = amp[k] * unit[k];
+        stationary = fft.inverse(spec);
+        for (std::size_t i = 0; i < samples; ++i)
+            rec.accel_mps2[i] = envelope[i] * stationary[i];
+        baseline.minimise_displacement(rec.accel_mps2);
+    }
+
+    // Clips |a| > cap in the stationary process (where the envelope is positive) and takes the
+    // phases from the clipped process; the amplitudes stay.
+    void rephase_clipped(const core::Record& rec, double cap_mps2) {
+        std::vector<double> clipped = stationary;
+        bool any = false;
+        for (std::size_t i = 0; i < samples; ++i) {
+            const double a = rec.accel_mps2[i];
+            if (std::abs(a) <= cap_mps2 || envelope[i] <= 0.0) continue;
+            clipped[i] -= (a - std::copysign(cap_mps2, a)) / envelope[i];
+            any = true;
+        }
+        if (!any) return;
+        const std::vector<std::complex<double>> x = fft.forward(clipped);
+        for (std::size_t k = 1; k < unit.size(); ++k)
+            if (std::abs(x[k]) > 0.0) unit[k] = x[k] / std::abs(x[k]);
+    }
+};
+
+// One geometric-mean factor on all amplitudes: the starting level is arbitrary.
+void fix_level(Process& p, const std::vector<double>& target_psa, const std::vector<double>& psa) {
+    double log_sum = 0.0;
+    for (std::size_t i = 0; i < psa.size(); ++i) log_sum += std::log(target_psa[i] / psa[i]);
+    const double scale = std::exp(log_sum / static_cast<double>(psa.size()));
+    for (double& a : p.amp) a *= scale;
+}
+
+void scale_by_ratio(Process& p, const std::vector<double>& f, const std::vector<double>& target_psa,
+                    const std::vector<double>& psa) {
+    std::vector<double> r(f.size());
+    for (std::size_t i = 0; i < f.size(); ++i)
+        r[i] = std::clamp(target_psa[i] / std::max(psa[i], 1e-300), 1.0 / kMaxStep, kMaxStep);
+    for (std::size_t k = 1; k < p.amp.size(); ++k)
+        p.amp[k] *= interp_log(f, r, static_cast<double>(k) * p.df_hz);
+}
+
+}  // namespace
+
 core::Record synthesize(const Target& target, double duration_s, double dt_s, std::uint64_t seed,
                         const Envelope& envelope) {
     validate_target(target.psa_5pct, 0.05);
     validate_envelope(envelope, duration_s);
     const auto n = static_cast<std::size_t>(std::llround(duration_s / dt_s)) + 1;
-    const std::size_t nfft = fft_size(n);
-    RealFft fft(nfft);
-    const double df = 1.0 / (static_cast<double>(nfft) * dt_s);
-
+    Process p(n, dt_s);
     // Starting amplitudes from random vibration: G(omega) ~ PSA^2 / omega, so |X| ~ PSA / sqrt(f).
     std::mt19937_64 rng(seed);
-    std::vector<std::complex<double>> unit(fft.bins());
-    std::vector<double> amp(fft.bins(), 0.0);
-    for (std::size_t k = 1; k < fft.bins(); ++k) {
-        const double phase = units::two_pi * uniform01(rng());
-        unit[k] = std::polar(1.0, phase);
-        const double fk = static_cast<double>(k) * df;
-        amp[k] = fk < 0.05 ? 0.0 : target.psa_5pct.psa_at(fk) / std::sqrt(fk);
+    for (std::size_t k = 1; k < p.unit.size(); ++k) {
+        p.unit[k] = std::polar(1.0, units::two_pi * uniform01(rng()));
+        const double fk = static_cast<double>(k) * p.df_hz;
+        p.amp[k] = fk < 0.05 ? 0.0 : target.psa_5pct.psa_at(fk) / std::sqrt(fk);
     }
-    std::vector<double> env(n);
     for (std::size_t i = 0; i < n; ++i)
-        env[i] = envelope_at(envelope, static_cast<double>(i) * dt_s, duration_s);
+        p.envelope[i] = envelope_at(envelope, static_cast<double>(i) * dt_s, duration_s);
+    const Range& band = target.realism.pga_over_zpa;
+    const double cap_mps2 = (band.min + kClipFraction * (band.max - band.min)) *
+                            zero_period_g(target.psa_5pct) * units::g_mps2;
 
     core::Record rec;
     rec.dt_s = dt_s;
     rec.accel_mps2.resize(n);
-    auto build = [&] {
-        std::vector<std::complex<double>> spec(fft.bins());
-        for (std::size_t k = 0; k < spec.size(); ++k) spec[k] = amp[k] * unit[k];
-        const std::vector<double> x = fft.inverse(spec);
-        for (std::size_t i = 0; i < n; ++i) rec.accel_mps2[i] = env[i] * x[i];
-    };
     const std::vector<double> f =
         spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(dt_s), kPerDecade);
     std::vector<double> target_psa;
     for (double fi : f) target_psa.push_back(target.psa_5pct.psa_at(fi));
     for (int pass = 0; pass < kPasses; ++pass) {
-        build();
+        p.build(rec);
         const std::vector<double> psa = spectra::psa_g(rec, 0.05, f);
         if (pass == 0) {
-            // The starting level is arbitrary: fix it first with one geometric-mean factor.
-            double log_sum = 0.0;
-            for (std::size_t i = 0; i < f.size(); ++i) log_sum += std::log(target_psa[i] / psa[i]);
-            const double scale = std::exp(log_sum / static_cast<double>(f.size()));
-            for (double& a : amp) a *= scale;
+            fix_level(p, target_psa, psa);
             continue;
         }
-        std::vector<double> r(f.size());
-        for (std::size_t i = 0; i < f.size(); ++i)
-            r[i] = std::clamp(target_psa[i] / std::max(psa[i], 1e-300), 1.0 / kMaxStep, kMaxStep);
-        for (std::size_t k = 1; k < amp.size(); ++k)
-            amp[k] *= interp_log(f, r, static_cast<double>(k) * df);
+        p.rephase_clipped(rec, cap_mps2);
+        scale_by_ratio(p, f, target_psa, psa);
     }
-    build();
+    p.build(rec);
     return rec;
 }
 

@@ -68,8 +68,11 @@ TargetSet rg160_targets(double pga_g) {
     t.horizontal.psa_5pct = spectra::rg160(pga_g, 0.05, false, fh);
     t.horizontal.psa_10pct = spectra::rg160(pga_g, 0.10, false, fh);
     t.horizontal.rg160_psd_pga_g = pga_g;
+    t.horizontal.realism = rg160_realism();
     t.vertical.psa_5pct = spectra::rg160(pga_g, 0.05, true, fv);
     t.vertical.psa_10pct = spectra::rg160(pga_g, 0.10, true, fv);
+    t.vertical.horizontal = false;
+    t.vertical.realism = rg160_realism();
     return t;
 }
 
@@ -86,11 +89,47 @@ TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5
     t.horizontal.psa_10pct = horizontal_10pct;
     const std::string vlabel = fmt::format("{} x {}", vertical_ratio, horizontal_5pct.label);
     t.vertical.psa_5pct = scaled(horizontal_5pct, vertical_ratio, vlabel);
+    t.vertical.horizontal = false;
     if (horizontal_10pct)
         t.vertical.psa_10pct =
             scaled(*horizontal_10pct, vertical_ratio,
                    fmt::format("{} x {}", vertical_ratio, horizontal_10pct->label));
     return t;
+}
+
+double zero_period_g(const spectra::Spectrum& psa_5pct) { return psa_5pct.psa_g.back(); }
+
+RealismLimits rg160_realism() {
+    RealismLimits r;
+    r.va_mps_per_g = Range{0.8, 2.0};
+    r.adv2 = Range{2.0, 8.0};
+    r.da_max_m_per_g = 1.3;
+    return r;
+}
+
+namespace {
+void validate_range(const Range& r, const char* field) {
+    const SourceLocation where{"", 0, field};
+    require_positive(r.min, where);
+    require_positive(r.max, where);
+    if (!(r.min < r.max))
+        throw InputError(where, fmt::format("[{}, {}]: expected min < max", r.min, r.max));
+}
+}  // namespace
+
+void validate_realism(const RealismLimits& r) {
+    validate_range(r.pga_over_zpa, "pga_over_zpa_range");
+    require_positive(r.d5_75_min_s, SourceLocation{"", 0, "d5_75_min_s"});
+    if (r.va_mps_per_g) validate_range(*r.va_mps_per_g, "va_range_mps_per_g");
+    if (r.adv2) validate_range(*r.adv2, "adv2_range");
+    if (r.da_max_m_per_g) require_positive(*r.da_max_m_per_g, SourceLocation{"", 0, "da_max_m_per_g"});
+}
+
+void set_realism(TargetSet& targets, const RealismLimits& limits) {
+    validate_realism(limits);
+    targets.horizontal.realism = limits;
+    targets.vertical.realism = limits;
+    if (targets.horizontal_2) targets.horizontal_2->realism = limits;
 }
 
 }  // namespace freestand::motion

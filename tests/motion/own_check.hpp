@@ -34,7 +34,32 @@ inline OwnCheck own_check(const core::Record& r, const spectra::Spectrum& target
     return c;
 }
 
-/// Every SRP 3.7.1 criterion a test can check on one record, with its own spectrum call.
+/// The realism ranges of the target (docs/methods.md s.8), from the test's own ground-motion
+/// measures: PGA / ZPA, D5-75, and on horizontals V/A, AD/V^2 and D/A where set.
+inline void require_realism(const core::Record& r, const motion::Target& target) {
+    const core::GroundMotion gm = core::measure(r);
+    const motion::RealismLimits& lim = target.realism;
+    const double zpa_g = target.psa_5pct.psa_g.back();
+    CHECK(gm.pga_g / zpa_g >= lim.pga_over_zpa.min);
+    CHECK(gm.pga_g / zpa_g <= lim.pga_over_zpa.max);
+    CHECK(gm.d5_75_s >= lim.d5_75_min_s);
+    if (!target.horizontal) return;
+    const double va = gm.pgv_mps / gm.pga_g;
+    const double da = gm.pgd_m / gm.pga_g;
+    const double adv2 = gm.pga_g * units::g_mps2 * gm.pgd_m / (gm.pgv_mps * gm.pgv_mps);
+    if (lim.va_mps_per_g) {
+        CHECK(va >= lim.va_mps_per_g->min);
+        CHECK(va <= lim.va_mps_per_g->max);
+    }
+    if (lim.adv2) {
+        CHECK(adv2 >= lim.adv2->min);
+        CHECK(adv2 <= lim.adv2->max);
+    }
+    if (lim.da_max_m_per_g) CHECK(da <= *lim.da_max_m_per_g);
+}
+
+/// Every SRP 3.7.1 criterion a test can check on one record, with its own spectrum call, and the
+/// realism ranges.
 inline void require_srp(const core::Record& r, const motion::Target& target) {
     INFO("record " << r.name << " / " << r.source);
     const OwnCheck c = own_check(r, target.psa_5pct);
@@ -54,6 +79,7 @@ inline void require_srp(const core::Record& r, const motion::Target& target) {
         CHECK(*a.psd_min_ratio >= 0.8);
     }
     CHECK(a.passed);
+    require_realism(r, target);
     // The report agrees with the test's own computation.
     CHECK(a.min_ratio == Approx(c.min_ratio).epsilon(1e-12));
     CHECK(a.max_adjacent_below == c.longest_below);

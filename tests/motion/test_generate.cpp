@@ -37,7 +37,11 @@ motion::GeneratedComponent one(const motion::Target& target, const std::string& 
     return s.components.front();
 }
 
-void require_all_methods(const motion::Target& target) {
+// Synthetic and every seed record pass SRP 3.7.1 and realism, except the seed named `rejected`,
+// which must come back failing with `why` among its reasons (a record that cannot meet both is
+// rejected, never returned as passing).
+void require_all_methods(const motion::Target& target, const std::string& rejected = "",
+                         const std::string& why = "") {
     {
         INFO("synthetic");
         const auto g = one(target, "");
@@ -47,6 +51,12 @@ void require_all_methods(const motion::Target& target) {
     for (const char* s : kSeeds) {
         INFO("seed " << s);
         const auto g = one(target, s);
+        if (s == rejected) {
+            CHECK(g.stop == "attempt limit");
+            CHECK_FALSE(g.acceptance.passed);
+            CHECK_THAT(g.acceptance.reason, Catch::Contains(why));
+            continue;
+        }
         CHECK(g.stop == "passed");
         test::require_srp(g.record, target);
     }
@@ -54,7 +64,7 @@ void require_all_methods(const motion::Target& target) {
 
 }  // namespace
 
-TEST_CASE("RG 1.60 at 0.1-0.4 g: synthetic and every seed record meet SRP 3.7.1",
+TEST_CASE("RG 1.60 at 0.1-0.4 g: synthetic and every seed record meet SRP 3.7.1 and realism",
           "[motion][generate]") {
     for (double pga : {0.1, 0.2, 0.3, 0.4}) {
         INFO("PGA " << pga << " g");
@@ -62,12 +72,15 @@ TEST_CASE("RG 1.60 at 0.1-0.4 g: synthetic and every seed record meet SRP 3.7.1"
     }
 }
 
-TEST_CASE("ASCE 7 and Eurocode 8 targets: synthetic and every seed record meet SRP 3.7.1",
+TEST_CASE("ASCE 7 and Eurocode 8 targets: synthetic and seed records meet SRP 3.7.1 or are rejected",
           "[motion][generate]") {
     SECTION("ASCE 7, SDS 1.0 g, SD1 0.6 g, TL 8 s") {
+        // The 90 s Chi-Chi record cannot hold its PGA within 1.1 x ZPA while ASCE 7's ramp
+        // below T0 asks 1.25 x ZPA at 50 Hz: its matches overshoot the 1.3 cap instead.
         require_all_methods(motion::ratio_targets("ASCE 7", spectra::asce7(1.0, 0.6, 8.0, grid()),
                                                   std::nullopt, 2.0 / 3.0)
-                                .horizontal);
+                                .horizontal,
+                            kSeeds[2], "> 1.3 in 0.2-25 Hz");
     }
     SECTION("EC8 type 1, ground B, a_g 0.3 g") {
         const auto f = grid();

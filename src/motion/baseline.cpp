@@ -1,0 +1,171 @@
+#include "motion/baseline.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "core/measures.hpp"
+#include "core/units.hpp"
+
+namespace freestand::motion {
+namespace {
+
+// Long-period displacement shapes sin^2(pi t / T) sin(k pi t / T), k = 1..kTrendShapes: zero
+// with their slope at both ends, content below ~(k + 2) / (2T) Hz (0.125 Hz at k = 3 in 20 s),
+// i.e. mostly under the 0.1 Hz bottom of the acceptance band.
+constexpr int kTrendShapes = 3;
+// Displacement is fitted on a grid this fine (it is smooth at these periods).
+constexpr double kFitStep_s = 0.05;
+// Reweighting passes toward the peak: w_i <- w_i (1 + kGain (|d_i| / max |d|)^kPower).
+constexpr int kReweights = 3;
+constexpr double kGain = 4.0;
+constexpr double kPower = 4.0;
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+    return s;
+}
+
+std::vector<double> on_grid(const std::vector<double>& full, std::size_t stride) {
+    std::vector<double> out;
+    out.reserve(full.size() / stride + 1);
+    for (std::size_t i = 0; i < full.size(); i += stride) out.push_back(full[i]);
+    return out;
+}
+
+std::vector<double> sampled(const Wavelet& w, std::size_t samples, double dt_s) {
+    std::vector<double> a(samples, 0.0);
+    add_wavelet(w, 1.0, dt_s, a);
+    return a;
+}
+
+// Acceleration of sin^2(pi t / T) sin(k pi t / T) by central second differences, so that its
+// trapezoidal double integral is the shape to O(dt^2).
+std::vector<double> trend_shape(int k, std::size_t samples, double dt_s) {
+    std::vector<double> phi(samples);
+    const double last = static_cast<double>(samples - 1);
+    for (std::size_t i = 0; i < samples; ++i) {
+        const double x = units::pi * static_cast<double>(i) / last;
+        phi[i] = std::sin(x) * std::sin(x) * std::sin(static_cast<double>(k) * x);
+    }
+    std::vector<double> a(samples, 0.0);
+    for (std::size_t i = 1; i + 1 < samples; ++i)
+        a[i] = (phi[i + 1] - 2.0 * phi[i] + phi[i - 1]) / (dt_s * dt_s);
+    return a;
+}
+
+// Quintic smoothstep w(x) = 10 x^3 - 15 x^4 + 6 x^5 and its first two derivatives in x: w, w'
+// and w'' vanish at x = 0, so the tapered displacement w d keeps a continuous second derivative
+// (a cosine taper's jump in w'' integrates into a drift of ~2% of d).
+struct Smoothstep {
+    double w, w1, w2;
+};
+Smoothstep smoothstep(double x) {
+    return {x * x * x * (10.0 + x * (-15.0 + 6.0 * x)), 30.0 * x * x * (x - 1.0) * (x - 1.0),
+            60.0 * x * (2.0 * x - 1.0) * (x - 1.0)};
+}
+
+}  // namespace
+
+BaselineCorrector::BaselineCorrector(std::size_t samples, double dt_s)
+    : samples_(samples),
+      dt_s_(dt_s),
+      stride_(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kFitStep_s / dt_s)))),
+      ends_(end_weights(samples, dt_s)) {
+    for (const Wavelet& w : pulses(static_cast<double>(samples - 1) * dt_s))
+        shape_a_.push_back(sampled(w, samples, dt_s));
+    for (int k = 1; k <= kTrendShapes; ++k) shape_a_.push_back(trend_shape(k, samples, dt_s));
+    for (const std::vector<double>& a : shape_a_) {
+        shape_d_.push_back(on_grid(core::displacement_m(a, dt_s), stride_));
+        shape_end_v_.push_back(dot(ends_.velocity, a));
+        shape_end_d_.push_back(dot(ends_.displacement, a));
+    }
+}
+
+std::array<Wavelet, 2> BaselineCorrector::pulses(double duration_s) {
+    const double gamma_s = std::min(duration_s / 12.0, 2.0);
+    return {Wavelet::pulse(duration_s / 3.0, gamma_s), Wavelet::pulse(2.0 * duration_s / 3.0, gamma_s)};
+}
+
+void BaselineCorrector::minimise_displacement(std::vector<double>& accel_mps2) const {
+    const std::vector<double> d = on_grid(core::displacement_m(accel_mps2, dt_s_), stride_);
+    const auto nb = static_cast<Eigen::Index>(shape_a_.size());
+    const auto nbu = shape_a_.size();
+    // KKT system of min sum_i w_i (d_i + sum_k c_k D_ki)^2 s.t. the two end conditions:
+    // [H E^T; E 0] [c; lambda] = [-g; -e].
+    const double end_v = dot(ends_.velocity, accel_mps2);
+    const double end_d = dot(ends_.displacement, accel_mps2);
+    std::vector<double> weight(d.size(), 1.0);
+    Eigen::VectorXd c;
+    for (int pass = 0; pass <= kReweights; ++pass) {
+        Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(nb + 2, nb + 2);
+        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nb + 2);
+        for (std::size_t i = 0; i < nbu; ++i) {
+            const auto ii = static_cast<Eigen::Index>(i);
+            for (std::size_t j = i; j < nbu; ++j) {
+                double h = 0.0;
+                for (std::size_t q = 0; q < d.size(); ++q)
+                    h += weight[q] * shape_d_[i][q] * shape_d_[j][q];
+                kkt(ii, static_cast<Eigen::Index>(j)) = kkt(static_cast<Eigen::Index>(j), ii) = h;
+            }
+            double g = 0.0;
+            for (std::size_t q = 0; q < d.size(); ++q) g += weight[q] * shape_d_[i][q] * d[q];
+            rhs(ii) = -g;
+            kkt(nb, ii) = kkt(ii, nb) = shape_end_v_[i];
+            kkt(nb + 1, ii) = kkt(ii, nb + 1) = shape_end_d_[i];
+        }
+        rhs(nb) = -end_v;
+        rhs(nb + 1) = -end_d;
+        c = kkt.fullPivLu().solve(rhs);
+        double peak = 0.0;
+        std::vector<double> corrected = d;
+        for (std::size_t q = 0; q < d.size(); ++q) {
+            for (std::size_t k = 0; k < nbu; ++k)
+                corrected[q] += c(static_cast<Eigen::Index>(k)) * shape_d_[k][q];
+            peak = std::max(peak, std::abs(corrected[q]));
+        }
+        if (peak <= 0.0) break;
+        for (std::size_t q = 0; q < d.size(); ++q)
+            weight[q] *= 1.0 + kGain * std::pow(std::abs(corrected[q]) / peak, kPower);
+    }
+    for (std::size_t k = 0; k < nbu; ++k) {
+        const double ck = c(static_cast<Eigen::Index>(k));
+        for (std::size_t i = 0; i < samples_; ++i) accel_mps2[i] += ck * shape_a_[k][i];
+    }
+}
+
+void BaselineCorrector::taper_ends(std::vector<double>& accel_mps2) const {
+    // d <- w d gives a <- w a + 2 w' v + w'' d (w' and w'' in time).
+    const std::vector<double> v = core::velocity_mps(accel_mps2, dt_s_);
+    const std::vector<double> d = core::displacement_m(accel_mps2, dt_s_);
+    const double duration_s = static_cast<double>(samples_ - 1) * dt_s_;
+    const double tau = std::min(taper_s, duration_s / 4.0);
+    for (std::size_t i = 0; i < samples_; ++i) {
+        const double t = static_cast<double>(i) * dt_s_;
+        const bool start = t < tau;
+        if (!start && t <= duration_s - tau) continue;
+        const Smoothstep s = smoothstep((start ? t : duration_s - t) / tau);
+        const double w1 = (start ? s.w1 : -s.w1) / tau;
+        const double w2 = s.w2 / (tau * tau);
+        accel_mps2[i] = s.w * accel_mps2[i] + 2.0 * w1 * v[i] + w2 * d[i];
+    }
+}
+
+void BaselineCorrector::zero_ends_exactly(std::vector<double>& accel_mps2) const {
+    const double v = dot(ends_.velocity, accel_mps2);
+    const double d = dot(ends_.displacement, accel_mps2);
+    const double det = shape_end_v_[0] * shape_end_d_[1] - shape_end_v_[1] * shape_end_d_[0];
+    const double c0 = (-v * shape_end_d_[1] + d * shape_end_v_[1]) / det;
+    const double c1 = (-d * shape_end_v_[0] + v * shape_end_d_[0]) / det;
+    for (std::size_t i = 0; i < samples_; ++i)
+        accel_mps2[i] += c0 * shape_a_[0][i] + c1 * shape_a_[1][i];
+}
+
+void BaselineCorrector::correct(std::vector<double>& accel_mps2) const {
+    minimise_displacement(accel_mps2);
+    taper_ends(accel_mps2);
+    zero_ends_exactly(accel_mps2);
+}
+
+}  // namespace freestand::motion
