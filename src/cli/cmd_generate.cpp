@@ -5,11 +5,13 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/design_options.hpp"
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
+#include "report/history_json.hpp"
 #include "spectra/design.hpp"
 
 namespace freestand::cli {
@@ -20,9 +22,30 @@ const char* const usage =
 
 std::vector<double> target_grid() { return spectra::log_frequencies(0.01, 200.0, 100); }
 
-double need(const po::variables_map& vm, const std::string& name, const std::string& target) {
-    if (!vm.count(name)) throw UsageError(fmt::format("--target {} needs --{}", target, name));
-    return parse_double(vm[name].as<std::string>(), "--" + name);
+motion::TargetSet design_targets(const po::variables_map& vm, double vertical_ratio,
+                                 bool ratio_given) {
+    const std::string name = vm["target"].as<std::string>();
+    check_design_options(vm, "--target", name);
+    if (name == "rg1.60") {
+        const double pga = required_positive(vm, "--target", name, "pga");
+        motion::TargetSet t = motion::rg160_targets(pga);
+        if (!ratio_given) return t;
+        motion::TargetSet r = motion::ratio_targets(t.label, t.horizontal.psa_5pct,
+                                                    t.horizontal.psa_10pct, vertical_ratio);
+        r.horizontal.rg160_psd_pga_g = pga;
+        motion::set_realism(r, motion::rg160_realism());
+        return r;
+    }
+    const auto f = target_grid();
+    const spectra::Spectrum h5 = design_spectrum(vm, "--target", name, 0.05, false, f);
+    std::optional<spectra::Spectrum> h10;
+    if (name == "ec8") h10 = design_spectrum(vm, "--target", name, 0.10, false, f);
+    std::string label = name == "asce7"    ? "ASCE 7"
+                        : name == "ec8"    ? fmt::format("EC8 type {} ground {}",
+                                                         vm["type"].as<std::string>(),
+                                                         vm["ground"].as<std::string>())
+                                           : "IS 1893 " + vm["soil"].as<std::string>();
+    return motion::ratio_targets(std::move(label), h5, h10, vertical_ratio);
 }
 
 motion::TargetSet targets_from(const po::variables_map& vm) {
@@ -42,69 +65,25 @@ motion::TargetSet targets_from(const po::variables_map& vm) {
         return motion::ratio_targets(fmt::format("user spectrum {}", file), h5, h10, ratio);
     }
     if (!vm.count("target")) throw UsageError("give --target NAME or --target-file F.csv");
-    const std::string name = vm["target"].as<std::string>();
-    const auto f = target_grid();
-    if (name == "rg1.60") {
-        const double pga = need(vm, "pga", name);
-        motion::TargetSet t = motion::rg160_targets(pga);
-        if (!ratio_given) return t;
-        motion::TargetSet r =
-            motion::ratio_targets(t.label, t.horizontal.psa_5pct, t.horizontal.psa_10pct, ratio);
-        r.horizontal.rg160_psd_pga_g = pga;
-        return r;
-    }
-    if (name == "asce7")
-        return motion::ratio_targets(
-            "ASCE 7",
-            spectra::asce7(need(vm, "sds", name), need(vm, "sd1", name), need(vm, "tl", name), f),
-            std::nullopt, ratio);
-    if (name == "ec8") {
-        const double ag = need(vm, "ag", name);
-        const std::string type = vm.count("type") ? vm["type"].as<std::string>() : "";
-        if (type != "1" && type != "2")
-            throw UsageError(fmt::format("--type: \"{}\"; --target ec8 needs --type 1 or 2", type));
-        const std::string ground = vm.count("ground") ? vm["ground"].as<std::string>() : "";
-        if (ground.size() != 1 || ground[0] < 'A' || ground[0] > 'E')
-            throw UsageError(fmt::format(
-                "--ground: \"{}\"; --target ec8 needs --ground A, B, C, D or E", ground));
-        const auto ty = type == "1" ? spectra::Ec8Type::type1 : spectra::Ec8Type::type2;
-        return motion::ratio_targets(fmt::format("EC8 type {} ground {}", type, ground),
-                                     spectra::ec8(ag, ty, ground[0], 0.05, f),
-                                     spectra::ec8(ag, ty, ground[0], 0.10, f), ratio);
-    }
-    if (name == "is1893") {
-        const double pga = need(vm, "pga", name);
-        const std::string soil = vm.count("soil") ? vm["soil"].as<std::string>() : "";
-        spectra::Is1893Soil s{};
-        if (soil == "rock")
-            s = spectra::Is1893Soil::rock;
-        else if (soil == "medium")
-            s = spectra::Is1893Soil::medium;
-        else if (soil == "soft")
-            s = spectra::Is1893Soil::soft;
-        else
-            throw UsageError(
-                fmt::format("--soil: \"{}\"; --target is1893 needs rock, medium or soft", soil));
-        return motion::ratio_targets("IS 1893 " + soil, spectra::is1893(pga, s, f), std::nullopt,
-                                     ratio);
-    }
-    throw UsageError(
-        fmt::format("--target: unknown target \"{}\"; expected rg1.60, asce7, ec8 or is1893 "
-                    "(or --target-file F.csv)",
-                    name));
+    return design_targets(vm, ratio, ratio_given);
 }
 
-std::vector<std::string> split(const std::string& text) {
-    std::vector<std::string> out;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = text.find(',', start);
-        const std::size_t end = comma == std::string::npos ? text.size() : comma;
-        out.push_back(text.substr(start, end - start));
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
-    return out;
+// --va-range, --adv2-range, --da-max: each sets its realism range (the RG 1.60 target has all
+// three by default; other targets none, their ratios then reported and not checked).
+void apply_realism_options(const po::variables_map& vm, motion::TargetSet& targets) {
+    motion::RealismLimits lim = targets.horizontal.realism;
+    const auto range = [&](const char* option) {
+        const std::vector<double> v = parse_double_list(vm[option].as<std::string>(),
+                                                        std::string("--") + option);
+        if (v.size() != 2)
+            throw UsageError(fmt::format("--{}: expected MIN,MAX (two numbers), got {}", option,
+                                         v.size()));
+        return motion::Range{v[0], v[1]};
+    };
+    if (vm.count("va-range")) lim.va_mps_per_g = range("va-range");
+    if (vm.count("adv2-range")) lim.adv2 = range("adv2-range");
+    if (vm.count("da-max")) lim.da_max_m_per_g = parse_double(vm["da-max"].as<std::string>(), "--da-max");
+    motion::set_realism(targets, lim);
 }
 
 nlohmann::ordered_json optional_number(const std::optional<double>& v) {
@@ -142,6 +121,8 @@ nlohmann::ordered_json component_json(const motion::GeneratedComponent& c, bool 
     j["duration_s"] = a.duration_s;
     j["dt_s"] = a.dt_s;
     j["file"] = c.record.component + ".csv";
+    j["measures"] = report::measures_json(a);
+    j["realism"] = report::realism_json(a);
     return j;
 }
 
@@ -151,15 +132,9 @@ int run(const std::vector<std::string>& args) {
         "target-file", po::value<std::string>(),
         "5%-damped target spectrum CSV (\"# damping: 0.05\")")(
         "target-file-10", po::value<std::string>(),
-        "optional 10%-damped target CSV (reported only)")(
-        "pga", po::value<std::string>(), "rg1.60, is1893: PGA, g")("sds", po::value<std::string>(),
-                                                                   "asce7: SDS, g")(
-        "sd1", po::value<std::string>(), "asce7: SD1, g")("tl", po::value<std::string>(),
-                                                          "asce7: TL, s")(
-        "ag", po::value<std::string>(), "ec8: a_g, g")("type", po::value<std::string>(),
-                                                       "ec8: 1 or 2")(
-        "ground", po::value<std::string>(), "ec8: A..E")("soil", po::value<std::string>(),
-                                                         "is1893: rock | medium | soft")(
+        "optional 10%-damped target CSV (reported only)");
+    add_design_options(desc);
+    desc.add_options()(
         "vertical-ratio", po::value<std::string>(),
         "vertical target = ratio x horizontal (default: RG 1.60 vertical for rg1.60, else 2/3)")(
         "seed-record", po::value<std::vector<std::string>>(),
@@ -171,11 +146,18 @@ int run(const std::vector<std::string>& args) {
         "dt", po::value<std::string>(), "synthetic: time step, s (default 0.005, <= 0.01)")(
         "seed", po::value<std::string>()->default_value("1"), "random seed (non-negative integer)")(
         "no-timing", po::bool_switch(), "write wall_s as null so match.json is byte-identical too")(
+        "va-range", po::value<std::string>(),
+        "realism: PGV/PGA range MIN,MAX, m/s per g (rg1.60 default 0.8,2.0; others unchecked)")(
+        "adv2-range", po::value<std::string>(),
+        "realism: PGA PGD/PGV^2 range MIN,MAX (rg1.60 default 2,8; others unchecked)")(
+        "da-max", po::value<std::string>(),
+        "realism: largest PGD/PGA, m per g (rg1.60 default 1.3; others unchecked)")(
         "out", po::value<std::string>()->required(), "output folder");
     const auto vm = parse_options("generate", usage, desc, args);
     if (!vm) return 0;
 
-    const motion::TargetSet targets = targets_from(*vm);
+    motion::TargetSet targets = targets_from(*vm);
+    apply_realism_options(*vm, targets);
     motion::GenerateOptions go;
     const double seed = parse_double((*vm)["seed"].as<std::string>(), "--seed");
     if (!(seed >= 0.0 && seed < 9.0e15 &&
@@ -184,7 +166,7 @@ int run(const std::vector<std::string>& args) {
     go.seed = static_cast<std::uint64_t>(seed);
     if (vm->count("seed-record")) {
         for (const std::string& group : (*vm)["seed-record"].as<std::vector<std::string>>())
-            for (const std::string& file : split(group))
+            for (const std::string& file : split_list(group))
                 go.seed_records.push_back(core::read_record(file));
         for (const char* opt : {"duration", "dt"})
             if (vm->count(opt))
@@ -194,7 +176,7 @@ int run(const std::vector<std::string>& args) {
         go.components.assign(all.begin(), all.begin() + static_cast<long>(std::min<std::size_t>(
                                                             3, go.seed_records.size())));
     }
-    if (vm->count("components")) go.components = split((*vm)["components"].as<std::string>());
+    if (vm->count("components")) go.components = split_list((*vm)["components"].as<std::string>());
     if (vm->count("duration"))
         go.duration_s = parse_double((*vm)["duration"].as<std::string>(), "--duration");
     if (vm->count("dt")) go.dt_s = parse_double((*vm)["dt"].as<std::string>(), "--dt");
@@ -220,6 +202,11 @@ int run(const std::vector<std::string>& args) {
          ">= 0.9, <= 9 adjacent below 1.0, <= 1.3 in 0.2-25 Hz, PSD >= 0.8 target (RG 1.60 "
          "horizontal) in 0.3-24 Hz, |v_end| < 1e-4 m/s, |d_end| < 1e-4 m, dt <= 0.01 s, "
          "duration >= 20 s, |rho| <= 0.16"},
+        {"realism",
+         "PGA within pga_over_zpa_range x the target's zero-period acceleration, D5-75 >= "
+         "d5_75_min_s; on horizontals V/A, AD/V^2 and D/A within their ranges where set "
+         "(rg1.60: 0.8-2.0 m/s/g, 2-8, <= 1.3 m/g; --va-range, --adv2-range, --da-max); "
+         "docs/methods.md s.8"},
         {"psd",
          "S(f) = |X(f)|^2 / (pi T_D), X = dt FFT(a), T_D = D5-75, averaged over f(1 -+ 0.2): "
          "one-sided "
@@ -229,7 +216,8 @@ int run(const std::vector<std::string>& args) {
     core::write_file_atomic(out / "match.json", j.dump(2) + "\n");
     std::cout << fmt::format("{} component(s) written to {}: {}\n", set.components.size(),
                              out.string(),
-                             set.passed ? "all pass SRP 3.7.1" : "FAILING, see match.json");
+                             set.passed ? "all pass SRP 3.7.1 and the realism checks"
+                                        : "FAILING, see match.json");
     return set.passed ? 0 : static_cast<int>(ExitCode::failure);
 }
 

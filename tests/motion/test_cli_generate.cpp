@@ -36,8 +36,44 @@ TEST_CASE("generate writes one CSV per component and match.json with the issue's
         CHECK(j["components"][0].contains(key));
     CHECK(j["components"][1]["component"] == "v");
     CHECK(j["correlations"].size() == 1);
+    // Every history reports its ground-motion measures and realism checks (issue 13 s.1).
+    const auto& h1 = j["components"][0];
+    for (const char* key : {"pga_g", "pgv_mps", "pgd_m", "va_mps_per_g", "adv2", "da_m_per_g",
+                            "arias_mps", "d5_75_s", "d5_95_s", "zpa_g", "pga_over_zpa"})
+        CHECK(h1["measures"].contains(key));
+    CHECK(h1["measures"]["zpa_g"] == 0.2);
+    CHECK(h1["realism"]["passed"] == true);
+    CHECK(h1["realism"]["va_range_mps_per_g"] == nlohmann::json::array({0.8, 2.0}));
+    CHECK(h1["realism"]["ratios_checked"] == true);
+    CHECK(j["components"][1]["realism"]["ratios_checked"] == false);
     CHECK(slurp(out / "h1.csv").find("time_s,accel_g\n0,") != std::string::npos);
     fs::remove_all(out);
+}
+
+TEST_CASE("generate checks the realism ranges the options set, and exits 1 when one fails",
+          "[motion][cli]") {
+    const fs::path out = scratch("realism");
+    // ASCE 7 has no V/A range of its own: reported, not checked...
+    auto r = run_cli("generate --target asce7 --sds 1 --sd1 0.6 --tl 8 --components h1 --out '" +
+                     out.string() + "'");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    auto j = nlohmann::json::parse(slurp(out / "match.json"));
+    CHECK(j["components"][0]["realism"]["va_range_mps_per_g"].is_null());
+    const double va = j["components"][0]["measures"]["va_mps_per_g"];
+    // ...until --va-range asks for a range the history cannot meet.
+    const fs::path out2 = scratch("realism2");
+    r = run_cli("generate --target asce7 --sds 1 --sd1 0.6 --tl 8 --components h1 --va-range " +
+                std::to_string(va * 2.0) + "," + std::to_string(va * 3.0) + " --out '" +
+                out2.string() + "'");
+    CHECK(r.exit_code == 1);
+    j = nlohmann::json::parse(slurp(out2 / "match.json"));
+    CHECK(j["passed"] == false);
+    CHECK_THAT(j["components"][0]["reason"].get<std::string>(), Catch::Contains("V/A"));
+    CHECK(j["components"][0]["realism"]["passed"] == false);
+    CHECK(j["components"][0]["realism"]["srp_passed"] == true);
+    fs::remove_all(out);
+    fs::remove_all(out2);
 }
 
 TEST_CASE("generate is byte-identical for the same inputs and seed", "[motion][cli]") {
@@ -80,7 +116,20 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
     CHECK_THAT(r.err, Catch::Contains("--target rg1.60 needs --pga"));
     r = run_cli("generate --target nureg --pga 0.2 --out '" + out.string() + "'");
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains("unknown target \"nureg\""));
+    CHECK_THAT(r.err, Catch::Contains("--target: unknown design \"nureg\""));
+    // Realism ranges: two numbers, min < max, positive; --sds belongs to asce7 only.
+    r = run_cli("generate --target rg1.60 --pga 0.2 --va-range 0.8 --out '" + out.string() + "'");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--va-range: expected MIN,MAX (two numbers), got 1"));
+    r = run_cli("generate --target rg1.60 --pga 0.2 --adv2-range 8,2 --out '" + out.string() + "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("adv2") && Catch::Contains("expected min < max"));
+    r = run_cli("generate --target rg1.60 --pga 0.2 --da-max -1 --out '" + out.string() + "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("da"));
+    r = run_cli("generate --target rg1.60 --pga 0.2 --sds 1 --out '" + out.string() + "'");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--sds does not apply to --target rg1.60"));
     r = run_cli(
         "generate --target rg1.60 --pga 0.2 --seed-record tests/data/RSN175_IMPVALL.H_H-E12230.AT2 "
         "--dt 0.005 --out '" +
