@@ -56,7 +56,7 @@ std::string restitution_note(const BaseContact& b, const DirectionBounds& bounds
     if (b.restitution) {
         return fmt::format(
             "from Housner's value of the critical edge to the measured r = {:.3f} "
-            "(METHODS.md s.7)",
+            "(docs/methods.md s.7)",
             *b.restitution);
     }
     return bounds.rocking.housner ? "Housner's value of the critical edge (no measured r)" : "";
@@ -119,7 +119,7 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
                   restitution_note(k.base, l->bounds)));
     }
     out.push_back(input("energy method's DeltaD", energy_delta_d_text(c.site), "",
-                        "informational estimate only (METHODS.md s.4)"));
+                        "informational estimate only (docs/methods.md s.4)"));
     out.push_back(input("allowable slide (absolute: clearance)",
                         fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
     if (k.allowable_relative_m) {
@@ -182,7 +182,7 @@ std::string level_verdict_text(const Verdict& v) {
                      : fmt::format("{} ({})", verdict_text(v), to_string(v.failure));
 }
 
-// Which contact bound the deciding model ran at (METHODS.md s.6 step 6).
+// Which contact bound the deciding model ran at (docs/methods.md s.6 step 6).
 std::string governing_bound(const LevelResult& l) {
     switch (l.verdict.decided_by) {
         case Model::static_initiation:
@@ -257,7 +257,7 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
         out.push_back(mstch::map{
             {"text", fmt::format("PGA {:.3f} g, {}: mode stays {} ({}). Screen: {}. A flexible "
                                  "body may uplift below the "
-                                 "static threshold (frequency-induced rocking, METHODS.md s.2).",
+                                 "static threshold (frequency-induced rocking, docs/methods.md s.2).",
                                  l.pga_g, to_string(l.direction), to_string(l.initiation.mode),
                                  l.flexible.basis, l.flexible.reason)}});
     }
@@ -288,10 +288,10 @@ bool shows_own_base(const AssessmentResult& r) {
 }
 
 std::string upgrade_summary(const AssessmentResult& r) {
-    if (!r.upgrade.recommended) return "no material of METHODS.md s.7 passes every level: anchor.";
+    if (!r.upgrade.recommended) return "no material of docs/methods.md s.7 passes every level: anchor.";
     const std::string& why = r.overall.verdict.mechanism;
     return fmt::format(
-        "{} is recommended, the first material in METHODS.md s.7 order that "
+        "{} is recommended, the first material in docs/methods.md s.7 order that "
         "passes every level{}.",
         *r.upgrade.recommended, why.empty() ? "" : ": " + why);
 }
