@@ -217,13 +217,14 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
         }
     } else if (c.base.restitution) {
         assumptions.push_back(fmt::format(
-            "Restitution bounds not given: from Housner's r of each direction to the measured "
+            "Restitution bounds not given: from Housner's r (Housner 1963) of each direction to "
+            "the measured "
             "{:.3g} (docs/methods.md s.7); rocking and overturning use the upper bound.",
             *c.base.restitution));
     } else {
         assumptions.push_back(
             "No restitution given or tabulated: Housner's r = 1 - 2 M R^2 sin^2(alpha) / I_O "
-            "(docs/methods.md s.1) is both bounds.");
+            "(Housner 1963; docs/methods.md s.1) is both bounds.");
     }
 }
 
@@ -343,9 +344,9 @@ void read_energy_displacement(TableReader& r, Site& s, std::vector<std::string>&
     }
     if (!corner) {
         assumptions.push_back(
-            "energy_highpass_hz not given: the energy method's DeltaD is the histories' peak "
-            "displacement after a zero-phase 0.5 Hz high-pass (the thesis's test band, "
-            "docs/methods.md s.4).");
+            "energy_highpass_hz not given: the energy method's DeltaD is the mean of the "
+            "histories' peak displacements after a zero-phase 0.5 Hz high-pass (the lower edge "
+            "of the thesis's 0.5-50 Hz test band, Saraswat 2017; docs/methods.md s.4).");
     }
 }
 

@@ -33,7 +33,9 @@ struct BaseContact {
     double mu_s = 0.0;                  ///< static friction coefficient (nominal)
     double mu_k = 0.0;                  ///< kinetic friction coefficient (nominal)
     std::optional<double> restitution;  ///< measured, on angular velocity; Housner's when absent
-    std::string source;                 ///< e.g. "material table (docs/methods.md s.7)" or "case file"
+    /// Where the values came from: "material table (docs/methods.md s.7; Saraswat 2017)" or
+    /// "case file".
+    std::string source;
     /// [lower, upper] static friction; the default is 0.8 and 1.2 x mu_s (docs/methods.md s.7).
     std::array<double, 2> mu_s_range{0.0, 0.0};
     std::string mu_s_range_source;

@@ -67,10 +67,10 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     return out;
 }
 
-// DeltaD of the energy method (docs/methods.md s.4): the case's table displacement for the level,
-// else the histories' peak displacement after the zero-phase high-pass, which exists only where
-// the histories are used (histories_used). Empty, with the reason, when neither applies, so
-// whether a level shows the estimate depends on that level alone.
+// DeltaD of the energy method (docs/methods.md s.4): the case's table displacement for the
+// level, else the mean of the histories' peak displacements after the zero-phase high-pass,
+// which exists only where the histories are used (histories_used). Empty, with the reason, when
+// neither applies, so whether a level shows the estimate depends on that level alone.
 std::optional<double> energy_delta_d(const Case& c, Direction d, const LevelDemand& dem,
                                      HistoryBank& bank, bool histories_used, Sliding& out) {
     if (dem.table_delta_d_m) {

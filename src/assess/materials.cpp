@@ -39,7 +39,7 @@ BaseContact material_contact(const Material& m) {
     b.mu_s = m.mu_s;
     b.mu_k = m.mu_s;
     b.restitution = m.restitution;
-    b.source = "material table (docs/methods.md s.7)";
+    b.source = "material table (docs/methods.md s.7; Saraswat 2017)";
     b.mu_s_range = default_mu_s_range(m.mu_s);
     b.mu_s_range_source = "default 0.8-1.2 x mu_s (docs/methods.md s.7)";
     return b;

@@ -184,7 +184,7 @@ std::vector<std::string> pipeline_assumptions(const Case& c) {
         out.push_back(
             "Both horizontal directions receive the same RG 1.60 target; the sliding and "
             "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) "
-            "(docs/methods.md s.4).");
+            "(docs/methods.md s.4; ASCE 4-16).");
     }
     out.push_back(
         fmt::format("Vertical PGA = {:.4f} x horizontal PGA, taken downward in the static "
@@ -201,7 +201,7 @@ std::vector<std::string> pipeline_assumptions(const Case& c) {
         "Statistics (docs/methods.md s.6 step 5): with {} or more histories the mean of the peak "
         "responses governs, with fewer the maximum; the 84th percentile is reported. Any "
         "overturned history fails the level; overturning is reported as overturned / simulated "
-        "with its exact (Clopper-Pearson) 95% interval.",
+        "with its exact 95% interval (Clopper & Pearson 1934).",
         min_histories_for_mean));
     out.push_back(
         "Bounds (docs/methods.md s.6 step 6): sliding demands (ASCE 4 and the simulated slip) use the "
@@ -228,17 +228,20 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
         "Each horizontal direction is a planar rigid block (docs/methods.md s.1); bidirectional "
         "effects (twisting, walking) are not modelled.",
         "A flexible body may uplift below the static threshold (frequency-induced rocking, "
-        "docs/methods.md s.2); the rigid-body models cannot show it: see the flexible-body flag.",
-        "The equivalent-linear rocking estimate is a screen, not the ASCE 43-05 text; the "
-        "simulation is the reference (docs/methods.md s.5a).",
-        "Rocking impacts amplify accelerations at the top (1.3 to 11 measured on rigid specimens, "
-        "docs/methods.md s.5); equipment attached to a rocking body must be checked for it."};
+        "Saraswat 2017; docs/methods.md s.2); the rigid-body models cannot show it: see the "
+        "flexible-body flag.",
+        "The equivalent-linear rocking estimate is a screen following the ASCE 43-05 App. A "
+        "approach, not the standard's text; a rocking block is not an oscillator (Makris & "
+        "Konstantinidis 2003) and the simulation is the reference (docs/methods.md s.5a).",
+        "Rocking impacts amplify accelerations at the top (1.3 to 11 measured on rigid "
+        "specimens, Saraswat 2017; docs/methods.md s.5); equipment attached to a rocking body "
+        "must be checked for it."};
     if (bank.generated()) {
         const auto& sets = bank.sets();
         out.push_back(fmt::format(
             "{} three-component histories ({}) matched to {} at 1 g and scaled to each "
             "level; response spectra are linear, so each scaled record matches its scaled target "
-            "with the same ratios.",
+            "with the same ratios (docs/methods.md s.8).",
             sets.size(), sets.front().method,
             r.input.site.targets ? "the target files" : "RG 1.60"));
         for (std::size_t k = 0; k < sets.size(); ++k) {

@@ -12,11 +12,12 @@ namespace freestand::assess {
 const char* to_string(Model m) {
     switch (m) {
         case Model::static_initiation:
-            return "static initiation criterion (docs/methods.md s.2)";
+            return "static initiation criterion (docs/methods.md s.2; Shenton 1996)";
         case Model::asce4_sliding:
-            return "ASCE 4 equivalent-linear sliding (docs/methods.md s.4)";
+            return "ASCE 4 equivalent-linear sliding (docs/methods.md s.4; ASCE 4-16)";
         case Model::equivalent_linear_rocking:
-            return "equivalent-linear rocking estimate (docs/methods.md s.5a)";
+            return "equivalent-linear rocking estimate (docs/methods.md s.5a; ASCE 43-05 App. A "
+                   "approach)";
         case Model::simulation_slide:
             return "time-history simulation, peak slip (docs/methods.md s.3)";
         case Model::simulation_rocking:
@@ -392,7 +393,8 @@ std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels)
     if (where.empty()) return {};
     return {fmt::format(
         "flexible-body flag raised at levels the rigid model accepts (PGA {}; {}): a flexible "
-        "body may uplift below the static threshold (frequency-induced rocking, docs/methods.md s.2), "
+        "body may uplift below the static threshold (frequency-induced rocking, Saraswat 2017; "
+        "docs/methods.md s.2), "
         "which the rigid-block models cannot show. The verdict holds at these levels only if the "
         "component is shown to respond as a rigid body (fixed-base frequency well above the "
         "band) or by test; freestand has no flexible-body model yet.",

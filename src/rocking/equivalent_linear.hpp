@@ -12,8 +12,8 @@ namespace freestand::rocking {
 
 /// How outputs label this estimate.
 inline constexpr const char* equivalent_linear_label =
-    "equivalent-linear estimate (ASCE 43-05 App. A.2 approach, docs/methods.md s.5a; not the code "
-    "text; the time-history simulation is the reference)";
+    "equivalent-linear estimate (ASCE 43-05 App. A.2 approach, docs/methods.md s.5a; not the "
+    "standard's text; the time-history simulation is the reference)";
 
 /// Housner's free-rocking frequency at amplitude theta0, Hz: f = p / (4 arccosh(1 / (1 -
 /// theta0/alpha))) (docs/methods.md s.1). 0 < theta0 < alpha.

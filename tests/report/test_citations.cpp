@@ -1,6 +1,7 @@
 // The methods document ships with the project (issue 13 s.4): every "docs/methods.md s.N"
-// citation in the sources names a section (and a step of s.6) that exists, and nothing cites
-// the former methods note outside the repository.
+// citation in the sources names a section (and a step of s.6) that exists, nothing cites the
+// former methods note outside the repository, and the committed reports cite docs/methods.md
+// and the standards and end with the references list.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <map>
@@ -10,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "report/references.hpp"
+#include "report/render.hpp"
 #include "support/run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -173,4 +176,43 @@ TEST_CASE("nothing in the project cites the out-of-tree methods note", "[report]
         INFO(fs::relative(p, source_dir).string());
         CHECK(test::slurp(p).find(old_name) == std::string::npos);
     }
+}
+
+TEST_CASE("the committed reports cite docs/methods.md and the standards and list the references",
+          "[report][methods][references]") {
+    std::size_t cases = 0;
+    for (const auto& e : fs::directory_iterator(source_dir / "reports")) {
+        if (!e.is_directory()) continue;
+        ++cases;
+        for (const char* name : {"report.md", "report.html", "result.json"}) {
+            const fs::path p = e.path() / name;
+            INFO(fs::relative(p, source_dir).string());
+            const std::string text = test::slurp(p);
+            REQUIRE_FALSE(text.empty());
+            CHECK(text.find(old_name) == std::string::npos);
+            const bool html = std::string(name) == "report.html";
+            const bool markdown = std::string(name) == "report.md";
+            // The reference list: every key, escaped as the report escapes text.
+            for (const report::Reference& r : report::references()) {
+                const std::string key = html       ? report::html_escape(r.key)
+                                        : markdown ? report::markdown_escape(r.key)
+                                                   : r.key;
+                INFO(key);
+                CHECK(text.find(key) != std::string::npos);
+            }
+            if (std::string(name) == "result.json") continue;
+            const std::size_t refs =
+                text.find(html ? "<h2>References</h2>" : "\n## References\n");
+            REQUIRE(refs != std::string::npos);
+            const std::string body = text.substr(0, refs);
+            // Cited where the methods are used, before the list.
+            for (const char* key : {"docs/methods.md s.2", "docs/methods.md s.4",
+                                    "docs/methods.md s.6", "ASCE 4-16", "ASCE 43-05",
+                                    "Shenton 1996", "Clopper &", "SRP 3.7.1"}) {
+                INFO(key);
+                CHECK(body.find(key) != std::string::npos);
+            }
+        }
+    }
+    CHECK(cases >= 7);
 }
