@@ -133,7 +133,7 @@ std::vector<std::string> target_file_assumptions(const Site& site) {
             "{:.6g} x pga_g; history h1 is matched to x's target and h2 to y's; each direction's "
             "initiation and flexible-body screens use its own target; the sliding and rocking "
             "demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 the larger of the "
-            "x and y targets (docs/methods.md s.4).",
+            "x and y targets (docs/methods.md s.4; ASCE 4-16).",
             u.h5.given, u.h5.spectrum.damping, u.y5->given, u.y5->spectrum.damping, u.zpa_h_g,
             u.h5.spectrum.frequency_hz.back(), u.y5->spectrum.psa_g.back() / u.zpa_h_g));
     } else {
@@ -141,7 +141,7 @@ std::vector<std::string> target_file_assumptions(const Site& site) {
             "Target files instead of a design spectrum: horizontal {} (damping {:.3g}), scaled "
             "at each level by pga_g / {:.6g} g (its PSA at {:.6g} Hz, the rigid limit); both "
             "horizontal directions receive it; the sliding and rocking demand is the vector "
-            "SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (docs/methods.md s.4).",
+            "SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (docs/methods.md s.4; ASCE 4-16).",
             u.h5.given, u.h5.spectrum.damping, u.zpa_h_g, u.h5.spectrum.frequency_hz.back()));
     }
     if (u.h10 && u.y10) {
