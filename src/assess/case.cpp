@@ -96,7 +96,7 @@ void read_geometry(TableReader& r, Component& c, std::vector<std::string>& assum
     (void)assumptions;
 }
 
-// I_c of a uniform block filling the footprint and twice the CG height (METHODS.md s.1).
+// I_c of a uniform block filling the footprint and twice the CG height (docs/methods.md s.1).
 double uniform_inertia(double mass_kg, const PlanarGeometry& g, double h_m) {
     return block::uniform_inertia_cg_kgm2(mass_kg, (g.b_left_m + g.b_right_m) / 2.0, h_m);
 }
@@ -114,7 +114,7 @@ void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assump
         return;
     }
     if (r.has("p_radps")) {
-        // p^2 = M g R / I_O (METHODS.md s.1), so I_O = M g R / p^2 and I_c = I_O - M R^2 must be
+        // p^2 = M g R / I_O (docs/methods.md s.1), so I_O = M g R / p^2 and I_c = I_O - M R^2 must be
         // > 0: p < sqrt(g / R) about the critical (smaller-alpha) edge of each direction.
         const block::Block bx0 = c.block(Direction::x);
         const block::Block by0 = c.block(Direction::y);
@@ -154,16 +154,16 @@ std::optional<std::array<double, 2>> read_bounds(TableReader& r, const std::stri
 }
 
 // Where the friction bounds come from: the case's range (which must hold the nominal value), or
-// METHODS.md s.7's default around the single measurement, stated as an assumption.
+// docs/methods.md s.7's default around the single measurement, stated as an assumption.
 void read_friction_bounds(TableReader& r, BaseContact& base, bool mu_given,
                           std::vector<std::string>& assumptions) {
     const auto range = read_bounds(r, "mu_s_range", Range{0.0, 2.0});
     if (!range) {
         base.mu_s_range = default_mu_s_range(base.mu_s);
-        base.mu_s_range_source = "default 0.8-1.2 x mu_s (METHODS.md s.7)";
+        base.mu_s_range_source = "default 0.8-1.2 x mu_s (docs/methods.md s.7)";
         assumptions.push_back(fmt::format(
             "Friction bounds not given: mu_s in [{:.3g}, {:.3g}], 0.8 and 1.2 times the single "
-            "value {:.3g} (METHODS.md s.7); sliding demands use the lower bound, rocking, "
+            "value {:.3g} (docs/methods.md s.7); sliding demands use the lower bound, rocking, "
             "overturning and the classification the upper.",
             base.mu_s_range[0], base.mu_s_range[1], base.mu_s));
         return;
@@ -217,13 +217,14 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
         }
     } else if (c.base.restitution) {
         assumptions.push_back(fmt::format(
-            "Restitution bounds not given: from Housner's r of each direction to the measured "
-            "{:.3g} (METHODS.md s.7); rocking and overturning use the upper bound.",
+            "Restitution bounds not given: from Housner's r (Housner 1963) of each direction to "
+            "the measured "
+            "{:.3g} (docs/methods.md s.7); rocking and overturning use the upper bound.",
             *c.base.restitution));
     } else {
         assumptions.push_back(
             "No restitution given or tabulated: Housner's r = 1 - 2 M R^2 sin^2(alpha) / I_O "
-            "(METHODS.md s.1) is both bounds.");
+            "(Housner 1963; docs/methods.md s.1) is both bounds.");
     }
 }
 
@@ -343,9 +344,9 @@ void read_energy_displacement(TableReader& r, Site& s, std::vector<std::string>&
     }
     if (!corner) {
         assumptions.push_back(
-            "energy_highpass_hz not given: the energy method's DeltaD is the histories' peak "
-            "displacement after a zero-phase 0.5 Hz high-pass (the thesis's test band, "
-            "METHODS.md s.4).");
+            "energy_highpass_hz not given: the energy method's DeltaD is the mean of the "
+            "histories' peak displacements after a zero-phase 0.5 Hz high-pass (the lower edge "
+            "of the thesis's 0.5-50 Hz test band, Saraswat 2017; docs/methods.md s.4).");
     }
 }
 

@@ -27,14 +27,16 @@ struct PlanarGeometry {
 };
 
 /// Base friction and restitution, with where each value came from, and their bounds
-/// (METHODS.md s.7: single measurements, so checks use bounds, not best estimates).
+/// (docs/methods.md s.7: single measurements, so checks use bounds, not best estimates).
 struct BaseContact {
-    std::string material;               ///< METHODS.md s.7 name, or "" for explicit values
+    std::string material;               ///< docs/methods.md s.7 name, or "" for explicit values
     double mu_s = 0.0;                  ///< static friction coefficient (nominal)
     double mu_k = 0.0;                  ///< kinetic friction coefficient (nominal)
     std::optional<double> restitution;  ///< measured, on angular velocity; Housner's when absent
-    std::string source;                 ///< e.g. "material table (METHODS.md s.7)" or "case file"
-    /// [lower, upper] static friction; the default is 0.8 and 1.2 x mu_s (METHODS.md s.7).
+    /// Where the values came from: "material table (docs/methods.md s.7; Saraswat 2017)" or
+    /// "case file".
+    std::string source;
+    /// [lower, upper] static friction; the default is 0.8 and 1.2 x mu_s (docs/methods.md s.7).
     std::array<double, 2> mu_s_range{0.0, 0.0};
     std::string mu_s_range_source;
     /// [lower, upper] restitution given by the case; absent: from Housner's value of each
@@ -45,7 +47,7 @@ struct BaseContact {
     double kinetic_ratio() const { return mu_s > 0.0 ? mu_k / mu_s : 1.0; }
 };
 
-/// Default friction bounds of METHODS.md s.7: 0.8 and 1.2 times the single measurement.
+/// Default friction bounds of docs/methods.md s.7: 0.8 and 1.2 times the single measurement.
 std::array<double, 2> default_mu_s_range(double mu_s);
 
 /// The free-standing component (issue 6, [component]).
@@ -64,7 +66,7 @@ struct Component {
     double allowable_slide_m = 0.0;     ///< absolute slide allowed: clearance to walls, neighbours
     /// Relative displacement allowed between joined units (slack of a transfer tunnel), m.
     std::optional<double> allowable_relative_m;
-    double required_overturn_fs = 1.5;  ///< required alpha / theta_max (METHODS.md s.5a)
+    double required_overturn_fs = 1.5;  ///< required alpha / theta_max (docs/methods.md s.5a)
 
     const PlanarGeometry& plane(Direction d) const { return d == Direction::x ? x : y; }
     /// The planar rigid block of one direction.
@@ -100,7 +102,7 @@ struct Site {
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
     double g_mps2 = 9.81;               ///< gravity used throughout the case
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy
-    /// method's DeltaD (METHODS.md s.4: the thesis's test band started at 0.5 Hz), Hz.
+    /// method's DeltaD (docs/methods.md s.4: the thesis's test band started at 0.5 Hz), Hz.
     double energy_highpass_hz = 0.5;
     /// DeltaD per PGA level given by the case (table displacements), m; replaces the high-pass.
     std::optional<std::vector<double>> energy_table_displacement_m;
@@ -112,7 +114,7 @@ const char* to_string(SimulatePolicy p);
 
 /// Run options (issue 6, [options]).
 struct Options {
-    int histories_per_level = 7;  ///< METHODS.md s.6 step 5: >= 7 lets the mean govern
+    int histories_per_level = 7;  ///< docs/methods.md s.6 step 5: >= 7 lets the mean govern
     std::uint64_t seed = 1;
     std::vector<std::filesystem::path> seed_records;  ///< resolved against the case's folder
     SimulatePolicy simulate = SimulatePolicy::automatic;

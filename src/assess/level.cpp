@@ -67,10 +67,10 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     return out;
 }
 
-// DeltaD of the energy method (METHODS.md s.4): the case's table displacement for the level,
-// else the histories' peak displacement after the zero-phase high-pass, which exists only where
-// the histories are used (histories_used). Empty, with the reason, when neither applies, so
-// whether a level shows the estimate depends on that level alone.
+// DeltaD of the energy method (docs/methods.md s.4): the case's table displacement for the
+// level, else the mean of the histories' peak displacements after the zero-phase high-pass,
+// which exists only where the histories are used (histories_used). Empty, with the reason, when
+// neither applies, so whether a level shows the estimate depends on that level alone.
 std::optional<double> energy_delta_d(const Case& c, Direction d, const LevelDemand& dem,
                                      HistoryBank& bank, bool histories_used, Sliding& out) {
     if (dem.table_delta_d_m) {
@@ -185,7 +185,7 @@ Rocking closed_form_rocking(const Case& c, const ContactBound& upper, const bloc
         out.spectral_margin = g.spectral_margin;
     }
     if (mode == Mode::rest) out.amplification_estimate = 1.0;
-    // Sliding caps the block's acceleration at about mu g (METHODS.md s.5).
+    // Sliding caps the block's acceleration at about mu g (docs/methods.md s.5).
     if (mode == Mode::slide) out.amplification_estimate = std::min(1.0, upper.mu_s / A);
     return out;
 }
@@ -227,7 +227,7 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
     const spectra::Spectrum h5 = scaled_target(u.h5.spectrum, factor, f);
     std::optional<spectra::Spectrum> y5;
     if (u.y5) y5 = scaled_target(u.y5->spectrum, factor, f);
-    // SA_VH combines direction x's and y's targets (METHODS.md s.4; one file: {h, h}).
+    // SA_VH combines direction x's and y's targets (docs/methods.md s.4; one file: {h, h}).
     std::vector<spectra::Spectrum> vh{sliding::vector_horizontal({h5, y5 ? *y5 : h5}, 0.05)};
     if (u.h10) {
         const spectra::Spectrum h10 = scaled_target(u.h10->spectrum, factor, f);

@@ -1,6 +1,6 @@
 #pragma once
 /// One PGA level in one direction: classification, closed forms, and (when needed) the
-/// simulation over the level's histories (METHODS.md s.6 steps 1-4).
+/// simulation over the level's histories (docs/methods.md s.6 steps 1-4).
 #include <array>
 #include <map>
 #include <utility>
@@ -23,8 +23,8 @@ struct LevelDemand {
     double pga_g = 0.0;                   ///< the level's PGA = direction x's, g
     double pga_v_g = 0.0;
     spectra::Spectrum h5;                 ///< 5%-damped horizontal target of direction x
-    spectra::Spectrum sa_vh_slide;        ///< SA_VH at the sliding damping (METHODS.md s.4)
-    rocking::DampedSpectra sa_vh_damped;  ///< SA_VH at any damping (METHODS.md s.5a)
+    spectra::Spectrum sa_vh_slide;        ///< SA_VH at the sliding damping (docs/methods.md s.4)
+    rocking::DampedSpectra sa_vh_damped;  ///< SA_VH at any damping (docs/methods.md s.5a)
     /// Equivalent-linear rocking by (direction, restitution; -1 for Housner's), computed on
     /// first need. It does not depend on the friction, so material trials with the same
     /// restitution reuse it.
@@ -56,7 +56,7 @@ spectra::Spectrum scaled_target(const spectra::Spectrum& file, double factor,
 /// Frequencies the design spectra are tabulated on, Hz.
 std::vector<double> design_frequencies();
 
-/// The friction and restitution bounds of direction d (METHODS.md s.6 step 6, s.7).
+/// The friction and restitution bounds of direction d (docs/methods.md s.6 step 6, s.7).
 DirectionBounds direction_bounds(const Component& comp, Direction d);
 
 /// Evaluates one level and direction of the case (its own base, or the base of a trial case
@@ -72,7 +72,7 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g);
 
 /// Simulates every history at both bounds (once when they coincide) and gathers the
-/// statistics of METHODS.md s.6 step 5; rocking_mode picks the governing history's measure.
+/// statistics of docs/methods.md s.6 step 5; rocking_mode picks the governing history's measure.
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
                           double pga_g, HistoryBank& bank, bool rocking_mode);
 

@@ -8,7 +8,7 @@
 namespace freestand::assess {
 
 const std::vector<Material>& materials() {
-    // METHODS.md section 7.
+    // docs/methods.md s.7.
     static const std::vector<Material> table{
         {"plywood", 0.15, 0.94}, {"PVC sheet on concrete", 0.15, std::nullopt},
         {"HDPE", 0.32, 0.95},    {"aluminium", 0.48, 0.97},
@@ -39,9 +39,9 @@ BaseContact material_contact(const Material& m) {
     b.mu_s = m.mu_s;
     b.mu_k = m.mu_s;
     b.restitution = m.restitution;
-    b.source = "material table (METHODS.md s.7)";
+    b.source = "material table (docs/methods.md s.7; Saraswat 2017)";
     b.mu_s_range = default_mu_s_range(m.mu_s);
-    b.mu_s_range_source = "default 0.8-1.2 x mu_s (METHODS.md s.7)";
+    b.mu_s_range_source = "default 0.8-1.2 x mu_s (docs/methods.md s.7)";
     return b;
 }
 

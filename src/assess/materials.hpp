@@ -1,5 +1,5 @@
 #pragma once
-/// Base materials of METHODS.md section 7 (static friction on steel; restitution measured on
+/// Base materials of docs/methods.md s.7 (static friction on steel; restitution measured on
 /// steel specimens, absent where the table gives none).
 #include <optional>
 #include <string>
@@ -22,7 +22,7 @@ const Material* find_material(const std::string& name);
 struct BaseContact;
 
 /// The base contact of a case naming only `base_material = m`: tabulated mu_s, mu_k = mu_s,
-/// tabulated restitution (absent: Housner's), default friction bounds (METHODS.md s.7).
+/// tabulated restitution (absent: Housner's), default friction bounds (docs/methods.md s.7).
 BaseContact material_contact(const Material& m);
 
 /// Names joined with ", " for error messages.

@@ -37,7 +37,7 @@ std::string range_text(const std::array<double, 2>& r) {
 }
 
 // Why the recommended material helps, from how the own base failed and which way the
-// friction moves (METHODS.md s.6 step 7: a lower friction can be the answer).
+// friction moves (docs/methods.md s.6 step 7: a lower friction can be the answer).
 std::string mechanism(const BaseContact& own, const std::vector<LevelResult>& own_levels,
                       const MaterialTrial& chosen) {
     const bool rocked =
@@ -87,7 +87,7 @@ struct Search {
     std::vector<LevelResult> recommended_levels;
 };
 
-// METHODS.md s.6 step 7: each material is the case reassessed with that material's whole
+// docs/methods.md s.6 step 7: each material is the case reassessed with that material's whole
 // property set, through evaluate_all as for the case itself (with_base_material makes the case
 // a file naming only that material would give); the first in table order that passes.
 Search search_materials(const Case& c, const std::vector<LevelDemand>& demands,
@@ -133,7 +133,7 @@ std::vector<std::string> target_file_assumptions(const Site& site) {
             "{:.6g} x pga_g; history h1 is matched to x's target and h2 to y's; each direction's "
             "initiation and flexible-body screens use its own target; the sliding and rocking "
             "demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 the larger of the "
-            "x and y targets (METHODS.md s.4).",
+            "x and y targets (docs/methods.md s.4; ASCE 4-16).",
             u.h5.given, u.h5.spectrum.damping, u.y5->given, u.y5->spectrum.damping, u.zpa_h_g,
             u.h5.spectrum.frequency_hz.back(), u.y5->spectrum.psa_g.back() / u.zpa_h_g));
     } else {
@@ -141,7 +141,7 @@ std::vector<std::string> target_file_assumptions(const Site& site) {
             "Target files instead of a design spectrum: horizontal {} (damping {:.3g}), scaled "
             "at each level by pga_g / {:.6g} g (its PSA at {:.6g} Hz, the rigid limit); both "
             "horizontal directions receive it; the sliding and rocking demand is the vector "
-            "SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md s.4).",
+            "SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (docs/methods.md s.4; ASCE 4-16).",
             u.h5.given, u.h5.spectrum.damping, u.zpa_h_g, u.h5.spectrum.frequency_hz.back()));
     }
     if (u.h10 && u.y10) {
@@ -183,32 +183,32 @@ std::vector<std::string> pipeline_assumptions(const Case& c) {
     } else {
         out.push_back(
             "Both horizontal directions receive the same RG 1.60 target; the sliding and "
-            "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) (METHODS.md "
-            "s.4).");
+            "rocking demand is the vector SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2) "
+            "(docs/methods.md s.4; ASCE 4-16).");
     }
     out.push_back(
         fmt::format("Vertical PGA = {:.4f} x horizontal PGA, taken downward in the static "
-                    "checks (the worst case, METHODS.md s.5).",
+                    "checks (the worst case, docs/methods.md s.5).",
                     c.site.vertical_ratio));
     out.push_back(
-        "Decision (METHODS.md s.6 step 4): the screen (static criteria; ASCE 4 sliding at the "
+        "Decision (docs/methods.md s.6 step 4): the screen (static criteria; ASCE 4 sliding at the "
         "lower friction bound; the equivalent-linear rocking estimate at the upper bounds) "
         "decides a level it passes. A level that fails the screen is simulated and the "
         "simulation governs it, pass or fail; only simulate = \"never\" lets the screen decide a "
         "failure. The energy-conservation estimate is informational: it neither decides nor "
         "triggers a simulation.");
     out.push_back(fmt::format(
-        "Statistics (METHODS.md s.6 step 5): with {} or more histories the mean of the peak "
+        "Statistics (docs/methods.md s.6 step 5): with {} or more histories the mean of the peak "
         "responses governs, with fewer the maximum; the 84th percentile is reported. Any "
         "overturned history fails the level; overturning is reported as overturned / simulated "
-        "with its exact (Clopper-Pearson) 95% interval.",
+        "with its exact 95% interval (Clopper & Pearson 1934).",
         min_histories_for_mean));
     out.push_back(
-        "Bounds (METHODS.md s.6 step 6): sliding demands (ASCE 4 and the simulated slip) use the "
+        "Bounds (docs/methods.md s.6 step 6): sliding demands (ASCE 4 and the simulated slip) use the "
         "lower friction bound; rocking, overturning and the classification use the upper "
         "friction and restitution bounds, with mu_k / mu_s kept at each bound.");
     out.push_back(
-        "Base-material search (METHODS.md s.6 step 7): each material of the table is assessed "
+        "Base-material search (docs/methods.md s.6 step 7): each material of the table is assessed "
         "with its whole property set (tabulated mu_s with default bounds 0.8-1.2 x mu_s, mu_k = "
         "mu_s, the tabulated restitution as the measured r) exactly as a case naming it; the "
         "first material in table order that passes every level is recommended.");
@@ -225,20 +225,23 @@ std::vector<std::string> pipeline_assumptions(const Case& c) {
 
 std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
     std::vector<std::string> out{
-        "Each horizontal direction is a planar rigid block (METHODS.md s.1); bidirectional "
+        "Each horizontal direction is a planar rigid block (docs/methods.md s.1); bidirectional "
         "effects (twisting, walking) are not modelled.",
         "A flexible body may uplift below the static threshold (frequency-induced rocking, "
-        "METHODS.md s.2); the rigid-body models cannot show it: see the flexible-body flag.",
-        "The equivalent-linear rocking estimate is a screen, not the ASCE 43-05 text; the "
-        "simulation is the reference (METHODS.md s.5a).",
-        "Rocking impacts amplify accelerations at the top (1.3 to 11 measured on rigid specimens, "
-        "METHODS.md s.5); equipment attached to a rocking body must be checked for it."};
+        "Saraswat 2017; docs/methods.md s.2); the rigid-body models cannot show it: see the "
+        "flexible-body flag.",
+        "The equivalent-linear rocking estimate is a screen following the ASCE 43-05 App. A "
+        "approach, not the standard's text; a rocking block is not an oscillator (Makris & "
+        "Konstantinidis 2003) and the simulation is the reference (docs/methods.md s.5a).",
+        "Rocking impacts amplify accelerations at the top (1.3 to 11 measured on rigid "
+        "specimens, Saraswat 2017; docs/methods.md s.5); equipment attached to a rocking body "
+        "must be checked for it."};
     if (bank.generated()) {
         const auto& sets = bank.sets();
         out.push_back(fmt::format(
             "{} three-component histories ({}) matched to {} at 1 g and scaled to each "
             "level; response spectra are linear, so each scaled record matches its scaled target "
-            "with the same ratios.",
+            "with the same ratios (docs/methods.md s.8).",
             sets.size(), sets.front().method,
             r.input.site.targets ? "the target files" : "RG 1.60"));
         for (std::size_t k = 0; k < sets.size(); ++k) {

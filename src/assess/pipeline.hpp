@@ -1,5 +1,5 @@
 #pragma once
-/// The assessment pipeline (METHODS.md s.6, issue 6 "model only what the scene needs"):
+/// The assessment pipeline (docs/methods.md s.6, issue 6 "model only what the scene needs"):
 /// per PGA level and direction, classify; stop at rest; else closed-form sliding and rocking;
 /// generate histories and simulate only where the closed forms leave the verdict open; then the
 /// base-material search and the overall verdict.
@@ -14,7 +14,7 @@ namespace freestand::assess {
 /// Throws InputError for bad seed records, NumericalError if a stage fails to converge.
 AssessmentResult assess(const Case& c);
 
-/// The base-material search of METHODS.md s.6 step 7 on its own: every material of the table
+/// The base-material search of docs/methods.md s.6 step 7 on its own: every material of the table
 /// assessed as assess() assesses a case naming it (used by assess() when the case's own base
 /// fails, and by tests for every case).
 Upgrade search_materials(const Case& c);

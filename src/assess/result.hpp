@@ -12,17 +12,17 @@
 
 namespace freestand::assess {
 
-/// Initiating mode from rest (METHODS.md s.2): the sliding stage's classification, one enum.
+/// Initiating mode from rest (docs/methods.md s.2): the sliding stage's classification, one enum.
 using Mode = sliding::Mode;
 using sliding::to_string;
 
-/// Which model settled a verdict or a check (METHODS.md s.6).
+/// Which model settled a verdict or a check (docs/methods.md s.6).
 enum class Model {
-    static_initiation,          ///< METHODS.md s.2 static thresholds
-    asce4_sliding,              ///< METHODS.md s.4 ASCE 4 equivalent-linear sliding
-    equivalent_linear_rocking,  ///< METHODS.md s.5a screen
-    simulation_slide,           ///< METHODS.md s.3 time-history simulation, peak slip
-    simulation_rocking,         ///< METHODS.md s.3 time-history simulation, rocking / overturning
+    static_initiation,          ///< docs/methods.md s.2 static thresholds
+    asce4_sliding,              ///< docs/methods.md s.4 ASCE 4 equivalent-linear sliding
+    equivalent_linear_rocking,  ///< docs/methods.md s.5a screen
+    simulation_slide,           ///< docs/methods.md s.3 time-history simulation, peak slip
+    simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
 };
 const char* to_string(Model m);
 
@@ -46,7 +46,7 @@ const char* to_string(Failure f);
 struct Verdict {
     VerdictKind kind = VerdictKind::acceptable;
     Failure failure = Failure::none;
-    /// The demand is negligible (METHODS.md s.2 low-motion threshold, or a closed form that
+    /// The demand is negligible (docs/methods.md s.2 low-motion threshold, or a closed form that
     /// finds no motion): the report says "no motion" instead of a ratio; margin is then empty.
     bool no_motion = false;
     std::optional<double> margin;  ///< capacity / demand
@@ -68,7 +68,7 @@ struct Governing {
     Verdict verdict;
 };
 
-/// Static classification at the level's peak accelerations (METHODS.md s.2, s.5: vertical
+/// Static classification at the level's peak accelerations (docs/methods.md s.2, s.5: vertical
 /// taken downward, the worst case).
 struct Initiation {
     Mode mode = Mode::rest;
@@ -89,7 +89,7 @@ struct FlexibleFlag {
     std::string reason;               ///< why raised or not, in words
 };
 
-/// The friction and restitution a check ran with, and which bound each is (METHODS.md s.6
+/// The friction and restitution a check ran with, and which bound each is (docs/methods.md s.6
 /// step 6, s.7).
 struct ContactBound {
     double mu_s = 0.0;
@@ -107,12 +107,12 @@ struct DirectionBounds {
     double restitution_lower = 0.0;  ///< reported; no check reads it
 };
 
-/// Closed-form sliding estimates (METHODS.md s.4) at the lower friction bound.
+/// Closed-form sliding estimates (docs/methods.md s.4) at the lower friction bound.
 struct Sliding {
     double mu_s = 0.0;  ///< the friction they used (the lower bound)
     double mu_e = 0.0;
     double c_s_mps2 = 0.0;
-    /// DeltaD of the energy method (METHODS.md s.4): the table displacement, m; 0 when the
+    /// DeltaD of the energy method (docs/methods.md s.4): the table displacement, m; 0 when the
     /// estimate was not made.
     double delta_d_m = 0.0;
     std::string delta_d_source;          ///< where DeltaD came from, in words
@@ -123,7 +123,7 @@ struct Sliding {
     std::string reason;                    ///< why a value is absent ("" when both present)
 };
 
-/// Closed-form rocking and overturning checks (METHODS.md s.5, s.5a) at the upper bounds.
+/// Closed-form rocking and overturning checks (docs/methods.md s.5, s.5a) at the upper bounds.
 struct Rocking {
     double alpha_rad = 0.0;
     double R_m = 0.0;
@@ -142,7 +142,7 @@ struct Rocking {
     std::optional<double> amplification_estimate;  ///< slide: ~mu/A; rest: 1; rock: absent
 };
 
-/// One check of the screen (METHODS.md s.6 step 4).
+/// One check of the screen (docs/methods.md s.6 step 4).
 struct ScreenCheck {
     bool applies = false;  ///< the block moves in this way at the check's bound
     bool passed = true;
@@ -158,7 +158,7 @@ struct Screen {
     bool passed = true;
 };
 
-/// Mean, 84th percentile and maximum of a peak response over the histories (METHODS.md s.6
+/// Mean, 84th percentile and maximum of a peak response over the histories (docs/methods.md s.6
 /// step 5).
 struct Stats {
     double mean = 0.0;
@@ -166,7 +166,7 @@ struct Stats {
     double max = 0.0;
 };
 
-/// Aggregated time-history simulation over the level's histories (METHODS.md s.3, s.6).
+/// Aggregated time-history simulation over the level's histories (docs/methods.md s.3, s.6).
 struct Simulation {
     int histories = 0;
     bool mean_governs = false;  ///< >= 7 histories: the mean governs; fewer: the maximum
@@ -205,7 +205,7 @@ struct LevelResult {
     std::vector<std::string> trail;
 };
 
-/// One material of the base-material search (METHODS.md s.6 step 7): the case reassessed with
+/// One material of the base-material search (docs/methods.md s.6 step 7): the case reassessed with
 /// that material's whole property set, through the same code as a case naming it.
 struct MaterialTrial {
     std::string material;
@@ -217,7 +217,7 @@ struct MaterialTrial {
 
 struct Upgrade {
     bool needed = false;                     ///< the case's own base failed somewhere
-    std::vector<MaterialTrial> trials;       ///< in METHODS.md s.7 order
+    std::vector<MaterialTrial> trials;       ///< in docs/methods.md s.7 order
     std::optional<std::string> recommended;  ///< first material in table order that passes
 };
 

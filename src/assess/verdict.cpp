@@ -12,15 +12,16 @@ namespace freestand::assess {
 const char* to_string(Model m) {
     switch (m) {
         case Model::static_initiation:
-            return "static initiation criterion (METHODS.md s.2)";
+            return "static initiation criterion (docs/methods.md s.2; Shenton 1996)";
         case Model::asce4_sliding:
-            return "ASCE 4 equivalent-linear sliding (METHODS.md s.4)";
+            return "ASCE 4 equivalent-linear sliding (docs/methods.md s.4; ASCE 4-16)";
         case Model::equivalent_linear_rocking:
-            return "equivalent-linear rocking estimate (METHODS.md s.5a)";
+            return "equivalent-linear rocking estimate (docs/methods.md s.5a; ASCE 43-05 App. A "
+                   "approach)";
         case Model::simulation_slide:
-            return "time-history simulation, peak slip (METHODS.md s.3)";
+            return "time-history simulation, peak slip (docs/methods.md s.3)";
         case Model::simulation_rocking:
-            return "time-history simulation, rocking and overturning (METHODS.md s.3)";
+            return "time-history simulation, rocking and overturning (docs/methods.md s.3)";
     }
     return "";
 }
@@ -257,14 +258,14 @@ SimulationNeed simulation_need(const Screen& screen, SimulatePolicy policy) {
                               ? "simulated because options.simulate = \"always\"; the screen "
                                 "passed and decides, the simulation is reported beside it"
                               : "simulated: the screen failed, so the simulation is required and "
-                                "governs (METHODS.md s.6 step 4)"};
+                                "governs (docs/methods.md s.6 step 4)"};
         case SimulatePolicy::automatic:
             break;
     }
     if (screen.passed) return {false, "not simulated: the screen passed"};
     return {true,
             "simulated: the screen failed, so the simulation is required and governs "
-            "(METHODS.md s.6 step 4)"};
+            "(docs/methods.md s.6 step 4)"};
 }
 
 Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs) {
@@ -392,7 +393,8 @@ std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels)
     if (where.empty()) return {};
     return {fmt::format(
         "flexible-body flag raised at levels the rigid model accepts (PGA {}; {}): a flexible "
-        "body may uplift below the static threshold (frequency-induced rocking, METHODS.md s.2), "
+        "body may uplift below the static threshold (frequency-induced rocking, Saraswat 2017; "
+        "docs/methods.md s.2), "
         "which the rigid-block models cannot show. The verdict holds at these levels only if the "
         "component is shown to respond as a rigid body (fixed-base frequency well above the "
         "band) or by test; freestand has no flexible-body model yet.",

@@ -1,5 +1,5 @@
 #pragma once
-/// The anchoring decision (METHODS.md s.6) as pure functions of the checks' results, so every
+/// The anchoring decision (docs/methods.md s.6) as pure functions of the checks' results, so every
 /// branch can be tested on hand-built inputs.
 ///
 /// Policy: the screen (static criteria, ASCE 4 sliding at the lower friction bound, the
@@ -14,11 +14,11 @@
 
 namespace freestand::assess {
 
-/// Below both thresholds the response is "no motion" (METHODS.md s.2).
+/// Below both thresholds the response is "no motion" (docs/methods.md s.2).
 inline constexpr double no_motion_slide_m = 1e-3;
 inline constexpr double no_motion_rock_rad = 0.003;
 /// With at least this many histories the mean of the peaks governs, else the maximum
-/// (METHODS.md s.6 step 5).
+/// (docs/methods.md s.6 step 5).
 inline constexpr int min_histories_for_mean = 7;
 
 /// The screen of one level from its initiation (both bounds), sliding and rocking results.

@@ -1,16 +1,16 @@
 #pragma once
 /// Planar rigid-block geometry shared by the closed-form checks and the simulator
-/// (METHODS.md section 1). One horizontal direction; the block rocks about a left or right edge.
+/// (docs/methods.md s.1). One horizontal direction; the block rocks about a left or right edge.
 namespace freestand::block {
 
 /// Which rocking edge. The block tips over the right edge when the base accelerates left.
 enum class Edge { left, right };
 
-/// Sign convention of METHODS.md section 3: s = +1 right edge, -1 left edge.
+/// Sign convention of docs/methods.md s.3: s = +1 right edge, -1 left edge.
 constexpr double edge_sign(Edge e) { return e == Edge::right ? 1.0 : -1.0; }
 
 /// I_c about the CG of a uniform rectangular block of half-width b and CG height h (height
-/// 2 h): M (b^2 + h^2) / 3, kg m^2 (METHODS.md s.1). The one copy of this formula.
+/// 2 h): M (b^2 + h^2) / 3, kg m^2 (docs/methods.md s.1). The one copy of this formula.
 double uniform_inertia_cg_kgm2(double mass_kg, double half_width_m, double cg_height_m);
 
 /// Geometry and mass of a planar rigid block. Construct with uniform() or general(); both
@@ -42,7 +42,7 @@ struct Block {
     /// Restitution on angular velocity when the block, rocking about the other edge, strikes
     /// the floor with edge `impact_edge` and goes on rotating about it. Angular momentum about
     /// the impact edge is conserved: r = (I_c + M (h^2 - b_L b_R)) / I_O(impact_edge), which for a
-    /// symmetric block is Housner's 1 - 2 M R^2 sin^2(alpha) / I_O (METHODS.md section 1).
+    /// symmetric block is Housner's 1 - 2 M R^2 sin^2(alpha) / I_O (docs/methods.md s.1).
     /// Negative for very squat blocks (no rebound); callers clamp at 0 where they need to.
     double housner_restitution(Edge impact_edge) const;
     /// Edge with the smaller alpha: the one the block tips over first.

@@ -1,5 +1,5 @@
 /// freestand classify: initiating mode of a block at rest under peak accelerations
-/// (METHODS.md section 2).
+/// (docs/methods.md s.2).
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>

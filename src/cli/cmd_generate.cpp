@@ -12,6 +12,7 @@
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
 #include "report/history_json.hpp"
+#include "report/references.hpp"
 #include "spectra/design.hpp"
 
 namespace freestand::cli {
@@ -126,6 +127,17 @@ nlohmann::ordered_json component_json(const motion::GeneratedComponent& c, bool 
     return j;
 }
 
+// The sources of the targets, the generation and the acceptance rule (docs/methods.md s.8).
+nlohmann::ordered_json references_json() {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const report::Reference& r :
+         report::references({"docs/methods.md", "SRP 3.7.1", "RG 1.60", "ASCE 4-16",
+                             "NUREG/CR-6728", "Nigam & Jennings 1969",
+                             "Al Atik & Abrahamson 2010"}))
+        out.push_back({{"key", r.key}, {"text", r.text}});
+    return out;
+}
+
 int run(const std::vector<std::string>& args) {
     po::options_description desc("options");
     desc.add_options()("target", po::value<std::string>(), "rg1.60 | asce7 | ec8 | is1893")(
@@ -212,6 +224,8 @@ int run(const std::vector<std::string>& args) {
          "one-sided "
          "per rad/s, compared with the SRP 3.7.1 App. A target in the same convention"},
         {"wall_s", "the only field that varies between identical runs (null with --no-timing)"}};
+    j["methods"] = "docs/methods.md s.8";
+    j["references"] = references_json();
     j["freestand_version"] = FREESTAND_VERSION;
     core::write_file_atomic(out / "match.json", j.dump(2) + "\n");
     std::cout << fmt::format("{} component(s) written to {}: {}\n", set.components.size(),

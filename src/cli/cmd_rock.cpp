@@ -1,4 +1,4 @@
-/// freestand rock: closed-form rocking and overturning checks of a block (METHODS.md s.5, 5a).
+/// freestand rock: closed-form rocking and overturning checks of a block (docs/methods.md s.5, s.5a).
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>

@@ -1,4 +1,4 @@
-/// freestand slide: ASCE 4 and energy-conservation sliding estimates (METHODS.md section 4).
+/// freestand slide: ASCE 4 and energy-conservation sliding estimates (docs/methods.md s.4).
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
@@ -85,7 +85,9 @@ int run_slide(const std::vector<std::string>& args) {
         return 0;
     }
     json j;
-    j["method"] = "ASCE 4 equivalent-linear and energy-conservation sliding (METHODS.md s.4)";
+    j["method"] =
+        "ASCE 4 equivalent-linear (ASCE 4-16) and energy-conservation (Saraswat 2017) sliding "
+        "(docs/methods.md s.4)";
     j["mu_s"] = in.mu_s;
     j["av_g"] = in.av_g;
     j["mu_e"] = e.mu_e;

@@ -20,16 +20,16 @@ const std::map<std::string, std::string> design_source{
     {"rg1.60",
      "US NRC Regulatory Guide 1.60 Rev. 2, Tables I and II: control points A 33 Hz, "
      "B 9 Hz, C 2.5 Hz (vertical 3.5 Hz), D 0.25 Hz (36 in ground displacement per 1 g), "
-     "log-log lines, PSA = PGA above 33 Hz, constant SD below 0.25 Hz (METHODS.md s.8)"},
+     "log-log lines, PSA = PGA above 33 Hz, constant SD below 0.25 Hz (docs/methods.md s.8)"},
     {"asce7",
      "ASCE 7-16 section 11.4.6 design response spectrum: T0 = 0.2 SD1/SDS, TS = SD1/SDS, "
-     "SD1/T to TL, SD1 TL/T^2 beyond (METHODS.md s.8)"},
+     "SD1/T to TL, SD1 TL/T^2 beyond (docs/methods.md s.8)"},
     {"ec8",
      "EN 1998-1:2004 3.2.2.2 horizontal elastic spectrum, eqs. (3.2)-(3.6), recommended "
-     "S, TB, TC, TD of Tables 3.2 (Type 1) and 3.3 (Type 2) (METHODS.md s.8)"},
+     "S, TB, TC, TD of Tables 3.2 (Type 1) and 3.3 (Type 2) (docs/methods.md s.8)"},
     {"is1893",
      "IS 1893 (Part 1) Sa/g at 5% damping: 1 + 15 T below 0.1 s, 2.5 plateau, "
-     "then 1.0/T, 1.36/T, 1.67/T (rock, medium, soft) to 4 s, constant beyond (METHODS.md s.8)"},
+     "then 1.0/T, 1.36/T, 1.67/T (rock, medium, soft) to 4 s, constant beyond (docs/methods.md s.8)"},
 };
 const std::map<std::string, std::string> design_scaling{
     {"rg1.60",

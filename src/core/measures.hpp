@@ -1,5 +1,5 @@
 #pragma once
-/// Ground-motion measures of an acceleration record (METHODS.md section 8, "Response spectra":
+/// Ground-motion measures of an acceleration record (docs/methods.md s.8, "Response spectra":
 /// PGA, PGV, PGD, Arias intensity and significant durations travel with every record).
 /// Integrals use the trapezoidal rule on the record's own samples, starting from rest.
 #include <vector>

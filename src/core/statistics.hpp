@@ -1,5 +1,5 @@
 #pragma once
-/// Small statistics of a sample of peak responses and of failure counts (METHODS.md s.6
+/// Small statistics of a sample of peak responses and of failure counts (docs/methods.md s.6
 /// step 5, s.9). Shared by the assessment's histories and the fragility samples.
 #include <array>
 #include <vector>

@@ -1,11 +1,11 @@
 #pragma once
 /// Physical constants and unit conversions. Everything inside freestand is SI; conversions
-/// happen once, where input is read or output written (METHODS.md, preamble).
+/// happen once, where input is read or output written (docs/methods.md, Conventions).
 #include <numbers>
 
 namespace freestand::units {
 
-/// Standard gravity used throughout, m/s^2 (METHODS.md: g = 9.81 unless a case says otherwise).
+/// Standard gravity used throughout, m/s^2 (docs/methods.md, Conventions: not a case parameter).
 inline constexpr double g_mps2 = 9.81;
 inline constexpr double pi = std::numbers::pi;
 inline constexpr double two_pi = 2.0 * std::numbers::pi;

@@ -1,4 +1,4 @@
-// Fixed-step central-difference baseline (METHODS.md section 3: "dt = 1e-4 s and sign checks").
+// Fixed-step central-difference baseline (docs/methods.md s.3: "dt = 1e-4 s and sign checks").
 // Velocities live at half steps (v_{n+1/2} = v_{n-1/2} + dt a_n, x_{n+1} = x_n + dt v_{n+1/2});
 // velocity-dependent terms use v_n ~ v_{n-1/2} + dt/2 a_{n-1}. Switches are detected by sign
 // checks at step ends only (no event location): stick / reversal when the slip velocity changes

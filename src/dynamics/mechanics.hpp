@@ -1,5 +1,5 @@
 #pragma once
-/// Internal: equations of motion of the block in each contact mode (METHODS.md section 3),
+/// Internal: equations of motion of the block in each contact mode (docs/methods.md s.3),
 /// shared by the event-driven and the central-difference integrators.
 #include <array>
 #include <cmath>
@@ -77,7 +77,7 @@ inline Accel slide_accel(const Geometry& g, int sigma, Base base) {
 }
 
 /// The contact mode a block at rest (theta = 0, u' = 0) enters under base acceleration base,
-/// by METHODS.md section 2 (strict inequalities: exactly at a threshold it stays at rest).
+/// by docs/methods.md s.2 (strict inequalities: exactly at a threshold it stays at rest).
 struct Start {
     Mode mode = Mode::rest;
     int s = 1;      ///< edge for rock / slide-rock
@@ -102,7 +102,7 @@ Start classify_on_edge(const Geometry& g, int s, double th, double om, double v,
 Start classify_sliding(const Geometry& g, double v);
 
 /// Peak uplift a free-rocking block reaches from theta = 0 with angular velocity om about edge s
-/// (energy conservation, METHODS.md section 1); returns +infinity if it would pass alpha.
+/// (energy conservation, docs/methods.md s.1); returns +infinity if it would pass alpha.
 double rebound_angle(const Geometry& g, int s, double om, double G);
 
 /// Absolute horizontal acceleration of the larger-magnitude top corner, given the CG's relative

@@ -1,5 +1,5 @@
 #pragma once
-/// Time-history simulation of a planar rigid block on a moving base (METHODS.md sections 1-3):
+/// Time-history simulation of a planar rigid block on a moving base (docs/methods.md s.1, s.2, s.3):
 /// rest, slide, rock about either edge, slide-rock and free flight, with impacts and overturning.
 /// Two integrators: event-driven with exact event location (the reference) and the classic
 /// fixed-step central-difference scheme (the baseline).
@@ -60,7 +60,7 @@ Excitation excitation_from_record(const core::Record& horizontal, double scale =
                                   const core::Record* vertical = nullptr,
                                   double vertical_scale = 1.0);
 
-/// Harmonic input of METHODS.md section 3: xg'' = A g sin(2 pi f t) on 0 <= t <= T, zero after,
+/// Harmonic input of docs/methods.md s.3: xg'' = A g sin(2 pi f t) on 0 <= t <= T, zero after,
 /// optionally tapered by (1 - cos(pi t / t_ramp)) / 2 for t < t_ramp.
 struct SineSpec {
     double amplitude_g = 0.0;
@@ -114,7 +114,7 @@ struct Options {
     /// edge) released with theta' = 0, and slip velocity u'(0).
     double initial_rotation_rad = 0.0;
     double initial_slide_velocity_mps = 0.0;
-    double g_mps2 = 9.81;        ///< gravity (METHODS.md: 9.81 unless a case says otherwise)
+    double g_mps2 = 9.81;        ///< gravity (docs/methods.md, Conventions: 9.81)
 };
 
 /// How overturning was decided.

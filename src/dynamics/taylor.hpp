@@ -288,7 +288,7 @@ inline double shortened(double h, double excess) {
     return f < 1.0 ? h * f : 0.5 * h;
 }
 
-// Rock: I_O theta'' = -M R [G s + s_edge xg'' c] (METHODS.md sec. 3), G and xg'' linear in tau.
+// Rock: I_O theta'' = -M R [G s + s_edge xg'' c] (docs/methods.md s.3), G and xg'' linear in tau.
 inline double rock_step(const Geometry& g, const ContactStart& x0, double h, double rel_tol,
                         double abs_tol, ContactSeries& S) {
     const auto i = static_cast<std::size_t>(Geometry::index(x0.s));

@@ -1,5 +1,5 @@
 #pragma once
-/// SRP 3.7.1 Option 1 Approach 2 numbers (METHODS.md s.8) shared by the generator and the report.
+/// SRP 3.7.1 Option 1 Approach 2 numbers (docs/methods.md s.8) shared by the generator and the report.
 #include <vector>
 
 #include "core/record.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-/// Spectrum-compatible acceleration histories (METHODS.md s.8): synthetic records from a target
+/// Spectrum-compatible acceleration histories (docs/methods.md s.8): synthetic records from a target
 /// spectrum, time-domain wavelet matching of seed records, baseline correction, and the
 /// SRP 3.7.1 acceptance report. Everything is deterministic for the same inputs and seed.
 #include <cstdint>

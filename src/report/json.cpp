@@ -9,6 +9,7 @@
 
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
+#include "report/references.hpp"
 #include "report/sha256.hpp"
 
 namespace freestand::report {
@@ -310,6 +311,10 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
     j["case"] = case_json(r.input);
     j["assumptions"] = r.assumptions;
     j["limits"] = r.limits;
+    ordered_json refs = ordered_json::array();
+    for (const Reference& ref : references())
+        refs.push_back({{"key", ref.key}, {"text", ref.text}});
+    j["references"] = refs;
     j["stamp"] = {{"tool", "freestand"},
                   {"version", stamp.tool_version},
                   {"commit", stamp.commit},

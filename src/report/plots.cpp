@@ -50,7 +50,7 @@ Figure initiation_figure(const assess::AssessmentResult& r, const assess::Initia
     }
     return Figure{
         fmt::format("initiation-{}.svg", dir),
-        fmt::format("Motion-initiation diagram, direction {}: regions of METHODS.md s.2 for "
+        fmt::format("Motion-initiation diagram, direction {}: regions of docs/methods.md s.2 for "
                     "this block, and the case's point at each PGA level.",
                     dir),
         render_svg(p)};

@@ -1,5 +1,8 @@
 #include "report/references.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace freestand::report {
 
 const std::vector<Reference>& references() {
@@ -56,6 +59,18 @@ const std::vector<Reference>& references() {
          "worked examples)."},
     };
     return list;
+}
+
+std::vector<Reference> references(const std::vector<std::string>& keys) {
+    const std::vector<Reference>& all = references();
+    std::vector<Reference> out;
+    for (const std::string& key : keys) {
+        const auto it = std::find_if(all.begin(), all.end(),
+                                     [&](const Reference& r) { return r.key == key; });
+        if (it == all.end()) throw std::out_of_range("unknown reference key \"" + key + "\"");
+        out.push_back(*it);
+    }
+    return out;
 }
 
 }  // namespace freestand::report

@@ -14,4 +14,8 @@ struct Reference {
 /// In report order: the methods document first, then standards, then papers.
 const std::vector<Reference>& references();
 
+/// The references with these keys, in the order given. Throws std::out_of_range naming an
+/// unknown key (a programming error: the keys are literals in the code).
+std::vector<Reference> references(const std::vector<std::string>& keys);
+
 }  // namespace freestand::report

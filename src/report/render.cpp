@@ -55,17 +55,20 @@ std::string restitution_note(const BaseContact& b, const DirectionBounds& bounds
     if (b.restitution_range) return "restitution_range (case file)";
     if (b.restitution) {
         return fmt::format(
-            "from Housner's value of the critical edge to the measured r = {:.3f} "
-            "(METHODS.md s.7)",
+            "from Housner's value of the critical edge (Housner 1963) to the measured "
+            "r = {:.3f} (docs/methods.md s.7)",
             *b.restitution);
     }
-    return bounds.rocking.housner ? "Housner's value of the critical edge (no measured r)" : "";
+    return bounds.rocking.housner
+               ? "Housner's value of the critical edge, no measured r (Housner 1963; "
+                 "docs/methods.md s.1)"
+               : "";
 }
 
 std::string statistic_rule(int histories) {
     return fmt::format(
         "the mean of the peaks governs with >= {} histories, else the maximum: "
-        "here the {}",
+        "here the {} (docs/methods.md s.6 step 5)",
         min_histories_for_mean, histories >= min_histories_for_mean ? "mean" : "maximum");
 }
 
@@ -75,8 +78,9 @@ std::string energy_delta_d_text(const Site& site) {
         for (double v : *site.energy_table_displacement_m) mm_values.push_back(fixed(v * 1000.0, 1));
         return fmt::format("case table per level: {} mm", fmt::join(mm_values, ", "));
     }
-    return fmt::format("histories' peak displacement after a zero-phase {:.3g} Hz high-pass",
-                       site.energy_highpass_hz);
+    return fmt::format(
+        "mean of the histories' peak displacements after a zero-phase {:.3g} Hz high-pass",
+        site.energy_highpass_hz);
 }
 
 mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
@@ -119,7 +123,8 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
                   restitution_note(k.base, l->bounds)));
     }
     out.push_back(input("energy method's DeltaD", energy_delta_d_text(c.site), "",
-                        "informational estimate only (METHODS.md s.4)"));
+                        "informational estimate only: the energy method of Saraswat 2017 "
+                        "(docs/methods.md s.4)"));
     out.push_back(input("allowable slide (absolute: clearance)",
                         fixed(k.allowable_slide_m * 1000.0, 1), "mm"));
     if (k.allowable_relative_m) {
@@ -130,8 +135,10 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
     }
     out.push_back(
         input("required overturning factor of safety", fixed(k.required_overturn_fs, 2), "-"));
-    out.push_back(
-        input("design spectrum", c.site.design == "rg1.60" ? "US NRC RG 1.60" : c.site.design, ""));
+    out.push_back(input("design spectrum",
+                        c.site.design == "rg1.60" ? "US NRC RG 1.60" : c.site.design, "",
+                        c.site.design == "rg1.60" ? "RG 1.60 (docs/methods.md s.8)"
+                                                  : "docs/methods.md s.8"));
     std::string pga_levels;
     for (double p : c.site.pga_g) pga_levels += (pga_levels.empty() ? "" : ", ") + fixed(p, 3);
     out.push_back(input("PGA levels (horizontal)", pga_levels, "g"));
@@ -141,7 +148,8 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
     out.push_back(input("gravity", fixed(c.site.g_mps2, 3), "m/s^2"));
     out.push_back(input("histories per level", std::to_string(c.options.histories_per_level), "",
                         statistic_rule(c.options.histories_per_level)));
-    out.push_back(input("simulate", to_string(c.options.simulate), ""));
+    out.push_back(input("simulate", to_string(c.options.simulate), "",
+                        "screen, then simulate (docs/methods.md s.6 step 4)"));
     return out;
 }
 
@@ -182,7 +190,7 @@ std::string level_verdict_text(const Verdict& v) {
                      : fmt::format("{} ({})", verdict_text(v), to_string(v.failure));
 }
 
-// Which contact bound the deciding model ran at (METHODS.md s.6 step 6).
+// Which contact bound the deciding model ran at (docs/methods.md s.6 step 6).
 std::string governing_bound(const LevelResult& l) {
     switch (l.verdict.decided_by) {
         case Model::static_initiation:
@@ -215,6 +223,22 @@ mstch::array text_list(const std::vector<std::string>& items) {
     mstch::array out;
     for (const std::string& s : items) out.push_back(mstch::map{{"text", s}});
     return out;
+}
+
+// What the time-history table checks and against which target, with the sources.
+std::string history_basis(const Site& site) {
+    const std::string target =
+        site.targets ? "the case's target files" : "RG 1.60 (vertical = ratio x horizontal)";
+    const std::string psd = site.targets ? ""
+                                         : ", the horizontals' power spectral density against "
+                                           "the RG 1.60 target PSD of SRP 3.7.1 App. A";
+    return fmt::format(
+        "Each component of each history is checked against its 5%-damped target, {}, by the "
+        "SRP 3.7.1 Option 1 Approach 2 criteria{} (docs/methods.md s.8). Response spectra by "
+        "the Nigam & Jennings 1969 recurrence; histories matched by time-domain wavelet "
+        "adjustment (Al Atik & Abrahamson 2010) from a random-phase synthetic record or a seed "
+        "record (the method column).",
+        target, psd);
 }
 
 mstch::map level_row(const LevelResult& l) {
@@ -257,7 +281,8 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
         out.push_back(mstch::map{
             {"text", fmt::format("PGA {:.3f} g, {}: mode stays {} ({}). Screen: {}. A flexible "
                                  "body may uplift below the "
-                                 "static threshold (frequency-induced rocking, METHODS.md s.2).",
+                                 "static threshold (frequency-induced rocking, Saraswat 2017; "
+                                 "docs/methods.md s.2).",
                                  l.pga_g, to_string(l.direction), to_string(l.initiation.mode),
                                  l.flexible.basis, l.flexible.reason)}});
     }
@@ -288,10 +313,10 @@ bool shows_own_base(const AssessmentResult& r) {
 }
 
 std::string upgrade_summary(const AssessmentResult& r) {
-    if (!r.upgrade.recommended) return "no material of METHODS.md s.7 passes every level: anchor.";
+    if (!r.upgrade.recommended) return "no material of docs/methods.md s.7 passes every level: anchor.";
     const std::string& why = r.overall.verdict.mechanism;
     return fmt::format(
-        "{} is recommended, the first material in METHODS.md s.7 order that "
+        "{} is recommended, the first material in docs/methods.md s.7 order that "
         "passes every level{}.",
         *r.upgrade.recommended, why.empty() ? "" : ": " + why);
 }
@@ -355,6 +380,7 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"flex_notes", flex_notes(r.levels)},
         {"figures", figures},
         {"has_history_checks", !r.history_checks.empty()},
+        {"history_basis", history_basis(r.input.site)},
         {"history_checks", checks},
         {"assumptions", text_list(r.assumptions)},
         {"limits", text_list(r.limits)},

@@ -1,5 +1,5 @@
 #pragma once
-/// Closed-form rocking and overturning checks (METHODS.md section 5).
+/// Closed-form rocking and overturning checks (docs/methods.md s.5).
 #include <string>
 
 #include "block/block.hpp"
@@ -10,7 +10,7 @@
 namespace freestand::rocking {
 
 /// Peak horizontal acceleration that uplifts edge e, g: tan(alpha) (1 - av_g), with the peak
-/// vertical av_g >= 0 taken downward (the worst case; METHODS.md s.5). 0 <= av_g < 1.
+/// vertical av_g >= 0 taken downward (the worst case; docs/methods.md s.5). 0 <= av_g < 1.
 double uplift_threshold_g(const block::Block& blk, block::Edge e, double av_g);
 
 /// Ishiyama (1982) velocity bound, m/s: a block cannot overturn under harmonic excitation whose

@@ -1,6 +1,6 @@
 #pragma once
 /// Spectral demand at an arbitrary damping, for the equivalent-linear rocking estimate
-/// (METHODS.md s.5a: "interpolating the damping on log axes").
+/// (docs/methods.md s.5a: "interpolating the damping on log axes").
 #include <functional>
 #include <string>
 #include <vector>

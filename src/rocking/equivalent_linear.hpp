@@ -1,7 +1,7 @@
 #pragma once
-/// Equivalent-linear rocking estimate (METHODS.md s.5a): a screen that follows the ASCE 43-05
-/// Appendix A.2 approach, in the form METHODS.md gives; it is not the code's text. The
-/// time-history simulation is the reference (Makris & Konstantinidis 2003).
+/// Equivalent-linear rocking estimate (docs/methods.md s.5a): a screen that follows the
+/// ASCE 43-05 Appendix A.2 approach in the form that section gives; it is not the standard's
+/// text. The time-history simulation is the reference (Makris & Konstantinidis 2003).
 #include <optional>
 #include <string>
 
@@ -12,11 +12,11 @@ namespace freestand::rocking {
 
 /// How outputs label this estimate.
 inline constexpr const char* equivalent_linear_label =
-    "equivalent-linear estimate (ASCE 43-05 App. A.2 approach, METHODS.md s.5a; not the code "
-    "text; the time-history simulation is the reference)";
+    "equivalent-linear estimate (ASCE 43-05 App. A.2 approach, docs/methods.md s.5a; not the "
+    "standard's text; the time-history simulation is the reference)";
 
 /// Housner's free-rocking frequency at amplitude theta0, Hz: f = p / (4 arccosh(1 / (1 -
-/// theta0/alpha))) (METHODS.md s.1). 0 < theta0 < alpha.
+/// theta0/alpha))) (docs/methods.md s.1). 0 < theta0 < alpha.
 double rocking_frequency_hz(double p_radps, double alpha_rad, double theta0_rad);
 
 /// Horizontal CG displacement at rocking angle theta0, m: R (sin(alpha) - sin(alpha - theta0)).
@@ -36,7 +36,7 @@ struct VerticalDemand {
 struct ElOptions {
     std::optional<double> pga_h_g;      ///< default: the horizontal demand's zpa_g()
     std::optional<double> pga_v_g;      ///< default: vertical zpa_g(), or ratio * pga_h
-    std::optional<double> restitution;  ///< measured r overriding Housner's (METHODS.md s.7)
+    std::optional<double> restitution;  ///< measured r overriding Housner's (docs/methods.md s.7)
     double fs_required = 1.5;           ///< required alpha / theta0
     int grid_points = 2000;             ///< trial angles alpha k / n, k = 1..n-1, alpha (1 - 1e-9)
 };
@@ -69,7 +69,7 @@ struct ElResult {
 };
 
 /// Estimate about edge e. horizontal: SA_VH (or one component) at any damping.
-/// Steps (METHODS.md s.5a): gate; beta_e from r; for trial theta0 = alpha k / n upward, the
+/// Steps (docs/methods.md s.5a): gate; beta_e from r; for trial theta0 = alpha k / n upward, the
 /// effective frequency f_e with gravity reduced to g (1 - 0.4 SA_V(f_e, beta_e)) (so f_e solves
 /// f = f_e,g sqrt(1 - 0.4 SA_V(f)), by bisection), SD, capacity (2 pi f_e)^2 SD against
 /// SA_VH(f_e, beta_e); the first grid angle with demand <= capacity is refined by bisection

@@ -1,5 +1,5 @@
 #pragma once
-/// Flexible-body screen (METHODS.md section 2, last bullet): a body whose fixed-base natural
+/// Flexible-body screen (docs/methods.md s.2, flexible-body screen): a body whose fixed-base natural
 /// frequency lies in the seismic band can uplift below the static threshold g tan(alpha) when
 /// the excitation is strong near its frequencies ("frequency-induced rocking").
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-/// All closed-form rocking checks of a block for one direction (METHODS.md sections 2, 5, 5a):
+/// All closed-form rocking checks of a block for one direction (docs/methods.md s.2, s.5, s.5a):
 /// what `freestand rock` prints and what the assessment reads before deciding to simulate.
 #include <optional>
 #include <string>

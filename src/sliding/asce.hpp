@@ -1,5 +1,5 @@
 #pragma once
-/// Closed-form sliding estimates (METHODS.md section 4): the ASCE 4 equivalent-linear method and
+/// Closed-form sliding estimates (docs/methods.md s.4): the ASCE 4 equivalent-linear method and
 /// the energy-conservation method. Both give one equivalent peak displacement, not a history.
 #include <optional>
 #include <string>
@@ -11,7 +11,7 @@ namespace freestand::sliding {
 /// Damping of the spectra the ASCE 4 sliding method reads (10% of critical).
 inline constexpr double asce_sliding_damping = 0.10;
 
-/// Effective friction mu_e = mu (1 - 0.4 A_v / g) (ASCE 4; METHODS.md s.4). mu_s >= 0,
+/// Effective friction mu_e = mu (1 - 0.4 A_v / g) (ASCE 4; docs/methods.md s.4). mu_s >= 0,
 /// 0 <= av_g < 2.5 (so mu_e >= 0 only vanishes with mu); InputError naming the field otherwise.
 double effective_friction(double mu_s, double av_g);
 

@@ -1,6 +1,6 @@
 #pragma once
 /// A block described as its bounding box plus, optionally, the CG position and inertia: the way
-/// the command line and case files describe equipment (METHODS.md section 1).
+/// the command line and case files describe equipment (docs/methods.md s.1).
 #include <map>
 #include <optional>
 #include <string>

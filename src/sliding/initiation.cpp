@@ -45,11 +45,11 @@ double load_ratio(double a_h_g, double a_v_g) {
     return std::abs(a_h_g) / (1.0 + a_v_g);
 }
 
-// Derivation of mu_crit for a general block (METHODS.md section 2 asks for it from I_O and R).
+// Derivation of mu_crit for a general block (docs/methods.md s.2 asks for it from I_O and R).
 // Pivot O at edge e; CG relative to O: x = -b (towards the block), y = h, with b = R sin(alpha),
 // h = R cos(alpha). The base accelerates away from the pivot side with magnitude a (for the right
 // edge, x_g'' = -a) and vertically with y_g''; G = g + y_g'', A = a / G. No slip at O.
-// Rock equation (METHODS.md section 3) at theta = 0:  I_O theta'' = M (a h - G b).
+// Rock equation (docs/methods.md s.3) at theta = 0:  I_O theta'' = M (a h - G b).
 // CG acceleration at theta = 0, theta' = 0 (centripetal terms vanish):
 //   x_CG'' = x_g'' + h theta'',  y_CG'' = y_g'' + b theta''.
 // Base reactions at O: F = M x_CG'' = M (-a + h theta''), N = M (g + y_CG'') = M (G + b theta'').

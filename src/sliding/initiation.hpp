@@ -1,5 +1,5 @@
 #pragma once
-/// Motion initiation from rest: rest / slide / rock / slide-rock (METHODS.md section 2).
+/// Motion initiation from rest: rest / slide / rock / slide-rock (docs/methods.md s.2).
 /// Static boundaries of a rigid block under a step of base acceleration; the rocking checks,
 /// the simulator's start-up and the assessment all classify through these functions.
 #include <optional>
@@ -15,7 +15,7 @@ enum class Mode { rest, slide, rock, slide_rock };
 /// "rest", "slide", "rock", "slide-rock".
 std::string to_string(Mode mode);
 
-/// Which boundary of METHODS.md section 2 decided the mode.
+/// Which boundary of docs/methods.md s.2 decided the mode.
 enum class Criterion {
     below_thresholds,            ///< A <= mu_s and A <= tan(alpha): rest
     friction_below_slenderness,  ///< A > mu_s and mu_s <= tan(alpha): slide
@@ -58,7 +58,7 @@ Initiation classify_edge(const block::Block& blk, block::Edge e, double mu_s, do
                          double a_v_g);
 
 /// Classifies an instantaneous signed base acceleration: a_h_g < 0 (base accelerating left)
-/// tips the block over its right edge, a_h_g > 0 over its left edge (METHODS.md section 3);
+/// tips the block over its right edge, a_h_g > 0 over its left edge (docs/methods.md s.3);
 /// a_h_g = 0 reports the critical edge (always rest).
 Initiation classify_signed(const block::Block& blk, double mu_s, double a_h_g, double a_v_g);
 

@@ -1,5 +1,5 @@
 #pragma once
-/// The horizontal demand of the sliding method, SA_VH at one damping (METHODS.md s.4), from
+/// The horizontal demand of the sliding method, SA_VH at one damping (docs/methods.md s.4), from
 /// spectra given directly (files, design targets) or computed from records.
 #include <filesystem>
 #include <vector>

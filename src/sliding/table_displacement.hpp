@@ -1,5 +1,5 @@
 #pragma once
-/// DeltaD of the energy-conservation sliding estimate (METHODS.md s.4): the shake table's peak
+/// DeltaD of the energy-conservation sliding estimate (docs/methods.md s.4): the shake table's peak
 /// displacement. The thesis read it from test signals band-passed at 0.5-50 Hz; a broadband
 /// design history carries most of its displacement below 0.5 Hz, so the history is high-passed
 /// at the same corner before its displacement is taken.

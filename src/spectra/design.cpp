@@ -42,7 +42,7 @@ Spectrum tabulate(double damping, std::string label, const std::vector<double>& 
     return s;
 }
 
-// RG 1.60 Tables I and II (METHODS.md s.8): A / B / C / D per damping.
+// RG 1.60 Tables I and II (docs/methods.md s.8): A / B / C / D per damping.
 constexpr const std::array<double, 5>& rg_damping = rg160_dampings;
 constexpr std::array<Rg160Factors, 5> rg_horizontal{{{1.0, 4.96, 5.95, 3.20},
                                                      {1.0, 3.54, 4.25, 2.50},

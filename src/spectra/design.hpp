@@ -1,5 +1,5 @@
 #pragma once
-/// Design spectra used as targets (METHODS.md s.8).
+/// Design spectra used as targets (docs/methods.md s.8).
 #include <array>
 #include <vector>
 
@@ -7,7 +7,7 @@
 
 namespace freestand::spectra {
 
-/// The dampings RG 1.60 tabulates (METHODS.md s.8).
+/// The dampings RG 1.60 tabulates (docs/methods.md s.8).
 inline constexpr std::array<double, 5> rg160_dampings{0.005, 0.02, 0.05, 0.07, 0.10};
 
 /// US NRC RG 1.60 at damping in {0.005, 0.02, 0.05, 0.07, 0.10}; other dampings in
@@ -41,13 +41,13 @@ Spectrum is1893(double pga_g, Is1893Soil soil, const std::vector<double>& freque
 /// S(f) = 2 |X(f)|^2 / T_D (X = dt * FFT(a), T_D the 5-75% Arias duration).
 double rg160_target_psd(double f_hz, double pga_g);
 
-/// The same target in the convention of the SRP 3.7.1 App. A table (METHODS.md s.8 values
+/// The same target in the convention of the SRP 3.7.1 App. A table (docs/methods.md s.8 values
 /// 0.419 (f/2.5)^0.2 ... per 1 g): one-sided per rad/s, evaluated at f in Hz, so the integral
 /// over omega is the mean square. Compare with a record's S(f) = |X(f)|^2 / (pi T_D).
 double rg160_target_psd_per_radps(double f_hz, double pga_g);
 
 /// RG 1.60 amplification factors (A, B, C, D) at a damping in [0.005, 0.10], interpolated on
-/// log damping between the table of METHODS.md s.8. D multiplies the ground displacement
+/// log damping between the table of docs/methods.md s.8. D multiplies the ground displacement
 /// 0.9144 m per 1 g; A-C multiply the PGA.
 struct Rg160Factors {
     double a, b, c, d;

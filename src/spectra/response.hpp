@@ -1,5 +1,5 @@
 #pragma once
-/// Linear SDOF response spectra by the Nigam-Jennings exact recurrence (METHODS.md s.8).
+/// Linear SDOF response spectra by the Nigam-Jennings exact recurrence (docs/methods.md s.8).
 #include <vector>
 
 #include "core/record.hpp"
@@ -29,7 +29,7 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
 
 /// Integration controls of the response computation.
 struct ResponseOptions {
-    /// Each oscillator sub-steps so its step is <= T / min_steps_per_period (METHODS.md s.8:
+    /// Each oscillator sub-steps so its step is <= T / min_steps_per_period (docs/methods.md s.8:
     /// T/20, else peaks between samples are missed). 0 turns sub-stepping off: one step per
     /// sample, exact at the samples but blind between them (for benchmarks and tests only).
     int min_steps_per_period = 20;

@@ -31,7 +31,7 @@ Spectrum parse_spectrum_csv(const std::string& text, const std::string& file);
 void write_spectrum_csv(const Spectrum& s, const std::filesystem::path& path,
                         const std::vector<std::string>& comments);
 
-/// SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 the larger at each frequency (METHODS.md s.4),
+/// SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 the larger at each frequency (docs/methods.md s.4),
 /// on h1's frequencies.
 Spectrum combine_vector_horizontal(const Spectrum& h1, const Spectrum& h2);
 

@@ -44,7 +44,7 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
         const Case c =
             read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (std::string(name) + ".toml"));
         CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
-        CHECK(c.options.histories_per_level == 7);  // METHODS.md s.6 step 5: the mean governs
+        CHECK(c.options.histories_per_level == 7);  // docs/methods.md s.6 step 5: the mean governs
     }
 }
 
@@ -76,7 +76,7 @@ TEST_CASE("a uniform block from its box and a material from the table", "[assess
     CHECK(c.component.uniform_block);
     CHECK(c.component.cg_height_m == Approx(0.6));
     CHECK(c.component.x.b_left_m == Approx(0.15));
-    // I_c = M (b^2 + h^2) / 3 = 38 (0.0225 + 0.36) / 3 = 4.845 kg m^2 (METHODS.md s.1).
+    // I_c = M (b^2 + h^2) / 3 = 38 (0.0225 + 0.36) / 3 = 4.845 kg m^2 (docs/methods.md s.1).
     CHECK(c.component.x.inertia_cg_kgm2 == Approx(4.845).epsilon(1e-12));
     CHECK(c.component.base.mu_s == 0.72);
     CHECK(c.component.base.restitution.value() == 0.98);
@@ -94,7 +94,7 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     // friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
     CHECK(c.assumptions.size() == 6);
     CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.8 * 0.3, 1.2 * 0.3});
-    CHECK(c.component.base.mu_s_range_source == "default 0.8-1.2 x mu_s (METHODS.md s.7)");
+    CHECK(c.component.base.mu_s_range_source == "default 0.8-1.2 x mu_s (docs/methods.md s.7)");
     CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {
         return a.rfind("Friction bounds not given: mu_s in [0.24, 0.36]", 0) == 0;
     }));

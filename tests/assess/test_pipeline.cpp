@@ -39,7 +39,7 @@ TEST_CASE("glove box at 0.2 g: the ASCE 4 estimate by hand at the lower friction
     const LevelResult& x = r.levels.at(0);
     CHECK(x.initiation.mode == Mode::slide);
     CHECK(x.initiation_lower.mode == Mode::slide);
-    // Bounds of METHODS.md s.7 around the PVC sheet's 0.15: 0.12 and 0.18.
+    // Bounds of docs/methods.md s.7 around the PVC sheet's 0.15: 0.12 and 0.18.
     CHECK(x.bounds.sliding.mu_s == Approx(0.12));
     CHECK(x.bounds.rocking.mu_s == Approx(0.18));
     CHECK(x.initiation.mu_s == Approx(0.18));
@@ -57,7 +57,7 @@ TEST_CASE("glove box at 0.2 g: the ASCE 4 estimate by hand at the lower friction
     CHECK(x.verdict.decided_by == Model::simulation_slide);
     CHECK(r.histories_generated == 1);
     // Simulated levels also show the (informational) energy estimate; its DeltaD is the
-    // histories' displacement after the zero-phase 0.5 Hz high-pass (METHODS.md s.4).
+    // histories' displacement after the zero-phase 0.5 Hz high-pass (docs/methods.md s.4).
     CHECK(x.sliding.delta_d_m > 0.0);
     CHECK(*x.sliding.highpass_hz == 0.5);
     CHECK(x.sliding.delta_d_source.find("zero-phase 0.5 Hz high-pass") != std::string::npos);
@@ -101,7 +101,7 @@ TEST_CASE("a table displacement replaces the high-passed histories, at every sli
     CHECK(s.delta_d_m == 0.040);
     CHECK_FALSE(s.highpass_hz.has_value());
     CHECK(s.delta_d_source == "case table (site.energy_table_displacement_m)");
-    // METHODS.md s.4: 0.5 w^2 d^2 + 4 mu_e g d - g DeltaD = 0 at the lower friction bound.
+    // docs/methods.md s.4: 0.5 w^2 d^2 + 4 mu_e g d - g DeltaD = 0 at the lower friction bound.
     const double w = 2.0 * 3.141592653589793 * *s.f_es_hz;
     const double a = 0.5 * w * w;
     const double b = 4.0 * s.mu_e * 9.81;

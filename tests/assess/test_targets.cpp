@@ -77,7 +77,7 @@ TEST_CASE("target files parse, resolve against the case and set the ratios", "[a
     CHECK(c.site.targets->h5.given == "rg160-h-5pct-1g.csv");
     CHECK(c.site.targets->h5.spectrum.damping == 0.05);
     CHECK(c.site.targets->h10->spectrum.damping == 0.10);
-    // RG 1.60 at 1 g: PSA = PGA above 33 Hz, horizontal and vertical (METHODS.md s.8).
+    // RG 1.60 at 1 g: PSA = PGA above 33 Hz, horizontal and vertical (docs/methods.md s.8).
     CHECK(c.site.targets->zpa_h_g == Approx(1.0).epsilon(1e-12));
     CHECK(c.site.vertical_ratio == Approx(1.0).epsilon(1e-12));
     const Case h_only = parse_case(component + "target_h_file = \"asce7-sds1.0-sd1-0.6-tl8.csv\"\n",

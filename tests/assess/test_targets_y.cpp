@@ -174,7 +174,7 @@ TEST_CASE("direction y's file sets y's demand; SA_VH combines x and y",
     for (std::size_t i = 0; i < d1.h5.psa_g.size(); ++i) {
         CHECK(d3.h5_of(Direction::x).psa_g[i] == d1.h5.psa_g[i]);
         CHECK(d3.h5_of(Direction::y).psa_g[i] == Approx(1.5 * d1.h5.psa_g[i]).epsilon(1e-12));
-        // SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 = y (METHODS.md s.4), at 5%:
+        // SA_VH = sqrt(SA_H1^2 + 0.16 SA_H2^2), H1 = y (docs/methods.md s.4), at 5%:
         // sqrt(1.5^2 + 0.16) SA_x, against sqrt(1.16) SA_x for one file.
         const double x5 = d1.h5.psa_g[i];
         CHECK(d3.sa_vh_damped.at(0.05).psa_g(d1.h5.frequency_hz[i]) ==

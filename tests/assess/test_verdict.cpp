@@ -1,4 +1,4 @@
-// The decision policy of METHODS.md s.6 on hand-built inputs: the screen, when to simulate,
+// The decision policy of docs/methods.md s.6 on hand-built inputs: the screen, when to simulate,
 // the simulation's statistics, severity, headline text.
 #include <catch2/catch.hpp>
 

@@ -7,7 +7,7 @@
 using freestand::block::Block;
 using freestand::block::Edge;
 
-TEST_CASE("uniform block derived quantities match METHODS.md section 1", "[block]") {
+TEST_CASE("uniform block derived quantities match docs/methods.md s.1", "[block]") {
     // 0.3 x 1.2 m steel block: b = 0.15, h = 0.6 -> R = 0.6185 m, alpha = atan(0.25) = 0.2450 rad.
     const Block blk = Block::uniform(0.15, 0.6, 38.0);
     CHECK(blk.R_m(Edge::left) == Approx(std::hypot(0.15, 0.6)).epsilon(1e-14));

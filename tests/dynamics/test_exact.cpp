@@ -76,7 +76,7 @@ TEST_CASE("constant base acceleration above uplift: linearised Housner solution 
 }
 
 TEST_CASE("free rocking reproduces Housner's period", "[dynamics][exact]") {
-    // T = (4/p) arccosh(1 / (1 - theta0/alpha)) (METHODS.md s.1), from the linearised
+    // T = (4/p) arccosh(1 / (1 - theta0/alpha)) (docs/methods.md s.1), from the linearised
     // equation: for alpha = 0.02 the exact period differs by O(alpha^2) ~ 1e-4.
     const auto blk = block::Block::uniform(0.01, 0.5, 5.0);
     const double alpha = blk.alpha_rad(block::Edge::right), p = blk.p_radps(block::Edge::right);
@@ -114,7 +114,7 @@ TEST_CASE("kinetic energy after each impact scales by r^2", "[dynamics][exact]")
 }
 
 TEST_CASE("default restitution is Housner's for a symmetric block", "[dynamics][exact]") {
-    // r = 1 - 1.5 sin^2(alpha) for a uniform block (METHODS.md s.1).
+    // r = 1 - 1.5 sin^2(alpha) for a uniform block (docs/methods.md s.1).
     const auto blk = block::Block::uniform(0.2, 0.6, 20.0);
     auto o = test::opts();
     o.initial_rotation_rad = -0.3;
@@ -146,7 +146,7 @@ TEST_CASE("a block below both thresholds never moves, at any frequency", "[dynam
 TEST_CASE("free rocking: output samples from the dense output conserve energy",
           "[dynamics][exact]") {
     // No excitation, r = 1, symmetric block: E = I_O w^2 / 2 + M g R (cos(alpha - |theta|) -
-    // cos(alpha)) is constant through the run (METHODS.md s.1). The steps cross many samples
+    // cos(alpha)) is constant through the run (docs/methods.md s.1). The steps cross many samples
     // here (no input kinks), so most samples come from the Taylor polynomials (dense output).
     const auto blk = block::Block::uniform(0.2, 0.6, 20.0);
     const double alpha = blk.alpha_rad(block::Edge::right), R = blk.R_m(block::Edge::right);

@@ -12,7 +12,7 @@ using dynamics::Mode;
 
 TEST_CASE("uplift friction of a uniform block equals Shenton's mu_crit", "[dynamics][mechanics]") {
     // mu_crit(A) = (A (1 + 4 g^2) + 3 g) / (4 + g^2 + 3 A g), g = b/h (Shenton 1996,
-    // METHODS.md s.2); mu_crit(tan alpha) = tan alpha.
+    // docs/methods.md s.2); mu_crit(tan alpha) = tan alpha.
     const auto blk = block::Block::uniform(0.15, 0.6, 38.0);
     const double gam = 0.25, G = 9.81;
     for (double A : {0.25, 0.3, 0.5, 1.0}) {
@@ -95,7 +95,7 @@ TEST_CASE("overturning: criteria and modes", "[dynamics][mechanics]") {
 
 TEST_CASE("asymmetric block uplifts over the edge with the smaller alpha", "[dynamics][mechanics]") {
     // tan(alpha_L) = 0.2, tan(alpha_R) = 0.4; a base accelerating right tips it over the left
-    // edge (METHODS.md s.3 sign convention), so 0.3 g uplifts it one way only.
+    // edge (docs/methods.md s.3 sign convention), so 0.3 g uplifts it one way only.
     const auto blk = block::Block::general(0.1, 0.2, 0.5, 30.0, 1.5);
     const auto model = dynamics::make_block_model(blk, 1.0);
     for (auto integ : {dynamics::Integrator::event, dynamics::Integrator::central_difference}) {
@@ -130,7 +130,7 @@ TEST_CASE("mu_k < tan(alpha) < mu_s < mu_crit: the block slides flat", "[dynamic
 
 TEST_CASE("slide-rock accelerations satisfy the three rows of the contact system",
           "[dynamics][mechanics]") {
-    // Residuals of the rows (METHODS.md s.3) for the eliminated solution, both edges and slip
+    // Residuals of the rows (docs/methods.md s.3) for the eliminated solution, both edges and slip
     // directions, asymmetric block:
     //   M u'' + M s R c theta'' + sigma mu N = -M (s R sn w^2 + xg'')
     //   M R sn theta'' - N = M (R c w^2 - G)

@@ -1,5 +1,5 @@
 #pragma once
-// The tests' own SRP 3.7.1 check (METHODS.md s.8), independent of motion::check_acceptance:
+// The tests' own SRP 3.7.1 check (docs/methods.md s.8), independent of motion::check_acceptance:
 // spectra::psa_g at 100 points per decade over 0.1-50 Hz (or Nyquist) against the target.
 #include <algorithm>
 #include <catch2/catch.hpp>

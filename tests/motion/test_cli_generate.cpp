@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "support/run_cli.hpp"
 
@@ -74,6 +76,28 @@ TEST_CASE("generate checks the realism ranges the options set, and exits 1 when 
     CHECK(j["components"][0]["realism"]["srp_passed"] == true);
     fs::remove_all(out);
     fs::remove_all(out2);
+}
+
+TEST_CASE("generate's match.json cites docs/methods.md and the standards it applies",
+          "[motion][cli][references]") {
+    const fs::path out = scratch("refs");
+    const auto r = run_cli("generate --target rg1.60 --pga 0.2 --components h1 --seed 3 --out '" +
+                           out.string() + "'");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string text = slurp(out / "match.json");
+    CHECK(text.find(std::string("METHODS") + ".md") == std::string::npos);
+    const auto j = nlohmann::json::parse(text);
+    CHECK(j["methods"] == "docs/methods.md s.8");
+    std::vector<std::string> keys;
+    for (const auto& ref : j["references"]) {
+        CHECK_FALSE(ref["text"].get<std::string>().empty());
+        keys.push_back(ref["key"]);
+    }
+    CHECK(keys == std::vector<std::string>{"docs/methods.md", "SRP 3.7.1", "RG 1.60", "ASCE 4-16",
+                                           "NUREG/CR-6728", "Nigam & Jennings 1969",
+                                           "Al Atik & Abrahamson 2010"});
+    fs::remove_all(out);
 }
 
 TEST_CASE("generate is byte-identical for the same inputs and seed", "[motion][cli]") {

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "report/json.hpp"
 #include "report/plots.hpp"
+#include "report/references.hpp"
 #include "report/regress.hpp"
 #include "report/render.hpp"
 #include "report/run.hpp"
@@ -203,12 +204,40 @@ TEST_CASE("both reports end with the references, methods document and thesis inc
         const auto refs = text->find("References");
         REQUIRE(refs != std::string::npos);
         CHECK(refs < text->find("Reproducibility"));
-        for (const char* key : {"methods.md", "ASCE 4-16", "SRP 3.7.1", "RG 1.60",
+        for (const char* key : {"docs/methods.md", "ASCE 4-16", "SRP 3.7.1", "RG 1.60",
                                 "Housner 1963", "Shenton 1996", "Ishiyama 1982",
                                 "Saraswat 2017"}) {
             INFO(key);
             CHECK(text->find(key, refs) != std::string::npos);
         }
+    }
+    // result.json carries the same list.
+    const auto j = nlohmann::ordered_json::parse(out.json);
+    REQUIRE(j.at("references").size() == references().size());
+    CHECK(j["references"][0]["key"] == "docs/methods.md");
+}
+
+TEST_CASE("no report cites the methods note outside the repository, and the model names cite "
+          "docs/methods.md and their standard",
+          "[report][references]") {
+    const std::string old_name = std::string("METHODS") + ".md";
+    for (const auto& r : {hand_result(), changed_material_result(), no_motion_result()}) {
+        const Rendered out = render(r, stamp());
+        for (const std::string* text : {&out.markdown, &out.html, &out.json})
+            CHECK(text->find(old_name) == std::string::npos);
+    }
+    using assess::Model;
+    const std::vector<std::pair<Model, std::string>> cited{
+        {Model::static_initiation, "(docs/methods.md s.2; Shenton 1996)"},
+        {Model::asce4_sliding, "(docs/methods.md s.4; ASCE 4-16)"},
+        {Model::equivalent_linear_rocking, "(docs/methods.md s.5a; ASCE 43-05 App. A approach)"},
+        {Model::simulation_slide, "(docs/methods.md s.3)"},
+        {Model::simulation_rocking, "(docs/methods.md s.3)"}};
+    for (const auto& [model, citation] : cited) {
+        const std::string name = assess::to_string(model);
+        INFO(name);
+        CHECK(name.size() > citation.size());
+        CHECK(name.substr(name.size() - citation.size()) == citation);
     }
 }
 

@@ -58,7 +58,7 @@ TEST_CASE("Housner free-rocking frequency and CG displacement", "[rocking][el]")
 
 TEST_CASE("beta_e = -ln(r) / pi is about 8.4% for a uniform block with alpha = 0.405",
           "[rocking][el]") {
-    // METHODS.md s.5a: r = 1 - 1.5 sin^2(0.405) = 0.76713, beta_e = 0.26510 / pi = 0.0844.
+    // docs/methods.md s.5a: r = 1 - 1.5 sin^2(0.405) = 0.76713, beta_e = 0.26510 / pi = 0.0844.
     const Block blk = Block::uniform(std::tan(0.405), 1.0);
     const double beta = damping_from_restitution(blk.housner_restitution(Edge::left));
     CHECK(beta == Approx(0.084).margin(0.0005));
@@ -206,7 +206,7 @@ TEST_CASE("restitution: Housner's by default, a measured one overrides it", "[ro
     const auto demand = any_damping(constant_sd(0.05));
     const ElResult housner = equivalent_linear_rocking(steel, Edge::left, demand, {}, o);
     CHECK(housner.restitution == Approx(1.0 - 1.5 * std::pow(std::sin(steel.alpha_rad(Edge::left)), 2)));
-    o.restitution = 0.98;  // steel on steel, METHODS.md s.7
+    o.restitution = 0.98;  // steel on steel, docs/methods.md s.7
     const ElResult measured = equivalent_linear_rocking(steel, Edge::left, demand, {}, o);
     CHECK(*measured.beta_e == Approx(-std::log(0.98) / pi).epsilon(1e-14));
     o.restitution = 1.0;

@@ -29,7 +29,7 @@ FlexibleInput fixed_base(double f_hz, double threshold_g, double pga_g) {
 
 TEST_CASE("strong content in the fixed-base band flags frequency-induced rocking",
           "[rocking][flexible]") {
-    // Slender specimen of METHODS.md s.2: static 0.25 g, PGA 0.1 g, body at 5 Hz.
+    // Slender specimen of docs/methods.md s.2: static 0.25 g, PGA 0.1 g, body at 5 Hz.
     const FlexibleScreen s = flexible_screen(peaked(), fixed_base(5.0, 0.25, 0.1));
     CHECK(s.applies);
     CHECK(s.band_lo_hz == Approx(5.0 / 1.15));

@@ -35,8 +35,8 @@ Spectrum flat(double psa_g, double damping = 0.10) {
 }
 }  // namespace
 
-TEST_CASE("glove box example of METHODS.md s.4", "[sliding][asce]") {
-    // METHODS.md s.4: mu = 0.15, A_v = 2.2 m/s^2 -> mu_e = 0.15 (1 - 0.4 * 2.2 / 9.81) = 0.1365,
+TEST_CASE("glove box example of docs/methods.md s.4", "[sliding][asce]") {
+    // docs/methods.md s.4: mu = 0.15, A_v = 2.2 m/s^2 -> mu_e = 0.15 (1 - 0.4 * 2.2 / 9.81) = 0.1365,
     // C_s = 2 mu_e g = 2.679 m/s^2; f_es = 1.2 Hz; delta_s = 2.679 / (2 pi 1.2)^2 = 0.0471 m;
     // energy: 28.42 d^2 + 5.358 d - 0.3924 = 0 -> d = 0.056 m (DeltaD = 0.040 m).
     SlidingInput in;
@@ -51,7 +51,7 @@ TEST_CASE("glove box example of METHODS.md s.4", "[sliding][asce]") {
     CHECK(*e.slide_asce_m == Approx(e.c_s_mps2 / std::pow(2.0 * pi * 1.2, 2)).epsilon(1e-14));
     REQUIRE(e.slide_energy_m);
     CHECK(*e.slide_energy_m == Approx(0.056).margin(5e-4));
-    // The quadratic with METHODS.md's rounded coefficients: root 0.05636.
+    // The quadratic with docs/methods.md s.4's rounded coefficients: root 0.05636.
     const double d = (-5.358 + std::sqrt(5.358 * 5.358 + 4.0 * 28.42 * 0.3924)) / (2.0 * 28.42);
     CHECK(*e.slide_energy_m == Approx(d).epsilon(1e-3));
     CHECK(e.f_es_source == "given");
@@ -172,7 +172,7 @@ TEST_CASE("sliding input errors name the field", "[sliding][asce]") {
 }
 
 TEST_CASE("SA_VH of two components and damping checks", "[sliding][asce]") {
-    // H1 = 1 g, H2 = 0.5 g flat: SA_VH = sqrt(1 + 0.16 * 0.25) = sqrt(1.04) g (METHODS.md s.4).
+    // H1 = 1 g, H2 = 0.5 g flat: SA_VH = sqrt(1 + 0.16 * 0.25) = sqrt(1.04) g (docs/methods.md s.4).
     const Spectrum v = vector_horizontal({flat(0.5), flat(1.0)}, 0.10);
     CHECK(v.psa_at(5.0) == Approx(std::sqrt(1.04)).epsilon(1e-14));
     CHECK(vector_horizontal({flat(0.7)}, 0.10).psa_at(5.0) == 0.7);

@@ -9,7 +9,7 @@ using freestand::block::Edge;
 using namespace freestand::sliding;
 
 TEST_CASE("box spec: uniform box, CG offset and explicit inertia", "[sliding][block_spec]") {
-    // Box only: uniform block, I_c = M (b^2 + h^2) / 3 (METHODS.md s.1).
+    // Box only: uniform block, I_c = M (b^2 + h^2) / 3 (docs/methods.md s.1).
     const auto u = make_block(box_spec({{"b", 0.15}, {"h", 0.6}, {"m", 38.0}}, {}, std::nullopt));
     CHECK(u.symmetric());
     CHECK(u.inertia_cg_kgm2 == Approx(38.0 * (0.0225 + 0.36) / 3.0));

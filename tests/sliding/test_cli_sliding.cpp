@@ -19,7 +19,7 @@ std::filesystem::path scratch() {
     return dir;
 }
 
-// Spectrum file of METHODS.md s.8's format; damping_line "" leaves the damping out.
+// Spectrum file of docs/methods.md s.8's format; damping_line "" leaves the damping out.
 std::string write_spectrum(const std::string& name, const std::string& damping_line,
                            const std::vector<std::pair<double, double>>& rows) {
     const auto path = scratch() / name;

@@ -18,7 +18,7 @@ const Block quarter = Block::uniform(0.25, 1.0, 10.0);
 double up(double x) { return std::nextafter(x, HUGE_VAL); }
 double down(double x) { return std::nextafter(x, -HUGE_VAL); }
 
-// Shenton (1996) uniform-block formula as printed in METHODS.md s.2.
+// Shenton (1996) uniform-block formula as printed in docs/methods.md s.2.
 double shenton(double A, double gamma) {
     return (A * (1.0 + 4.0 * gamma * gamma) + 3.0 * gamma) / (4.0 + gamma * gamma + 3.0 * A * gamma);
 }

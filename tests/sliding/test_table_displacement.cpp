@@ -1,4 +1,4 @@
-// DeltaD of the energy method: peak displacement after a zero-phase high-pass (METHODS.md s.4).
+// DeltaD of the energy method: peak displacement after a zero-phase high-pass (docs/methods.md s.4).
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Design spectra against METHODS.md s.8 control values and hand calculations of each branch.
+// Design spectra against docs/methods.md s.8 control values and hand calculations of each branch.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -17,10 +17,10 @@ double psa_d(double d, double pga_g) {
 }
 }  // namespace
 
-TEST_CASE("RG 1.60 horizontal 5% at 0.3 g matches the METHODS.md check values",
+TEST_CASE("RG 1.60 horizontal 5% at 0.3 g matches the docs/methods.md s.8 check values",
           "[spectra][design]") {
     const auto s = spectra::rg160(0.3, 0.05, false, {0.1, 0.25, 2.5, 9.0, 33.0, 50.0});
-    // METHODS.md s.8: [0.0226, 0.1415, 0.939, 0.783, 0.300] g, to the figures given (margin 1e-4
+    // docs/methods.md s.8: [0.0226, 0.1415, 0.939, 0.783, 0.300] g, to the figures given (margin 1e-4
     // g). The 0.25 Hz value is 0.14144 with g = 9.81 (0.14149 with g = 9.80665, which the table
     // seems to have used).
     const std::vector<double> methods{0.0226, 0.1415, 0.939, 0.783, 0.300, 0.300};
@@ -50,7 +50,7 @@ TEST_CASE("RG 1.60 every table row, horizontal and vertical", "[spectra][design]
     struct Row {
         double damping, b, ch, dh, cv, dv;
     };
-    // METHODS.md s.8 table (A = 1.0 everywhere; B equal for both directions).
+    // docs/methods.md s.8 table (A = 1.0 everywhere; B equal for both directions).
     const Row rows[] = {{0.005, 4.96, 5.95, 3.20, 5.67, 2.13},
                         {0.02, 3.54, 4.25, 2.50, 4.05, 1.67},
                         {0.05, 2.61, 3.13, 2.05, 2.98, 1.37},
