@@ -43,11 +43,15 @@ ordered_json fact_json(const validate::Fact& f) {
             {"quote", f.cite.quote}};
 }
 
+// The thesis places a row cites, each once, in the row's order.
 std::string sources_text(const std::vector<std::string>& keys) {
     std::string out;
+    std::set<std::string> seen;
     for (const std::string& k : keys) {
         const validate::Citation& c = validate::fact(k).cite;
-        out += fmt::format("{}{} (l.{})", out.empty() ? "" : "; ", c.where, c.line);
+        const std::string place = fmt::format("{} (l.{})", c.where, c.line);
+        if (!seen.insert(place).second) continue;
+        out += (out.empty() ? "" : "; ") + place;
     }
     return out;
 }
