@@ -92,7 +92,14 @@ std::string inputs_reason(const assess::LevelResult& l, const ThesisInputs& t, d
     } else {
         out += "; the thesis states its inputs only at 0.2 g";
     }
-    return out + ".";
+    out += ".";
+    // docs/methods.md s.4 takes the 0.5 Hz corner from the thesis's test band and checks it
+    // against these very numbers: agreement here is not independent of the thesis.
+    if (energy)
+        out += " The 0.5 Hz high-pass corner behind DeltaD is the thesis's own test band "
+               "(s.2.4.1.1), and docs/methods.md s.4 checked it against these worked examples: "
+               "this agreement is not independent evidence.";
+    return out;
 }
 
 Row pipeline_row(const ThesisInputs& t, const assess::AssessmentResult& r,
