@@ -12,6 +12,8 @@
 #include "core/file_io.hpp"
 #include "report/regress.hpp"
 #include "report/run.hpp"
+#include "report/validation.hpp"
+#include "validate/validate.hpp"
 
 namespace freestand::cli {
 namespace {
@@ -30,8 +32,17 @@ std::vector<fs::path> case_files(const fs::path& dir) {
     return out;
 }
 
-// Compares one case; returns true when it matches its golden.
-bool check(const fs::path& golden_file, const report::CaseRun& run, double rtol) {
+// A headline value as one line: a string as it is, anything else as JSON.
+std::string headline_text(const nlohmann::ordered_json& doc, const char* headline) {
+    if (!doc.contains(headline)) return "(none)";
+    const auto& h = doc.at(headline);
+    return h.is_string() ? h.get<std::string>() : h.dump();
+}
+
+// Compares one fresh result.json with its golden; returns true when they match. headline is the
+// fresh document's one-line summary ("verdict" of a case, "summary" of the validation).
+bool check(const fs::path& golden_file, const std::string& fresh_json, const char* headline,
+           double rtol) {
     const std::string name = golden_file.parent_path().filename().string();
     if (!fs::exists(golden_file)) {
         std::cout << fmt::format("MISSING {}: no golden {}\n", name, golden_file.string());
@@ -44,16 +55,17 @@ bool check(const fs::path& golden_file, const report::CaseRun& run, double rtol)
         throw InputError(SourceLocation{golden_file.string(), 0, ""},
                          std::string("not valid JSON: ") + e.what());
     }
-    const auto fresh = nlohmann::ordered_json::parse(run.rendered.json);
+    const auto fresh = nlohmann::ordered_json::parse(fresh_json);
     const auto diffs = report::compare_results(golden, fresh, rtol);
+    const std::string fresh_headline = headline_text(fresh, headline);
     if (diffs.empty()) {
-        std::cout << fmt::format("ok      {}: {}\n", name, fresh.at("verdict").get<std::string>());
+        std::cout << fmt::format("ok      {}: {}\n", name, fresh_headline);
         return true;
     }
     std::cout << fmt::format("CHANGED {}: {} difference(s)\n", name, diffs.size());
-    if (golden.value("verdict", "") != fresh.at("verdict").get<std::string>()) {
-        std::cout << fmt::format("  verdict: {} -> {}\n", golden.value("verdict", "(none)"),
-                                 fresh.at("verdict").get<std::string>());
+    const std::string golden_headline = headline_text(golden, headline);
+    if (golden_headline != fresh_headline) {
+        std::cout << fmt::format("  {}: {} -> {}\n", headline, golden_headline, fresh_headline);
     }
     for (std::size_t i = 0; i < std::min(diffs.size(), max_listed); ++i) {
         std::cout << fmt::format("  {}: {} -> {}\n", diffs[i].path, diffs[i].golden,
@@ -64,13 +76,32 @@ bool check(const fs::path& golden_file, const report::CaseRun& run, double rtol)
     return false;
 }
 
+// The validation against the thesis (reports/validation/), when the cases folder holds the
+// shipped cases it assesses.
+bool regress_validation(const fs::path& reports, const fs::path& cases, bool update, double rtol) {
+    if (!validate::has_cases(cases)) {
+        std::cout << fmt::format("skipped validation: {} lacks the shipped glove-box cases\n",
+                                 cases.string());
+        return true;
+    }
+    const validate::Validation v = validate::run(cases);
+    const report::ValidationReport rendered =
+        report::render_validation(v, report::validation_stamp(v, build_commit));
+    const fs::path dir = reports / "validation";
+    if (!update) return check(dir / "result.json", rendered.json, "summary", rtol);
+    report::write_validation(dir, rendered);
+    std::cout << fmt::format("updated {}: {}\n", dir.string(),
+                             nlohmann::ordered_json::parse(rendered.json).at("summary").dump());
+    return true;
+}
+
 int run(const std::vector<std::string>& args) {
     po::options_description desc("options");
     desc.add_options()("reports", po::value<std::string>()->default_value("reports"),
                        "folder of golden reports")(
         "cases", po::value<std::string>()->default_value("cases"), "folder of case files")(
         "update", po::bool_switch(),
-        "rewrite the goldens (report.md, report.html, result.json, figures)")(
+        "rewrite the goldens (report.md, report.html, result.json, figures; and validation/)")(
         "rtol", po::value<std::string>()->default_value("1e-6"), "relative tolerance for numbers");
     const auto vm = parse_options("regress", usage, desc, args, {"reports"});
     if (!vm) return 0;
@@ -87,14 +118,17 @@ int run(const std::vector<std::string>& args) {
             std::cout << fmt::format("updated {}: {}\n", dir.string(),
                                      report::verdict_line(run.result));
         } else {
-            all_ok = check(dir / "result.json", run, rtol) && all_ok;
+            all_ok = check(dir / "result.json", run.rendered.json, "verdict", rtol) && all_ok;
         }
     }
+    all_ok = regress_validation(reports, (*vm)["cases"].as<std::string>(), update, rtol) && all_ok;
     return all_ok ? 0 : static_cast<int>(ExitCode::failure);
 }
 
-const CommandRegistrar reg{
-    {"regress", "re-run every case and compare with the golden result.json files", &run}};
+const CommandRegistrar reg{{"regress",
+                            "re-run every case and the validation (reports/validation/) and "
+                            "compare with the golden result.json files",
+                            &run}};
 
 }  // namespace
 }  // namespace freestand::cli

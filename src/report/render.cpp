@@ -8,6 +8,7 @@
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
 #include "core/publish.hpp"
+#include "report/escape_guard.hpp"
 #include "report/references.hpp"
 
 namespace freestand::report {
@@ -394,20 +395,6 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
     };
 }
 
-// mstch's escape function is global: swap it for one render and restore it after.
-class EscapeGuard {
-  public:
-    explicit EscapeGuard(std::function<std::string(const std::string&)> f)
-        : saved_(mstch::config::escape) {
-        mstch::config::escape = std::move(f);
-    }
-    ~EscapeGuard() { mstch::config::escape = saved_; }
-    EscapeGuard(const EscapeGuard&) = delete;
-    EscapeGuard& operator=(const EscapeGuard&) = delete;
-
-  private:
-    std::function<std::string(const std::string&)> saved_;
-};
 
 }  // namespace
 

@@ -13,7 +13,7 @@ TEST_CASE("freestand without a command prints help and exits 2", "[cli]") {
 TEST_CASE("freestand --help lists every command and the exit codes", "[cli]") {
     const auto r = run_cli("--help");
     CHECK(r.exit_code == 0);
-    for (const char* cmd : {"assess", "regress", "spectrum", "target", "generate", "classify",
+    for (const char* cmd : {"assess", "regress", "validate", "spectrum", "target", "generate", "classify",
                             "slide", "rock", "simulate"})
         CHECK_THAT(r.out, Catch::Contains(cmd));
     CHECK_THAT(r.out, Catch::Contains("exit codes"));

@@ -1,0 +1,128 @@
+// `freestand validate`: the table, --json, the reports, exit codes, determinism.
+#include <catch2/catch.hpp>
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/run_cli.hpp"
+
+namespace fs = std::filesystem;
+using freestand::test::run_cli;
+using freestand::test::slurp;
+
+namespace {
+fs::path temp_dir(const std::string& name) {
+    const fs::path d = fs::temp_directory_path() / ("freestand_validate_" + name);
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+}  // namespace
+
+TEST_CASE("validate prints the table, writes the reports and is deterministic",
+          "[validate][cli][slow]") {
+    const fs::path dir = temp_dir("cli");
+    const auto a = run_cli("validate --out '" + (dir / "a").string() + "'");
+    REQUIRE(a.exit_code == 0);
+    CHECK_THAT(a.out, Catch::StartsWith("freestand against the thesis: validation\n"));
+    for (const char* text : {"[differs] ts3-ishiyama:", "   thesis:     47 mm (s.5.5)",
+                             "[agrees] gb-steel-pads-0.3g:", "Saraswat 2017", "\nnotes\n"})
+        CHECK_THAT(a.out, Catch::Contains(text));
+    CHECK_THAT(a.err, Catch::Contains("wrote " + (dir / "a").string() + " (40 rows) in "));
+    for (const char* f : {"report.md", "report.html", "result.json"}) CHECK(fs::exists(dir / "a" / f));
+    const auto b = run_cli("validate --out '" + (dir / "b").string() + "'");
+    REQUIRE(b.exit_code == 0);
+    CHECK(a.out == b.out);
+    for (const char* f : {"report.md", "report.html", "result.json"}) {
+        INFO(f);
+        CHECK(slurp(dir / "a" / f) == slurp(dir / "b" / f));
+    }
+    const std::string md = slurp(dir / "a" / "report.md");
+    CHECK_THAT(md, Catch::Contains("**Saraswat 2017**"));
+    CHECK_THAT(md, Catch::Contains("| ts3-2hz |"));
+    const std::string html = slurp(dir / "a" / "report.html");
+    CHECK(html.find("http") == std::string::npos);  // self-contained
+    fs::remove_all(dir);
+}
+
+TEST_CASE("validate --json prints result.json", "[validate][cli][slow]") {
+    const fs::path dir = temp_dir("json");
+    const auto r = run_cli("validate --json --out '" + dir.string() + "/o'");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(r.out == slurp(dir / "o" / "result.json"));
+    REQUIRE(j.at("rows").size() == 40);
+    CHECK(j.at("summary").at("rows") == 40);
+    const auto& first = j.at("rows").at(0);
+    for (const char* key : {"group", "id", "test", "thesis", "thesis_value", "predicted",
+                            "predicted_value", "unit", "difference", "difference_value",
+                            "agreement", "reason", "sources"})
+        CHECK(first.contains(key));
+    CHECK(j.at("thesis").at("reference") == "Saraswat 2017");
+    CHECK(j.at("stamp").at("inputs").size() == 3);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("validate CLI errors", "[validate][cli]") {
+    const fs::path dir = temp_dir("errors");
+    const auto no_cases = run_cli("validate --cases '" + dir.string() + "' --out '" +
+                                  (dir / "o").string() + "'");
+    CHECK(no_cases.exit_code == 5);
+    CHECK_THAT(no_cases.err,
+               Catch::Contains(dir.string() + ": expected the shipped cases glovebox-single.toml, "
+                                              "glovebox-steel-pads.toml, glovebox-pair.toml"));
+    CHECK_FALSE(fs::exists(dir / "o"));
+    const auto bad = run_cli("validate --frobnicate");
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.err, Catch::Contains("unrecognised option '--frobnicate'"));
+    const auto extra = run_cli("validate cases");
+    CHECK(extra.exit_code == 2);
+    const auto help = run_cli("validate --help");
+    CHECK(help.exit_code == 0);
+    CHECK_THAT(help.out, Catch::Contains("--json"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][regress][slow]") {
+    const fs::path dir = temp_dir("regress");
+    fs::create_directories(dir / "cases");
+    for (const char* c : {"glovebox-single.toml", "glovebox-steel-pads.toml", "glovebox-pair.toml"})
+        fs::copy_file(fs::path(FREESTAND_SOURCE_DIR) / "cases" / c, dir / "cases" / c);
+    const std::string args =
+        fmt::format("'{}' --cases '{}'", (dir / "reports").string(), (dir / "cases").string());
+    const auto missing = run_cli("regress " + args);
+    CHECK(missing.exit_code == 1);
+    CHECK_THAT(missing.out, Catch::Contains("MISSING validation"));
+    const auto update = run_cli("regress " + args + " --update");
+    REQUIRE(update.exit_code == 0);
+    CHECK_THAT(update.out, Catch::Contains("updated " + (dir / "reports" / "validation").string()));
+    CHECK(fs::exists(dir / "reports" / "validation" / "report.html"));
+    const auto same = run_cli("regress " + args);
+    CHECK(same.exit_code == 0);
+    CHECK_THAT(same.out, Catch::Contains("ok      validation: {\"rows\":40,"));
+    // Drift one predicted value by 1%.
+    const fs::path golden = dir / "reports" / "validation" / "result.json";
+    auto j = nlohmann::ordered_json::parse(slurp(golden));
+    j["rows"][18]["predicted_value"] = j["rows"][18]["predicted_value"].get<double>() * 1.01;
+    std::ofstream(golden) << j.dump(2);
+    const auto drift = run_cli("regress " + args);
+    CHECK(drift.exit_code == 1);
+    CHECK_THAT(drift.out, Catch::Contains("CHANGED validation: 1 difference(s)"));
+    CHECK_THAT(drift.out, Catch::Contains("/rows/18/predicted_value"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("regress skips the validation where the cases folder lacks its cases",
+          "[validate][cli][regress]") {
+    const fs::path dir = temp_dir("regress_skip");
+    fs::create_directories(dir / "cases");
+    const auto r = run_cli("regress '" + (dir / "reports").string() + "' --cases '" +
+                           (dir / "cases").string() + "'");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("skipped validation: " + (dir / "cases").string() +
+                                      " lacks the shipped glove-box cases"));
+    fs::remove_all(dir);
+}
