@@ -46,7 +46,8 @@ const std::vector<std::string> component_keys{"name",
 const std::vector<std::string> site_keys{
     "design",        "target_h_file",   "target_h10_file", "target_y_file",   "target_y10_file",
     "target_v_file", "pga_g",           "vertical_ratio",  "sliding_damping", "g_mps2",
-    "energy_highpass_hz", "energy_table_displacement_m"};
+    "energy_highpass_hz", "energy_table_displacement_m", "va_range_mps_per_g", "adv2_range",
+    "da_max_m_per_g"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
                                            "simulate"};
 
@@ -350,6 +351,33 @@ void read_energy_displacement(TableReader& r, Site& s, std::vector<std::string>&
     }
 }
 
+// The realism ranges of the histories: RG 1.60's for the RG 1.60 design, none of the ratio
+// ranges for target files (the earthquakes behind them are not known), each key overriding.
+void read_realism(TableReader& r, Site& s, std::vector<std::string>& assumptions) {
+    s.realism = s.targets ? motion::RealismLimits{} : motion::rg160_realism();
+    const Range positive{0.0, 1e3, false, true};
+    const auto range = [&](const char* key) -> std::optional<motion::Range> {
+        const auto v = r.numbers(key, positive, 2);
+        if (!v) return std::nullopt;
+        if (!((*v)[0] < (*v)[1]))
+            r.fail(key, fmt::format("[{}, {}]: expected [min, max] with min < max", (*v)[0],
+                                    (*v)[1]));
+        return motion::Range{(*v)[0], (*v)[1]};
+    };
+    if (const auto va = range("va_range_mps_per_g")) s.realism.va_mps_per_g = va;
+    if (const auto adv2 = range("adv2_range")) s.realism.adv2 = adv2;
+    if (const auto da = r.number("da_max_m_per_g", positive)) s.realism.da_max_m_per_g = da;
+    if (s.targets && !r.has("va_range_mps_per_g") && !r.has("adv2_range") &&
+        !r.has("da_max_m_per_g")) {
+        assumptions.push_back(
+            "Realism of the histories against target files: PGA within 1.0-1.1 x the target's "
+            "zero-period acceleration and D5-75 >= 6 s are checked; V/A, AD/V^2 and D/A are "
+            "reported, not checked, until [site] va_range_mps_per_g, adv2_range, "
+            "da_max_m_per_g give the ranges of the earthquakes behind the targets "
+            "(docs/methods.md s.8).");
+    }
+}
+
 }  // namespace
 
 std::optional<std::string> weightless_level(const std::vector<double>& pga_g,
@@ -402,6 +430,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
     s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
     read_energy_displacement(r, s, assumptions);
+    read_realism(r, s, assumptions);
     r.finish(site_keys);
     return s;
 }

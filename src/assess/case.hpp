@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "block/block.hpp"
+#include "motion/motion.hpp"
 #include "spectra/spectrum.hpp"
 
 namespace freestand::assess {
@@ -106,6 +107,10 @@ struct Site {
     double energy_highpass_hz = 0.5;
     /// DeltaD per PGA level given by the case (table displacements), m; replaces the high-pass.
     std::optional<std::vector<double>> energy_table_displacement_m;
+    /// Realism ranges every generated history must meet (docs/methods.md s.8): RG 1.60's by
+    /// default for design = "rg1.60"; for target files PGA / ZPA and D5-75 only, V/A, AD/V^2
+    /// and D/A where the case sets va_range_mps_per_g, adv2_range, da_max_m_per_g.
+    motion::RealismLimits realism;
 };
 
 /// When to run the time-history simulation (issue 6, [options] simulate).

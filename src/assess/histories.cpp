@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <future>
 #include <thread>
 
@@ -10,6 +12,7 @@
 #include "core/random.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
+#include "motion/criteria.hpp"
 #include "assess/level.hpp"
 #include "sliding/table_displacement.hpp"
 #include "spectra/design.hpp"
@@ -47,8 +50,7 @@ motion::TargetSet user_unit_targets(const Site& site, const UserTargets& u) {
     return t;
 }
 
-motion::TargetSet unit_targets(const Site& site) {
-    if (site.targets) return user_unit_targets(site, *site.targets);
+motion::TargetSet rg160_unit_targets(const Site& site) {
     const auto f = target_frequencies();
     motion::TargetSet t = motion::ratio_targets(
         fmt::format("RG 1.60 horizontal, vertical {:.4f} x horizontal, PGA 1 g",
@@ -57,6 +59,46 @@ motion::TargetSet unit_targets(const Site& site) {
         site.vertical_ratio);
     t.horizontal.rg160_psd_pga_g = 1.0;  // the RG 1.60 target PSD applies to the horizontals
     return t;
+}
+
+motion::TargetSet unit_targets(const Site& site) {
+    motion::TargetSet t =
+        site.targets ? user_unit_targets(site, *site.targets) : rg160_unit_targets(site);
+    motion::set_realism(t, site.realism);
+    return t;
+}
+
+// A set that fails SRP 3.7.1 or the realism checks is not used: the assessment stops and says
+// which history, which component and why (issue 13 s.1: a history that cannot meet them is
+// rejected with the reason).
+void reject_failing(const Case& c, const std::vector<HistorySet>& sets) {
+    const std::array<const char*, 3> names{"h1", "h2", "v"};
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+        if (sets[k].passed) continue;
+        std::string why;
+        for (std::size_t j = 0; j < sets[k].acceptance.size() && j < names.size(); ++j) {
+            if (sets[k].acceptance[j].passed) continue;
+            why += fmt::format("{}{}: {}", why.empty() ? "" : "; ", names[j],
+                               sets[k].acceptance[j].reason);
+        }
+        for (const motion::Correlation& r : sets[k].correlations)
+            if (std::abs(r.rho) > motion::criteria::max_abs_correlation)
+                why += fmt::format("{}{}-{}: |rho| = {:.3f} > {}", why.empty() ? "" : "; ", r.a,
+                                   r.b, std::abs(r.rho), motion::criteria::max_abs_correlation);
+        if (!c.options.seed_records.empty()) {
+            throw InputError(
+                SourceLocation{c.file, 0, "options.seed_records"},
+                fmt::format("history {} ({}) does not pass SRP 3.7.1 and the realism checks "
+                            "once matched: {}. Give other records, or the realism ranges of the "
+                            "earthquakes behind them ([site] va_range_mps_per_g, adv2_range, "
+                            "da_max_m_per_g)",
+                            k + 1, sets[k].method, why));
+        }
+        throw NumericalError(fmt::format(
+            "history {}: no synthetic record passed SRP 3.7.1 and the realism checks within the "
+            "generator's attempts ({}); try another [options] seed",
+            k + 1, why));
+    }
 }
 
 HistorySet generate_one(const Case& c, const motion::TargetSet& targets, std::size_t k) {
@@ -110,6 +152,7 @@ const std::vector<HistorySet>& HistoryBank::sets() {
         }));
     }
     for (auto& job : jobs) job.get();  // rethrows the first failure
+    reject_failing(*case_, sets_);
     for (const HistorySet& s : sets_) {
         const core::GroundMotion gx = core::measure(s.h1);
         const core::GroundMotion gy = core::measure(s.h2);

@@ -253,10 +253,9 @@ struct HistoryCheck {
     int history = 0;        ///< 1-based
     std::string component;  ///< "h1", "h2", "v"
     std::string method;
-    bool passed = false;
-    double min_ratio = 0.0;  ///< 5% computed / target over 0.1-50 Hz
-    double max_ratio = 0.0;
-    std::string reason;  ///< failed criteria, "" when passed
+    /// SRP 3.7.1 and realism checks at the 1 g the set was matched at (ratios are scale-free;
+    /// peaks scale with the level).
+    motion::Acceptance acceptance;
 };
 
 /// The whole assessment.

@@ -9,6 +9,7 @@
 
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
+#include "report/history_json.hpp"
 #include "report/references.hpp"
 #include "report/sha256.hpp"
 
@@ -302,10 +303,12 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
         checks.push_back({{"history", h.history},
                           {"component", h.component},
                           {"method", h.method},
-                          {"passed", h.passed},
-                          {"min_ratio", num(h.min_ratio)},
-                          {"max_ratio", num(h.max_ratio)},
-                          {"reason", h.reason}});
+                          {"passed", h.acceptance.passed},
+                          {"min_ratio", num(h.acceptance.min_ratio)},
+                          {"max_ratio", num(h.acceptance.max_ratio)},
+                          {"reason", h.acceptance.reason},
+                          {"measures_at_1g", measures_json(h.acceptance)},
+                          {"realism", realism_json(h.acceptance)}});
     }
     j["history_acceptance"] = checks;
     j["case"] = case_json(r.input);

@@ -238,7 +238,11 @@ std::string history_basis(const Site& site) {
         "SRP 3.7.1 Option 1 Approach 2 criteria{} (docs/methods.md s.8). Response spectra by "
         "the Nigam & Jennings 1969 recurrence; histories matched by time-domain wavelet "
         "adjustment (Al Atik & Abrahamson 2010) from a random-phase synthetic record or a seed "
-        "record (the method column).",
+        "record (the method column). Every history also meets the realism ranges of "
+        "docs/methods.md s.8 (PGA / ZPA, D5-75, and on horizontals V/A, AD/V^2, D/A where a "
+        "range is set; \"(n/c)\" marks a ratio reported, not checked). The histories were "
+        "matched at 1 g: PGV, PGD and Arias intensity scale with the level (Arias as its "
+        "square), the ratios do not.",
         target, psd);
 }
 
@@ -346,19 +350,37 @@ std::string margin_with_basis(const Verdict& v) {
                                   : fmt::format("{} ({})", margin_text(v), v.margin_basis);
 }
 
+// One history at the 1 g it was matched at: the SRP ratios and the realism measures (ratios
+// checked on horizontals only, "(n/c)" where no range is set).
+mstch::map history_row(const HistoryCheck& h) {
+    const motion::Acceptance& a = h.acceptance;
+    const auto ratio = [&](double v, bool checked) {
+        return fixed(v, 2) + (h.acceptance.horizontal && checked ? "" : " (n/c)");
+    };
+    return mstch::map{
+        {"history", std::to_string(h.history)},
+        {"component", h.component},
+        {"method", h.method},
+        {"passed", std::string(a.passed ? "yes" : "no: " + a.reason)},
+        {"min_ratio", fixed(a.min_ratio, 3)},
+        {"max_ratio", fixed(a.max_ratio, 3)},
+        {"pga_over_zpa", fixed(a.pga_over_zpa, 3)},
+        {"pgv_mps", fixed(a.pgv_mps, 3)},
+        {"pgd_m", fixed(a.pgd_m, 3)},
+        {"va", ratio(a.va_mps_per_g, a.realism.va_mps_per_g.has_value())},
+        {"adv2", ratio(a.adv2, a.realism.adv2.has_value())},
+        {"da", ratio(a.da_m_per_g, a.realism.da_max_m_per_g.has_value())},
+        {"arias_mps", fixed(a.arias_mps, 3)},
+        {"d5_75_s", fixed(a.d5_75_s, 2)},
+        {"d5_95_s", fixed(a.d5_95_s, 2)}};
+}
+
 mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vector<Figure>& figs) {
     const Verdict& v = r.overall.verdict;
     mstch::array levels;
     for (const LevelResult& l : r.levels) levels.push_back(level_row(l));
     mstch::array checks;
-    for (const HistoryCheck& h : r.history_checks) {
-        checks.push_back(mstch::map{{"history", std::to_string(h.history)},
-                                    {"component", h.component},
-                                    {"method", h.method},
-                                    {"passed", std::string(h.passed ? "yes" : "no: " + h.reason)},
-                                    {"min_ratio", fixed(h.min_ratio, 3)},
-                                    {"max_ratio", fixed(h.max_ratio, 3)}});
-    }
+    for (const HistoryCheck& h : r.history_checks) checks.push_back(history_row(h));
     mstch::array figures;
     for (const Figure& f : figs)
         figures.push_back(mstch::map{{"file", f.file}, {"caption", f.caption}, {"svg", f.svg}});

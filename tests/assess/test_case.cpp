@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 #include <string>
 
 #include "assess/case.hpp"
@@ -295,4 +297,51 @@ TEST_CASE("control characters in case text are refused at their key", "[assess][
     CHECK_NOTHROW(parse_case(base_component + "description = \"two\\nlines\\tand a tab\"\n" +
                                  base_site,
                              "case.toml"));
+}
+
+TEST_CASE("realism ranges: RG 1.60's by default, set or refused at their keys",
+          "[assess][case][realism]") {
+    const Case d = parse_case(base_component + base_site, "case.toml");
+    REQUIRE(d.site.realism.va_mps_per_g.has_value());
+    CHECK(d.site.realism.va_mps_per_g->min == 0.8);
+    CHECK(d.site.realism.va_mps_per_g->max == 2.0);
+    CHECK(d.site.realism.adv2->max == 8.0);
+    CHECK(*d.site.realism.da_max_m_per_g == 1.3);
+    CHECK(d.site.realism.pga_over_zpa.max == 1.1);
+    const Case set = parse_case(base_component + base_site +
+                                    "va_range_mps_per_g = [0.5, 1.5]\nadv2_range = [3, 9]\n"
+                                    "da_max_m_per_g = 1.0\n",
+                                "case.toml");
+    CHECK(set.site.realism.va_mps_per_g->min == 0.5);
+    CHECK(set.site.realism.adv2->max == 9.0);
+    CHECK(*set.site.realism.da_max_m_per_g == 1.0);
+    CHECK(error_of(base_component + base_site + "va_range_mps_per_g = [2.0, 0.8]\n") ==
+          "case.toml:11: site.va_range_mps_per_g: [2, 0.8]: expected [min, max] with min < max");
+    CHECK(error_of(base_component + base_site + "adv2_range = [2]\n")
+              .find("site.adv2_range") != std::string::npos);
+    CHECK(error_of(base_component + base_site + "da_max_m_per_g = 0\n")
+              .find("site.da_max_m_per_g") != std::string::npos);
+}
+
+TEST_CASE("target files carry no V/A, AD/V^2, D/A range unless the case gives one",
+          "[assess][case][realism]") {
+    const fs::path dir = fs::temp_directory_path() / ("freestand_realism_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    {
+        std::ofstream(dir / "h.csv") << "# damping: 0.05\nfrequency_hz,psa_g\n0.05,0.05\n1,0.6\n"
+                                        "10,0.5\n100,0.25\n";
+    }
+    const std::string site = "[site]\npga_g = [0.1]\ntarget_h_file = \"h.csv\"\n";
+    std::ofstream(dir / "a.toml") << base_component << site;
+    const Case none = read_case(dir / "a.toml");
+    CHECK_FALSE(none.site.realism.va_mps_per_g.has_value());
+    CHECK_FALSE(none.site.realism.da_max_m_per_g.has_value());
+    CHECK(std::any_of(none.assumptions.begin(), none.assumptions.end(), [](const std::string& a) {
+        return a.find("reported, not checked") != std::string::npos;
+    }));
+    std::ofstream(dir / "b.toml") << base_component << site << "da_max_m_per_g = 1.2\n";
+    const Case given = read_case(dir / "b.toml");
+    CHECK(*given.site.realism.da_max_m_per_g == 1.2);
+    CHECK_FALSE(given.site.realism.va_mps_per_g.has_value());
+    fs::remove_all(dir);
 }

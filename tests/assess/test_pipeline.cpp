@@ -1,5 +1,6 @@
 // The pipeline end to end on small cases (one level, at most one history).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -196,4 +197,56 @@ histories_per_level = 1
     CHECK(x.initiation.mode != Mode::rest);
     CHECK(x.simulation.has_value());
     CHECK_FALSE(passes(r.own.verdict));
+}
+
+TEST_CASE("histories that cannot meet the realism ranges are rejected, never used",
+          "[assess][pipeline][realism]") {
+    SECTION("synthetic: no attempt can reach D/A <= 0.01 m/g; the error names the history") {
+        Case c = glovebox({0.2}, 1);
+        c.site.realism.da_max_m_per_g = 0.01;
+        try {
+            assess::assess(c);
+            FAIL("no error");
+        } catch (const NumericalError& e) {
+            const std::string what = e.what();
+            CHECK(what.find("history 1: no synthetic record passed SRP 3.7.1 and the realism "
+                            "checks") != std::string::npos);
+            CHECK(what.find("h1: D/A") != std::string::npos);
+            CHECK(what.find("> 0.01") != std::string::npos);
+        }
+    }
+    SECTION("seed records: the error names options.seed_records and the reason") {
+        Case c = glovebox({0.2}, 1);
+        const fs::path data(FREESTAND_TEST_DATA);
+        c.options.seed_records = {data / "RSN175_IMPVALL.H_H-E12140.AT2",
+                                  data / "RSN175_IMPVALL.H_H-E12230.AT2",
+                                  data / "RSN1546_CHICHI_TCU122-N.AT2"};
+        c.site.realism.va_mps_per_g = motion::Range{0.1, 0.2};
+        try {
+            assess::assess(c);
+            FAIL("no error");
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            CHECK(what.find("options.seed_records: history 1") != std::string::npos);
+            CHECK(what.find("V/A") != std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("every history's measures and realism checks travel into the result",
+          "[assess][pipeline][realism]") {
+    const AssessmentResult r = assess::assess(glovebox({0.2}, 1));
+    REQUIRE(r.history_checks.size() == 3);
+    for (const HistoryCheck& h : r.history_checks) {
+        INFO(h.component);
+        CHECK(h.acceptance.passed);
+        CHECK(h.acceptance.realism_passed);
+        CHECK(h.acceptance.pga_over_zpa >= 1.0);
+        CHECK(h.acceptance.pga_over_zpa <= 1.1);
+        CHECK(h.acceptance.horizontal == (h.component != "v"));
+        if (h.acceptance.horizontal) CHECK(h.acceptance.da_m_per_g <= 1.3);
+    }
+    CHECK(std::any_of(r.limits.begin(), r.limits.end(), [](const std::string& l) {
+        return l.find("realism checks") != std::string::npos && l.find("D/A at most 1.3 m/g") != std::string::npos;
+    }));
 }
