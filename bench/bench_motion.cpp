@@ -2,6 +2,7 @@
 // SRP 3.7.1 for one 20 s component at dt = 0.005 s and for the three-component set, from the
 // synthetic method and from seed records, with the achieved min / max 5% ratios.
 // Run: build/<dir>/bench/bench_motion [repeats]
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -16,11 +17,15 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 void row(const char* what, const motion::GeneratedSet& s, double wall_s, int repeats) {
-    for (const auto& c : s.components)
-        std::printf("%-34s %-3s %-6s it %3d att %d  min %.3f max %.3f  psd %.2f  %.3f s\n", what,
-                    c.record.component.c_str(), c.acceptance.passed ? "pass" : "FAIL", c.iterations,
-                    c.attempts, c.acceptance.min_ratio, c.acceptance.max_ratio,
-                    c.acceptance.psd_min_ratio.value_or(-1.0), c.wall_s);
+    for (const auto& c : s.components) {
+        const motion::Acceptance& a = c.acceptance;
+        std::printf(
+            "%-34s %-3s %-6s it %3d att %d  min %.3f max %.3f  psd %.2f  PGA/ZPA %.3f V/A %.2f "
+            "AD/V2 %.2f D/A %.2f D5-75 %.1f  %.3f s\n",
+            what, c.record.component.c_str(), a.passed ? "pass" : "FAIL", c.iterations, c.attempts,
+            a.min_ratio, a.max_ratio, a.psd_min_ratio.value_or(-1.0), a.pga_over_zpa,
+            a.va_mps_per_g, a.adv2, a.da_m_per_g, a.d5_75_s, c.wall_s);
+    }
     std::printf(
         "%-34s set %s, |rho| max %.3f, %.3f s per set (mean of %d)\n\n", what,
         s.passed ? "pass" : "FAIL",
@@ -68,6 +73,45 @@ int main(int argc, char** argv) {
                           core::read_at2(data + "/RSN1546_CHICHI_TCU122-N.AT2")};
         return motion::generate_set(ts, o);
     });
+    // The issue's acceptance run (issue 13): seeds 1-10, three components each; ranges of the
+    // realism measures over the 20 horizontals and the time per component and per set.
+    {
+        struct Span {
+            double lo = 1e300, hi = -1e300, sum = 0.0;
+            int n = 0;
+            void add(double v) { lo = std::min(lo, v); hi = std::max(hi, v); sum += v; ++n; }
+        } pga, va, adv2, da, d575;
+        int passed = 0, components = 0;
+        const auto t0 = Clock::now();
+        for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+            motion::GenerateOptions o;
+            o.seed = seed;
+            const motion::GeneratedSet s = motion::generate_set(ts, o);
+            for (const auto& c : s.components) {
+                ++components;
+                passed += c.acceptance.passed ? 1 : 0;
+                if (c.record.component == "v") continue;
+                pga.add(c.acceptance.pga_over_zpa);
+                va.add(c.acceptance.va_mps_per_g);
+                adv2.add(c.acceptance.adv2);
+                da.add(c.acceptance.da_m_per_g);
+                d575.add(c.acceptance.d5_75_s);
+            }
+        }
+        const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+        const auto show = [](const char* name, const Span& x) {
+            std::printf("  %-8s %.2f-%.2f (mean %.2f)\n", name, x.lo, x.hi, x.sum / x.n);
+        };
+        std::printf("seeds 1-10, h1,h2,v: %d/%d components pass SRP 3.7.1 and realism; %.3f s per "
+                    "component, %.3f s per set\n",
+                    passed, components, wall / components, wall / 10.0);
+        show("PGA/ZPA", pga);
+        show("V/A", va);
+        show("AD/V^2", adv2);
+        show("D/A", da);
+        show("D5-75", d575);
+        std::printf("\n");
+    }
     // Cost of the acceptance report alone (spectra at 271 points x 2 dampings, PSD, measures).
     const auto rec = motion::generate_set(ts,
                                           [] {
