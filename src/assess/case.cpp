@@ -49,7 +49,7 @@ const std::vector<std::string> site_keys{
     "energy_highpass_hz", "energy_table_displacement_m", "va_range_mps_per_g", "adv2_range",
     "da_max_m_per_g"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
-                                           "simulate"};
+                                           "simulate", "fragility", "fragility_pga_g", "fragility_samples"};
 
 const toml::table* subtable(const toml::table& root, const std::string& name,
                             const std::string& file) {
@@ -458,6 +458,18 @@ Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
                                            *sim));
         }
     }
+    o.fragility.enabled = r.boolean("fragility").value_or(false);
+    o.fragility.pga_g = r.numbers("fragility_pga_g", Range{0.0, 3.0, false, true})
+                            .value_or(std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7,
+                                                          0.8, 0.9, 1.0});
+    for (std::size_t i = 1; i < o.fragility.pga_g.size(); ++i)
+        if (o.fragility.pga_g[i] <= o.fragility.pga_g[i - 1])
+            r.fail("fragility_pga_g", "levels must be strictly increasing");
+    o.fragility.samples =
+        static_cast<int>(r.integer("fragility_samples", 1, 100000).value_or(100));
+    if (!o.fragility.enabled && (r.has("fragility_pga_g") || r.has("fragility_samples")))
+        r.fail(r.has("fragility_pga_g") ? "fragility_pga_g" : "fragility_samples",
+               "applies only with fragility = true");
     r.finish(option_keys);
     return o;
 }
@@ -496,6 +508,42 @@ Case with_base_material(Case c, const std::string& material) {
     return c;
 }
 
+namespace {
+
+// One uncertain property: { dist = "uniform", lo, hi } or { dist = "lognormal", median, beta }.
+core::Distribution read_distribution(TableReader& outer, const std::string& key, Range values,
+                                     std::optional<double> truncate_at, const std::string& file) {
+    TableReader r(outer.table(key), file, "uncertainty." + key);
+    core::Distribution d;
+    const std::string dist = r.required_string("dist");
+    if (dist == "uniform") {
+        d.a = r.required_number("lo", values);
+        d.b = r.required_number("hi", values);
+        if (d.b < d.a) r.fail("hi", fmt::format("{} is below lo = {}; expected lo <= hi", d.b, d.a));
+        r.finish({"dist", "lo", "hi"});
+        return d;
+    }
+    if (dist != "lognormal")
+        r.fail("dist", fmt::format("\"{}\"; expected \"uniform\" or \"lognormal\"", dist));
+    d.kind = core::Distribution::Kind::lognormal;
+    d.a = r.required_number("median", Range{0.0, values.hi, false, true});
+    d.b = r.required_number("beta", Range{0.0, 2.0, false, true});
+    d.upper = truncate_at;
+    r.finish({"dist", "median", "beta"});
+    return d;
+}
+
+Uncertainty read_uncertainty(TableReader& r, const std::string& file) {
+    Uncertainty u;
+    if (r.has("mu_s")) u.mu_s = read_distribution(r, "mu_s", Range{0.0, 10.0}, std::nullopt, file);
+    if (r.has("restitution"))
+        u.restitution = read_distribution(r, "restitution", Range{0.0, 1.0}, 1.0, file);
+    r.finish({"mu_s", "restitution"});
+    return u;
+}
+
+}  // namespace
+
 Case parse_case(const std::string& text, const std::string& file_label) {
     toml::table root;
     try {
@@ -508,10 +556,10 @@ Case parse_case(const std::string& text, const std::string& file_label) {
     out.file = file_label;
     for (const auto& [k, node] : root) {
         const std::string key(k.str());
-        if (key != "component" && key != "site" && key != "options") {
+        if (key != "component" && key != "site" && key != "options" && key != "uncertainty") {
             throw InputError(
                 SourceLocation{file_label, static_cast<int>(node.source().begin.line), key},
-                "unknown table; allowed tables: [component], [site], [options]");
+                "unknown table; allowed tables: [component], [site], [options], [uncertainty]");
         }
     }
     const toml::table* comp = subtable(root, "component", file_label);
@@ -527,6 +575,8 @@ Case parse_case(const std::string& text, const std::string& file_label) {
     out.site = read_site(rs, out.assumptions, std::filesystem::path(file_label).parent_path());
     TableReader ro(subtable(root, "options", file_label), file_label, "options");
     out.options = read_options(ro, std::filesystem::path(file_label).parent_path());
+    TableReader ru(subtable(root, "uncertainty", file_label), file_label, "uncertainty");
+    out.uncertainty = read_uncertainty(ru, file_label);
     return out;
 }
 
