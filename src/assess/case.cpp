@@ -386,11 +386,21 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         }
     }
     s.pga_g = *pga;
-    const auto ratio = r.number("vertical_ratio", Range{0.0, 1.5});
+    // (0, 1.5]: the vertical history is matched to ratio x the horizontal target, so 0 leaves
+    // it nothing to match.
+    const Range ratio_range{0.0, 1.5, false, true};
+    const auto ratio = r.number("vertical_ratio", ratio_range);
     s.vertical_ratio = ratio.value_or(2.0 / 3.0);
     if (s.targets && s.targets->v) {
         // The vertical file's rigid-limit PSA over the horizontal one's is the PGA ratio.
         s.vertical_ratio = s.targets->v->spectrum.psa_g.back() / s.targets->zpa_h_g;
+        if (!(s.vertical_ratio > ratio_range.lo && s.vertical_ratio <= ratio_range.hi)) {
+            r.fail("target_v_file",
+                   fmt::format("the vertical file's last PSA over the horizontal file's gives a "
+                               "vertical/horizontal PGA ratio of {:.4g}; expected {} as for "
+                               "vertical_ratio",
+                               s.vertical_ratio, describe(ratio_range)));
+        }
     } else if (!ratio) {
         assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
     }
