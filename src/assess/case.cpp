@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "assess/materials.hpp"
 #include "assess/toml_reader.hpp"
 #include "core/file_io.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 
 namespace freestand::assess {
@@ -476,7 +478,27 @@ Case with_base_material(Case c, const std::string& material) {
     return c;
 }
 
+namespace {
+
+// Lines beyond core::limits::max_case_line_chars are refused before toml++ sees them.
+void check_line_lengths(const std::string& text, const std::string& file_label) {
+    int line = 1;
+    for (std::size_t start = 0; start <= text.size(); ++line) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        if (end - start > core::limits::max_case_line_chars) {
+            throw InputError(SourceLocation{file_label, line, ""},
+                             fmt::format("line is {} characters long; a case file's lines are "
+                                         "limited to {} (README, Limits)",
+                                         end - start, core::limits::max_case_line_chars));
+        }
+        start = end + 1;
+    }
+}
+
+}  // namespace
+
 Case parse_case(const std::string& text, const std::string& file_label) {
+    check_line_lengths(text, file_label);
     toml::table root;
     try {
         root = toml::parse(text, file_label);

@@ -316,3 +316,18 @@ TEST_CASE("control characters in case text are refused at their key", "[assess][
                                  base_site,
                              "case.toml"));
 }
+
+TEST_CASE("a case line beyond 4096 characters is refused before the TOML parser sees it",
+          "[assess][case][limits][hardening]") {
+    // Issue 16 audit: a dotted key of 100,000 parts (a.a.a...) overflowed toml++'s recursion
+    // (exit 139); the fuzzer's 16 KiB inputs cannot reach that depth.
+    std::string deep = "a";
+    for (int i = 0; i < 100000; ++i) deep += ".a";
+    CHECK(error_of(base_component + base_site + deep + " = 1\n") ==
+          "case.toml:11: line is 200005 characters long; a case file's lines are limited to 4096 "
+          "(README, Limits)");
+    // 4096 characters are still read (and then refused as TOML names no such key).
+    const std::string longest = "x = \"" + std::string(4090, 'y') + "\"\n";
+    CHECK(error_of(base_component + base_site + longest).find("site.x: unknown key") !=
+          std::string::npos);
+}
