@@ -129,7 +129,7 @@ TEST_CASE("a --pga override cannot drop the per-level table", "[assess][pipeline
         with_pga_levels(c, {0.2});
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()).find("energy_table_displacement_m for 4 levels; --pga gives 1") !=
+        CHECK(std::string(e.what()).find("energy_table_displacement_m for 4 levels, the override 1") !=
               std::string::npos);
     }
 }
