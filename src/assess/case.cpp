@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "assess/materials.hpp"
 #include "assess/toml_reader.hpp"
 #include "core/file_io.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 
 namespace freestand::assess {
@@ -415,11 +417,21 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         }
     }
     s.pga_g = *pga;
-    const auto ratio = r.number("vertical_ratio", Range{0.0, 1.5});
+    // (0, 1.5]: the vertical history is matched to ratio x the horizontal target, so 0 leaves
+    // it nothing to match.
+    const Range ratio_range{0.0, 1.5, false, true};
+    const auto ratio = r.number("vertical_ratio", ratio_range);
     s.vertical_ratio = ratio.value_or(2.0 / 3.0);
     if (s.targets && s.targets->v) {
         // The vertical file's rigid-limit PSA over the horizontal one's is the PGA ratio.
         s.vertical_ratio = s.targets->v->spectrum.psa_g.back() / s.targets->zpa_h_g;
+        if (!(s.vertical_ratio > ratio_range.lo && s.vertical_ratio <= ratio_range.hi)) {
+            r.fail("target_v_file",
+                   fmt::format("the vertical file's last PSA over the horizontal file's gives a "
+                               "vertical/horizontal PGA ratio of {:.4g}; expected {} as for "
+                               "vertical_ratio",
+                               s.vertical_ratio, describe(ratio_range)));
+        }
     } else if (!ratio) {
         assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
     }
@@ -542,9 +554,25 @@ Uncertainty read_uncertainty(TableReader& r, const std::string& file) {
     return u;
 }
 
+// Lines beyond core::limits::max_case_line_chars are refused before toml++ sees them.
+void check_line_lengths(const std::string& text, const std::string& file_label) {
+    int line = 1;
+    for (std::size_t start = 0; start <= text.size(); ++line) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        if (end - start > core::limits::max_case_line_chars) {
+            throw InputError(SourceLocation{file_label, line, ""},
+                             fmt::format("line is {} characters long; a case file's lines are "
+                                         "limited to {} (README, Limits)",
+                                         end - start, core::limits::max_case_line_chars));
+        }
+        start = end + 1;
+    }
+}
+
 }  // namespace
 
 Case parse_case(const std::string& text, const std::string& file_label) {
+    check_line_lengths(text, file_label);
     toml::table root;
     try {
         root = toml::parse(text, file_label);
