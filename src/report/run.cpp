@@ -15,9 +15,16 @@ CaseRun run_case(const std::filesystem::path& case_file,
     if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
     CaseRun run;
     run.result = assess::assess(c);
+    if (c.options.fragility.enabled) {
+        fragility::Config config;
+        config.pga_g = c.options.fragility.pga_g;
+        config.samples = c.options.fragility.samples;
+        config.seed = c.options.seed;
+        run.fragility = fragility::run_all(c, config, 0);
+    }
     Stamp stamp = make_stamp(bytes, case_file.string(), c.options.seed, commit);
     stamp.inputs = stamped_inputs(c);
-    run.rendered = render(run.result, stamp);
+    run.rendered = render(run.result, stamp, run.fragility ? &*run.fragility : nullptr);
     return run;
 }
 

@@ -12,11 +12,13 @@ namespace freestand::report {
 
 struct CaseRun {
     assess::AssessmentResult result;
+    std::optional<fragility::Result> fragility;  ///< with [options] fragility = true
     Rendered rendered;
 };
 
 /// Reads the case file (its bytes are hashed into the stamp), optionally replaces its PGA levels,
-/// assesses and renders. commit is the build's commit for the stamp. Errors propagate
+/// assesses, runs the fragility analysis when the case asks for it (on all cores; the result does
+/// not depend on the thread count) and renders. commit is the build's commit for the stamp. Errors propagate
 /// (IoError, InputError, NumericalError).
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit);
