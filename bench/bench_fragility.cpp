@@ -12,6 +12,7 @@
 //     400-sample level: the samples are independent draws, so a prefix is a smaller run).
 // Wall times on a shared virtual machine drift by up to 2x between minutes; read the ratios.
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,6 +36,9 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
+// CPU time of the whole process (all threads): on a loaded machine, simulations per CPU
+// second is the per-core rate a quiet machine would give.
+double cpu_s() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 std::vector<std::size_t> all_indices(const fragility::Runner& r) {
     std::vector<std::size_t> all(r.total());
@@ -73,7 +77,7 @@ void throughput() {
                 "x and y), pools of 20 sets\n");
     std::printf("   %-16s %7s %9s %9s %7s %6s %6s %6s %6s\n", "case", "sims", "1 thr s",
                 "2 thr s", "pool s", "rest", "slide", "rock", "over");
-    double total_1 = 0.0, total_2 = 0.0, sims = 0.0;
+    double total_1 = 0.0, total_2 = 0.0, sims = 0.0, cpu_total = 0.0;
     Mix all;
     for (const Scene& sc : scenes) {
         const assess::Case c =
@@ -90,8 +94,10 @@ void throughput() {
         std::vector<fragility::SampleResult> out;
         for (int threads : {1, 2}) {
             const auto t0 = Clock::now();
+            const double c0 = cpu_s();
             out = fragility::run_samples(runner, indices, threads);
             s[threads - 1] = seconds_since(t0);
+            cpu_total += cpu_s() - c0;
         }
         Mix m;
         for (const auto& x : out) m.add(x), all.add(x);
@@ -103,10 +109,10 @@ void throughput() {
         sims += n;
     }
     std::printf("   all: %.0f simulations in %.2f s on 1 thread (%.0f /s), %.2f s on 2 threads "
-                "(%.0f /s, %.0f /s/core); samples: %d at rest, %d slid only, %d rocked without "
-                "overturning, %d overturned\n\n",
+                "(%.0f /s, %.0f /s/core); %.0f simulations per CPU second; samples: %d at rest, "
+                "%d slid only, %d rocked without overturning, %d overturned\n\n",
                 sims, total_1, sims / total_1, total_2, sims / total_2, sims / total_2 / 2.0,
-                all.rest, all.slide_only, all.rocked, all.overturned);
+                2.0 * sims / cpu_total, all.rest, all.slide_only, all.rocked, all.overturned);
 }
 
 void issue_run(const assess::Case& c) {
@@ -115,12 +121,15 @@ void issue_run(const assess::Case& c) {
     for (int i = 1; i <= 10; ++i) cfg.pga_g.push_back(0.1 * i);
     cfg.samples = 100;
     const auto t0 = Clock::now();
+    const double c0 = cpu_s();
     fragility::Runner runner(c, cfg);
     runner.prepare(2);
     const double t_pool = seconds_since(t0);
+    const double c1 = cpu_s();
     const auto t1 = Clock::now();
     auto samples = fragility::run_samples(runner, all_indices(runner), 2);
     const double t_sims = seconds_since(t1);
+    const double c2 = cpu_s();
     const auto t2 = Clock::now();
     const fragility::Result r = fragility::aggregate(fragility::make_meta(c, cfg), std::move(samples));
     const report::RenderedFragility out = report::render_fragility(r, report::Stamp{});
@@ -130,6 +139,9 @@ void issue_run(const assess::Case& c) {
                 "aggregate + fit + render %.3f s (%zu bytes of report.html)\n",
                 total, t_pool, 100.0 * t_pool / total, t_sims, 100.0 * t_sims / total, t_out,
                 out.html.size());
+    std::printf("   CPU: histories %.2f s, simulations %.2f s (a quiet 2-core machine: about "
+                "%.1f s wall)\n",
+                c1 - c0, c2 - c1, (c2 - c0) / 2.0 + t_out);
     for (std::size_t e = 0; e < fragility::all_events.size(); ++e) {
         const auto& f = r.fits[e];
         if (f.fit)

@@ -24,6 +24,12 @@ constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
 constexpr std::size_t burst_fail = 100000;    // ... before giving up
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
+// How long a block settled by the chatter rule stays at rest before the rest criteria are
+// evaluated again. A burst can be a loop at one instant: a rock onset whose excursion lies
+// below the impact search's resolution (the base grazing g tan(alpha)) returns to theta = 0
+// at once, settles, and starts again at the same t. In 1 us such an onset lifts the block by
+// about (A - g tan alpha) t^2 / (2 R): far below any angle that matters.
+constexpr double settle_hold_s = 1e-6;
 
 // Linear base acceleration on the current segment.
 struct Segment {
@@ -151,6 +157,7 @@ private:
             rec_.transition(st_.mode, Mode::rest);
             st_.mode = Mode::rest;
             st_.v = st_.th = st_.om = 0.0;
+            rest_hold_until_ = t + settle_hold_s;
         }
         if (burst_ > burst_fail)
             throw NumericalError(fmt::format(
@@ -168,6 +175,11 @@ private:
     }
 
     double advance_rest(double t) {
+        if (t < rest_hold_until_) {  // settled by the chatter rule: see settle_hold_s
+            const double held = std::min(tb_, rest_hold_until_);
+            rec_.time_in(Mode::rest, held - t);
+            return held;
+        }
         const Base a = seg_.at(t), b = seg_.at(tb_);
         const double cl = g_.c_rest[0], cr = g_.c_rest[1];
         // Rest holds while every function is <= 0 (section 2); each is linear on the segment.
@@ -733,6 +745,7 @@ private:
     Mode known_mode_ = Mode::rest;
     double last_event_ = -1.0;
     std::size_t burst_ = 0;
+    double rest_hold_until_ = -1.0;
     bool armed_ = false;
 };
 

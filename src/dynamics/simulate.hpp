@@ -100,7 +100,8 @@ struct Options {
     /// this angle (free-rocking energy estimate), the block is set flat with theta = theta' = 0.
     double settle_rebound_rad = 1e-7;
     /// Settling rule for chatter: 64 consecutive events each within this time of the previous
-    /// one set the block at rest (100000 throw NumericalError).
+    /// one set the block at rest and hold it there for 1 us (a loop at one instant, such as a
+    /// rock onset that only grazes g tan(alpha), then moves on); 100000 throw NumericalError.
     double settle_interval_s = 1e-9;
     /// A landing from flight is flat (both edges at once, Coulomb impact) when the far edge's
     /// gap would close at the landing's vertical speed within this time. A rigid-body model

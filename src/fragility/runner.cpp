@@ -207,7 +207,17 @@ SampleResult Runner::run(std::size_t global_index) const {
             m.sets.empty()
                 ? dynamics::excitation_from_record(m.records[pick], pga_g / m.record_pga_g[pick])
                 : assess::excitation(m.sets[pick], d, pga_g);
-        const dynamics::Summary s = dynamics::simulate(model, ex, opt).summary;
+        dynamics::Summary s;
+        try {
+            s = dynamics::simulate(model, ex, opt).summary;
+        } catch (const NumericalError& e) {
+            // Name the sample so that it can be rerun alone (its draws depend on these only).
+            throw NumericalError(fmt::format(
+                "level {} (PGA {:g} g), sample {} ({}, mu_s {:.6g}, restitution {:.6g}, direction "
+                "{}): {}",
+                out.level + 1, pga_g, out.sample + 1, out.motion, out.mu_s, r,
+                d == assess::Direction::x ? "x" : "y", e.what()));
+        }
         out.slide_max_m = std::max(out.slide_max_m, s.slide_max_m);
         out.rock_max_over_alpha = std::max(out.rock_max_over_alpha, s.rock_max_over_alpha);
         out.overturned = out.overturned || s.overturned;

@@ -2,6 +2,8 @@
 // shaking, a long record, and free flight.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
+#include <string>
 
 #include "core/errors.hpp"
 #include "helpers.hpp"
@@ -185,4 +187,33 @@ TEST_CASE("coarse records (dt 0.02 s and 0.04 s) run to the end and agree with c
         CHECK(r.summary.overturned == rc.summary.overturned);
         CHECK(r.summary.rock_max_rad == Approx(rc.summary.rock_max_rad).epsilon(0.02));
     }
+}
+
+TEST_CASE("a rock onset that only grazes g tan(alpha) settles and time goes on",
+          "[dynamics][hard]") {
+    // Issue 14 (bench_fragility): a generated history brought block-ts3 (y, mu 0.608738,
+    // r 0.810838) to a rock onset whose excursion was below the impact search's resolution: the
+    // onset, an impact at the same instant and the settling repeated at one t until 100000
+    // events threw "events accumulate". The window 9.0-9.4 s starts at rest, as in the run.
+    std::ifstream in(FREESTAND_TEST_DATA "/grazing_rock_onset.csv");
+    REQUIRE(in);
+    dynamics::Excitation e;
+    e.label = "grazing rock onset";
+    e.dt_s = 0.005;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#' || line[0] == 'h') continue;
+        const auto comma = line.find(',');
+        e.horizontal_mps2.push_back(std::stod(line.substr(0, comma)));
+        e.vertical_mps2.push_back(std::stod(line.substr(comma + 1)));
+    }
+    REQUIRE(e.horizontal_mps2.size() == 81);
+    const auto blk = block::Block::general(0.15, 0.15, 0.3, 35.0, 1.3124999999999998);
+    const auto model = dynamics::make_block_model(blk, 0.608738, 0.608738, 0.810838, 0.6);
+    dynamics::Options o = test::opts(Integrator::event);
+    const auto r = dynamics::simulate(model, e, o);
+    CHECK_FALSE(r.summary.overturned);
+    CHECK(r.summary.settlements >= 1);
+    // The onset is real but tiny: theta stays far below alpha (0.46 rad).
+    CHECK(r.summary.rock_max_rad < 1e-3);
+    CHECK(r.series.back().time_s >= 9.4 - 9.0 - 1e-9);
 }
