@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "assess/result.hpp"
+#include "core/publish.hpp"
 #include "report/json.hpp"
 #include "report/plots.hpp"
 
@@ -23,6 +24,9 @@ struct Rendered {
 /// '<' and '&' as entities (no raw HTML can start) and Markdown punctuation backslash-escaped,
 /// newlines folded to spaces.
 Rendered render(const assess::AssessmentResult& r, const Stamp& stamp);
+
+/// The files of a report folder: the figures, report.md, report.html, result.json.
+std::vector<core::OutputFile> report_files(const Rendered& rendered);
 
 /// Publishes report.md, report.html, result.json and the figures as the whole content of dir
 /// (core::publish_folder: all old or all new for any reader; only a folder freestand owns is

@@ -2,23 +2,39 @@
 
 #include <fmt/format.h>
 
+#include "assess/overrides.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
 
 namespace freestand::report {
 
+namespace {
+
+CaseRun assess_and_render(const assess::Case& c, const std::string& case_bytes,
+                          const std::filesystem::path& case_file, const std::string& commit) {
+    CaseRun run;
+    run.result = assess::assess(c);
+    Stamp stamp = make_stamp(case_bytes, case_file.string(), c.options.seed, commit);
+    stamp.inputs = stamped_inputs(c);
+    run.rendered = render(run.result, stamp);
+    return run;
+}
+
+}  // namespace
+
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit) {
     const std::string bytes = core::read_input_file(case_file);
     assess::Case c = assess::parse_case(bytes, case_file.string());
     if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
-    CaseRun run;
-    run.result = assess::assess(c);
-    Stamp stamp = make_stamp(bytes, case_file.string(), c.options.seed, commit);
-    stamp.inputs = stamped_inputs(c);
-    run.rendered = render(run.result, stamp);
-    return run;
+    return assess_and_render(c, bytes, case_file, commit);
+}
+
+CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
+                 const assess::CaseOverrides& overrides, const std::string& commit) {
+    const assess::Case c = assess::parse_case(case_bytes, case_file.string(), overrides);
+    return assess_and_render(c, case_bytes, case_file, commit);
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {

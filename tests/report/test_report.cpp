@@ -1,9 +1,11 @@
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <thread>
 
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
@@ -403,6 +405,25 @@ TEST_CASE("rendering twice gives identical bytes", "[report][determinism]") {
     CHECK(a.markdown == b.markdown);
     CHECK(a.html == b.html);
     CHECK(a.json == b.json);
+}
+
+TEST_CASE("renders on several threads at once give the bytes of a render alone",
+          "[report][determinism][threads]") {
+    // mstch's escape function is process-wide: without EscapeGuard's lock one thread's HTML
+    // escaping leaks into another's Markdown.
+    const Rendered alone = render(hand_result(), stamp());
+    std::atomic<int> mismatches{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&] {
+            for (int i = 0; i < 10; ++i) {
+                const Rendered r = render(hand_result(), stamp());
+                if (r.markdown != alone.markdown || r.html != alone.html) ++mismatches;
+            }
+        });
+    }
+    for (auto& t : threads) t.join();
+    CHECK(mismatches == 0);
 }
 
 TEST_CASE("an SVG plot escapes its text and skips non-positive values on log axes",

@@ -1,0 +1,118 @@
+#include "batch/run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "report/run.hpp"
+#include "report/sha256.hpp"
+
+namespace freestand::batch {
+
+namespace {
+
+struct Outcome {
+    report::SummaryRow row;
+    std::optional<report::Rendered> rendered;
+};
+
+// The error of a failed row; an input error of an overridden case says which values the list
+// replaced, since they have no line in the case file.
+void fail_row(report::SummaryRow& row, const BatchEntry& e, const BatchList& list,
+              const std::string& message, ExitCode code, bool input) {
+    row.error = message;
+    if (input && !e.overrides.empty())
+        row.error += fmt::format(" (with {} from {}:{})", row.overrides, list.source, e.line);
+    row.exit_code = static_cast<int>(code);
+}
+
+Outcome run_entry(const BatchEntry& e, const BatchList& list, const std::string& commit) {
+    Outcome out;
+    report::SummaryRow& row = out.row;
+    row.name = e.name;
+    row.case_file = e.case_file.string();
+    row.overrides = assess::describe(e.overrides);
+    try {
+        const std::string bytes = core::read_input_file(e.case_file);
+        row.case_sha256 = report::sha256_hex(bytes);
+        report::CaseRun run = report::run_case(bytes, e.case_file, e.overrides, commit);
+        row.outcome = report::summary_outcome(run.result);
+        out.rendered = std::move(run.rendered);
+    } catch (const InputError& err) {
+        fail_row(row, e, list, err.what(), err.code(), true);
+    } catch (const Error& err) {
+        fail_row(row, e, list, err.what(), err.code(), false);
+    } catch (const std::exception& err) {
+        fail_row(row, e, list, std::string("internal error: ") + err.what(), ExitCode::internal,
+                 false);
+    } catch (...) {
+        fail_row(row, e, list, "internal error: an unknown exception", ExitCode::internal, false);
+    }
+    return out;
+}
+
+}  // namespace
+
+bool BatchRun::all_assessed() const {
+    return std::all_of(summary.rows.begin(), summary.rows.end(),
+                       [](const report::SummaryRow& r) { return r.outcome.has_value(); });
+}
+
+BatchRun run_batch(const BatchList& list, unsigned threads, const std::string& commit) {
+    const std::size_t n = list.entries.size();
+    std::vector<Outcome> outcomes(n);
+    std::atomic<std::size_t> next{0};
+    // Each worker takes the next unassessed entry; results land at the entry's index, so the
+    // order of completion never shows in the outputs.
+    const auto work = [&] {
+        for (std::size_t i = next++; i < n; i = next++)
+            outcomes[i] = run_entry(list.entries[i], list, commit);
+    };
+    const std::size_t workers = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(n, 1));
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+
+    BatchRun run;
+    run.summary.stamp = {FREESTAND_VERSION, commit, list.source, list.sha256};
+    for (Outcome& o : outcomes) {
+        run.summary.rows.push_back(std::move(o.row));
+        run.reports.push_back(std::move(o.rendered));
+    }
+    return run;
+}
+
+std::vector<core::OutputFile> batch_files(const BatchRun& run) {
+    const report::RenderedSummary s = report::render_summary(run.summary);
+    const std::vector<std::string>& names = report::summary_file_names();
+    std::vector<core::OutputFile> files{
+        {names[0], s.markdown}, {names[1], s.html}, {names[2], s.csv}, {names[3], s.json}};
+    for (std::size_t i = 0; i < run.reports.size(); ++i) {
+        if (!run.reports[i]) continue;
+        for (core::OutputFile& f : report::report_files(*run.reports[i]))
+            files.push_back({run.summary.rows[i].name + "/" + f.name, std::move(f.contents)});
+    }
+    return files;
+}
+
+void write_batch(const std::filesystem::path& dir, const BatchRun& run) {
+    core::publish_folder(dir, batch_files(run));
+}
+
+std::string row_line(const report::SummaryRow& row) {
+    if (!row.outcome) return fmt::format("{}: error: {}", row.name, row.error);
+    const report::SummaryOutcome& o = *row.outcome;
+    std::string out = fmt::format("{}: {}: {} (governing {}, margin {}, decided by {})", row.name,
+                                  o.component, o.verdict, o.governing_level, o.margin_text,
+                                  o.decided_by);
+    for (const std::string& c : o.open_conditions) out += "; open condition: " + c;
+    return out;
+}
+
+}  // namespace freestand::batch
