@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,7 @@
 #include "assess/overrides.hpp"
 #include "assess/toml_reader.hpp"
 #include "core/file_io.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 
 namespace freestand::assess {
@@ -50,7 +52,7 @@ const std::vector<std::string> site_keys{
     "energy_highpass_hz", "energy_table_displacement_m", "va_range_mps_per_g", "adv2_range",
     "da_max_m_per_g"};
 const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
-                                           "simulate"};
+                                           "simulate", "fragility", "fragility_pga_g", "fragility_samples"};
 
 const toml::table* subtable(const toml::table& root, const std::string& name,
                             const std::string& file) {
@@ -416,11 +418,21 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         }
     }
     s.pga_g = *pga;
-    const auto ratio = r.number("vertical_ratio", Range{0.0, 1.5});
+    // (0, 1.5]: the vertical history is matched to ratio x the horizontal target, so 0 leaves
+    // it nothing to match.
+    const Range ratio_range{0.0, 1.5, false, true};
+    const auto ratio = r.number("vertical_ratio", ratio_range);
     s.vertical_ratio = ratio.value_or(2.0 / 3.0);
     if (s.targets && s.targets->v) {
         // The vertical file's rigid-limit PSA over the horizontal one's is the PGA ratio.
         s.vertical_ratio = s.targets->v->spectrum.psa_g.back() / s.targets->zpa_h_g;
+        if (!(s.vertical_ratio > ratio_range.lo && s.vertical_ratio <= ratio_range.hi)) {
+            r.fail("target_v_file",
+                   fmt::format("the vertical file's last PSA over the horizontal file's gives a "
+                               "vertical/horizontal PGA ratio of {:.4g}; expected {} as for "
+                               "vertical_ratio",
+                               s.vertical_ratio, describe(ratio_range)));
+        }
     } else if (!ratio) {
         assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
     }
@@ -460,6 +472,18 @@ Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
                                            *sim));
         }
     }
+    o.fragility.enabled = r.boolean("fragility").value_or(false);
+    o.fragility.pga_g = r.numbers("fragility_pga_g", Range{0.0, 3.0, false, true})
+                            .value_or(std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7,
+                                                          0.8, 0.9, 1.0});
+    for (std::size_t i = 1; i < o.fragility.pga_g.size(); ++i)
+        if (o.fragility.pga_g[i] <= o.fragility.pga_g[i - 1])
+            r.fail("fragility_pga_g", "levels must be strictly increasing");
+    o.fragility.samples =
+        static_cast<int>(r.integer("fragility_samples", 1, 100000).value_or(100));
+    if (!o.fragility.enabled && (r.has("fragility_pga_g") || r.has("fragility_samples")))
+        r.fail(r.has("fragility_pga_g") ? "fragility_pga_g" : "fragility_samples",
+               "applies only with fragility = true");
     r.finish(option_keys);
     return o;
 }
@@ -498,12 +522,64 @@ Case with_base_material(Case c, const std::string& material) {
     return c;
 }
 
+namespace {
+
+// One uncertain property: { dist = "uniform", lo, hi } or { dist = "lognormal", median, beta }.
+core::Distribution read_distribution(TableReader& outer, const std::string& key, Range values,
+                                     std::optional<double> truncate_at, const std::string& file) {
+    TableReader r(outer.table(key), file, "uncertainty." + key);
+    core::Distribution d;
+    const std::string dist = r.required_string("dist");
+    if (dist == "uniform") {
+        d.a = r.required_number("lo", values);
+        d.b = r.required_number("hi", values);
+        if (d.b < d.a) r.fail("hi", fmt::format("{} is below lo = {}; expected lo <= hi", d.b, d.a));
+        r.finish({"dist", "lo", "hi"});
+        return d;
+    }
+    if (dist != "lognormal")
+        r.fail("dist", fmt::format("\"{}\"; expected \"uniform\" or \"lognormal\"", dist));
+    d.kind = core::Distribution::Kind::lognormal;
+    d.a = r.required_number("median", Range{0.0, values.hi, false, true});
+    d.b = r.required_number("beta", Range{0.0, 2.0, false, true});
+    d.upper = truncate_at;
+    r.finish({"dist", "median", "beta"});
+    return d;
+}
+
+Uncertainty read_uncertainty(TableReader& r, const std::string& file) {
+    Uncertainty u;
+    if (r.has("mu_s")) u.mu_s = read_distribution(r, "mu_s", Range{0.0, 10.0}, std::nullopt, file);
+    if (r.has("restitution"))
+        u.restitution = read_distribution(r, "restitution", Range{0.0, 1.0}, 1.0, file);
+    r.finish({"mu_s", "restitution"});
+    return u;
+}
+
+// Lines beyond core::limits::max_case_line_chars are refused before toml++ sees them.
+void check_line_lengths(const std::string& text, const std::string& file_label) {
+    int line = 1;
+    for (std::size_t start = 0; start <= text.size(); ++line) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        if (end - start > core::limits::max_case_line_chars) {
+            throw InputError(SourceLocation{file_label, line, ""},
+                             fmt::format("line is {} characters long; a case file's lines are "
+                                         "limited to {} (README, Limits)",
+                                         end - start, core::limits::max_case_line_chars));
+        }
+        start = end + 1;
+    }
+}
+
+}  // namespace
+
 Case parse_case(const std::string& text, const std::string& file_label) {
     return parse_case(text, file_label, CaseOverrides{});
 }
 
 Case parse_case(const std::string& text, const std::string& file_label,
                 const CaseOverrides& overrides) {
+    check_line_lengths(text, file_label);
     toml::table root;
     try {
         root = toml::parse(text, file_label);
@@ -516,10 +592,10 @@ Case parse_case(const std::string& text, const std::string& file_label,
     out.file = file_label;
     for (const auto& [k, node] : root) {
         const std::string key(k.str());
-        if (key != "component" && key != "site" && key != "options") {
+        if (key != "component" && key != "site" && key != "options" && key != "uncertainty") {
             throw InputError(
                 SourceLocation{file_label, static_cast<int>(node.source().begin.line), key},
-                "unknown table; allowed tables: [component], [site], [options]");
+                "unknown table; allowed tables: [component], [site], [options], [uncertainty]");
         }
     }
     const toml::table* comp = subtable(root, "component", file_label);
@@ -535,6 +611,8 @@ Case parse_case(const std::string& text, const std::string& file_label,
     out.site = read_site(rs, out.assumptions, std::filesystem::path(file_label).parent_path());
     TableReader ro(subtable(root, "options", file_label), file_label, "options");
     out.options = read_options(ro, std::filesystem::path(file_label).parent_path());
+    TableReader ru(subtable(root, "uncertainty", file_label), file_label, "uncertainty");
+    out.uncertainty = read_uncertainty(ru, file_label);
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "block/block.hpp"
+#include "core/statistics.hpp"
 #include "motion/motion.hpp"
 #include "spectra/spectrum.hpp"
 
@@ -117,12 +118,28 @@ struct Site {
 enum class SimulatePolicy { automatic, always, never };
 const char* to_string(SimulatePolicy p);
 
+/// Uncertain properties of a fragility analysis ([uncertainty], docs/methods.md s.9). Absent: the
+/// friction is uniform over the case's bounds and the restitution uniform over each direction's
+/// bounds (Housner's value to the measured r), drawn at one quantile for both directions.
+struct Uncertainty {
+    std::optional<core::Distribution> mu_s;         ///< static friction (mu_k keeps its ratio)
+    std::optional<core::Distribution> restitution;  ///< one value for both directions
+};
+
+/// The fragility section of an assessment ([options] fragility = true).
+struct FragilitySection {
+    bool enabled = false;
+    std::vector<double> pga_g;  ///< levels, g (default 0.1 to 1.0 by 0.1)
+    int samples = 100;          ///< per level
+};
+
 /// Run options (issue 6, [options]).
 struct Options {
     int histories_per_level = 7;  ///< docs/methods.md s.6 step 5: >= 7 lets the mean govern
     std::uint64_t seed = 1;
     std::vector<std::filesystem::path> seed_records;  ///< resolved against the case's folder
     SimulatePolicy simulate = SimulatePolicy::automatic;
+    FragilitySection fragility;
 };
 
 /// A parsed case plus what the report must echo.
@@ -131,6 +148,7 @@ struct Case {
     Component component;
     Site site;
     Options options;
+    Uncertainty uncertainty;
     std::vector<std::string> assumptions;  ///< defaults the parser applied, in words
 };
 

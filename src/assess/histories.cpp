@@ -121,7 +121,7 @@ HistorySet generate_one(const Case& c, const motion::TargetSet& targets, std::si
 
 }  // namespace
 
-HistoryBank::HistoryBank(const Case& c) : case_(&c) {}
+HistoryBank::HistoryBank(const Case& c, int threads) : case_(&c), threads_(threads) {}
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
     // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.
@@ -142,8 +142,9 @@ const std::vector<HistorySet>& HistoryBank::sets() {
     // The sets are independent (own seeds); generating them on all cores keeps the result
     // identical, since each lands in its own slot (the motion stage serialises FFTW planning).
     sets_.resize(n);
-    const std::size_t workers =
-        std::max<std::size_t>(1, std::min<std::size_t>(n, std::thread::hardware_concurrency()));
+    const std::size_t cores =
+        threads_ > 0 ? static_cast<std::size_t>(threads_) : std::thread::hardware_concurrency();
+    const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(n, cores));
     std::vector<std::future<void>> jobs;
     for (std::size_t w = 0; w < workers; ++w) {
         jobs.push_back(std::async(std::launch::async, [&, w] {

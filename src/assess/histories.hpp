@@ -26,8 +26,9 @@ struct HistorySet {
 
 class HistoryBank {
   public:
-    /// Nothing is generated until sets() is first called.
-    explicit HistoryBank(const Case& c);
+    /// Nothing is generated until sets() is first called, then on `threads` threads (0: all
+    /// cores); the sets do not depend on the thread count.
+    explicit HistoryBank(const Case& c, int threads = 0);
 
     /// The options.histories_per_level sets at 1 g, generating them on first call. Throws
     /// InputError when options.seed_records is not three records (h1, h2, v) per history.
@@ -48,6 +49,7 @@ class HistoryBank {
 
   private:
     const Case* case_;
+    int threads_ = 0;
     bool generated_ = false;
     std::vector<HistorySet> sets_;
     std::vector<double> unit_hp_disp_x_m_;

@@ -339,7 +339,7 @@ Case with_pga_levels(Case c, const std::vector<double>& pga_g) {
     }
     if (c.site.energy_table_displacement_m && c.site.energy_table_displacement_m->size() != pga_g.size()) {
         throw InputError(where, fmt::format("the case gives site.energy_table_displacement_m for "
-                                            "{} levels; --pga gives {}: the table cannot follow",
+                                            "{} levels, the override {}: the table cannot follow",
                                             c.site.energy_table_displacement_m->size(),
                                             pga_g.size()));
     }

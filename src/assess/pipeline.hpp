@@ -20,7 +20,8 @@ AssessmentResult assess(const Case& c);
 Upgrade search_materials(const Case& c);
 
 /// Returns the case with its PGA levels replaced (the command line's --pga). Levels must be in
-/// (0, 3] g and strictly increasing: InputError with field "--pga" otherwise.
+/// (0, 3] g, strictly increasing, with a vertical PGA below 1 g, and as many as the case's
+/// energy_table_displacement_m: InputError with field "pga_levels" otherwise.
 Case with_pga_levels(Case c, const std::vector<double>& pga_g);
 
 }  // namespace freestand::assess

@@ -204,4 +204,18 @@ void TableReader::finish(const std::vector<std::string>& allowed) const {
     fail(key, fmt::format("unknown key; allowed keys: {}", fmt::join(allowed, ", ")));
 }
 
+const toml::table* TableReader::table(const std::string& key) {
+    const toml::node* n = find(key);
+    if (n == nullptr) return nullptr;
+    if (!n->is_table()) fail(key, fmt::format("expected a table, got {}", type_name(n->type())));
+    return n->as_table();
+}
+
+std::optional<bool> TableReader::boolean(const std::string& key) {
+    const toml::node* n = find(key);
+    if (n == nullptr) return std::nullopt;
+    if (!n->is_boolean()) fail(key, fmt::format("expected true or false, got {}", type_name(n->type())));
+    return n->as_boolean()->get();
+}
+
 }  // namespace freestand::assess

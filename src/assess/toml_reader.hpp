@@ -43,6 +43,10 @@ class TableReader {
     std::optional<std::vector<double>> numbers(const std::string& key, Range range,
                                                std::size_t exact_size = 0);
     std::optional<std::vector<std::string>> strings(const std::string& key);
+    /// A nested (inline) table, or nullptr when absent; an error when the key holds another type.
+    const toml::table* table(const std::string& key);
+    /// A boolean, or nullopt when absent.
+    std::optional<bool> boolean(const std::string& key);
 
     /// Throws InputError for the first key (in file order) that was never read, listing the
     /// allowed keys.

@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/flag_names.hpp"
 #include "core/errors.hpp"
+#include "core/printable.hpp"
 
 namespace freestand::cli {
 
@@ -48,22 +49,27 @@ int main(int argc, char** argv) {
         std::cout << "freestand " FREESTAND_VERSION "\n";
         return 0;
     }
+    // Messages quote the user's arguments and the bytes of their files: control characters
+    // (a terminal's escape sequences) are shown as \xNN, never sent raw.
+    using core::printable;
     const auto it = cli::command_table().find(all[0]);
     if (it == cli::command_table().end()) {
-        std::cerr << "freestand: unknown command \"" << all[0] << "\" (see freestand --help)\n";
+        std::cerr << "freestand: unknown command \"" << printable(all[0])
+                  << "\" (see freestand --help)\n";
         return static_cast<int>(ExitCode::usage);
     }
     try {
         return it->second.run(std::vector<std::string>(all.begin() + 1, all.end()));
     } catch (const InputError& e) {
-        std::cerr << "freestand " << all[0] << ": error: " << cli::on_command_line(e).what()
-                  << "\n";
+        std::cerr << "freestand " << all[0] << ": error: "
+                  << printable(cli::on_command_line(e).what()) << "\n";
         return static_cast<int>(e.code());
     } catch (const Error& e) {
-        std::cerr << "freestand " << all[0] << ": error: " << e.what() << "\n";
+        std::cerr << "freestand " << all[0] << ": error: " << printable(e.what()) << "\n";
         return static_cast<int>(e.code());
     } catch (const std::exception& e) {
-        std::cerr << "freestand " << all[0] << ": internal error: " << e.what() << "\n";
+        std::cerr << "freestand " << all[0] << ": internal error: " << printable(e.what())
+                  << "\n";
         return static_cast<int>(ExitCode::internal);
     }
 }

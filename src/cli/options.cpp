@@ -17,7 +17,10 @@ std::optional<po::variables_map> parse_options(const std::string& command, const
                                                const std::vector<std::string>& positional) {
     desc.add_options()("help,h", "print this help and exit");
     po::positional_options_description pos;
-    for (const auto& name : positional) pos.add(name.c_str(), 1);
+    for (const auto& name : positional) {
+        const bool many = name.size() > 3 && name.compare(name.size() - 3, 3, "...") == 0;
+        pos.add(many ? name.substr(0, name.size() - 3).c_str() : name.c_str(), many ? -1 : 1);
+    }
     po::variables_map vm;
     try {
         po::store(po::command_line_parser(args).options(desc).positional(pos).run(), vm);
@@ -58,6 +61,48 @@ std::vector<double> parse_double_list(const std::string& text, const std::string
     std::vector<double> values;
     for (const std::string& item : split_list(text)) values.push_back(parse_double(item, option));
     return values;
+}
+
+std::vector<double> parse_levels(const std::string& text, const std::string& option) {
+    if (text.find(':') == std::string::npos) return parse_double_list(text, option);
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t colon = text.find(':', start);
+        parts.push_back(text.substr(start, colon == std::string::npos ? std::string::npos
+                                                                       : colon - start));
+        if (colon == std::string::npos) break;
+        start = colon + 1;
+    }
+    if (parts.size() != 3)
+        throw UsageError(fmt::format("{}: expected START:STOP:STEP or a comma list; got \"{}\"",
+                                     option, text));
+    const double first = parse_double(parts[0], option);
+    const double last = parse_double(parts[1], option);
+    const double step = parse_double(parts[2], option);
+    if (!(step > 0.0) || last < first)
+        throw UsageError(fmt::format("{}: \"{}\" needs STEP > 0 and STOP >= START", option, text));
+    const double count = std::floor((last - first) / step + 1e-9) + 1.0;
+    if (count > 1000.0)
+        throw UsageError(fmt::format("{}: \"{}\" gives {} levels; at most 1000", option, text, count));
+    std::vector<double> out;
+    for (int i = 0; i < static_cast<int>(count); ++i)
+        out.push_back(std::round((first + i * step) * 1e12) / 1e12);
+    return out;
+}
+
+std::array<int, 2> parse_shard(const std::string& text, const std::string& option) {
+    const std::size_t slash = text.find('/');
+    int k = 0, n = 0;
+    const auto whole = [&](const std::string& t, int& v) {
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+        return r.ec == std::errc() && r.ptr == t.data() + t.size();
+    };
+    if (slash == std::string::npos || !whole(text.substr(0, slash), k) ||
+        !whole(text.substr(slash + 1), n) || n < 1 || n > 100000 || k < 1 || k > n)
+        throw UsageError(
+            fmt::format("{}: expected K/N with 1 <= K <= N <= 100000; got \"{}\"", option, text));
+    return {k, n};
 }
 
 std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,

@@ -2,6 +2,7 @@
 /// Shared command-line parsing on top of Boost.Program_options: help handling, and the value
 /// syntaxes several commands use (comma lists, key=value lists).
 #include <boost/program_options.hpp>
+#include <array>
 #include <map>
 #include <optional>
 #include <optional>
@@ -14,7 +15,8 @@ namespace freestand::cli {
 
 namespace po = boost::program_options;
 
-/// Parses args against desc (and positional names, in order). Returns std::nullopt after
+/// Parses args against desc (and positional names, in order; a name ending in "..." takes every
+/// remaining positional argument). Returns std::nullopt after
 /// printing help to stdout when --help was given; throws UsageError naming the option otherwise.
 std::optional<po::variables_map> parse_options(const std::string& command, const std::string& usage,
                                                po::options_description desc,
@@ -27,6 +29,14 @@ std::vector<std::string> split_list(const std::string& text);
 
 /// "0.05,0.1" -> {0.05, 0.1}; throws UsageError naming option on a bad number.
 std::vector<double> parse_double_list(const std::string& text, const std::string& option);
+
+/// PGA levels: "START:STOP:STEP" (inclusive, e.g. 0.1:1.0:0.1, each value rounded to 12
+/// decimals so 0.3 prints as 0.3) or a comma list. UsageError naming option on bad syntax, a
+/// non-positive step, STOP below START or more than 1000 levels.
+std::vector<double> parse_levels(const std::string& text, const std::string& option);
+
+/// "K/N" with 1 <= K <= N <= 100000 -> {K, N}; UsageError naming option otherwise.
+std::array<int, 2> parse_shard(const std::string& text, const std::string& option);
 
 /// One number; accepts a trailing unit suffix listed in allowed_suffixes ("g", "Hz", "s").
 double parse_double(const std::string& text, const std::string& option);

@@ -19,24 +19,35 @@
 namespace freestand::core {
 
 std::string read_text_file(const std::filesystem::path& path) {
+    const auto too_large = [&path](const std::string& how_large) {
+        return InputError(SourceLocation{path.string(), 0, ""},
+                          fmt::format("{}; an input file is limited to {:.0f} bytes (512 MiB; "
+                                      "README, Limits)",
+                                      how_large, limits::max_input_bytes));
+    };
     std::error_code ec;
     const auto type = std::filesystem::status(path, ec).type();
     if (type == std::filesystem::file_type::directory)
         throw IoError(path.string() + ": is a folder; expected a file");
     if (type == std::filesystem::file_type::regular) {
         const auto bytes = static_cast<double>(std::filesystem::file_size(path, ec));
-        if (!ec && bytes > limits::max_input_bytes) {
-            throw IoError(fmt::format("{}: {:.4g} bytes; input files are limited to {:.4g} bytes "
-                                      "(README, Limits)",
-                                      path.string(), bytes, limits::max_input_bytes));
-        }
+        if (!ec && bytes > limits::max_input_bytes)
+            throw too_large(fmt::format("{:.0f} bytes", bytes));
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw IoError(path.string() + ": cannot open file for reading");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
+    // A device or a pipe has no size to check first (/dev/zero never ends): the limit is
+    // checked as it is read.
+    const auto limit = static_cast<std::size_t>(limits::max_input_bytes);
+    std::string text;
+    std::vector<char> chunk(std::size_t{1} << 20);
+    while (in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+        if (text.size() > limit) throw too_large(fmt::format("does not end within {} bytes", limit));
+    }
     if (in.bad()) throw IoError(path.string() + ": read failed");
-    return buffer.str();
+    return text;
 }
 
 namespace {

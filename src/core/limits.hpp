@@ -27,6 +27,10 @@ inline constexpr double max_dt_s = 1.0;
 inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
 /// Steps of one fixed-step integration (central difference: duration / dt).
 inline constexpr double max_fixed_steps = 1e8;
+/// Characters of one line of a TOML case file. toml++ builds the tables of a dotted key
+/// (a.b.c...) recursively: 60,000 parts overflowed the stack. A key's parts stand on one line
+/// and its table header's on another, so the cap bounds the depth to about this many tables.
+inline constexpr std::size_t max_case_line_chars = 4096;
 
 /// Throws InputError at where unless needed <= limit (a NaN need counts as too large):
 /// "<what>: <needed> is above the limit <limit> (README, Limits)".

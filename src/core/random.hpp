@@ -15,4 +15,16 @@ constexpr std::uint64_t splitmix64(std::uint64_t z) {
     return z ^ (z >> 31);
 }
 
+/// Uniform double in [0, 1) from the top 53 bits of one 64-bit draw (portable, unlike
+/// std::uniform_real_distribution, whose algorithm the standard leaves open).
+constexpr double uniform01(std::uint64_t draw) {
+    return static_cast<double>(draw >> 11) * 0x1.0p-53;
+}
+
+/// The seed of one stream identified by a run seed and two indices (a fragility sample's level
+/// and number): splitmix64 chained over them, so the stream depends on these three numbers only.
+constexpr std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t a, std::uint64_t b) {
+    return splitmix64(splitmix64(splitmix64(seed) + a) + b);
+}
+
 }  // namespace freestand::core

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <boost/math/distributions/beta.hpp>
+#include <boost/math/distributions/normal.hpp>
+#include <fmt/format.h>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -37,6 +39,26 @@ std::array<double, 2> clopper_pearson(int k, int n, double confidence) {
         k == n ? 1.0
                : boost::math::quantile(boost::math::beta_distribution<>(kd + 1.0, nd - kd), 1.0 - tail);
     return {lower, upper};
+}
+
+double normal_cdf(double z) { return boost::math::cdf(boost::math::normal_distribution<>(), z); }
+
+double normal_quantile(double p) {
+    return boost::math::quantile(boost::math::normal_distribution<>(), p);
+}
+
+double Distribution::at(double u) const {
+    if (kind == Kind::uniform) return a + u * (b - a);
+    // Inverse CDF of ln X ~ N(ln a, b^2), on [0, F(upper)) when truncated.
+    const double top = upper ? normal_cdf(std::log(*upper / a) / b) : 1.0;
+    const double p = std::clamp(u * top, 1e-300, 1.0 - 1e-16);
+    return a * std::exp(b * normal_quantile(p));
+}
+
+std::string Distribution::describe() const {
+    if (kind == Kind::uniform) return fmt::format("uniform [{:.4g}, {:.4g}]", a, b);
+    return fmt::format("lognormal median {:.4g}, beta {:.4g}{}", a, b,
+                       upper ? fmt::format(" (truncated at {:.4g})", *upper) : "");
 }
 
 }  // namespace freestand::core

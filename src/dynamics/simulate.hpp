@@ -33,7 +33,7 @@ struct BlockModel {
 };
 
 /// Validated model. mu_k defaults to mu_s, top height to 2 h (a uniform block). Throws
-/// InputError naming the option ("--mu", "--mu-k", "--restitution", "--top") when
+/// InputError naming the parameter (mu_s, mu_k, restitution, top_height_m) when
 /// mu_s < 0, mu_k outside [0, mu_s], r outside [0, 1] or the top below the CG.
 BlockModel make_block_model(const block::Block& block, double mu_s,
                             std::optional<double> mu_k = std::nullopt,

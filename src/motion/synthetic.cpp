@@ -25,8 +25,6 @@
 
 namespace freestand::motion {
 
-double uniform01(std::uint64_t draw) { return static_cast<double>(draw >> 11) * 0x1.0p-53; }
-
 std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt) {
     return core::splitmix64(seed ^ (component * 0x9E3779B97F4A7C15ull) ^
                             (attempt * 0xD1B54A32D192ED03ull));
@@ -152,7 +150,7 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
     // Starting amplitudes from random vibration: G(omega) ~ PSA^2 / omega, so |X| ~ PSA / sqrt(f).
     std::mt19937_64 rng(seed);
     for (std::size_t k = 1; k < p.unit.size(); ++k) {
-        p.unit[k] = std::polar(1.0, units::two_pi * uniform01(rng()));
+        p.unit[k] = std::polar(1.0, units::two_pi * core::uniform01(rng()));
         const double fk = static_cast<double>(k) * p.df_hz;
         p.amp[k] = fk < 0.05 ? 0.0 : target.psa_5pct.psa_at(fk) / std::sqrt(fk);
     }

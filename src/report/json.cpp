@@ -277,6 +277,28 @@ std::vector<StampedInput> stamped_inputs(const Case& c) {
     return out;
 }
 
+ordered_json stamp_json(const Stamp& stamp) {
+    return {{"tool", "freestand"},
+            {"version", stamp.tool_version},
+            {"commit", stamp.commit},
+            {"seed", stamp.seed},
+            {"input_sha256", stamp.input_sha256},
+            {"case_file", stamp.case_file},
+            {"inputs", inputs_json(stamp.inputs)}};
+}
+
+Stamp stamp_from_json(const nlohmann::json& j) {
+    Stamp s;
+    s.tool_version = j.at("version").get<std::string>();
+    s.commit = j.at("commit").get<std::string>();
+    s.seed = j.at("seed").get<std::uint64_t>();
+    s.input_sha256 = j.at("input_sha256").get<std::string>();
+    s.case_file = j.at("case_file").get<std::string>();
+    for (const auto& i : j.at("inputs"))
+        s.inputs.push_back({i.at("file").get<std::string>(), i.at("sha256").get<std::string>()});
+    return s;
+}
+
 Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, std::uint64_t seed,
                  const std::string& commit) {
     return Stamp{FREESTAND_VERSION, commit, sha256_hex(case_bytes), case_file, seed, {}};
@@ -318,13 +340,7 @@ ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {
     for (const Reference& ref : references())
         refs.push_back({{"key", ref.key}, {"text", ref.text}});
     j["references"] = refs;
-    j["stamp"] = {{"tool", "freestand"},
-                  {"version", stamp.tool_version},
-                  {"commit", stamp.commit},
-                  {"seed", stamp.seed},
-                  {"input_sha256", stamp.input_sha256},
-                  {"case_file", stamp.case_file},
-                  {"inputs", inputs_json(stamp.inputs)}};
+    j["stamp"] = stamp_json(stamp);
     return j;
 }
 

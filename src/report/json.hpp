@@ -35,6 +35,10 @@ Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, st
 /// The case's other input files (target spectra, seed records), hashed.
 std::vector<StampedInput> stamped_inputs(const assess::Case& c);
 
+/// The stamp as written under "stamp", and read back (shard files carry it to `merge`).
+nlohmann::ordered_json stamp_json(const Stamp& stamp);
+Stamp stamp_from_json(const nlohmann::json& j);
+
 /// Numbers are rounded to 10 significant digits so the file is stable across platforms;
 /// absent values are null. Key order is fixed (ordered_json).
 nlohmann::ordered_json to_json(const assess::AssessmentResult& r, const Stamp& stamp);

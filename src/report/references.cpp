@@ -52,6 +52,13 @@ const std::vector<Reference>& references() {
         {"Clopper & Pearson 1934",
          "Clopper, C.J., Pearson, E.S., The use of confidence or fiducial limits illustrated in "
          "the case of the binomial, Biometrika 26(4), 404-413, 1934."},
+        {"Baker 2015",
+         "Baker, J.W., Efficient analytical fragility function fitting using dynamic structural "
+         "analysis, Earthquake Spectra 31(1), 579-599, 2015 (lognormal fragility by maximum "
+         "likelihood)."},
+        {"FEMA P-58",
+         "FEMA P-58-1, Seismic Performance Assessment of Buildings, Volume 1 - Methodology, "
+         "Federal Emergency Management Agency, 2012 (fragility functions)."},
         {"Saraswat 2017",
          "Saraswat, A., Response Evaluation of Freestanding Systems subjected to Seismic "
          "Loading, PhD thesis, Homi Bhabha National Institute / Bhabha Atomic Research Centre, "

@@ -7,6 +7,7 @@
 
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/publish.hpp"
 #include "report/escape_guard.hpp"
 #include "report/references.hpp"
@@ -429,18 +430,6 @@ std::string headline_level(const AssessmentResult& r) {
     return out;
 }
 
-namespace {
-// Control characters from input text (ESC, BEL, NUL...) must not reach a terminal or a
-// viewer raw: shown as \xNN.
-bool is_control(char c) {
-    const auto u = static_cast<unsigned char>(c);
-    return u < 0x20 || u == 0x7F;
-}
-std::string visible_control(char c) {
-    return fmt::format("\\x{:02X}", static_cast<unsigned>(static_cast<unsigned char>(c)));
-}
-}  // namespace
-
 std::string markdown_escape(const std::string& text) {
     std::string out;
     for (char c : text) {
@@ -468,8 +457,8 @@ std::string markdown_escape(const std::string& text) {
                 out += c;
                 break;
             default:
-                if (is_control(c)) {
-                    out += visible_control(c);
+                if (core::is_control(c)) {
+                    out += core::visible_control(c);
                 } else {
                     out += c;
                 }
@@ -498,8 +487,8 @@ std::string html_escape(const std::string& text) {
                 out += "&#39;";
                 break;
             default:
-                if (is_control(c) && c != '\n' && c != '\r' && c != '\t') {
-                    out += visible_control(c);
+                if (core::is_control(c) && c != '\n' && c != '\r' && c != '\t') {
+                    out += core::visible_control(c);
                 } else {
                     out += c;
                 }

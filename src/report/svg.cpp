@@ -150,7 +150,11 @@ std::string xml_escape(const std::string& text) {
 
 std::string render_svg(const Plot& plot) {
     const double w = plot.width_px;
-    const std::size_t legend_rows = plot.lines.size() + plot.regions.size();
+    // Unlabelled lines (interval bars, say) have no legend row.
+    const std::size_t legend_rows =
+        plot.regions.size() +
+        static_cast<std::size_t>(std::count_if(plot.lines.begin(), plot.lines.end(),
+                                               [](const Line& l) { return !l.label.empty(); }));
     const double h = plot.height_px + legend_row_px * static_cast<double>(legend_rows);
     const double frame_bottom = plot.height_px - margin_bottom;
     std::vector<double> xs, ys;
@@ -239,6 +243,7 @@ std::string render_svg(const Plot& plot) {
         row_y += legend_row_px;
     }
     for (const Line& l : plot.lines) {
+        if (l.label.empty()) continue;
         out += fmt::format(
             "<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
             "stroke-width=\"2\"{}/><text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",

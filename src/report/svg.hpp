@@ -18,7 +18,7 @@ struct Axis {
 };
 
 struct Line {
-    std::string label;
+    std::string label;  ///< legend text; "" draws no legend row
     std::vector<double> x;
     std::vector<double> y;
     std::string color = "#1f77b4";

@@ -128,8 +128,8 @@ void spectral_margin(const Context& c, ElResult& r) {
 }
 
 void check_options(const ElOptions& o, const VerticalDemand& v) {
-    if (o.restitution)
-        require_in_range(*o.restitution, 0.0, 1.0, field("restitution"), false, true);
+    // r = 0 (no rebound) is a valid restitution: the estimate is then not applicable.
+    if (o.restitution) require_in_range(*o.restitution, 0.0, 1.0, field("restitution"));
     require_positive(o.fs_required, field("fs_required"));
     if (o.pga_h_g) require_in_range(*o.pga_h_g, 0.0, HUGE_VAL, field("pga_h_g"), true, false);
     if (o.pga_v_g) require_in_range(*o.pga_v_g, 0.0, HUGE_VAL, field("pga_v_g"), true, false);

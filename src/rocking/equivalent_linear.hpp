@@ -73,7 +73,7 @@ struct ElResult {
 /// effective frequency f_e with gravity reduced to g (1 - 0.4 SA_V(f_e, beta_e)) (so f_e solves
 /// f = f_e,g sqrt(1 - 0.4 SA_V(f)), by bisection), SD, capacity (2 pi f_e)^2 SD against
 /// SA_VH(f_e, beta_e); the first grid angle with demand <= capacity is refined by bisection
-/// against the previous one. Throws InputError for a restitution outside (0, 1], fs_required
+/// against the previous one. Throws InputError for a restitution outside [0, 1], fs_required
 /// <= 0, negative ratio or PGA, grid_points < 10.
 ElResult equivalent_linear_rocking(const block::Block& blk, block::Edge e,
                                    const DampedSpectra& horizontal, const VerticalDemand& vertical,

@@ -166,7 +166,7 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     }
     SECTION("unknown table") {
         CHECK(error_of(base_component + base_site + "[extra]\n") ==
-              "case.toml:11: extra: unknown table; allowed tables: [component], [site], [options]");
+              "case.toml:11: extra: unknown table; allowed tables: [component], [site], [options], [uncertainty]");
     }
     SECTION("missing table") {
         CHECK(error_of(base_component) == "case.toml: site: missing required table [site]");
@@ -177,7 +177,7 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     }
     SECTION("wrong type") {
         CHECK(error_of(base_component + base_site + "vertical_ratio = \"high\"\n") ==
-              "case.toml:11: site.vertical_ratio: expected a number in [0, 1.5], got a string");
+              "case.toml:11: site.vertical_ratio: expected a number in (0, 1.5], got a string");
     }
     SECTION("out of range") {
         CHECK(
@@ -283,6 +283,23 @@ TEST_CASE("energy DeltaD keys: a corner or a table with one value per level",
               .find("site.energy_highpass_hz") != std::string::npos);
 }
 
+TEST_CASE("a level the vertical PGA makes weightless, a zero vertical ratio: refused at the key",
+          "[assess][case][hardening]") {
+    // Issue 16 defect 6: pga_g = [1.5, 3.0] was read, then refused by the pipeline as "peak_v_g:
+    // value 1 is out of range; expected [0, 1)"; vertical_ratio = 0 (read as [0, 1.5]) as
+    // "vertical_ratio: value 0 is out of range; expected (0, 2]". Both without file:line.
+    CHECK(error_of(base_component + "[site]\npga_g = [1.5, 3.0]\n") ==
+          "case.toml:10: site.pga_g: PGA 1.5 g with a vertical/horizontal ratio of 0.6667 gives a "
+          "vertical PGA of 1 g; at 1 g or more, taken downward as the static checks take it, the "
+          "block is weightless: each level needs pga_g x ratio < 1");
+    // The documented range (0, 3] holds with a smaller ratio.
+    const Case c = parse_case(base_component + "[site]\npga_g = [1.5, 3.0]\nvertical_ratio = 0.3\n",
+                              "case.toml");
+    CHECK(c.site.pga_g == std::vector<double>{1.5, 3.0});
+    CHECK(error_of(base_component + base_site + "vertical_ratio = 0\n") ==
+          "case.toml:11: site.vertical_ratio: value 0 is out of range; expected (0, 1.5]");
+}
+
 TEST_CASE("control characters in case text are refused at their key", "[assess][case][hardening]") {
     // Issue 16 defect 10: ESC and BEL in a name passed raw into stdout and the reports.
     std::string with_esc = base_component;
@@ -293,6 +310,9 @@ TEST_CASE("control characters in case text are refused at their key", "[assess][
     CHECK(error_of(base_component + "assumptions = [\"ring\\u0007\"]\n" + base_site)
               .find("component.assumptions: contains the control character U+0007") !=
           std::string::npos);
+    CHECK(error_of(base_component + "description = \"nul\\u0000\"\n" + base_site) ==
+          "case.toml:9: component.description: contains the control character U+0000 at byte 4; "
+          "expected printable text");
     // Line breaks and tabs in free text stay allowed.
     CHECK_NOTHROW(parse_case(base_component + "description = \"two\\nlines\\tand a tab\"\n" +
                                  base_site,
@@ -344,4 +364,19 @@ TEST_CASE("target files carry no V/A, AD/V^2, D/A range unless the case gives on
     CHECK(*given.site.realism.da_max_m_per_g == 1.2);
     CHECK_FALSE(given.site.realism.va_mps_per_g.has_value());
     fs::remove_all(dir);
+}
+
+TEST_CASE("a case line beyond 4096 characters is refused before the TOML parser sees it",
+          "[assess][case][limits][hardening]") {
+    // Issue 16 audit: a dotted key of 100,000 parts (a.a.a...) overflowed toml++'s recursion
+    // (exit 139); the fuzzer's 16 KiB inputs cannot reach that depth.
+    std::string deep = "a";
+    for (int i = 0; i < 100000; ++i) deep += ".a";
+    CHECK(error_of(base_component + base_site + deep + " = 1\n") ==
+          "case.toml:11: line is 200005 characters long; a case file's lines are limited to 4096 "
+          "(README, Limits)");
+    // 4096 characters are still read (and then refused as TOML names no such key).
+    const std::string longest = "x = \"" + std::string(4090, 'y') + "\"\n";
+    CHECK(error_of(base_component + base_site + longest).find("site.x: unknown key") !=
+          std::string::npos);
 }

@@ -7,6 +7,7 @@
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
+#include "core/file_io.hpp"
 
 namespace fs = std::filesystem;
 using namespace freestand;
@@ -129,7 +130,7 @@ TEST_CASE("a --pga override cannot drop the per-level table", "[assess][pipeline
         with_pga_levels(c, {0.2});
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()).find("energy_table_displacement_m for 4 levels; --pga gives 1") !=
+        CHECK(std::string(e.what()).find("energy_table_displacement_m for 4 levels, the override 1") !=
               std::string::npos);
     }
 }
@@ -160,6 +161,18 @@ TEST_CASE("documented values are assessed or refused at their key, never by an i
         CHECK(l.screen.rock.verdict.failure == Failure::screen_inconclusive);
         CHECK(l.screen.rock.text.find("damping -ln(r) / pi = 2.2") != std::string::npos);
         CHECK(l.simulation.has_value());
+    }
+    SECTION("restitution 0 (no rebound): was refused as \"restitution ... (0, 1]\"") {
+        c = glovebox({1.2}, 1);
+        c.component.base.mu_s_range = {1.0, 1.0};
+        c.component.base.restitution_range = std::array<double, 2>{0.0, 0.0};
+        const AssessmentResult r = assess::assess(c);
+        const LevelResult& l = r.levels.at(0);
+        REQUIRE(l.screen.rock.applies);
+        CHECK(l.screen.rock.verdict.failure == Failure::screen_inconclusive);
+        CHECK(l.screen.rock.text.find("does not rebound") != std::string::npos);
+        REQUIRE(l.simulation.has_value());
+        CHECK(l.bounds.rocking.restitution == 0.0);
     }
 }
 
@@ -249,4 +262,26 @@ TEST_CASE("every history's measures and realism checks travel into the result",
     CHECK(std::any_of(r.limits.begin(), r.limits.end(), [](const std::string& l) {
         return l.find("realism checks") != std::string::npos && l.find("D/A at most 1.3 m/g") != std::string::npos;
     }));
+}
+
+TEST_CASE("the reported extreme footprint (glove box, p_radps kept) is assessed",
+          "[assess][pipeline][hardening]") {
+    // Issue 16 defect 6 as reported: glovebox-single.toml with cg_to_edge_x_m = [100, 1e-9] and
+    // its p_radps kept threw "damping: value 2.5733644010246386 is out of range; expected
+    // (0, 1)" at 0.1 g (the case without p_radps above never reached that check).
+    const fs::path file = fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml";
+    std::string text = core::read_text_file(file);
+    const std::string edges = "cg_to_edge_x_m = [0.526, 0.526]";
+    REQUIRE(text.find(edges) != std::string::npos);
+    text.replace(text.find(edges), edges.size(), "cg_to_edge_x_m = [100, 1e-9]");
+    REQUIRE(text.find("p_radps = 1.97") != std::string::npos);
+    Case c = parse_case(text, file.string());
+    c.options.histories_per_level = 1;
+    const AssessmentResult r = assess::assess(with_pga_levels(c, {0.1}));
+    const LevelResult& x = r.levels.at(0);
+    REQUIRE(x.direction == Direction::x);
+    CHECK(x.initiation.mode == Mode::rock);
+    REQUIRE(x.simulation.has_value());
+    CHECK(x.simulation->overturned == 1);
+    CHECK(r.own.verdict.kind == VerdictKind::anchor);
 }

@@ -130,6 +130,16 @@ TEST_CASE("target file errors name file, line and key", "[assess][targets]") {
               label + ":13: site.vertical_ratio: vertical_ratio and target_v_file are not used "
                       "together (the vertical file sets the vertical/horizontal ratio)");
     }
+    SECTION("a vertical file more than 1.5 x the horizontal one") {
+        // Was accepted here and refused by the generator as "vertical_ratio: ... (0, 2]".
+        const fs::path v = rewritten("freestand-v-x2.5.csv", spectra_dir / "rg160-v-5pct-1g.csv",
+                                     [](double) { return 2.5; });
+        CHECK(error_of("target_h_file = \"rg160-h-5pct-1g.csv\"\ntarget_v_file = \"" +
+                       v.string() + "\"\n") ==
+              label + ":12: site.target_v_file: the vertical file's last PSA over the horizontal "
+                      "file's gives a vertical/horizontal PGA ratio of 2.5; expected (0, 1.5] as "
+                      "for vertical_ratio");
+    }
     SECTION("unknown key lists the target keys") {
         const std::string e = error_of("target_x_file = \"rg160-h-5pct-1g.csv\"\n");
         CHECK(e.rfind(label + ":11: site.target_x_file: unknown key; allowed keys: design, "

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "support/run_cli.hpp"
 
 using freestand::test::run_cli;
@@ -60,4 +63,22 @@ TEST_CASE("report stamps carry a commit of this repository", "[cli]") {
     const bool tree_dirty =
         run_cli("--version >/dev/null && git diff --quiet HEAD --").exit_code != 0;
     CHECK(dirty == tree_dirty);
+}
+
+TEST_CASE("errors quoting a file's bytes show control characters as \\xNN", "[cli][hardening]") {
+    // Issue 16 defect 10 audit: a record value "ESC]0;pwned BEL" (a terminal's set-title
+    // sequence) was quoted raw in "expected a number; got ...".
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_controls";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "esc.csv") << "time_s,accel_g\n0,\x1b]0;pwned\x07\n";
+    const auto r = run_cli("spectrum '" + (dir / "esc.csv").string() + "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::EndsWith("esc.csv:2: column 2 (accel_g): expected a number; got "
+                                      "\"\\x1B]0;pwned\\x07\"\n"));
+    CHECK(r.err.find('\x1b') == std::string::npos);
+    CHECK(r.err.find('\x07') == std::string::npos);
+    const auto u = run_cli("\"$(printf '\\033[2J')\"");  // /bin/sh: no $'...' quoting
+    CHECK(u.exit_code == 2);
+    CHECK_THAT(u.err, Catch::Contains("unknown command \"\\x1B[2J\""));
+    std::filesystem::remove_all(dir);
 }

@@ -26,3 +26,23 @@ TEST_CASE("write_file_atomic refuses a file read as an input, under any spelling
     CHECK(core::read_text_file(dir / "other.csv") == "y\n");
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("an input beyond 512 MiB is refused: a large file before reading, an endless device "
+          "as it is read",
+          "[core][io][limits][hardening]") {
+    // Issue 16 "nothing runs unbounded": `assess /dev/zero` read until memory ran out.
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_file_io_limit";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto big = dir / "big.csv";
+    core::write_file_atomic(big, "");
+    std::filesystem::resize_file(big, 512u * 1024u * 1024u + 1u);  // sparse: no disk used
+    CHECK_THROWS_MATCHES(core::read_text_file(big), InputError,
+                         Catch::Message(big.string() + ": 536870913 bytes; an input file is "
+                                        "limited to 536870912 bytes (512 MiB; README, Limits)"));
+    CHECK_THROWS_MATCHES(core::read_text_file("/dev/zero"), InputError,
+                         Catch::Message("/dev/zero: does not end within 536870912 bytes; an "
+                                        "input file is limited to 536870912 bytes (512 MiB; "
+                                        "README, Limits)"));
+    std::filesystem::remove_all(dir);
+}

@@ -1,11 +1,16 @@
 // `freestand simulate`: JSON keys, CSV output, and errors naming the option.
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/run_cli.hpp"
+#include "support/special_files.hpp"
 
 using freestand::test::run_cli;
+namespace test = freestand::test;
 
 TEST_CASE("simulate --json prints the summary keys in order", "[dynamics][cli]") {
     const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.15 --sine 0.4g,2Hz,3s,ramp=1s --json");
@@ -99,4 +104,35 @@ TEST_CASE("simulate --out naming the --motion file is refused and the input kept
     CHECK(freestand::test::slurp(motion) == before);
     CHECK_FALSE(std::filesystem::exists(dir / "motion.AT2.tmp"));
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("simulate --out never replaces a FIFO, a device or a symlink", "[dynamics][cli][hardening]") {
+    // Issue 16 defect 1: each was replaced by a regular file with exit 0.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "freestand_sim_special_out";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
+    std::ofstream(dir / "kept.csv") << "kept\n";
+    fs::create_symlink(dir / "kept.csv", dir / "link.csv");
+    const std::string run = "simulate --block b=0.15,h=0.6,m=38 --mu 0.5 --sine 0.1g,2Hz,2s --out ";
+    const auto fifo = run_cli(run + "'" + (dir / "fifo").string() + "'");
+    CHECK(fifo.exit_code == 5);
+    CHECK_THAT(fifo.err, Catch::Contains("fifo: exists and is not a regular file (a device, FIFO "
+                                         "or folder); refusing to replace it"));
+    CHECK(fs::is_fifo(dir / "fifo"));
+    if (const auto dev = test::make_null_device(dir)) {
+        const auto device = run_cli(run + "'" + dev->string() + "'");
+        CHECK(device.exit_code == 5);
+        CHECK(fs::is_character_file(*dev));
+    } else {
+        WARN("not root: mknod refused, the device case is not run");
+    }
+    const auto link = run_cli(run + "'" + (dir / "link.csv").string() + "'");
+    CHECK(link.exit_code == 5);
+    CHECK_THAT(link.err, Catch::Contains("link.csv: exists and is not a regular file (a symbolic "
+                                         "link); refusing to replace it"));
+    CHECK(fs::is_symlink(dir / "link.csv"));
+    CHECK(freestand::test::slurp(dir / "kept.csv") == "kept\n");
+    fs::remove_all(dir);
 }

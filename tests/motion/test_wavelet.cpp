@@ -5,6 +5,7 @@
 #include <random>
 
 #include "core/measures.hpp"
+#include "core/random.hpp"
 #include "motion/criteria.hpp"
 #include "motion/faddeeva.hpp"
 #include "motion/internal.hpp"
@@ -100,7 +101,7 @@ TEST_CASE("end weights reproduce the trapezoidal final velocity and displacement
     core::Record r;
     r.dt_s = 0.01;
     std::mt19937_64 rng(7);
-    for (int i = 0; i < 1001; ++i) r.accel_mps2.push_back(uniform01(rng()) - 0.5);
+    for (int i = 0; i < 1001; ++i) r.accel_mps2.push_back(core::uniform01(rng()) - 0.5);
     const EndWeights w = end_weights(r.size(), r.dt_s);
     double v = 0.0, d = 0.0;
     for (std::size_t i = 0; i < r.size(); ++i) {
@@ -113,9 +114,9 @@ TEST_CASE("end weights reproduce the trapezoidal final velocity and displacement
 }
 
 TEST_CASE("portable uniform transform and seed derivation", "[motion][rng]") {
-    CHECK(uniform01(0) == 0.0);
-    CHECK(uniform01(~0ull) == Approx(1.0 - 0x1.0p-53).epsilon(0));
-    CHECK(uniform01(~0ull) < 1.0);
+    CHECK(core::uniform01(0) == 0.0);
+    CHECK(core::uniform01(~0ull) == Approx(1.0 - 0x1.0p-53).epsilon(0));
+    CHECK(core::uniform01(~0ull) < 1.0);
     // mt19937_64's 10000th output from the default seed is fixed by the standard (C++
     // [rand.predef]).
     std::mt19937_64 g;
@@ -153,7 +154,7 @@ TEST_CASE("record PSD: white noise gives sigma^2 dt / pi per rad/s", "[motion][p
     std::mt19937_64 g(11);
     const double sigma = 2.0;
     for (int i = 0; i < 65536; ++i) {
-        const double u1 = 1.0 - uniform01(g()), u2 = uniform01(g());
+        const double u1 = 1.0 - core::uniform01(g()), u2 = core::uniform01(g());
         r.accel_mps2.push_back(sigma * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2));
     }
     const std::vector<double> f{0.5, 2.0, 10.0, 30.0};

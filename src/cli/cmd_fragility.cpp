@@ -1,0 +1,121 @@
+// `freestand fragility`: P(overturn), P(slide > allowable), P(theta/alpha > 1/FS) against PGA
+// (issue 14, docs/methods.md s.9); one machine, a shard of a run, or MPI ranks.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <thread>
+
+#include "cli/command.hpp"
+#include "cli/fragility_output.hpp"
+#include "cli/mpi_split.hpp"
+#include "cli/options.hpp"
+#include "cli/progress.hpp"
+#include "cli/shards.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "fragility/serialize.hpp"
+
+namespace freestand::cli {
+namespace {
+
+const char* const usage =
+    "CASE.toml [--pga 0.1:1.0:0.1] [--samples 100] [--records FILE...] [--pool 20] [--seed S] "
+    "[--threads T] [--out DIR] [--json] [--shard K/N]";
+
+fragility::Config config_from(const po::variables_map& vm, const assess::Case& c) {
+    fragility::Config cfg;
+    cfg.pga_g = parse_levels(vm["pga"].as<std::string>(), "--pga");
+    cfg.samples = static_cast<int>(parse_double(vm["samples"].as<std::string>(), "--samples"));
+    if (std::to_string(cfg.samples) != vm["samples"].as<std::string>())
+        throw UsageError(fmt::format("--samples: expected a whole number; got \"{}\"",
+                                     vm["samples"].as<std::string>()));
+    cfg.pool = static_cast<int>(parse_double(vm["pool"].as<std::string>(), "--pool"));
+    cfg.seed = c.options.seed;
+    if (vm.count("seed")) {
+        const double s = parse_double(vm["seed"].as<std::string>(), "--seed");
+        if (!(s >= 0.0 && s < 9.0e15 && s == std::floor(s)))
+            throw UsageError(fmt::format("--seed: {}; expected a non-negative integer", s));
+        cfg.seed = static_cast<std::uint64_t>(s);
+    }
+    if (vm.count("records")) cfg.record_files = vm["records"].as<std::vector<std::string>>();
+    return cfg;
+}
+
+int run(const std::vector<std::string>& args) {
+    po::options_description desc("options");
+    desc.add_options()("case", po::value<std::string>()->required(), "case file (TOML)")(
+        "pga", po::value<std::string>()->default_value("0.1:1.0:0.1"),
+        "PGA levels, g: START:STOP:STEP or a comma list")(
+        "samples", po::value<std::string>()->default_value("100"), "samples per level")(
+        "records", po::value<std::vector<std::string>>()->multitoken(),
+        "a user suite of horizontal records (each sample draws one and scales it to the level; "
+        "applied along x and y, no vertical); default: generated sets for the case's target")(
+        "pool", po::value<std::string>()->default_value("20"),
+        "generated three-component history sets the samples draw from")(
+        "seed", po::value<std::string>(), "run seed (default: the case's [options] seed)")(
+        "threads", po::value<std::string>()->default_value("0"), "worker threads (0: all cores)")(
+        "out", po::value<std::string>(), "output folder (default: out/<case stem>-fragility/)")(
+        "json", po::bool_switch(), "print fragility.json to stdout instead of the summary")(
+        "shard", po::value<std::string>(),
+        "K/N: compute only this share of the samples and write out/shard-K-of-N.jsonl for "
+        "`freestand merge`");
+    const auto vm = parse_options("fragility", usage, desc, args, {"case"});
+    if (!vm) return 0;
+    const std::filesystem::path case_file = (*vm)["case"].as<std::string>();
+    const std::string bytes = core::read_input_file(case_file);
+    const assess::Case c = assess::parse_case(bytes, case_file.string());
+    const fragility::Config cfg = config_from(*vm, c);
+    const int threads = static_cast<int>(parse_double((*vm)["threads"].as<std::string>(), "--threads"));
+    if (threads < 0) throw UsageError("--threads: expected 0 (all cores) or a positive count");
+    const std::filesystem::path out =
+        vm->count("out") ? std::filesystem::path((*vm)["out"].as<std::string>())
+                         : std::filesystem::path("out") / (case_file.stem().string() + "-fragility");
+    fragility::Runner runner(c, cfg);
+    const fragility::Meta meta = fragility::make_meta(c, cfg);
+    const report::Stamp stamp = fragility_stamp(bytes, case_file.string(), c, cfg);
+
+    // Which samples this process computes: all; a shard's share; or an MPI rank's share.
+    std::array<int, 2> share{1, 1};
+    if (vm->count("shard")) share = parse_shard((*vm)["shard"].as<std::string>(), "--shard");
+    const MpiSplit mpi;
+    if (vm->count("shard") && mpi.size() > 1)
+        throw UsageError("--shard and MPI ranks split the samples two ways; give one");
+    if (mpi.size() > 1) share = {mpi.rank() + 1, mpi.size()};
+    std::vector<std::size_t> mine;
+    for (std::size_t g = 0; g < runner.total(); ++g)
+        if (static_cast<int>(g % static_cast<std::size_t>(share[1])) == share[0] - 1)
+            mine.push_back(g);
+
+    runner.prepare(threads);
+    Progress bar("samples");
+    std::vector<fragility::SampleResult> samples =
+        fragility::run_samples(runner, mine, threads, [&](std::size_t done) {
+            if (mpi.rank() == 0) bar.update(done, mine.size());
+        });
+    bar.finish();
+
+    if (vm->count("shard")) {
+        std::vector<nlohmann::ordered_json> records;
+        for (const auto& s : samples) records.push_back(fragility::to_json(s));
+        const auto file = write_shard(out, "fragility", share[0], share[1],
+                                      fragility_run_json(meta, stamp), records);
+        std::cout << fmt::format("shard {} of {}: {} of {} samples written to {}\n", share[0],
+                                 share[1], samples.size(), runner.total(), file.string());
+        return 0;
+    }
+    if (mpi.size() > 1) {
+        samples = mpi.gather_to_root(samples);
+        if (mpi.rank() != 0) return 0;
+    }
+    write_fragility_outputs(fragility::aggregate(meta, std::move(samples)), stamp, out,
+                            (*vm)["json"].as<bool>());
+    return 0;
+}
+
+const CommandRegistrar reg{
+    {"fragility", "P(overturn), P(slide), P(rock) against PGA: fragility.json, report, samples.csv",
+     &run}};
+
+}  // namespace
+}  // namespace freestand::cli

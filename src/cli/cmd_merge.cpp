@@ -1,0 +1,63 @@
+// `freestand merge DIR...`: the shards of a `--shard K/N` run into the outputs the single run
+// writes, byte for byte (issue 14).
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "cli/command.hpp"
+#include "cli/fragility_output.hpp"
+#include "cli/options.hpp"
+#include "cli/shards.hpp"
+#include "core/errors.hpp"
+#include "fragility/serialize.hpp"
+
+namespace freestand::cli {
+namespace {
+
+const char* const usage = "DIR_OR_SHARD... --out DIR [--json]";
+
+void merge_fragility(const ShardSet& set, const std::filesystem::path& out, bool json) {
+    fragility::Meta meta;
+    report::Stamp stamp;
+    std::vector<fragility::SampleResult> samples;
+    try {
+        meta = fragility::meta_from_json(set.run.at("meta"));
+        stamp = report::stamp_from_json(set.run.at("stamp"));
+        for (const auto& r : set.records) samples.push_back(fragility::sample_from_json(r));
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(SourceLocation{"", 0, "shards"},
+                         fmt::format("a fragility shard's contents are malformed ({})", e.what()));
+    }
+    fragility::Result r;
+    try {
+        r = fragility::aggregate(meta, std::move(samples));
+    } catch (const std::invalid_argument& e) {
+        throw InputError(SourceLocation{"", 0, "shards"}, e.what());
+    }
+    write_fragility_outputs(r, stamp, out, json);
+}
+
+int run(const std::vector<std::string>& args) {
+    po::options_description desc("options");
+    desc.add_options()("shards", po::value<std::vector<std::string>>()->required(),
+                       "folders holding shard-K-of-N.jsonl files, or the files")(
+        "out", po::value<std::string>()->required(), "output folder")(
+        "json", po::bool_switch(), "print the result's JSON to stdout instead of the summary");
+    const auto vm = parse_options("merge", usage, desc, args, {"shards..."});
+    if (!vm) return 0;
+    std::vector<std::filesystem::path> paths;
+    for (const std::string& p : (*vm)["shards"].as<std::vector<std::string>>()) paths.emplace_back(p);
+    const ShardSet set = read_shards(paths);
+    const std::filesystem::path out = (*vm)["out"].as<std::string>();
+    if (set.kind == "fragility") {
+        merge_fragility(set, out, (*vm)["json"].as<bool>());
+        return 0;
+    }
+    throw InputError(SourceLocation{"", 0, "shards"},
+                     fmt::format("shards of kind \"{}\"; this build merges \"fragility\"", set.kind));
+}
+
+const CommandRegistrar reg{{"merge", "combine --shard K/N outputs into the single run's outputs", &run}};
+
+}  // namespace
+}  // namespace freestand::cli

@@ -1,0 +1,54 @@
+#include "cli/fragility_output.hpp"
+
+#include "cli/build_info.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "core/file_io.hpp"
+#include "fragility/serialize.hpp"
+#include "report/fragility_report.hpp"
+#include "report/sha256.hpp"
+
+namespace freestand::cli {
+
+report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
+                              const assess::Case& c, const fragility::Config& config) {
+    report::Stamp stamp =
+        report::make_stamp(case_bytes, case_file, config.seed, build_commit);
+    stamp.inputs = report::stamped_inputs(c);
+    for (const std::string& f : config.record_files)
+        stamp.inputs.push_back({f, report::sha256_hex(core::read_input_file(f))});
+    return stamp;
+}
+
+nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const report::Stamp& stamp) {
+    return {{"meta", fragility::to_json(meta)}, {"stamp", report::stamp_json(stamp)}};
+}
+
+void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
+                             const std::filesystem::path& out, bool json) {
+    const report::RenderedFragility rendered = report::render_fragility(r, stamp);
+    report::write_fragility(out, rendered);
+    if (json) {
+        std::cout << rendered.json;
+        return;
+    }
+    std::cout << fmt::format("{}: fragility over {} levels x {} samples written to {}\n",
+                             r.meta.case_name, r.levels.size(), r.meta.config.samples,
+                             out.string());
+    for (std::size_t e = 0; e < fragility::all_events.size(); ++e) {
+        const auto& f = r.fits[e];
+        const char* name = fragility::event_name(fragility::all_events[e]);
+        if (f.fit)
+            std::cout << fmt::format("  {:<8} theta_m {:.3g} g, beta {:.3g}; PGA at 1% {:.3g} g, "
+                                     "5% {:.3g} g, 50% {:.3g} g\n",
+                                     name, f.fit->theta_m_g, f.fit->beta, f.fit->pga_1pct_g,
+                                     f.fit->pga_5pct_g, f.fit->pga_50pct_g);
+        else
+            std::cout << fmt::format("  {:<8} no fit: {}\n", name, f.note);
+    }
+}
+
+}  // namespace freestand::cli

@@ -1,0 +1,139 @@
+#include "cli/shards.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+
+namespace freestand::cli {
+
+namespace fs = std::filesystem;
+
+fs::path write_shard(const fs::path& dir, const std::string& kind, int k, int n,
+                     const nlohmann::ordered_json& run,
+                     const std::vector<nlohmann::ordered_json>& records) {
+    std::string text = nlohmann::ordered_json{{"freestand_shard", 1},
+                                              {"kind", kind},
+                                              {"shard", k},
+                                              {"of", n},
+                                              {"run", run}}
+                           .dump() +
+                       "\n";
+    for (const auto& r : records) text += r.dump() + "\n";
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const fs::path file = dir / fmt::format("shard-{}-of-{}.jsonl", k, n);
+    core::write_file_atomic(file, text);
+    return file;
+}
+
+namespace {
+
+struct Shard {
+    fs::path file;
+    std::string kind;
+    int k = 0, n = 0;
+    nlohmann::json run;
+    std::vector<nlohmann::json> records;
+};
+
+Shard read_one(const fs::path& file) {
+    Shard s;
+    s.file = file;
+    std::istringstream in(core::read_text_file(file));
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        nlohmann::json j;
+        try {
+            j = nlohmann::json::parse(line);
+        } catch (const nlohmann::json::exception& e) {
+            throw InputError(SourceLocation{file.string(), number, ""},
+                             fmt::format("not a JSON line ({})", e.what()));
+        }
+        if (number > 1) {
+            s.records.push_back(std::move(j));
+            continue;
+        }
+        try {
+            if (j.at("freestand_shard").get<int>() != 1) throw std::runtime_error("version");
+            s.kind = j.at("kind").get<std::string>();
+            s.k = j.at("shard").get<int>();
+            s.n = j.at("of").get<int>();
+            s.run = j.at("run");
+        } catch (const std::exception&) {
+            throw InputError(SourceLocation{file.string(), 1, "header"},
+                             "expected a freestand shard header {\"freestand_shard\": 1, "
+                             "\"kind\", \"shard\", \"of\", \"run\"}");
+        }
+    }
+    if (number == 0) throw InputError(SourceLocation{file.string(), 0, ""}, "empty shard file");
+    return s;
+}
+
+std::vector<fs::path> shard_files(const std::vector<fs::path>& paths) {
+    std::vector<fs::path> out;
+    for (const fs::path& p : paths) {
+        std::error_code ec;
+        if (fs::is_directory(p, ec)) {
+            std::vector<fs::path> here;
+            for (const auto& e : fs::directory_iterator(p)) {
+                const std::string name = e.path().filename().string();
+                if (name.rfind("shard-", 0) == 0 && e.path().extension() == ".jsonl")
+                    here.push_back(e.path());
+            }
+            std::sort(here.begin(), here.end());
+            if (here.empty())
+                throw InputError(SourceLocation{p.string(), 0, ""},
+                                 "no shard-K-of-N.jsonl file in this folder");
+            out.insert(out.end(), here.begin(), here.end());
+        } else if (fs::exists(p, ec)) {
+            out.push_back(p);
+        } else {
+            throw IoError(fmt::format("{}: no such file or folder", p.string()));
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+ShardSet read_shards(const std::vector<fs::path>& paths) {
+    std::map<int, Shard> by_index;
+    int of = 0;
+    for (const fs::path& file : shard_files(paths)) {
+        Shard s = read_one(file);
+        if (!by_index.empty()) {
+            const Shard& first = by_index.begin()->second;
+            if (s.kind != first.kind || s.n != first.n || s.run != first.run)
+                throw InputError(
+                    SourceLocation{file.string(), 1, "run"},
+                    fmt::format("this shard belongs to another run than {} (kind, shard count "
+                                "or run settings differ)",
+                                first.file.string()));
+        }
+        if (by_index.count(s.k))
+            throw InputError(SourceLocation{file.string(), 1, "shard"},
+                             fmt::format("shard {} of {} is also in {}", s.k, s.n,
+                                         by_index.at(s.k).file.string()));
+        of = s.n;
+        by_index.emplace(s.k, std::move(s));
+    }
+    for (int k = 1; k <= of; ++k)
+        if (!by_index.count(k))
+            throw InputError(SourceLocation{"", 0, "shards"},
+                             fmt::format("shard {} of {} is missing", k, of));
+    ShardSet out;
+    out.kind = by_index.begin()->second.kind;
+    out.run = by_index.begin()->second.run;
+    for (auto& [k, s] : by_index)
+        for (auto& r : s.records) out.records.push_back(std::move(r));
+    return out;
+}
+
+}  // namespace freestand::cli

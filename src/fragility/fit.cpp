@@ -1,0 +1,171 @@
+#include "fragility/fit.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <boost/math/distributions/chi_squared.hpp>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/statistics.hpp"
+
+namespace freestand::fragility {
+namespace {
+
+// Below this beta the fit is taken as separated (a step, not a lognormal curve).
+constexpr double kMinBeta = 1e-3;
+constexpr int kMaxIterations = 200;
+constexpr double kTolerance = 1e-12;
+
+// ln Phi(z) without underflow far in the lower tail (Phi(z) ~ phi(z) / -z there).
+double log_phi_cdf(double z) {
+    if (z > -30.0) return std::log(core::normal_cdf(z));
+    return -0.5 * z * z - std::log(-z) - 0.5 * std::log(2.0 * M_PI);
+}
+
+// phi(z) / Phi(z), the inverse Mills ratio, stable for z -> -infinity (~ -z).
+double mills(double z) {
+    if (z > -30.0) {
+        const double phi = std::exp(-0.5 * z * z) / std::sqrt(2.0 * M_PI);
+        return phi / core::normal_cdf(z);
+    }
+    return -z;
+}
+
+struct Levels {
+    std::vector<double> x;  // ln a
+    std::vector<double> k, n;
+};
+
+double log_likelihood(const Levels& l, double a0, double a1) {
+    double sum = 0.0;
+    for (std::size_t j = 0; j < l.x.size(); ++j) {
+        const double z = a0 + a1 * l.x[j];
+        sum += l.k[j] * log_phi_cdf(z) + (l.n[j] - l.k[j]) * log_phi_cdf(-z);
+    }
+    return sum;
+}
+
+// Fisher scoring for the probit model P = Phi(a0 + a1 ln a): gradient from the Mills ratios,
+// expected information n phi^2 / (Phi (1 - Phi)), step halved while the likelihood falls.
+std::optional<Eigen::Vector2d> maximise(const Levels& l, Eigen::Vector2d start) {
+    Eigen::Vector2d p = start;
+    double current = log_likelihood(l, p(0), p(1));
+    for (int it = 0; it < kMaxIterations; ++it) {
+        Eigen::Vector2d g = Eigen::Vector2d::Zero();
+        Eigen::Matrix2d info = Eigen::Matrix2d::Zero();
+        for (std::size_t j = 0; j < l.x.size(); ++j) {
+            const double z = p(0) + p(1) * l.x[j];
+            const double dz = l.k[j] * mills(z) - (l.n[j] - l.k[j]) * mills(-z);
+            const double w = l.n[j] * mills(z) * mills(-z);  // n phi^2 / (Phi (1 - Phi))
+            const Eigen::Vector2d v(1.0, l.x[j]);
+            g += dz * v;
+            info += w * v * v.transpose();
+        }
+        Eigen::Vector2d step = info.ldlt().solve(g);
+        if (!step.allFinite()) return std::nullopt;
+        double next = log_likelihood(l, p(0) + step(0), p(1) + step(1));
+        for (int h = 0; h < 40 && !(next >= current); ++h) {
+            step *= 0.5;
+            next = log_likelihood(l, p(0) + step(0), p(1) + step(1));
+        }
+        p += step;
+        if (!p.allFinite()) return std::nullopt;
+        const bool done = std::abs(next - current) <= kTolerance * (1.0 + std::abs(next));
+        current = next;
+        if (done || 1.0 / p(1) < kMinBeta * 0.5) break;
+    }
+    return p;
+}
+
+// (Quasi-)complete separation: no failure below some level and only failures above it (that
+// level itself anything). The likelihood then has no finite maximum (Albert & Anderson 1984).
+bool separated(const Levels& l) {
+    for (std::size_t m = 0; m < l.x.size(); ++m) {
+        bool below = true, above = true;
+        for (std::size_t j = 0; j < m; ++j) below = below && l.k[j] == 0.0;
+        for (std::size_t j = m + 1; j < l.x.size(); ++j) above = above && l.k[j] == l.n[j];
+        if (below && above) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>& k,
+                       const std::vector<int>& n) {
+    if (pga_g.size() != k.size() || k.size() != n.size())
+        throw std::invalid_argument("fit_lognormal: sizes differ");
+    Levels l;
+    int failures = 0, total = 0;
+    for (std::size_t j = 0; j < pga_g.size(); ++j) {
+        if (n[j] <= 0) continue;
+        l.x.push_back(std::log(pga_g[j]));
+        l.k.push_back(k[j]);
+        l.n.push_back(n[j]);
+        failures += k[j];
+        total += n[j];
+    }
+    EventFit out;
+    if (l.x.size() < 2) {
+        out.note = "a lognormal curve needs at least two levels";
+        return out;
+    }
+    if (failures == 0) {
+        out.note = "no level has a failure";
+        return out;
+    }
+    if (failures == total) {
+        out.note = "every sample fails at every level: the median lies below the lowest level";
+        return out;
+    }
+    if (separated(l)) {
+        out.note = "the levels separate failures perfectly (none below a level, all above it): "
+                   "the likelihood grows as beta -> 0, a step, not a curve; more samples or "
+                   "levels between are needed";
+        return out;
+    }
+    // Start from least squares on the empirical probits (continuity-corrected).
+    Eigen::MatrixXd a(static_cast<Eigen::Index>(l.x.size()), 2);
+    Eigen::VectorXd z(static_cast<Eigen::Index>(l.x.size()));
+    for (std::size_t j = 0; j < l.x.size(); ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        a(jj, 0) = 1.0;
+        a(jj, 1) = l.x[j];
+        z(jj) = core::normal_quantile((l.k[j] + 0.5) / (l.n[j] + 1.0));
+    }
+    Eigen::Vector2d start(-l.x.front(), 1.0);
+    const Eigen::VectorXd ls = a.colPivHouseholderQr().solve(z);
+    if (ls.allFinite() && ls(1) > 0.0) start = Eigen::Vector2d(ls(0), ls(1));
+    const auto p = maximise(l, start);
+    if (!p || !((*p)(1) > 0.0)) {
+        out.note = p ? "failures do not increase with the PGA: no increasing lognormal fits"
+                     : "the likelihood has no finite maximum";
+        return out;
+    }
+    const double beta = 1.0 / (*p)(1);
+    if (beta < kMinBeta) {
+        out.note = "the fit tends to a step (beta -> 0): more samples or levels between are needed";
+        return out;
+    }
+    Fit f;
+    f.beta = beta;
+    f.theta_m_g = std::exp(-(*p)(0) * beta);
+    f.pga_1pct_g = f.theta_m_g * std::exp(beta * core::normal_quantile(0.01));
+    f.pga_5pct_g = f.theta_m_g * std::exp(beta * core::normal_quantile(0.05));
+    f.pga_50pct_g = f.theta_m_g;
+    f.log_likelihood = log_likelihood(l, (*p)(0), (*p)(1));
+    for (std::size_t j = 0; j < l.x.size(); ++j) {
+        const double pj = core::normal_cdf((*p)(0) + (*p)(1) * l.x[j]);
+        const double var = l.n[j] * pj * (1.0 - pj);
+        if (var > 0.0) f.chi2 += std::pow(l.k[j] - l.n[j] * pj, 2) / var;
+    }
+    f.dof = static_cast<int>(l.x.size()) - 2;
+    if (f.dof >= 1)
+        f.p_value = boost::math::cdf(
+            boost::math::complement(boost::math::chi_squared_distribution<>(f.dof), f.chi2));
+    out.fit = f;
+    return out;
+}
+
+}  // namespace freestand::fragility

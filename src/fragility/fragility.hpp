@@ -1,0 +1,143 @@
+#pragma once
+/// Fragility of a free-standing component (issue 14, docs/methods.md s.9): the probability of
+/// each failure event against PGA, from N samples per level, each drawing a ground motion and
+/// the uncertain friction and restitution from its own random stream (seed, level, sample), so
+/// that the result does not depend on threads, shards or machines.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assess/case.hpp"
+#include "core/record.hpp"
+
+namespace freestand::fragility {
+
+/// The failure events of docs/methods.md s.9.
+enum class Event { overturn, slide, rock, any };
+inline constexpr std::array<Event, 4> all_events{Event::overturn, Event::slide, Event::rock,
+                                                 Event::any};
+/// "overturn", "slide", "rock", "any".
+const char* event_name(Event e);
+
+/// What to run. Levels strictly increasing in (0, 3] g, at least one; samples >= 1.
+struct Config {
+    std::vector<double> pga_g;
+    int samples = 100;       ///< per level
+    std::uint64_t seed = 1;  ///< the run's seed (streams: core::stream_seed(seed, level, sample))
+    /// Generated ground motions: a pool of this many three-component sets for the case's target
+    /// (matched at 1 g, scaled to each level, SRP 3.7.1 and realism checked); a sample draws one.
+    int pool = 20;
+    /// A user suite instead: horizontal records, each applied along x and y, no vertical; a
+    /// sample draws one and scales it to the level's PGA.
+    std::vector<std::string> record_files;
+};
+
+/// Throws InputError naming the field (pga_g, samples, pool, records) when the config is invalid.
+void validate(const Config& config);
+
+/// One sample: the drawn motion and properties and the peak responses over both directions.
+struct SampleResult {
+    int level = 0;       ///< index into Config::pga_g
+    int sample = 0;      ///< 0-based within the level
+    std::string motion;  ///< "set 7" (1-based) or the record's file name
+    double mu_s = 0.0;
+    double restitution_x = 0.0;
+    double restitution_y = 0.0;
+    double slide_max_m = 0.0;          ///< max over x and y
+    double rock_max_over_alpha = 0.0;  ///< max over x and y
+    bool overturned = false;           ///< in x or y
+};
+
+/// What the report states besides the numbers: the case and the laws the samples were drawn
+/// from. Everything here is text or numbers from the case, so a merged run reproduces it.
+struct Meta {
+    std::string case_name;
+    Config config;
+    double allowable_slide_m = 0.0;
+    double required_overturn_fs = 1.5;
+    std::string mu_s_law;           ///< e.g. "uniform [0.12, 0.18] (the case's friction bounds)"
+    std::string restitution_law;
+    std::string motion_source;      ///< what the motions are and how they are drawn
+};
+
+/// One event at one level.
+struct Count {
+    int k = 0;
+    int n = 0;
+    double p = 0.0;                 ///< k / n
+    std::array<double, 2> ci{};     ///< Clopper-Pearson 95%
+};
+
+struct Level {
+    double pga_g = 0.0;
+    int n = 0;
+    std::array<Count, 4> events;    ///< indexed like all_events
+};
+
+/// Lognormal fragility P(a) = Phi(ln(a / theta_m) / beta) fitted by maximum likelihood.
+struct Fit {
+    double theta_m_g = 0.0;
+    double beta = 0.0;
+    double pga_1pct_g = 0.0, pga_5pct_g = 0.0, pga_50pct_g = 0.0;
+    double log_likelihood = 0.0;
+    double chi2 = 0.0;                 ///< Pearson's, over the levels
+    int dof = 0;                       ///< levels - 2
+    std::optional<double> p_value;     ///< of chi2 with dof (none when dof < 1)
+};
+
+/// The fit of one event, or why there is none.
+struct EventFit {
+    std::optional<Fit> fit;
+    std::string note;  ///< "" with a fit; else why not (no failures, every sample failing, ...)
+};
+
+struct Result {
+    Meta meta;
+    std::vector<Level> levels;
+    std::array<EventFit, 4> fits;        ///< indexed like all_events
+    std::vector<SampleResult> samples;   ///< sorted by (level, sample)
+};
+
+/// The laws and source text for a case and config (mu_s_law, restitution_law, motion_source).
+Meta make_meta(const assess::Case& c, const Config& config);
+
+/// Counts, intervals and fits from complete samples (every (level, sample) exactly once, in any
+/// order). Throws std::invalid_argument when samples are missing, repeated or out of range.
+Result aggregate(const Meta& meta, std::vector<SampleResult> samples);
+
+/// Draws and simulates samples. prepare() generates the pool or reads the records; run() may
+/// then be called from many threads.
+class Runner {
+  public:
+    /// Validates the config; throws InputError for a bad config or a missing record.
+    Runner(const assess::Case& c, Config config);
+    ~Runner();
+    Runner(const Runner&) = delete;
+    Runner& operator=(const Runner&) = delete;
+
+    std::size_t total() const;  ///< levels x samples; global index = level * samples + sample
+    /// Generates the history pool on `threads` threads (0: all cores) or reads the records.
+    void prepare(int threads);
+    /// One sample by its global index (prepare() first).
+    SampleResult run(std::size_t global_index) const;
+
+  private:
+    struct Impl;
+    Impl* impl_;
+};
+
+/// Runs the given global indices on `threads` threads (0: all cores); results in index order.
+/// progress(done) is called from the calling thread about every 0.2 s and at the end.
+std::vector<SampleResult> run_samples(const Runner& runner,
+                                      const std::vector<std::size_t>& indices, int threads,
+                                      const std::function<void(std::size_t done)>& progress = {});
+
+/// The whole run on one machine: prepare, every sample, aggregate.
+Result run_all(const assess::Case& c, const Config& config, int threads,
+               const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+}  // namespace freestand::fragility

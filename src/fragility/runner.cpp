@@ -1,0 +1,280 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <thread>
+
+#include "assess/histories.hpp"
+#include "assess/level.hpp"
+#include "core/errors.hpp"
+#include "core/random.hpp"
+#include "core/readers.hpp"
+#include "dynamics/simulate.hpp"
+#include "fragility/fragility.hpp"
+
+namespace freestand::fragility {
+
+const char* event_name(Event e) {
+    switch (e) {
+        case Event::overturn:
+            return "overturn";
+        case Event::slide:
+            return "slide";
+        case Event::rock:
+            return "rock";
+        case Event::any:
+            return "any";
+    }
+    return "?";
+}
+
+void validate(const Config& c) {
+    const SourceLocation levels{"", 0, "pga_g"};
+    if (c.pga_g.empty()) throw InputError(levels, "expected at least one PGA level");
+    for (std::size_t i = 0; i < c.pga_g.size(); ++i) {
+        require_in_range(c.pga_g[i], 0.0, 3.0, levels, false, true);
+        if (i > 0 && c.pga_g[i] <= c.pga_g[i - 1])
+            throw InputError(levels, fmt::format("levels must be strictly increasing; {} follows {}",
+                                                 c.pga_g[i], c.pga_g[i - 1]));
+    }
+    if (c.pga_g.size() > 1000)
+        throw InputError(levels, fmt::format("{} levels; at most 1000", c.pga_g.size()));
+    if (c.samples < 1 || c.samples > 1000000)
+        throw InputError(SourceLocation{"", 0, "samples"},
+                         fmt::format("{}; expected 1 to 1000000 per level", c.samples));
+    if (c.record_files.empty() && (c.pool < 1 || c.pool > 1000))
+        throw InputError(SourceLocation{"", 0, "pool"},
+                         fmt::format("{}; expected 1 to 1000 history sets", c.pool));
+}
+
+namespace {
+
+// The friction and restitution laws of a sample (docs/methods.md s.9): the case's
+// [uncertainty], else uniform over the case's bounds; restitution drawn at one quantile for
+// both directions, over each direction's own bounds (Housner's value to the measured r).
+struct Laws {
+    core::Distribution mu_s;
+    std::optional<core::Distribution> restitution;  // none: per-direction bounds
+    std::array<std::array<double, 2>, 2> restitution_bounds{};  // [x, y][lower, upper]
+    double kinetic_ratio = 1.0;
+};
+
+Laws laws_of(const assess::Case& c) {
+    Laws l;
+    const assess::BaseContact& base = c.component.base;
+    l.mu_s = c.uncertainty.mu_s.value_or(
+        core::Distribution{core::Distribution::Kind::uniform, base.mu_s_range[0],
+                           base.mu_s_range[1], std::nullopt});
+    l.restitution = c.uncertainty.restitution;
+    for (const assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
+        const assess::DirectionBounds b = assess::direction_bounds(c.component, d);
+        l.restitution_bounds[d == assess::Direction::x ? 0 : 1] = {b.restitution_lower,
+                                                                    b.rocking.restitution};
+    }
+    l.kinetic_ratio = base.kinetic_ratio();
+    return l;
+}
+
+}  // namespace
+
+Meta make_meta(const assess::Case& c, const Config& config) {
+    validate(config);
+    const Laws l = laws_of(c);
+    Meta m;
+    m.case_name = c.component.name;
+    m.config = config;
+    m.allowable_slide_m = c.component.allowable_slide_m;
+    m.required_overturn_fs = c.component.required_overturn_fs;
+    m.mu_s_law = l.mu_s.describe() + (c.uncertainty.mu_s ? " ([uncertainty] mu_s)"
+                                                           : " (the case's friction bounds)");
+    if (c.uncertainty.mu_s && c.component.base.kinetic_ratio() != 1.0)
+        m.mu_s_law += fmt::format("; mu_k = {:.4g} mu_s", c.component.base.kinetic_ratio());
+    if (l.restitution) {
+        m.restitution_law = l.restitution->describe() + " ([uncertainty] restitution), both "
+                                                        "directions";
+    } else {
+        m.restitution_law = fmt::format(
+            "uniform over each direction's bounds, one quantile for both: x [{:.4g}, {:.4g}], "
+            "y [{:.4g}, {:.4g}] (Housner's value to the measured r)",
+            l.restitution_bounds[0][0], l.restitution_bounds[0][1], l.restitution_bounds[1][0],
+            l.restitution_bounds[1][1]);
+    }
+    if (config.record_files.empty()) {
+        m.motion_source = fmt::format(
+            "a pool of {} three-component histories matched at 1 g to the case's target (SRP "
+            "3.7.1 and realism checked, docs/methods.md s.8), h1 along x and h2 along y with the "
+            "vertical, scaled to each level; each sample draws one set",
+            config.pool);
+    } else {
+        std::string names;
+        for (const std::string& f : config.record_files)
+            names += (names.empty() ? "" : ", ") + std::filesystem::path(f).filename().string();
+        m.motion_source = fmt::format(
+            "a suite of {} horizontal records ({}), each applied along x and along y with no "
+            "vertical motion and scaled so its PGA is the level's; each sample draws one record",
+            config.record_files.size(), names);
+    }
+    return m;
+}
+
+struct Runner::Impl {
+    assess::Case c;
+    Config config;
+    Laws laws;
+    std::vector<assess::HistorySet> sets;
+    std::vector<core::Record> records;
+    std::vector<double> record_pga_g;
+    std::vector<std::string> record_names;
+    bool prepared = false;
+};
+
+Runner::Runner(const assess::Case& c, Config config) : impl_(new Impl) {
+    validate(config);
+    impl_->c = c;
+    impl_->config = std::move(config);
+    impl_->laws = laws_of(c);
+}
+
+Runner::~Runner() { delete impl_; }
+
+std::size_t Runner::total() const {
+    return impl_->config.pga_g.size() * static_cast<std::size_t>(impl_->config.samples);
+}
+
+void Runner::prepare(int threads) {
+    Impl& m = *impl_;
+    if (m.config.record_files.empty()) {
+        assess::Case pool_case = m.c;
+        pool_case.options.histories_per_level = m.config.pool;
+        assess::HistoryBank bank(pool_case, threads);
+        m.sets = bank.sets();
+    } else {
+        for (const std::string& f : m.config.record_files) {
+            core::Record r = core::read_record(f);
+            double pga = 0.0;
+            for (double a : r.accel_mps2) pga = std::max(pga, std::abs(a));
+            if (!(pga > 0.0))
+                throw InputError(SourceLocation{f, 0, "records"},
+                                 "the record has no motion (PGA 0); it cannot be scaled to a level");
+            m.record_pga_g.push_back(pga / m.c.site.g_mps2);
+            m.record_names.push_back(std::filesystem::path(f).filename().string());
+            m.records.push_back(std::move(r));
+        }
+    }
+    m.prepared = true;
+}
+
+SampleResult Runner::run(std::size_t global_index) const {
+    const Impl& m = *impl_;
+    if (!m.prepared) throw std::logic_error("fragility::Runner::run before prepare");
+    const auto samples = static_cast<std::size_t>(m.config.samples);
+    SampleResult out;
+    out.level = static_cast<int>(global_index / samples);
+    out.sample = static_cast<int>(global_index % samples);
+    const double pga_g = m.config.pga_g.at(static_cast<std::size_t>(out.level));
+    // The sample's own stream: the draws depend on (seed, level, sample) alone.
+    std::mt19937_64 rng(core::stream_seed(m.config.seed, static_cast<std::uint64_t>(out.level),
+                                          static_cast<std::uint64_t>(out.sample)));
+    const double u_motion = core::uniform01(rng());
+    const double u_mu = core::uniform01(rng());
+    const double u_r = core::uniform01(rng());
+    const std::size_t pool = m.sets.empty() ? m.records.size() : m.sets.size();
+    const std::size_t pick =
+        std::min(pool - 1, static_cast<std::size_t>(u_motion * static_cast<double>(pool)));
+    out.motion = m.sets.empty() ? m.record_names[pick] : fmt::format("set {}", pick + 1);
+    out.mu_s = m.laws.mu_s.at(u_mu);
+    const auto restitution = [&](int dir) {
+        if (m.laws.restitution) return m.laws.restitution->at(u_r);
+        const auto& b = m.laws.restitution_bounds[static_cast<std::size_t>(dir)];
+        return b[0] + u_r * (b[1] - b[0]);
+    };
+    out.restitution_x = restitution(0);
+    out.restitution_y = restitution(1);
+    dynamics::Options opt;
+    opt.record_series = false;
+    opt.g_mps2 = m.c.site.g_mps2;
+    for (const assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
+        const double r = d == assess::Direction::x ? out.restitution_x : out.restitution_y;
+        const assess::ContactBound contact{out.mu_s, m.laws.kinetic_ratio * out.mu_s, r, false, ""};
+        const dynamics::BlockModel model = assess::block_model(m.c.component, contact, d);
+        const dynamics::Excitation ex =
+            m.sets.empty()
+                ? dynamics::excitation_from_record(m.records[pick], pga_g / m.record_pga_g[pick])
+                : assess::excitation(m.sets[pick], d, pga_g);
+        const dynamics::Summary s = dynamics::simulate(model, ex, opt).summary;
+        out.slide_max_m = std::max(out.slide_max_m, s.slide_max_m);
+        out.rock_max_over_alpha = std::max(out.rock_max_over_alpha, s.rock_max_over_alpha);
+        out.overturned = out.overturned || s.overturned;
+    }
+    return out;
+}
+
+std::vector<SampleResult> run_samples(const Runner& runner, const std::vector<std::size_t>& indices,
+                                      int threads,
+                                      const std::function<void(std::size_t)>& progress) {
+    std::vector<SampleResult> out(indices.size());
+    const std::size_t cores =
+        threads > 0 ? static_cast<std::size_t>(threads) : std::thread::hardware_concurrency();
+    const std::size_t workers = std::max<std::size_t>(1, std::min(indices.size(), cores));
+    std::atomic<std::size_t> next{0};
+    std::size_t done = 0;
+    std::exception_ptr failure;
+    std::mutex lock;
+    std::condition_variable changed;
+    auto work = [&] {
+        for (std::size_t i = next++; i < indices.size(); i = next++) {
+            std::exception_ptr error;
+            try {
+                out[i] = runner.run(indices[i]);
+            } catch (...) {
+                error = std::current_exception();
+            }
+            const std::lock_guard<std::mutex> guard(lock);
+            ++done;
+            if (error && !failure) failure = error;
+            if (failure) next = indices.size();  // the others stop at their next sample
+            changed.notify_one();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
+    {
+        using Clock = std::chrono::steady_clock;
+        auto last = Clock::now();
+        std::unique_lock<std::mutex> guard(lock);
+        while (done < indices.size() && !failure) {
+            changed.wait_for(guard, std::chrono::milliseconds(200));
+            if (!progress || Clock::now() - last < std::chrono::milliseconds(200)) continue;
+            last = Clock::now();
+            const std::size_t now = done;
+            guard.unlock();
+            progress(now);
+            guard.lock();
+        }
+    }
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    if (progress) progress(indices.size());
+    return out;
+}
+
+Result run_all(const assess::Case& c, const Config& config, int threads,
+               const std::function<void(std::size_t, std::size_t)>& progress) {
+    Runner runner(c, config);
+    runner.prepare(threads);
+    std::vector<std::size_t> all(runner.total());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    const std::size_t total = all.size();
+    auto samples = run_samples(runner, all, threads, [&](std::size_t done) {
+        if (progress) progress(done, total);
+    });
+    return aggregate(make_meta(c, config), std::move(samples));
+}
+
+}  // namespace freestand::fragility

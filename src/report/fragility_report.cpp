@@ -1,0 +1,290 @@
+#include "report/fragility_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/publish.hpp"
+#include "core/statistics.hpp"
+#include "report/escape_guard.hpp"
+#include "report/references.hpp"
+#include "report/render.hpp"
+#include "report/svg.hpp"
+
+namespace freestand::report {
+
+extern const char* const template_fragility_md;
+extern const char* const template_fragility_html;
+extern const char* const template_fragility_section_md;
+extern const char* const template_fragility_section_html;
+
+namespace {
+
+using nlohmann::ordered_json;
+using fragility::all_events;
+
+const std::array<const char*, 4> kColors{"#d62728", "#1f77b4", "#ff7f0e", "#555555"};
+
+ordered_json num(double v) { return std::isfinite(v) ? ordered_json(round10(v)) : ordered_json(nullptr); }
+
+std::string g3(double v) { return fmt::format("{:.3g}", v); }
+
+std::string event_meaning(fragility::Event e, const fragility::Meta& m) {
+    switch (e) {
+        case fragility::Event::overturn:
+            return "overturned in x or y";
+        case fragility::Event::slide:
+            return fmt::format("peak slide above the allowable {:.1f} mm", 1000.0 * m.allowable_slide_m);
+        case fragility::Event::rock:
+            return fmt::format("theta_max / alpha above 1 / FS_required = {:.3f} (or overturned)",
+                               1.0 / m.required_overturn_fs);
+        case fragility::Event::any:
+            return "any of them";
+    }
+    return "";
+}
+
+ordered_json fit_json(const fragility::EventFit& f) {
+    if (!f.fit) return nullptr;
+    const fragility::Fit& x = *f.fit;
+    return {{"theta_m_g", num(x.theta_m_g)},     {"beta", num(x.beta)},
+            {"pga_1pct_g", num(x.pga_1pct_g)},   {"pga_5pct_g", num(x.pga_5pct_g)},
+            {"pga_50pct_g", num(x.pga_50pct_g)}, {"log_likelihood", num(x.log_likelihood)},
+            {"chi2", num(x.chi2)},               {"dof", x.dof},
+            {"p_value", x.p_value ? num(*x.p_value) : ordered_json(nullptr)}};
+}
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string count_text(const fragility::Count& c) {
+    return fmt::format("{} / {} [{:.3f}, {:.3f}]", c.k, c.n, c.ci[0], c.ci[1]);
+}
+
+// The fitted curve on a log grid over [lo, hi].
+Line fitted_line(const fragility::Fit& f, double lo, double hi, const std::string& label,
+                 const std::string& color) {
+    Line l{label, {}, {}, color, 1.6, false, false};
+    for (int i = 0; i <= 120; ++i) {
+        const double a = lo * std::pow(hi / lo, i / 120.0);
+        l.x.push_back(a);
+        l.y.push_back(core::normal_cdf(std::log(a / f.theta_m_g) / f.beta));
+    }
+    return l;
+}
+
+std::string method_text(const fragility::Meta& m) {
+    return fmt::format(
+        "Probability of each failure given the PGA (docs/methods.md s.9; FEMA P-58 practice): "
+        "at each level, {} samples each draw a ground motion and the uncertain friction and "
+        "restitution from their own random stream (seed, level, sample), simulate the rigid "
+        "block in x and y (docs/methods.md s.3) and count the failures; k / n with its exact "
+        "95% interval (Clopper & Pearson 1934); a lognormal P(a) = Phi(ln(a / theta_m) / beta) "
+        "fitted by maximum likelihood over the levels (Baker 2015), with Pearson's chi2 as the "
+        "goodness of fit. A fit is omitted, with the reason, where no curve can be fitted.",
+        m.config.samples);
+}
+
+std::string levels_text(const std::vector<double>& pga) {
+    std::string out;
+    for (double a : pga) out += (out.empty() ? "" : ", ") + fmt::format("{:g}", a);
+    return out;
+}
+
+}  // namespace
+
+ordered_json fragility_json(const fragility::Result& r, const Stamp& stamp) {
+    ordered_json j;
+    ordered_json levels = ordered_json::array();
+    for (const fragility::Level& l : r.levels) {
+        ordered_json events;
+        for (std::size_t e = 0; e < all_events.size(); ++e) {
+            const fragility::Count& c = l.events[e];
+            events[fragility::event_name(all_events[e])] = {
+                {"k", c.k}, {"p", num(c.p)}, {"ci", {num(c.ci[0]), num(c.ci[1])}}};
+        }
+        levels.push_back({{"pga_g", num(l.pga_g)}, {"n", l.n}, {"events", events}});
+    }
+    j["levels"] = levels;
+    ordered_json fits, notes;
+    for (std::size_t e = 0; e < all_events.size(); ++e) {
+        fits[fragility::event_name(all_events[e])] = fit_json(r.fits[e]);
+        notes[fragility::event_name(all_events[e])] =
+            r.fits[e].fit ? ordered_json(nullptr) : ordered_json(r.fits[e].note);
+    }
+    j["fit"] = fits;
+    j["fit_notes"] = notes;
+    const fragility::Meta& m = r.meta;
+    ordered_json events;
+    for (const fragility::Event e : all_events)
+        events[fragility::event_name(e)] = event_meaning(e, m);
+    j["inputs"] = {{"case", m.case_name},
+                   {"pga_g", m.config.pga_g},
+                   {"samples_per_level", m.config.samples},
+                   {"seed", m.config.seed},
+                   {"motions", m.motion_source},
+                   {"mu_s", m.mu_s_law},
+                   {"restitution", m.restitution_law},
+                   {"allowable_slide_m", num(m.allowable_slide_m)},
+                   {"required_overturn_fs", num(m.required_overturn_fs)},
+                   {"events", events},
+                   {"methods", "docs/methods.md s.9"}};
+    ordered_json refs = ordered_json::array();
+    for (const Reference& ref :
+         references({"docs/methods.md", "FEMA P-58", "Baker 2015", "Clopper & Pearson 1934"}))
+        refs.push_back({{"key", ref.key}, {"text", ref.text}});
+    j["references"] = refs;
+    j["stamp"] = stamp_json(stamp);
+    return j;
+}
+
+std::string samples_csv(const fragility::Result& r) {
+    std::string out =
+        "level,sample,pga_g,motion,mu_s,restitution_x,restitution_y,slide_max_m,"
+        "rock_max_over_alpha,overturned\n";
+    for (const fragility::SampleResult& s : r.samples) {
+        out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", s.level + 1, s.sample + 1,
+                           round10(r.meta.config.pga_g[static_cast<std::size_t>(s.level)]),
+                           csv_field(s.motion), round10(s.mu_s), round10(s.restitution_x),
+                           round10(s.restitution_y), round10(s.slide_max_m),
+                           round10(s.rock_max_over_alpha), s.overturned ? "true" : "false");
+    }
+    return out;
+}
+
+Figure fragility_figure(const fragility::Result& r) {
+    const std::vector<double>& pga = r.meta.config.pga_g;
+    const double lo = pga.front() / (pga.size() > 1 ? 1.25 : 2.0);
+    const double hi = pga.back() * 1.25;
+    Plot p;
+    p.title = fmt::format("Fragility: {}", r.meta.case_name);
+    p.x = Axis{"PGA (g)", false, 0.0, hi};
+    p.y = Axis{"P(failure | PGA)", false, 0.0, 1.0};
+    for (std::size_t e = 0; e < all_events.size(); ++e) {
+        const std::string name = fragility::event_name(all_events[e]);
+        const std::string color = kColors[e];
+        Line points{name + ": k / n with 95% interval", {}, {}, color, 0.0, false, true};
+        for (const fragility::Level& l : r.levels) {
+            points.x.push_back(l.pga_g);
+            points.y.push_back(l.events[e].p);
+            p.lines.push_back(Line{"", {l.pga_g, l.pga_g}, {l.events[e].ci[0], l.events[e].ci[1]},
+                                   color, 1.0, false, false});
+        }
+        p.lines.push_back(points);
+        if (r.fits[e].fit)
+            p.lines.push_back(fitted_line(*r.fits[e].fit, lo, hi,
+                                          fmt::format("{}: lognormal theta_m {:.3g} g, beta {:.3g}",
+                                                      name, r.fits[e].fit->theta_m_g,
+                                                      r.fits[e].fit->beta),
+                                          color));
+    }
+    return Figure{"fragility.svg",
+                  "Fragility curves: observed failure fraction k / n at each level with its 95% "
+                  "Clopper-Pearson interval (bars) and the lognormal fitted by maximum likelihood, "
+                  "per failure event (docs/methods.md s.9).",
+                  render_svg(p)};
+}
+
+mstch::map fragility_section_context(const fragility::Result& r, const Figure& figure) {
+    const fragility::Meta& m = r.meta;
+    mstch::array fits;
+    for (std::size_t e = 0; e < all_events.size(); ++e) {
+        const fragility::EventFit& f = r.fits[e];
+        const std::string name = fragility::event_name(all_events[e]);
+        if (!f.fit) {
+            fits.push_back(mstch::map{{"event", name}, {"theta", std::string("no fit")},
+                                      {"beta", std::string("")}, {"p1", std::string("")},
+                                      {"p5", std::string("")}, {"p50", std::string("")},
+                                      {"gof", f.note}});
+            continue;
+        }
+        const fragility::Fit& x = *f.fit;
+        fits.push_back(mstch::map{
+            {"event", name},
+            {"theta", g3(x.theta_m_g)},
+            {"beta", g3(x.beta)},
+            {"p1", g3(x.pga_1pct_g)},
+            {"p5", g3(x.pga_5pct_g)},
+            {"p50", g3(x.pga_50pct_g)},
+            {"gof", x.p_value ? fmt::format("{:.3g} ({}, p = {:.3g})", x.chi2, x.dof, *x.p_value)
+                              : fmt::format("{:.3g} (dof {}: no test)", x.chi2, x.dof)}});
+    }
+    mstch::array rows;
+    double widest = 0.0;
+    for (const fragility::Level& l : r.levels) {
+        for (const fragility::Count& c : l.events) widest = std::max(widest, c.ci[1] - c.ci[0]);
+        rows.push_back(mstch::map{{"pga", fmt::format("{:.3f}", l.pga_g)},
+                                  {"n", std::to_string(l.n)},
+                                  {"overturn", count_text(l.events[0])},
+                                  {"slide", count_text(l.events[1])},
+                                  {"rock", count_text(l.events[2])},
+                                  {"any", count_text(l.events[3])}});
+    }
+    std::string events;
+    for (const fragility::Event e : all_events)
+        events += (events.empty() ? "" : "; ") + std::string(fragility::event_name(e)) + ": " +
+                  event_meaning(e, m);
+    return mstch::map{{"frag_method", method_text(m)},
+                      {"frag_levels", levels_text(m.config.pga_g)},
+                      {"frag_samples", std::to_string(m.config.samples)},
+                      {"frag_seed", std::to_string(m.config.seed)},
+                      {"frag_motion", m.motion_source},
+                      {"frag_mu_law", m.mu_s_law},
+                      {"frag_r_law", m.restitution_law},
+                      {"frag_events", events},
+                      {"frag_fits", fits},
+                      {"frag_rows", rows},
+                      {"frag_halfwidth", fmt::format("{:.3f}", widest)},
+                      {"frag_figure_file", figure.file},
+                      {"frag_caption", figure.caption},
+                      {"frag_svg", figure.svg}};
+}
+
+RenderedFragility render_fragility(const fragility::Result& r, const Stamp& stamp) {
+    RenderedFragility out;
+    out.figure = fragility_figure(r);
+    mstch::map ctx = fragility_section_context(r, out.figure);
+    ctx.emplace("frag_case", r.meta.case_name);
+    mstch::array refs;
+    for (const Reference& ref :
+         references({"docs/methods.md", "FEMA P-58", "Baker 2015", "Clopper & Pearson 1934"}))
+        refs.push_back(mstch::map{{"key", ref.key}, {"text", ref.text}});
+    ctx.emplace("references", refs);
+    ctx.emplace("stamp_version", stamp.tool_version);
+    ctx.emplace("stamp_commit", stamp.commit);
+    ctx.emplace("stamp_case_file", stamp.case_file);
+    ctx.emplace("stamp_sha256", stamp.input_sha256);
+    ctx.emplace("stamp_seed", std::to_string(stamp.seed));
+    mstch::array inputs;
+    for (const StampedInput& i : stamp.inputs)
+        inputs.push_back(mstch::map{{"file", i.file}, {"sha256", i.sha256}});
+    ctx.emplace("stamp_inputs", inputs);
+    {
+        EscapeGuard guard(markdown_escape);
+        out.markdown = mstch::render(template_fragility_md, ctx,
+                                     {{"section", template_fragility_section_md}});
+    }
+    {
+        EscapeGuard guard(html_escape);
+        out.html = mstch::render(template_fragility_html, ctx,
+                                 {{"section", template_fragility_section_html}});
+    }
+    out.json = fragility_json(r, stamp).dump(2) + "\n";
+    out.csv = samples_csv(r);
+    return out;
+}
+
+void write_fragility(const std::filesystem::path& dir, const RenderedFragility& rendered) {
+    core::publish_folder(dir, {{rendered.figure.file, rendered.figure.svg},
+                               {"report.md", rendered.markdown},
+                               {"report.html", rendered.html},
+                               {"fragility.json", rendered.json},
+                               {"samples.csv", rendered.csv}});
+}
+
+}  // namespace freestand::report

@@ -1,0 +1,64 @@
+// The lognormal fit (fragility/fit.hpp): it recovers a known curve from binomial counts drawn from
+// it, and says why when there is no curve to fit.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "core/statistics.hpp"
+#include "fragility/fit.hpp"
+
+using namespace freestand;
+using fragility::fit_lognormal;
+
+TEST_CASE("the fit recovers theta_m and beta from counts drawn from a known lognormal",
+          "[fragility][fit]") {
+    // P(a) = Phi(ln(a / 0.5) / 0.4); 2000 samples per level at 0.1-1.0 g; fixed seed.
+    const double theta = 0.5, beta = 0.4;
+    std::mt19937_64 rng(2015);
+    std::vector<double> a;
+    std::vector<int> k, n;
+    for (int j = 1; j <= 10; ++j) {
+        a.push_back(0.1 * j);
+        const double p = core::normal_cdf(std::log(a.back() / theta) / beta);
+        k.push_back(static_cast<int>(std::binomial_distribution<int>(2000, p)(rng)));
+        n.push_back(2000);
+    }
+    const fragility::EventFit f = fit_lognormal(a, k, n);
+    REQUIRE(f.fit.has_value());
+    INFO("theta " << f.fit->theta_m_g << ", beta " << f.fit->beta);
+    CHECK(f.fit->theta_m_g == Approx(theta).epsilon(0.02));
+    CHECK(f.fit->beta == Approx(beta).epsilon(0.05));
+    CHECK(f.fit->pga_50pct_g == f.fit->theta_m_g);
+    CHECK(f.fit->pga_5pct_g == Approx(f.fit->theta_m_g * std::exp(-1.6448536 * f.fit->beta)).epsilon(1e-6));
+    CHECK(f.fit->pga_1pct_g < f.fit->pga_5pct_g);
+    // Counts drawn from the model itself: Pearson's chi2 should not reject it.
+    CHECK(f.fit->dof == 8);
+    REQUIRE(f.fit->p_value.has_value());
+    CHECK(*f.fit->p_value > 0.01);
+}
+
+TEST_CASE("the fit is the maximum of the likelihood (exact counts at two levels)",
+          "[fragility][fit]") {
+    // With two levels the MLE passes through both observed proportions exactly.
+    const std::vector<double> a{0.2, 0.8};
+    const std::vector<int> k{10, 90}, n{100, 100};
+    const auto f = fit_lognormal(a, k, n);
+    REQUIRE(f.fit.has_value());
+    CHECK(core::normal_cdf(std::log(0.2 / f.fit->theta_m_g) / f.fit->beta) == Approx(0.1).epsilon(1e-6));
+    CHECK(core::normal_cdf(std::log(0.8 / f.fit->theta_m_g) / f.fit->beta) == Approx(0.9).epsilon(1e-6));
+    CHECK(f.fit->theta_m_g == Approx(0.4).epsilon(1e-6));  // geometric mean of 0.2 and 0.8
+}
+
+TEST_CASE("no fit without a curve to fit, and the note says why", "[fragility][fit]") {
+    const std::vector<double> a{0.1, 0.2, 0.3};
+    CHECK(fit_lognormal(a, {0, 0, 0}, {10, 10, 10}).note == "no level has a failure");
+    CHECK_FALSE(fit_lognormal(a, {0, 0, 0}, {10, 10, 10}).fit.has_value());
+    CHECK_THAT(fit_lognormal(a, {10, 10, 10}, {10, 10, 10}).note,
+               Catch::Contains("every sample fails"));
+    const auto separated = fit_lognormal(a, {0, 10, 10}, {10, 10, 10});
+    CHECK_FALSE(separated.fit.has_value());
+    CHECK_THAT(separated.note, Catch::Contains("separate failures perfectly"));
+    CHECK_THAT(fit_lognormal(a, {8, 4, 1}, {10, 10, 10}).note,
+               Catch::Contains("do not increase"));
+    CHECK_THAT(fit_lognormal({0.3}, {4}, {10}).note, Catch::Contains("at least two levels"));
+}
