@@ -225,9 +225,15 @@ TEST_CASE("a republish replaces sub-folders whole and keeps hand-added files in 
     CHECK_FALSE(fs::exists(dir / "fan"));  // written by run A only: gone with it
     CHECK(core::read_text_file(dir / "pump" / "notes.txt") == "mine\n");
     CHECK(core::read_text_file(dir / "top.txt") == "top\n");
-    // A flat run replaces the batch whole: its sub-folders go.
+    // A flat run replaces the batch whole: its sub-folders go, once the hand-added file in
+    // one of them is moved out (it would be lost with the folder).
+    CHECK_THROWS_WITH(core::publish_folder(dir, run_files("C")),
+                      Contains("pump/notes.txt: was added by hand"));
+    fs::remove(dir / "pump" / "notes.txt");
     core::publish_folder(dir, run_files("C"));
     CHECK_FALSE(fs::exists(dir / "rack"));
+    CHECK_FALSE(fs::exists(dir / "pump"));
+    CHECK(core::read_text_file(dir / "top.txt") == "top\n");
     fs::remove_all(root);
 }
 
