@@ -31,7 +31,8 @@ void fail_row(report::SummaryRow& row, const BatchEntry& e, const BatchList& lis
     row.exit_code = static_cast<int>(code);
 }
 
-Outcome run_entry(const BatchEntry& e, const BatchList& list, const std::string& commit) {
+Outcome run_entry(const BatchEntry& e, const BatchList& list, const std::string& commit,
+                  int fragility_threads) {
     Outcome out;
     report::SummaryRow& row = out.row;
     row.name = e.name;
@@ -40,7 +41,8 @@ Outcome run_entry(const BatchEntry& e, const BatchList& list, const std::string&
     try {
         const std::string bytes = core::read_input_file(e.case_file);
         row.case_sha256 = report::sha256_hex(bytes);
-        report::CaseRun run = report::run_case(bytes, e.case_file, e.overrides, commit);
+        report::CaseRun run =
+            report::run_case(bytes, e.case_file, e.overrides, commit, fragility_threads);
         row.outcome = report::summary_outcome(run.result);
         out.rendered = std::move(run.rendered);
     } catch (const InputError& err) {
@@ -67,13 +69,16 @@ BatchRun run_batch(const BatchList& list, unsigned threads, const std::string& c
     const std::size_t n = list.entries.size();
     std::vector<Outcome> outcomes(n);
     std::atomic<std::size_t> next{0};
+    const std::size_t workers = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(n, 1));
+    // A case's own fragility analysis shares the threads left over, so workers do not each
+    // take every core; its result does not depend on the count.
+    const int fragility_threads = static_cast<int>(std::max<std::size_t>(1, threads / workers));
     // Each worker takes the next unassessed entry; results land at the entry's index, so the
     // order of completion never shows in the outputs.
     const auto work = [&] {
         for (std::size_t i = next++; i < n; i = next++)
-            outcomes[i] = run_entry(list.entries[i], list, commit);
+            outcomes[i] = run_entry(list.entries[i], list, commit, fragility_threads);
     };
-    const std::size_t workers = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(n, 1));
     std::vector<std::thread> pool;
     for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
     work();

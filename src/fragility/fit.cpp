@@ -79,15 +79,32 @@ std::optional<Eigen::Vector2d> maximise(const Levels& l, Eigen::Vector2d start) 
 }
 
 // (Quasi-)complete separation: no failure below some level and only failures above it (that
-// level itself anything). The likelihood then has no finite maximum (Albert & Anderson 1984).
-bool separated(const Levels& l) {
+// level itself anything). The likelihood then has no finite maximum (Albert & Anderson 1984):
+// a step at that level fits its own fraction exactly and every other level perfectly. Returns
+// the level's index.
+std::optional<std::size_t> separating_level(const Levels& l) {
     for (std::size_t m = 0; m < l.x.size(); ++m) {
         bool below = true, above = true;
         for (std::size_t j = 0; j < m; ++j) below = below && l.k[j] == 0.0;
         for (std::size_t j = m + 1; j < l.x.size(); ++j) above = above && l.k[j] == l.n[j];
-        if (below && above) return true;
+        if (below && above) return m;
     }
-    return false;
+    return std::nullopt;
+}
+
+std::string separation_note(const Levels& l, std::size_t m) {
+    const double a = std::exp(l.x[m]);
+    const std::string where =
+        m + 1 == l.x.size() ? fmt::format("failures only at the highest level, {:g} g", a)
+        : m == 0 ? fmt::format("every sample fails above the lowest level, {:g} g", a)
+                 : fmt::format("none below {:g} g, only failures above it", a);
+    const std::string needed = m + 1 == l.x.size() ? "levels above it are needed"
+                               : m == 0           ? "levels below it are needed"
+                                                  : "levels between its neighbours are needed";
+    return fmt::format(
+        "the levels separate failures perfectly: {} ({} of {} there); the likelihood grows as "
+        "beta -> 0 (a step at about {:g} g, not a curve); {}",
+        where, l.k[m], l.n[m], a, needed);
 }
 
 }  // namespace
@@ -119,10 +136,8 @@ EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>&
         out.note = "every sample fails at every level: the median lies below the lowest level";
         return out;
     }
-    if (separated(l)) {
-        out.note = "the levels separate failures perfectly (none below a level, all above it): "
-                   "the likelihood grows as beta -> 0, a step, not a curve; more samples or "
-                   "levels between are needed";
+    if (const auto m = separating_level(l)) {
+        out.note = separation_note(l, *m);
         return out;
     }
     // Start from least squares on the empirical probits (continuity-corrected).

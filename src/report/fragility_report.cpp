@@ -98,7 +98,7 @@ std::string levels_text(const std::vector<double>& pga) {
 
 }  // namespace
 
-ordered_json fragility_json(const fragility::Result& r, const Stamp& stamp) {
+ordered_json fragility_body_json(const fragility::Result& r) {
     ordered_json j;
     ordered_json levels = ordered_json::array();
     for (const fragility::Level& l : r.levels) {
@@ -139,6 +139,11 @@ ordered_json fragility_json(const fragility::Result& r, const Stamp& stamp) {
          references({"docs/methods.md", "FEMA P-58", "Baker 2015", "Clopper & Pearson 1934"}))
         refs.push_back({{"key", ref.key}, {"text", ref.text}});
     j["references"] = refs;
+    return j;
+}
+
+ordered_json fragility_json(const fragility::Result& r, const Stamp& stamp) {
+    ordered_json j = fragility_body_json(r);
     j["stamp"] = stamp_json(stamp);
     return j;
 }

@@ -20,6 +20,9 @@ namespace freestand::report {
 /// "inputs", "references", "stamp"}; numbers to 10 significant digits.
 nlohmann::ordered_json fragility_json(const fragility::Result& r, const Stamp& stamp);
 
+/// fragility_json without the stamp: what an assessment's result.json carries as "fragility".
+nlohmann::ordered_json fragility_body_json(const fragility::Result& r);
+
 /// One row per sample: level, sample, pga_g, motion, mu_s, restitution_x, restitution_y,
 /// slide_max_m, rock_max_over_alpha, overturned (RFC 4180, numbers to 10 significant digits).
 std::string samples_csv(const fragility::Result& r);

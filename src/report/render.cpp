@@ -10,6 +10,7 @@
 #include "core/printable.hpp"
 #include "core/publish.hpp"
 #include "report/escape_guard.hpp"
+#include "report/fragility_report.hpp"
 #include "report/references.hpp"
 
 namespace freestand::report {
@@ -17,6 +18,8 @@ namespace freestand::report {
 // Defined in the generated templates_embedded.cpp (src/report/CMakeLists.txt).
 extern const char* const template_report_md;
 extern const char* const template_report_html;
+extern const char* const template_fragility_section_md;
+extern const char* const template_fragility_section_html;
 
 namespace {
 
@@ -497,25 +500,40 @@ std::string html_escape(const std::string& text) {
     return out;
 }
 
-Rendered render(const AssessmentResult& r, const Stamp& stamp) {
+Rendered render(const AssessmentResult& r, const Stamp& stamp,
+                const fragility::Result* fragility) {
     Rendered out;
     out.figures = figures(r);
-    const mstch::map ctx = context(r, stamp, out.figures);
+    mstch::map ctx = context(r, stamp, out.figures);
+    ctx.emplace("has_fragility", fragility != nullptr);
+    if (fragility) {
+        // The section's figure is written beside the others for the Markdown report and
+        // inlined by the HTML section itself (frag_svg), so it is not in the figure gallery.
+        const Figure fig = fragility_figure(*fragility);
+        for (auto& [key, value] : fragility_section_context(*fragility, fig))
+            ctx.emplace(key, value);
+        out.extra_files.push_back({fig.file, fig.svg});
+    }
     {
         EscapeGuard guard(markdown_escape);
-        out.markdown = mstch::render(template_report_md, ctx);
+        out.markdown = mstch::render(template_report_md, ctx,
+                                     {{"fragility_section", template_fragility_section_md}});
     }
     {
         EscapeGuard guard(html_escape);
-        out.html = mstch::render(template_report_html, ctx);
+        out.html = mstch::render(template_report_html, ctx,
+                                 {{"fragility_section", template_fragility_section_html}});
     }
-    out.json = to_json(r, stamp).dump(2) + "\n";
+    nlohmann::ordered_json json = to_json(r, stamp);
+    if (fragility) json["fragility"] = fragility_body_json(*fragility);
+    out.json = json.dump(2) + "\n";
     return out;
 }
 
 std::vector<core::OutputFile> report_files(const Rendered& rendered) {
     std::vector<core::OutputFile> files;
     for (const Figure& f : rendered.figures) files.push_back({f.file, f.svg});
+    for (const core::OutputFile& f : rendered.extra_files) files.push_back(f);
     files.push_back({"report.md", rendered.markdown});
     files.push_back({"report.html", rendered.html});
     files.push_back({"result.json", rendered.json});

@@ -7,6 +7,7 @@
 
 #include "assess/result.hpp"
 #include "core/publish.hpp"
+#include "fragility/fragility.hpp"
 #include "report/json.hpp"
 #include "report/plots.hpp"
 
@@ -18,14 +19,20 @@ struct Rendered {
     std::string html;             ///< self-contained: inline CSS and SVG, no external resources
     std::string json;             ///< result.json, 2-space indented, trailing newline
     std::vector<Figure> figures;  ///< also written as SVG files for the Markdown report
+    /// Files beside the figures that the HTML report inlines elsewhere (the fragility curves).
+    std::vector<core::OutputFile> extra_files;
 };
 
 /// Renders all outputs. Case text is escaped: HTML-escaped in the HTML report; in Markdown,
 /// '<' and '&' as entities (no raw HTML can start) and Markdown punctuation backslash-escaped,
-/// newlines folded to spaces.
-Rendered render(const assess::AssessmentResult& r, const Stamp& stamp);
+/// newlines folded to spaces. With a fragility result ([options] fragility = true) the reports
+/// gain its section before the assumptions, result.json its "fragility" object and the folder
+/// its figure.
+Rendered render(const assess::AssessmentResult& r, const Stamp& stamp,
+                const fragility::Result* fragility = nullptr);
 
-/// The files of a report folder: the figures, report.md, report.html, result.json.
+/// The files of a report folder: the figures, the extra files, report.md, report.html,
+/// result.json (what write_report publishes).
 std::vector<core::OutputFile> report_files(const Rendered& rendered);
 
 /// Publishes report.md, report.html, result.json and the figures as the whole content of dir

@@ -13,20 +13,25 @@ namespace freestand::report {
 
 struct CaseRun {
     assess::AssessmentResult result;
+    std::optional<fragility::Result> fragility;  ///< with [options] fragility = true
     Rendered rendered;
 };
 
 /// Reads the case file (its bytes are hashed into the stamp), optionally replaces its PGA levels,
-/// assesses and renders. commit is the build's commit for the stamp. Errors propagate
+/// assesses, runs the fragility analysis when the case asks for it (on all cores; the result does
+/// not depend on the thread count) and renders. commit is the build's commit for the stamp. Errors propagate
 /// (IoError, InputError, NumericalError).
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit);
 
 /// The same on case text already read (case_bytes, hashed into the stamp; case_file names it
 /// in messages and resolves its relative paths) with overrides written into it
-/// (assess::parse_case): a batch's run of one component. Errors propagate as above.
+/// (assess::parse_case): a batch's run of one component. The fragility analysis, when the case
+/// asks for it, runs on fragility_threads (0: every core), so that a batch's workers do not each
+/// take every core. Errors propagate as above.
 CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
-                 const assess::CaseOverrides& overrides, const std::string& commit);
+                 const assess::CaseOverrides& overrides, const std::string& commit,
+                 int fragility_threads);
 
 /// The one-line verdict the commands print, all from the headline's one governing level:
 /// "<name>: <verdict> (governing PGA 0.400 g, direction x[ with <material>], margin 1.15 | no

@@ -57,7 +57,20 @@ TEST_CASE("no fit without a curve to fit, and the note says why", "[fragility][f
                Catch::Contains("every sample fails"));
     const auto separated = fit_lognormal(a, {0, 10, 10}, {10, 10, 10});
     CHECK_FALSE(separated.fit.has_value());
-    CHECK_THAT(separated.note, Catch::Contains("separate failures perfectly"));
+    CHECK_THAT(separated.note,
+               Catch::Contains("separate failures perfectly: every sample fails above the lowest "
+                               "level, 0.1 g (0 of 10 there)"));
+    CHECK_THAT(fit_lognormal(a, {0, 0, 3}, {10, 10, 10}).note,
+               Catch::Contains("failures only at the highest level, 0.3 g (3 of 10 there)"));
+    // One level between 0 and n with none below and all above is still separated: a step there
+    // reproduces its fraction exactly, so the likelihood has no finite maximum (block-ts3 gave
+    // 0/40, 0/40, 21/40, 40/40, 40/40).
+    const auto quasi = fit_lognormal({0.2, 0.4, 0.6, 0.8, 1.0}, {0, 0, 21, 40, 40},
+                                     {40, 40, 40, 40, 40});
+    CHECK_FALSE(quasi.fit.has_value());
+    CHECK_THAT(quasi.note, Catch::Contains("none below 0.6 g, only failures above it"));
+    CHECK_THAT(quasi.note, Catch::Contains("a step at about 0.6 g"));
+    CHECK_THAT(quasi.note, Catch::Contains("(21 of 40 there)"));
     CHECK_THAT(fit_lognormal(a, {8, 4, 1}, {10, 10, 10}).note,
                Catch::Contains("do not increase"));
     CHECK_THAT(fit_lognormal({0.3}, {4}, {10}).note, Catch::Contains("at least two levels"));

@@ -41,11 +41,8 @@ double peak_slip_m(double A, double f, double T, double mu) {
         };
         const auto disp = [&](double x) {
             const double tc = std::min(x, T);
-            double d = us + (A * kG / (w * w)) * (std::sin(w * ts) - std::sin(w * tc)) +
-                       (A * kG / w) * std::cos(w * ts) * 0.0 +
-                       (A * kG / w) * (std::sin(w * tc) - std::sin(w * ts)) / w * 0.0;
-            // integral of vel from ts to tc
-            d = us + (A * kG / w) * ((std::sin(w * tc) - std::sin(w * ts)) / w -
+            // u(ts) plus the integral of u' from ts.
+            double d = us + (A * kG / w) * ((std::sin(w * tc) - std::sin(w * ts)) / w -
                                      std::cos(w * ts) * (tc - ts)) -
                 0.5 * s * mu * kG * (tc - ts) * (tc - ts);
             if (x > T) {

@@ -641,3 +641,54 @@ TEST_CASE("the stamp hashes every input file, not only the case", "[report][cli]
     }
     fs::remove_all(dir);
 }
+
+namespace {
+
+// A fragility result from made-up samples: 2 levels x 4 samples, overturning at the second.
+fragility::Result hand_fragility() {
+    fragility::Meta meta;
+    meta.case_name = hostile;
+    meta.config.pga_g = {0.2, 0.4};
+    meta.config.samples = 4;
+    meta.allowable_slide_m = 0.05;
+    meta.mu_s_law = "uniform [0.2, 0.3]";
+    meta.restitution_law = "uniform [0.7, 0.9]";
+    meta.motion_source = "made up";
+    std::vector<fragility::SampleResult> samples;
+    for (int level = 0; level < 2; ++level)
+        for (int i = 0; i < 4; ++i)
+            samples.push_back({level, i, "set 1", 0.25, 0.8, 0.8, 0.01 * (1 + level),
+                               level == 1 && i < 3 ? 2.0 : 0.1, level == 1 && i < 3});
+    return fragility::aggregate(meta, samples);
+}
+
+}  // namespace
+
+TEST_CASE("an assessment with a fragility result carries its section, figure and JSON",
+          "[report][fragility]") {
+    const fragility::Result f = hand_fragility();
+    const Rendered with = render(hand_result(), stamp(), &f);
+    const Rendered without = render(hand_result(), stamp());
+    CHECK(without.markdown.find("## Fragility") == std::string::npos);
+    CHECK(without.html.find("<h2>Fragility</h2>") == std::string::npos);
+    CHECK(without.extra_files.empty());
+    CHECK_FALSE(nlohmann::json::parse(without.json).contains("fragility"));
+    // The section comes before the assumptions, in both reports.
+    const auto md_at = with.markdown.find("## Fragility");
+    REQUIRE(md_at != std::string::npos);
+    CHECK(md_at < with.markdown.find("## Assumptions"));
+    CHECK(with.markdown.find("| 0.400 | 4 | 3 / 4 \\[") != std::string::npos);
+    CHECK(with.markdown.find("](fragility.svg)") != std::string::npos);
+    const auto html_at = with.html.find("<h2>Fragility</h2>");
+    REQUIRE(html_at != std::string::npos);
+    CHECK(html_at < with.html.find("<h2>Assumptions</h2>"));
+    CHECK(with.html.find("<svg", html_at) < with.html.find("<h2>Assumptions</h2>"));
+    REQUIRE(with.extra_files.size() == 1);
+    CHECK(with.extra_files[0].name == "fragility.svg");
+    const auto j = nlohmann::json::parse(with.json);
+    REQUIRE(j.contains("fragility"));
+    CHECK(j["fragility"]["levels"][1]["events"]["overturn"]["k"] == 3);
+    CHECK_FALSE(j["fragility"].contains("stamp"));
+    // The rest of the report is untouched.
+    CHECK(with.markdown.substr(0, md_at) == without.markdown.substr(0, md_at));
+}
