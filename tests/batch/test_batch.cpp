@@ -38,6 +38,14 @@ const report::SummaryRow& row_named(const BatchRun& run, const std::string& name
     throw std::logic_error("unreachable");
 }
 
+// The result.json of row i's report folder.
+std::string result_json(const BatchRun& run, std::size_t i) {
+    for (const core::OutputFile& f : run.reports.at(i))
+        if (f.name == "result.json") return f.contents;
+    FAIL("row " << i << " has no result.json");
+    return "";
+}
+
 nlohmann::json without_stamp(const std::string& json_text) {
     nlohmann::json j = nlohmann::json::parse(json_text);
     j.erase("stamp");
@@ -104,9 +112,9 @@ histories_per_level = 2
         report::run_case(dir / "edited" / "rest.toml", std::nullopt, "test");
     const report::CaseRun slide_file =
         report::run_case(dir / "edited" / "slide.toml", std::nullopt, "test");
-    CHECK(without_stamp(run.reports[0]->json) == without_stamp(rest_file.rendered.json));
-    CHECK(without_stamp(run.reports[1]->json) == without_stamp(slide_file.rendered.json));
-    CHECK(nlohmann::json::parse(run.reports[1]->json)["stamp"]["seed"] == 9);
+    CHECK(without_stamp(result_json(run, 0)) == without_stamp(rest_file.rendered.json));
+    CHECK(without_stamp(result_json(run, 1)) == without_stamp(slide_file.rendered.json));
+    CHECK(nlohmann::json::parse(result_json(run, 1))["stamp"]["seed"] == 9);
     CHECK(slide_file.result.histories_generated > 0);  // the seed and count were used
     CHECK(row_named(run, "rest-hdpe").overrides ==
           "pga_g = [0.04, 0.06]; base_material = \"HDPE\"");
@@ -142,18 +150,22 @@ TEST_CASE("a failing case gets its row and exit 1 while the others' reports are 
     test::write_text(dir / "cases" / "syntax.toml", "[component\n");
     test::write_text(dir / "cases" / "unknown.toml",
                      test::resting_case("Unknown") + "colour = \"red\"\n");
+    // No generated history can meet D/A <= 0.01 m/g: a numerical failure (exit class 4).
+    std::string unreachable = test::sliding_case("Unreachable");
+    unreachable.replace(unreachable.find("[options]"), 9, "da_max_m_per_g = 0.01\n\n[options]");
+    test::write_text(dir / "cases" / "unreachable.toml", unreachable);
     test::write_text(dir / "list.csv", "file,name,pga_g\ncases/rest.toml,,\n"
                                        "cases/missing.toml,,\ncases/syntax.toml,,\n"
                                        "cases/unknown.toml,,\ncases/rest.toml,heavy,1.6\n"
-                                       "cases/rest.toml,last,\n");
+                                       "cases/rest.toml,last,\ncases/unreachable.toml,,\n");
     const auto r = test::run_cli("batch " + quoted(dir / "list.csv") + " --threads 2 --out " +
                                  quoted(dir / "out"));
     CHECK(r.exit_code == 1);
     CHECK(r.err.empty());
     const auto summary = nlohmann::json::parse(test::slurp(dir / "out" / "summary.json"));
-    CHECK(summary["counts"]["components"] == 6);
+    CHECK(summary["counts"]["components"] == 7);
     CHECK(summary["counts"]["assessed"] == 2);
-    CHECK(summary["counts"]["failed"] == 4);
+    CHECK(summary["counts"]["failed"] == 5);
     const auto& rows = summary["rows"];
     CHECK(rows[0]["status"] == "ok");
     CHECK(rows[0]["outcome"]["verdict_kind"] == "acceptable");
@@ -174,13 +186,16 @@ TEST_CASE("a failing case gets its row and exit 1 while the others' reports are 
     CHECK_THAT(rows[4]["error"].get<std::string>(),
                Contains("(with pga_g = [1.6] from " + (dir / "list.csv").string() + ":6)"));
     CHECK(rows[5]["status"] == "ok");
+    CHECK(rows[6]["exit_code"] == 4);
+    CHECK_THAT(rows[6]["error"].get<std::string>(),
+               Contains("no synthetic record passed SRP 3.7.1 and the realism checks"));
     CHECK(fs::exists(dir / "out" / "rest" / "report.html"));
     CHECK(fs::exists(dir / "out" / "last" / "report.html"));
-    for (const char* failed : {"missing", "syntax", "unknown", "heavy"})
+    for (const char* failed : {"missing", "syntax", "unknown", "heavy", "unreachable"})
         CHECK_FALSE(fs::exists(dir / "out" / failed));
     CHECK_THAT(r.out, Contains("rest: Rest: free-standing acceptable (governing PGA 0.050 g"));
     CHECK_THAT(r.out, Contains("missing: error: "));
-    CHECK_THAT(r.out, Contains(": 6 components, 4 failed, in "));
+    CHECK_THAT(r.out, Contains(": 7 components, 5 failed, in "));
     CHECK_THAT(test::slurp(dir / "out" / "summary.csv"),
                Contains(",error: " + (dir / "cases" / "missing.toml").string() +
                         ": cannot open file for reading,5,\r\n"));

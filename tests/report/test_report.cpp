@@ -692,3 +692,18 @@ TEST_CASE("an assessment with a fragility result carries its section, figure and
     // The rest of the report is untouched.
     CHECK(with.markdown.substr(0, md_at) == without.markdown.substr(0, md_at));
 }
+
+TEST_CASE("report_files lists every file of the folder, the fragility figure included",
+          "[report][fragility][batch]") {
+    // A batch writes a component's folder from report_files: a file missing here would be
+    // missing there and the folder would differ from `assess --out`'s.
+    const fragility::Result f = hand_fragility();
+    const Rendered with = render(hand_result(), stamp(), &f);
+    std::vector<std::string> names;
+    for (const core::OutputFile& file : report_files(with)) names.push_back(file.name);
+    std::vector<std::string> expected;
+    for (const Figure& fig : with.figures) expected.push_back(fig.file);
+    for (const char* n : {"fragility.svg", "report.md", "report.html", "result.json"})
+        expected.push_back(n);
+    CHECK(names == expected);
+}
