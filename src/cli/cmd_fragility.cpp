@@ -14,6 +14,7 @@
 #include "cli/shards.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "fragility/serialize.hpp"
 
 namespace freestand::cli {
@@ -89,10 +90,17 @@ int run(const std::vector<std::string>& args) {
 
     runner.prepare(threads);
     Progress bar("samples");
-    std::vector<fragility::SampleResult> samples =
-        fragility::run_samples(runner, mine, threads, [&](std::size_t done) {
+    std::vector<fragility::SampleResult> samples;
+    try {
+        samples = fragility::run_samples(runner, mine, threads, [&](std::size_t done) {
             if (mpi.rank() == 0) bar.update(done, mine.size());
         });
+    } catch (const Error& e) {
+        if (mpi.size() == 1) throw;
+        std::cerr << "freestand fragility: error on MPI rank " << mpi.rank() << ": "
+                  << core::printable(e.what()) << "\n";
+        mpi.abort(static_cast<int>(e.code()));
+    }
     bar.finish();
 
     if (vm->count("shard")) {
@@ -108,8 +116,10 @@ int run(const std::vector<std::string>& args) {
         samples = mpi.gather_to_root(samples);
         if (mpi.rank() != 0) return 0;
     }
-    write_fragility_outputs(fragility::aggregate(meta, std::move(samples)), stamp, out,
-                            (*vm)["json"].as<bool>());
+    const bool json = (*vm)["json"].as<bool>();
+    write_fragility_outputs(fragility::aggregate(meta, std::move(samples)), stamp, out, json);
+    if (mpi.size() > 1 && !json)
+        std::cout << fmt::format("samples computed on {} MPI ranks\n", mpi.size());
     return 0;
 }
 

@@ -9,6 +9,8 @@
 #include "fragility/serialize.hpp"
 #endif
 
+#include <cstdlib>
+
 namespace freestand::cli {
 
 #ifdef FREESTAND_MPI
@@ -26,6 +28,11 @@ MpiSplit::MpiSplit() {
 
 MpiSplit::~MpiSplit() {
     if (owner_) MPI_Finalize();
+}
+
+void MpiSplit::abort(int exit_code) const {
+    MPI_Abort(MPI_COMM_WORLD, exit_code);
+    std::exit(exit_code);  // MPI_Abort does not return; this keeps [[noreturn]] honest
 }
 
 std::vector<fragility::SampleResult> MpiSplit::gather_to_root(
@@ -60,6 +67,8 @@ std::vector<fragility::SampleResult> MpiSplit::gather_to_root(
 
 MpiSplit::MpiSplit() = default;
 MpiSplit::~MpiSplit() = default;
+
+void MpiSplit::abort(int exit_code) const { std::exit(exit_code); }
 
 std::vector<fragility::SampleResult> MpiSplit::gather_to_root(
     const std::vector<fragility::SampleResult>& mine) const {

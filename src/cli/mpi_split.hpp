@@ -18,6 +18,9 @@ class MpiSplit {
 
     int rank() const { return rank_; }
     int size() const { return size_; }
+    /// Ends every rank with this exit code (MPI_Abort): a rank that fails alone would leave
+    /// the others waiting in the gather for ever. Without MPI, std::exit.
+    [[noreturn]] void abort(int exit_code) const;
     /// Every rank's samples on rank 0 (others get an empty vector); the input as is with one rank.
     std::vector<fragility::SampleResult> gather_to_root(
         const std::vector<fragility::SampleResult>& mine) const;

@@ -202,3 +202,29 @@ TEST_CASE("fragility options are checked before any sample runs", "[fragility][c
     CHECK(missing.exit_code != 0);
     CHECK(missing.err.find("nope.csv") != std::string::npos);
 }
+
+TEST_CASE("on a terminal, fragility draws a progress bar on stderr and stdout is unchanged",
+          "[fragility][cli][progress]") {
+    // util-linux `script` gives the command a pseudo-terminal; without it the test cannot run.
+    if (std::system("command -v script >/dev/null 2>&1") != 0) {
+        WARN("no `script` command: the terminal case is untested here");
+        return;
+    }
+    const Scene s("tty");
+    const fs::path pty_text = s.dir / "pty.txt";
+    const fs::path json_out = s.dir / "stdout.json";
+    const std::string inner = std::string("'") + FREESTAND_EXE + "' " + s.args("tty", "--json") +
+                              " >'" + json_out.string() + "'";
+    std::string quoted;  // inner, single-quoted for sh -c inside script -c
+    for (char ch : inner) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    const std::string cmd = "cd '" + std::string(FREESTAND_SOURCE_DIR) + "' && script -qec '" +
+                            quoted + "' /dev/null >'" + pty_text.string() + "' 2>&1";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    const std::string bar = slurp(pty_text);
+    INFO(bar);
+    CHECK(bar.find("36/36 samples") != std::string::npos);
+    CHECK(bar.find("/s,") != std::string::npos);
+    CHECK(bar.find("left") != std::string::npos);
+    // The JSON on stdout is the file's bytes: the bar never mixes into it.
+    CHECK(slurp(json_out) == slurp(s.dir / "tty" / "fragility.json"));
+}
