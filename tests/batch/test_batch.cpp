@@ -202,7 +202,8 @@ TEST_CASE("a failing case gets its row and exit 1 while the others' reports are 
     fs::remove_all(dir);
 }
 
-TEST_CASE("--json prints the summary that summary.json holds; the default folder is out/batch/",
+TEST_CASE("batch --json prints the summary that summary.json holds; the default folder is "
+          "out/batch/",
           "[batch][cli]") {
     const fs::path dir = test::batch_dir("json");
     test::write_text(dir / "cases" / "rest.toml", test::resting_case("Rest"));

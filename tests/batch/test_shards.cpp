@@ -129,7 +129,7 @@ TEST_CASE("merge refuses batch shards that do not make one run, naming the file"
     fs::remove_all(dir);
 }
 
-TEST_CASE("--shard CLI errors", "[batch][shard][cli][errors]") {
+TEST_CASE("batch --shard CLI errors", "[batch][shard][cli][errors]") {
     const fs::path dir = shard_scene("shard_cli");
     for (const char* bad : {"0/2", "3/2", "x"}) {
         const auto r = test::run_cli(batch_cmd(dir, std::string("--shard ") + bad));
