@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "assess/materials.hpp"
+#include "assess/overrides.hpp"
 #include "assess/toml_reader.hpp"
 #include "core/file_io.hpp"
 #include "core/limits.hpp"
@@ -408,7 +409,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         }
         s.design = *design;
     }
-    const auto pga = r.numbers("pga_g", Range{0.0, 3.0, false, true});
+    const auto pga = r.numbers("pga_g", Range{0.0, max_pga_g, false, true});
     if (!pga) r.fail("pga_g", "missing required key (a non-empty array of numbers in (0, 3])");
     for (std::size_t i = 1; i < pga->size(); ++i) {
         if ((*pga)[i] <= (*pga)[i - 1]) {
@@ -449,8 +450,9 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
 
 Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
     Options o;
-    o.histories_per_level = static_cast<int>(r.integer("histories_per_level", 1, 100).value_or(7));
-    o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, 9007199254740991LL).value_or(1));
+    o.histories_per_level = static_cast<int>(
+        r.integer("histories_per_level", 1, max_histories_per_level).value_or(7));
+    o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, max_seed).value_or(1));
     if (const auto records = r.strings("seed_records")) {
         for (const std::string& rec : *records) {
             const std::filesystem::path p(rec);
@@ -572,6 +574,11 @@ void check_line_lengths(const std::string& text, const std::string& file_label) 
 }  // namespace
 
 Case parse_case(const std::string& text, const std::string& file_label) {
+    return parse_case(text, file_label, CaseOverrides{});
+}
+
+Case parse_case(const std::string& text, const std::string& file_label,
+                const CaseOverrides& overrides) {
     check_line_lengths(text, file_label);
     toml::table root;
     try {
@@ -580,6 +587,7 @@ Case parse_case(const std::string& text, const std::string& file_label) {
         throw InputError(SourceLocation{file_label, static_cast<int>(e.source().begin.line), ""},
                          fmt::format("TOML syntax error: {}", e.description()));
     }
+    apply_overrides(root, overrides);
     Case out;
     out.file = file_label;
     for (const auto& [k, node] : root) {

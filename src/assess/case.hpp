@@ -168,4 +168,12 @@ Case read_case(const std::filesystem::path& path);
 /// Parses case text; file_label is used in messages and to resolve relative paths.
 Case parse_case(const std::string& text, const std::string& file_label);
 
+struct CaseOverrides;
+
+/// As parse_case, with overrides (assess/overrides.hpp) written into the document before it is
+/// read: the case reads exactly as a file carrying those values would. A value the overrides
+/// set has no line in the file, so its errors name file and key only.
+Case parse_case(const std::string& text, const std::string& file_label,
+                const CaseOverrides& overrides);
+
 }  // namespace freestand::assess

@@ -1,9 +1,11 @@
-// `freestand merge DIR...`: the shards of a `--shard K/N` run into the outputs the single run
-// writes, byte for byte (issue 14).
+// `freestand merge DIR...`: the shards of a `--shard K/N` run (fragility or batch) into the
+// outputs the single run writes, byte for byte (issue 14).
 #include <fmt/format.h>
 
 #include <iostream>
 
+#include "batch/shard.hpp"
+#include "cli/batch_output.hpp"
 #include "cli/command.hpp"
 #include "cli/fragility_output.hpp"
 #include "cli/options.hpp"
@@ -53,8 +55,14 @@ int run(const std::vector<std::string>& args) {
         merge_fragility(set, out, (*vm)["json"].as<bool>());
         return 0;
     }
+    // A batch merges to the single run's folder and exit code (1 when a component failed).
+    if (set.kind == "batch")
+        return write_batch_outputs(batch::merge_shards(set.run, set.records), out,
+                                   (*vm)["json"].as<bool>(), "");
     throw InputError(SourceLocation{"", 0, "shards"},
-                     fmt::format("shards of kind \"{}\"; this build merges \"fragility\"", set.kind));
+                     fmt::format("shards of kind \"{}\"; this build merges \"fragility\" and "
+                                 "\"batch\"",
+                                 set.kind));
 }
 
 const CommandRegistrar reg{{"merge", "combine --shard K/N outputs into the single run's outputs", &run}};

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fmt/format.h>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "core/errors.hpp"
@@ -35,11 +36,93 @@ bool owned(const fs::path& dir) {
     return fs::symlink_status(dir / run_marker).type() == fs::file_type::regular;
 }
 
+// The files and sub-folders the previous run wrote (its marker's list, a folder's trailing '/'
+// dropped): they are replaced, not carried over.
+std::set<std::string> previous_run_files(const fs::path& dir) {
+    std::set<std::string> out;
+    std::error_code ec;
+    if (fs::symlink_status(dir / run_marker, ec).type() != fs::file_type::regular) return out;
+    const std::string text = read_text_file(dir / run_marker);
+    std::size_t start = text.find('\n');
+    while (start != std::string::npos && start + 1 < text.size()) {
+        const std::size_t end = text.find('\n', start + 1);
+        std::string name = text.substr(start + 1, end == std::string::npos ? end : end - start - 1);
+        if (!name.empty() && name.back() == '/') name.pop_back();
+        out.insert(std::move(name));
+        start = end;
+    }
+    return out;
+}
+
+// This run's files: top-level names (files and sub-folders) and each sub-folder's files.
+struct Layout {
+    std::set<std::string> top;                                ///< every top-level name
+    std::set<std::string> top_files;                          ///< top-level files only
+    std::map<std::string, std::set<std::string>> sub_files;  ///< sub-folder -> its files
+
+    const std::set<std::string>& files_of(const std::string& sub) const {
+        static const std::set<std::string> none;
+        const auto it = sub_files.find(sub);
+        return it == sub_files.end() ? none : it->second;
+    }
+};
+
+bool plain_name(const std::string& n) {
+    return !n.empty() && n != "." && n != ".." && n != run_marker &&
+           n.find('/') == std::string::npos;
+}
+
+Layout layout_of(const std::vector<OutputFile>& files) {
+    Layout out;
+    for (const OutputFile& f : files) {
+        const std::size_t slash = f.name.find('/');
+        const std::string head = f.name.substr(0, slash);
+        const bool nested = slash != std::string::npos;
+        if (!plain_name(head) || (nested && !plain_name(f.name.substr(slash + 1))))
+            throw std::invalid_argument("publish_folder: bad file name " + f.name);
+        if (nested ? out.top_files.count(head) > 0 : out.sub_files.count(head) > 0)
+            throw std::invalid_argument("publish_folder: " + head + " is a file and a folder");
+        out.top.insert(head);
+        if (nested) {
+            out.sub_files[head].insert(f.name.substr(slash + 1));
+        } else {
+            out.top_files.insert(head);
+        }
+    }
+    return out;
+}
+
+// A sub-folder of the target that this run replaces (dropped = this run does not write it):
+// freestand's own, regular files only, none an input of the run, and when dropped no file the
+// previous run did not write (it would be lost with the folder).
+void check_subfolder(const fs::path& sub, const std::set<std::string>& names, bool dropped) {
+    if (!owned(sub)) {
+        fail(sub, fmt::format("exists, is not empty and was not written by freestand (no {}); "
+                              "move it out of the output folder",
+                              run_marker));
+    }
+    const std::set<std::string> previous = dropped ? previous_run_files(sub)
+                                                   : std::set<std::string>{};
+    for (const auto& entry : fs::directory_iterator(sub)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.symlink_status().type() != fs::file_type::regular)
+            fail(entry.path(), "is not a regular file; refusing to replace its folder");
+        if (names.count(name) && is_input_file(entry.path()))
+            fail(entry.path(), "refusing to overwrite an input file of this run");
+        if (dropped && name != run_marker && !previous.count(name)) {
+            fail(entry.path(), "was added by hand to a sub-folder this run no longer writes; "
+                               "move it out first");
+        }
+    }
+}
+
 // What this publish may replace: nothing that is not a real folder of freestand's, no entry
-// that is not a regular file, no input of this run.
-void check_target(const fs::path& dir, const std::set<std::string>& names) {
+// that is neither a regular file nor a sub-folder of this run or the previous one, no input of
+// this run.
+// The folder itself: absent, or a real folder of freestand's. Returns whether it exists.
+bool check_folder(const fs::path& dir) {
     const fs::file_status st = fs::symlink_status(dir);
-    if (st.type() == fs::file_type::not_found) return;
+    if (st.type() == fs::file_type::not_found) return false;
     if (st.type() == fs::file_type::symlink)
         fail(dir, "is a symbolic link; refusing to replace it (give the folder it points to)");
     if (st.type() != fs::file_type::directory)
@@ -49,11 +132,23 @@ void check_target(const fs::path& dir, const std::set<std::string>& names) {
                               "choose a new or empty folder",
                               run_marker));
     }
+    return true;
+}
+
+void check_target(const fs::path& dir, const Layout& layout) {
+    if (!check_folder(dir)) return;
+    const std::set<std::string> previous = previous_run_files(dir);
     for (const auto& entry : fs::directory_iterator(dir)) {
-        if (entry.symlink_status().type() != fs::file_type::regular) {
-            fail(entry.path(), "is not a regular file; refusing to replace its folder");
+        const std::string name = entry.path().filename().string();
+        const fs::file_type type = entry.symlink_status().type();
+        if (type == fs::file_type::directory &&
+            (layout.sub_files.count(name) || previous.count(name))) {
+            check_subfolder(entry.path(), layout.files_of(name), !layout.sub_files.count(name));
+            continue;
         }
-        if (names.count(entry.path().filename().string()) && is_input_file(entry.path()))
+        if (type != fs::file_type::regular)
+            fail(entry.path(), "is not a regular file; refusing to replace its folder");
+        if (layout.top.count(name) && is_input_file(entry.path()))
             fail(entry.path(), "refusing to overwrite an input file of this run");
     }
 }
@@ -68,37 +163,31 @@ constexpr const char* marker_heading =
     "Written by freestand. The next run into this folder replaces it as a whole; files added "
     "by hand are kept. Files of this run:\n";
 
-std::string marker_text(const std::set<std::string>& names) {
+std::string marker_text(const std::set<std::string>& files,
+                        const std::set<std::string>& folders = {}) {
     std::string out = marker_heading;
-    for (const std::string& n : names) out += n + "\n";
+    for (const std::string& n : files) out += n + "\n";
+    for (const std::string& n : folders) out += n + "/\n";
     return out;
 }
 
-// The files the previous run wrote (its marker's list): they are replaced, not carried over.
-std::set<std::string> previous_run_files(const fs::path& dir) {
-    std::set<std::string> out;
-    std::error_code ec;
-    if (fs::symlink_status(dir / run_marker, ec).type() != fs::file_type::regular) return out;
-    const std::string text = read_text_file(dir / run_marker);
-    std::size_t start = text.find('\n');
-    while (start != std::string::npos && start + 1 < text.size()) {
-        const std::size_t end = text.find('\n', start + 1);
-        out.insert(text.substr(start + 1, end == std::string::npos ? end : end - start - 1));
-        start = end;
-    }
-    return out;
-}
-
-// The staging folder with the run's files and the marker listing them.
-fs::path stage(const fs::path& dir, const std::vector<OutputFile>& files,
-               const std::set<std::string>& names) {
+// The staging folder with the run's files and the markers listing them: each sub-folder has
+// its own, so it reads as a folder published on its own.
+fs::path stage(const fs::path& dir, const std::vector<OutputFile>& files, const Layout& layout) {
     const fs::path staging = fresh_sibling(dir, "stage");
     std::error_code ec;
     if (!fs::create_directory(staging, ec) || ec)
         fail(staging, "cannot create staging folder: " + ec.message());
     try {
+        std::set<std::string> folders;
+        for (const auto& [sub, names] : layout.sub_files) {
+            if (!fs::create_directory(staging / sub, ec) || ec)
+                fail(staging / sub, "cannot create folder: " + ec.message());
+            write_new_file(staging / sub / run_marker, marker_text(names));
+            folders.insert(sub);
+        }
         for (const OutputFile& f : files) write_new_file(staging / f.name, f.contents);
-        write_new_file(staging / run_marker, marker_text(names));
+        write_new_file(staging / run_marker, marker_text(layout.top_files, folders));
     } catch (...) {
         fs::remove_all(staging, ec);
         throw;
@@ -106,19 +195,27 @@ fs::path stage(const fs::path& dir, const std::vector<OutputFile>& files,
     return staging;
 }
 
-// Hard links in the staging folder to the files of the current folder that neither this run
-// nor the previous one wrote (added by hand). Under the lock: the folder does not change.
-void carry_over(const fs::path& dir, const fs::path& staging,
-                const std::set<std::string>& names) {
-    if (!fs::is_directory(fs::symlink_status(dir))) return;
-    const std::set<std::string> previous = previous_run_files(dir);
+// Hard links in staging to the files of folder that neither this run (names) nor the previous
+// one wrote (added by hand). Sub-folders are not files: they are replaced or dropped whole.
+void carry_over_files(const fs::path& folder, const fs::path& staging,
+                      const std::set<std::string>& names) {
+    if (!fs::is_directory(fs::symlink_status(folder))) return;
+    const std::set<std::string> previous = previous_run_files(folder);
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(dir)) {
+    for (const auto& entry : fs::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();
+        if (entry.symlink_status().type() == fs::file_type::directory) continue;
         if (names.count(name) || previous.count(name) || name == run_marker) continue;
         fs::create_hard_link(entry.path(), staging / name, ec);
         if (ec) fail(entry.path(), "cannot carry over to the new run: " + ec.message());
     }
+}
+
+// The hand-added files of the folder and of each sub-folder this run writes again. Under the
+// lock: the folder does not change.
+void carry_over(const fs::path& dir, const fs::path& staging, const Layout& layout) {
+    carry_over_files(dir, staging, layout.top);
+    for (const auto& [sub, names] : layout.sub_files) carry_over_files(dir / sub, staging / sub, names);
 }
 
 // Holds flock(LOCK_EX) on a folder for its lifetime.
@@ -156,16 +253,13 @@ void clean_leftovers(const fs::path& dir) {
 
 }  // namespace
 
+void check_publish_target(const fs::path& dir) { check_folder(fs::absolute(dir).lexically_normal()); }
+
 void publish_folder(const fs::path& dir_given, const std::vector<OutputFile>& files) {
     const fs::path dir = fs::absolute(dir_given).lexically_normal();
     if (!dir.has_filename() || dir == dir.root_path())
         fail(dir_given, "cannot publish into the root or a path ending in '/..'");
-    std::set<std::string> names;
-    for (const OutputFile& f : files) {
-        if (f.name.empty() || f.name.find('/') != std::string::npos || f.name == run_marker)
-            throw std::invalid_argument("publish_folder: bad file name " + f.name);
-        names.insert(f.name);
-    }
+    const Layout layout = layout_of(files);
     // Everything below runs under the parent's lock, so no other publish changes the folder
     // between the checks and the swap. Creating a missing parent cannot hide a refusal: with
     // no parent there is no folder to refuse.
@@ -174,10 +268,10 @@ void publish_folder(const fs::path& dir_given, const std::vector<OutputFile>& fi
     if (ec) fail(dir.parent_path(), "cannot create folder: " + ec.message());
     const FolderLock lock(dir.parent_path());
     clean_leftovers(dir);
-    check_target(dir, names);
-    const fs::path staging = stage(dir, files, names);
+    check_target(dir, layout);
+    const fs::path staging = stage(dir, files, layout);
     try {
-        carry_over(dir, staging, names);
+        carry_over(dir, staging, layout);
     } catch (...) {
         fs::remove_all(staging, ec);
         throw;

@@ -13,16 +13,23 @@
 ///
 /// Only a folder freestand owns is replaced: absent, empty, or marked by the file
 /// `.freestand-run` a previous publish left. Anything else is an IoError before anything is
-/// written, as are: a target that is a symlink or not a folder, an entry that is not a regular
-/// file, and a file of the run that would replace an input the process read
-/// (core::read_input_file).
+/// written, as are: a target that is a symlink or not a folder, an entry that is neither a
+/// regular file nor a sub-folder of this run or the previous one, and a file of the run that
+/// would replace an input the process read (core::read_input_file).
+///
+/// A run may write one level of sub-folders (a batch's component reports, issue 14): each gets
+/// its own `.freestand-run` listing its files, so it reads exactly as a folder published on its
+/// own, and the top marker lists it as "name/". A sub-folder is replaced with the folder; files
+/// added to it by hand are carried over when the run writes it again, and a sub-folder the run
+/// no longer writes is removed, which is refused (IoError) while it holds such files.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace freestand::core {
 
-/// One file of a run's output folder: a plain file name (no '/') and its contents.
+/// One file of a run's output folder: a plain file name, or "folder/name" for a file of a
+/// sub-folder (one level; neither part ".", "..", empty or the marker), and its contents.
 struct OutputFile {
     std::string name;
     std::string contents;
@@ -33,5 +40,10 @@ inline constexpr const char* run_marker = ".freestand-run";
 
 /// Publishes files as the whole content of dir (see above). Throws IoError naming the path.
 void publish_folder(const std::filesystem::path& dir, const std::vector<OutputFile>& files);
+
+/// The checks publish_folder makes of dir itself (not a symlink, a folder, freestand's own),
+/// for a long run to refuse its output folder before it starts. publish_folder checks again,
+/// with the files, under its lock. Throws IoError naming the path.
+void check_publish_target(const std::filesystem::path& dir);
 
 }  // namespace freestand::core

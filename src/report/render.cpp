@@ -530,14 +530,18 @@ Rendered render(const AssessmentResult& r, const Stamp& stamp,
     return out;
 }
 
-void write_report(const std::filesystem::path& dir, const Rendered& rendered) {
+std::vector<core::OutputFile> report_files(const Rendered& rendered) {
     std::vector<core::OutputFile> files;
     for (const Figure& f : rendered.figures) files.push_back({f.file, f.svg});
     for (const core::OutputFile& f : rendered.extra_files) files.push_back(f);
     files.push_back({"report.md", rendered.markdown});
     files.push_back({"report.html", rendered.html});
     files.push_back({"result.json", rendered.json});
-    core::publish_folder(dir, files);
+    return files;
+}
+
+void write_report(const std::filesystem::path& dir, const Rendered& rendered) {
+    core::publish_folder(dir, report_files(rendered));
 }
 
 }  // namespace freestand::report

@@ -31,6 +31,10 @@ struct Rendered {
 Rendered render(const assess::AssessmentResult& r, const Stamp& stamp,
                 const fragility::Result* fragility = nullptr);
 
+/// The files of a report folder: the figures, the extra files, report.md, report.html,
+/// result.json (what write_report publishes).
+std::vector<core::OutputFile> report_files(const Rendered& rendered);
+
 /// Publishes report.md, report.html, result.json and the figures as the whole content of dir
 /// (core::publish_folder: all old or all new for any reader; only a folder freestand owns is
 /// replaced). Throws IoError naming the path, before anything is written where it can.

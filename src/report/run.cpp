@@ -2,17 +2,19 @@
 
 #include <fmt/format.h>
 
+#include "assess/overrides.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
 
 namespace freestand::report {
 
-CaseRun run_case(const std::filesystem::path& case_file,
-                 const std::optional<std::vector<double>>& pga_g, const std::string& commit) {
-    const std::string bytes = core::read_input_file(case_file);
-    assess::Case c = assess::parse_case(bytes, case_file.string());
-    if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
+namespace {
+
+// fragility_threads: 0 for every core; the fragility result does not depend on it.
+CaseRun assess_and_render(const assess::Case& c, const std::string& case_bytes,
+                          const std::filesystem::path& case_file, const std::string& commit,
+                          int fragility_threads) {
     CaseRun run;
     run.result = assess::assess(c);
     if (c.options.fragility.enabled) {
@@ -20,12 +22,29 @@ CaseRun run_case(const std::filesystem::path& case_file,
         config.pga_g = c.options.fragility.pga_g;
         config.samples = c.options.fragility.samples;
         config.seed = c.options.seed;
-        run.fragility = fragility::run_all(c, config, 0);
+        run.fragility = fragility::run_all(c, config, fragility_threads);
     }
-    Stamp stamp = make_stamp(bytes, case_file.string(), c.options.seed, commit);
+    Stamp stamp = make_stamp(case_bytes, case_file.string(), c.options.seed, commit);
     stamp.inputs = stamped_inputs(c);
     run.rendered = render(run.result, stamp, run.fragility ? &*run.fragility : nullptr);
     return run;
+}
+
+}  // namespace
+
+CaseRun run_case(const std::filesystem::path& case_file,
+                 const std::optional<std::vector<double>>& pga_g, const std::string& commit) {
+    const std::string bytes = core::read_input_file(case_file);
+    assess::Case c = assess::parse_case(bytes, case_file.string());
+    if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
+    return assess_and_render(c, bytes, case_file, commit, 0);
+}
+
+CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
+                 const assess::CaseOverrides& overrides, const std::string& commit,
+                 int fragility_threads) {
+    const assess::Case c = assess::parse_case(case_bytes, case_file.string(), overrides);
+    return assess_and_render(c, case_bytes, case_file, commit, fragility_threads);
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "assess/overrides.hpp"
 #include "assess/result.hpp"
 #include "report/render.hpp"
 
@@ -22,6 +23,15 @@ struct CaseRun {
 /// (IoError, InputError, NumericalError).
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit);
+
+/// The same on case text already read (case_bytes, hashed into the stamp; case_file names it
+/// in messages and resolves its relative paths) with overrides written into it
+/// (assess::parse_case): a batch's run of one component. The fragility analysis, when the case
+/// asks for it, runs on fragility_threads (0: every core), so that a batch's workers do not each
+/// take every core. Errors propagate as above.
+CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
+                 const assess::CaseOverrides& overrides, const std::string& commit,
+                 int fragility_threads);
 
 /// The one-line verdict the commands print, all from the headline's one governing level:
 /// "<name>: <verdict> (governing PGA 0.400 g, direction x[ with <material>], margin 1.15 | no

@@ -183,3 +183,91 @@ TEST_CASE("left-overs of killed runs are cleaned by the next publish", "[core][i
     CHECK(entries(root) == 1);
     fs::remove_all(root);
 }
+
+namespace {
+std::vector<core::OutputFile> batch_files(const std::string& tag,
+                                          const std::vector<std::string>& components) {
+    std::vector<core::OutputFile> out{{"summary.md", "summary " + tag + "\n"}};
+    for (const std::string& c : components) {
+        out.push_back({c + "/report.md", c + " " + tag + "\n"});
+        out.push_back({c + "/result.json", "{}\n"});
+    }
+    return out;
+}
+}  // namespace
+
+TEST_CASE("publish_folder writes sub-folders that read as folders published on their own",
+          "[core][io][publish]") {
+    const fs::path root = fresh("nested");
+    core::publish_folder(root / "batch", batch_files("A", {"pump", "rack"}));
+    CHECK(core::read_text_file(root / "batch" / "pump" / "report.md") == "pump A\n");
+    CHECK(core::read_text_file(root / "batch" / core::run_marker).find("summary.md\npump/\nrack/\n") !=
+          std::string::npos);
+    // The sub-folder's marker is the one a publish of its files alone writes.
+    core::publish_folder(root / "alone", {{"report.md", "x"}, {"result.json", "y"}});
+    CHECK(core::read_text_file(root / "batch" / "pump" / core::run_marker) ==
+          core::read_text_file(root / "alone" / core::run_marker));
+    CHECK(entries(root / "batch") == 4);
+    CHECK(entries(root / "batch" / "pump") == 3);
+    CHECK(entries(root) == 2);
+    fs::remove_all(root);
+}
+
+TEST_CASE("a republish replaces sub-folders whole and keeps hand-added files in them",
+          "[core][io][publish]") {
+    const fs::path root = fresh("nested_again");
+    const fs::path dir = root / "batch";
+    core::publish_folder(dir, batch_files("A", {"pump", "rack", "fan"}));
+    std::ofstream(dir / "pump" / "notes.txt") << "mine\n";
+    std::ofstream(dir / "top.txt") << "top\n";
+    core::publish_folder(dir, batch_files("B", {"pump", "rack"}));
+    CHECK(core::read_text_file(dir / "rack" / "report.md") == "rack B\n");
+    CHECK_FALSE(fs::exists(dir / "fan"));  // written by run A only: gone with it
+    CHECK(core::read_text_file(dir / "pump" / "notes.txt") == "mine\n");
+    CHECK(core::read_text_file(dir / "top.txt") == "top\n");
+    // A flat run replaces the batch whole: its sub-folders go, once the hand-added file in
+    // one of them is moved out (it would be lost with the folder).
+    CHECK_THROWS_WITH(core::publish_folder(dir, run_files("C")),
+                      Contains("pump/notes.txt: was added by hand"));
+    fs::remove(dir / "pump" / "notes.txt");
+    core::publish_folder(dir, run_files("C"));
+    CHECK_FALSE(fs::exists(dir / "rack"));
+    CHECK_FALSE(fs::exists(dir / "pump"));
+    CHECK(core::read_text_file(dir / "top.txt") == "top\n");
+    fs::remove_all(root);
+}
+
+TEST_CASE("publish_folder refuses sub-folders it cannot account for",
+          "[core][io][publish][hardening]") {
+    const fs::path root = fresh("nested_refuse");
+    const fs::path dir = root / "batch";
+    core::publish_folder(dir, batch_files("A", {"pump", "rack"}));
+    SECTION("a folder added by hand") {
+        fs::create_directories(dir / "photos");
+        CHECK_THROWS_AS(core::publish_folder(dir, batch_files("B", {"pump"})), IoError);
+        CHECK_THROWS_WITH(core::publish_folder(dir, batch_files("B", {"pump"})),
+                          Contains("photos: is not a regular file; refusing to replace its folder"));
+    }
+    SECTION("a hand-added file in a sub-folder the run no longer writes") {
+        std::ofstream(dir / "rack" / "notes.txt") << "mine\n";
+        CHECK_THROWS_WITH(core::publish_folder(dir, batch_files("B", {"pump"})),
+                          Contains("rack/notes.txt: was added by hand to a sub-folder this run "
+                                   "no longer writes; move it out first"));
+    }
+    SECTION("a sub-folder whose marker is gone") {
+        fs::remove(dir / "pump" / core::run_marker);
+        CHECK_THROWS_WITH(core::publish_folder(dir, batch_files("B", {"pump"})),
+                          Contains("pump: exists, is not empty and was not written by freestand"));
+    }
+    SECTION("an input of the run in a sub-folder") {
+        CHECK(core::read_input_file(dir / "pump" / "report.md") == "pump A\n");
+        CHECK_THROWS_WITH(core::publish_folder(dir, batch_files("B", {"pump"})),
+                          Contains("refusing to overwrite an input file"));
+    }
+    CHECK(core::read_text_file(dir / "summary.md") == "summary A\n");
+    CHECK(core::read_text_file(dir / "rack" / "report.md") == "rack A\n");
+    CHECK_THROWS_AS(core::publish_folder(dir, {{"a/b/c", "x"}}), std::invalid_argument);
+    CHECK_THROWS_AS(core::publish_folder(dir, {{"a", "x"}, {"a/b", "y"}}), std::invalid_argument);
+    CHECK_THROWS_AS(core::publish_folder(dir, {{"../b", "x"}}), std::invalid_argument);
+    fs::remove_all(root);
+}

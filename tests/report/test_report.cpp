@@ -1,10 +1,12 @@
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
+#include <thread>
 
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
@@ -407,6 +409,25 @@ TEST_CASE("rendering twice gives identical bytes", "[report][determinism]") {
     CHECK(a.json == b.json);
 }
 
+TEST_CASE("renders on several threads at once give the bytes of a render alone",
+          "[report][determinism][threads]") {
+    // mstch's escape function is process-wide: without EscapeGuard's lock one thread's HTML
+    // escaping leaks into another's Markdown.
+    const Rendered alone = render(hand_result(), stamp());
+    std::atomic<int> mismatches{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&] {
+            for (int i = 0; i < 10; ++i) {
+                const Rendered r = render(hand_result(), stamp());
+                if (r.markdown != alone.markdown || r.html != alone.html) ++mismatches;
+            }
+        });
+    }
+    for (auto& t : threads) t.join();
+    CHECK(mismatches == 0);
+}
+
 TEST_CASE("an SVG plot escapes its text and skips non-positive values on log axes",
           "[report][svg]") {
     Plot p;
@@ -670,4 +691,19 @@ TEST_CASE("an assessment with a fragility result carries its section, figure and
     CHECK_FALSE(j["fragility"].contains("stamp"));
     // The rest of the report is untouched.
     CHECK(with.markdown.substr(0, md_at) == without.markdown.substr(0, md_at));
+}
+
+TEST_CASE("report_files lists every file of the folder, the fragility figure included",
+          "[report][fragility][batch]") {
+    // A batch writes a component's folder from report_files: a file missing here would be
+    // missing there and the folder would differ from `assess --out`'s.
+    const fragility::Result f = hand_fragility();
+    const Rendered with = render(hand_result(), stamp(), &f);
+    std::vector<std::string> names;
+    for (const core::OutputFile& file : report_files(with)) names.push_back(file.name);
+    std::vector<std::string> expected;
+    for (const Figure& fig : with.figures) expected.push_back(fig.file);
+    for (const char* n : {"fragility.svg", "report.md", "report.html", "result.json"})
+        expected.push_back(n);
+    CHECK(names == expected);
 }

@@ -1,0 +1,143 @@
+// CSV lists (list.hpp): a header row naming the columns, then one component per row.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "batch/list.hpp"
+#include "batch/list_detail.hpp"
+#include "core/csv_table.hpp"
+
+namespace freestand::batch {
+
+namespace {
+
+std::string trim(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t");
+    if (a == std::string::npos) return "";
+    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+std::optional<double> to_number(const std::string& token) {
+    double v = 0.0;
+    const char* end = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), end, v);
+    if (ec != std::errc() || ptr != end || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+std::optional<long long> to_integer(const std::string& token) {
+    long long v = 0;
+    const char* end = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), end, v);
+    if (ec != std::errc() || ptr != end) return std::nullopt;
+    return v;
+}
+
+// Column name -> index, from the header row.
+std::map<std::string, std::size_t> read_header(const core::CsvRecord& header,
+                                               const std::string& file) {
+    std::map<std::string, std::size_t> columns;
+    for (std::size_t i = 0; i < header.fields.size(); ++i) {
+        const std::string name = trim(header.fields[i]);
+        const SourceLocation at{file, header.line, name};
+        const auto& keys = list_keys();
+        if (std::find(keys.begin(), keys.end(), name) == keys.end()) {
+            throw InputError(at, fmt::format("unknown column (column {}); allowed columns: {}",
+                                             i + 1, fmt::join(keys, ", ")));
+        }
+        if (!columns.emplace(name, i).second)
+            throw InputError(at, fmt::format("column given twice (columns {} and {})",
+                                             columns[name] + 1, i + 1));
+    }
+    if (!columns.count("file")) {
+        throw InputError(SourceLocation{file, header.line, "file"},
+                         "missing required column (the case file of each row)");
+    }
+    return columns;
+}
+
+std::vector<double> read_levels(const std::string& cell, const SourceLocation& at) {
+    std::vector<double> out;
+    std::size_t start = 0;
+    for (int item = 1;; ++item) {
+        const std::size_t semi = cell.find(';', start);
+        const std::string token = trim(cell.substr(start, semi == std::string::npos ? semi
+                                                                                    : semi - start));
+        const auto v = to_number(token);
+        if (!v) {
+            throw InputError(at, fmt::format("item {} \"{}\" of \"{}\" is not a number; expected "
+                                             "levels in g separated by ';', e.g. 0.1;0.2;0.3",
+                                             item, token, cell));
+        }
+        out.push_back(*v);
+        if (semi == std::string::npos) return out;
+        start = semi + 1;
+    }
+}
+
+long long read_integer(const std::string& cell, const SourceLocation& at) {
+    const auto v = to_integer(cell);
+    if (!v) throw InputError(at, fmt::format("\"{}\" is not a whole number", cell));
+    return *v;
+}
+
+// One row's entry: the cells of the columns given, empty cells keeping the case's values.
+BatchEntry read_row(const core::CsvRecord& row, const std::map<std::string, std::size_t>& columns,
+                    const std::string& file) {
+    const auto cell = [&](const std::string& key) -> std::string {
+        const auto it = columns.find(key);
+        return it == columns.end() ? "" : trim(row.fields[it->second]);
+    };
+    const auto at = [&](const std::string& key) { return SourceLocation{file, row.line, key}; };
+    BatchEntry e;
+    e.line = row.line;
+    const std::string case_file = cell("file");
+    if (case_file.empty()) throw InputError(at("file"), "empty: expected the case file of the row");
+    e.case_file = detail::resolve_case(case_file, file);
+    e.name = cell("name").empty() ? e.case_file.stem().string() : cell("name");
+    if (!cell("pga_g").empty()) e.overrides.pga_g = read_levels(cell("pga_g"), at("pga_g"));
+    if (!cell("base_material").empty()) e.overrides.base_material = cell("base_material");
+    if (!cell("seed").empty()) e.overrides.seed = read_integer(cell("seed"), at("seed"));
+    if (!cell("histories_per_level").empty())
+        e.overrides.histories_per_level =
+            read_integer(cell("histories_per_level"), at("histories_per_level"));
+    assess::check_overrides(e.overrides, at);
+    return e;
+}
+
+}  // namespace
+
+BatchList parse_csv_list(const std::string& text, const std::string& file_label) {
+    const std::vector<core::CsvRecord> records = core::parse_csv_table(text, file_label);
+    if (records.empty()) {
+        throw InputError(SourceLocation{file_label, 0, ""},
+                         "empty list: expected a header row naming the columns (file, and any "
+                         "of name, pga_g, base_material, seed, histories_per_level)");
+    }
+    const auto columns = read_header(records[0], file_label);
+    BatchList list{file_label, "", {}};
+    detail::EntryCollector collect(list);
+    for (std::size_t i = 1; i < records.size(); ++i) {
+        const core::CsvRecord& row = records[i];
+        if (row.fields.size() != records[0].fields.size()) {
+            throw InputError(SourceLocation{file_label, row.line, ""},
+                             fmt::format("{} field(s); expected {}, one per column of the header",
+                                         row.fields.size(), records[0].fields.size()));
+        }
+        BatchEntry e = read_row(row, columns, file_label);
+        const bool named = columns.count("name") && !e.name.empty() &&
+                           !trim(row.fields[columns.at("name")]).empty();
+        collect.add(std::move(e), SourceLocation{file_label, row.line,
+                                                 named ? "name" : "name (the file's stem)"});
+    }
+    detail::require_entries(list, SourceLocation{file_label, records[0].line, ""},
+                            "no components listed below the header");
+    return list;
+}
+
+}  // namespace freestand::batch

@@ -1,0 +1,139 @@
+#include "batch/run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/printable.hpp"
+#include "report/run.hpp"
+#include "report/sha256.hpp"
+
+namespace freestand::batch {
+
+namespace {
+
+// The error of a failed row; an input error of an overridden case says which values the list
+// replaced, since they have no line in the case file.
+void fail_row(report::SummaryRow& row, const BatchEntry& e, const BatchList& list,
+              const std::string& message, ExitCode code, bool input) {
+    row.error = message;
+    if (input && !e.overrides.empty())
+        row.error += fmt::format(" (with {} from {}:{})", row.overrides, list.source, e.line);
+    row.exit_code = static_cast<int>(code);
+}
+
+BatchRow run_entry(const BatchEntry& e, const BatchList& list, const std::string& commit,
+                  int fragility_threads) {
+    BatchRow out;
+    report::SummaryRow& row = out.row;
+    row.name = e.name;
+    row.case_file = e.case_file.string();
+    row.overrides = assess::describe(e.overrides);
+    try {
+        const std::string bytes = core::read_input_file(e.case_file);
+        row.case_sha256 = report::sha256_hex(bytes);
+        report::CaseRun run =
+            report::run_case(bytes, e.case_file, e.overrides, commit, fragility_threads);
+        // Both before either is kept: a row is assessed with its files or failed without.
+        std::vector<core::OutputFile> files = report::report_files(run.rendered);
+        report::SummaryOutcome outcome = report::summary_outcome(run.result);
+        out.files = std::move(files);
+        row.outcome = std::move(outcome);
+    } catch (const InputError& err) {
+        fail_row(row, e, list, err.what(), err.code(), true);
+    } catch (const Error& err) {
+        fail_row(row, e, list, err.what(), err.code(), false);
+    } catch (const std::exception& err) {
+        fail_row(row, e, list, std::string("internal error: ") + err.what(), ExitCode::internal,
+                 false);
+    } catch (...) {
+        fail_row(row, e, list, "internal error: an unknown exception", ExitCode::internal, false);
+    }
+    return out;
+}
+
+}  // namespace
+
+bool BatchRun::all_assessed() const { return failed() == 0; }
+
+std::size_t BatchRun::failed() const {
+    return static_cast<std::size_t>(
+        std::count_if(summary.rows.begin(), summary.rows.end(),
+                      [](const report::SummaryRow& r) { return !r.outcome; }));
+}
+
+report::SummaryStamp batch_stamp(const BatchList& list, const std::string& commit) {
+    return {FREESTAND_VERSION, commit, list.source, list.sha256};
+}
+
+std::vector<BatchRow> run_rows(const BatchList& list, const std::vector<std::size_t>& indices,
+                               unsigned threads, const std::string& commit) {
+    const std::size_t n = indices.size();
+    std::vector<BatchRow> rows(n);
+    std::atomic<std::size_t> next{0};
+    const std::size_t workers = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(n, 1));
+    // A case's own fragility analysis shares the threads left over, so workers do not each
+    // take every core; its result does not depend on the count.
+    const int fragility_threads = static_cast<int>(std::max<std::size_t>(1, threads / workers));
+    // Each worker takes the next unassessed entry; results land at the entry's index, so the
+    // order of completion never shows in the outputs.
+    const auto work = [&] {
+        for (std::size_t i = next++; i < n; i = next++)
+            rows[i] = run_entry(list.entries.at(indices[i]), list, commit, fragility_threads);
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    return rows;
+}
+
+BatchRun assemble(const report::SummaryStamp& stamp, std::vector<BatchRow> rows) {
+    BatchRun run;
+    run.summary.stamp = stamp;
+    for (BatchRow& r : rows) {
+        run.summary.rows.push_back(std::move(r.row));
+        run.reports.push_back(std::move(r.files));
+    }
+    return run;
+}
+
+BatchRun run_batch(const BatchList& list, unsigned threads, const std::string& commit) {
+    std::vector<std::size_t> all(list.entries.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    return assemble(batch_stamp(list, commit), run_rows(list, all, threads, commit));
+}
+
+std::vector<core::OutputFile> batch_files(const BatchRun& run) {
+    const report::RenderedSummary s = report::render_summary(run.summary);
+    const std::vector<std::string>& names = report::summary_file_names();
+    std::vector<core::OutputFile> files{
+        {names[0], s.markdown}, {names[1], s.html}, {names[2], s.csv}, {names[3], s.json}};
+    for (std::size_t i = 0; i < run.reports.size(); ++i) {
+        for (const core::OutputFile& f : run.reports[i])
+            files.push_back({run.summary.rows[i].name + "/" + f.name, f.contents});
+    }
+    return files;
+}
+
+void write_batch(const std::filesystem::path& dir, const BatchRun& run) {
+    core::publish_folder(dir, batch_files(run));
+}
+
+std::string row_line(const report::SummaryRow& row) {
+    if (!row.outcome) return core::printable(fmt::format("{}: error: {}", row.name, row.error));
+    const report::SummaryOutcome& o = *row.outcome;
+    std::string out = fmt::format("{}: {}: {} (governing {}, margin {}, decided by {})", row.name,
+                                  o.component, o.verdict, o.governing_level, o.margin_text,
+                                  o.decided_by);
+    for (const std::string& c : o.open_conditions) out += "; open condition: " + c;
+    // Case text (a component's name, an error quoting a file) must not drive the terminal.
+    return core::printable(out);
+}
+
+}  // namespace freestand::batch

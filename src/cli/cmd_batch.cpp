@@ -1,0 +1,120 @@
+// `freestand batch`: a facility's equipment list assessed in one run (issue 14).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <optional>
+#include <thread>
+
+#include "batch/run.hpp"
+#include "batch/shard.hpp"
+#include "cli/batch_output.hpp"
+#include "cli/build_info.hpp"
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "cli/shards.hpp"
+#include "core/errors.hpp"
+
+namespace freestand::cli {
+namespace {
+
+const char* const usage =
+    "LIST [--out DIR] [--threads T] [--json] [--shard K/N]\n\n"
+    "LIST is a folder (every *.toml case in it, sorted by name, not sub-folders) or a list\n"
+    "file: CSV (.csv, RFC 4180) with a header row naming the columns, or TOML (.toml) with one\n"
+    "[[case]] table per component. Columns / keys: file (required; relative to the list's\n"
+    "folder), name (the report folder; default the file's stem), pga_g (CSV: 0.1;0.2;0.3, TOML:\n"
+    "an array), base_material (replaces the case's whole base description), seed,\n"
+    "histories_per_level. A value given replaces the case file's, as if the file carried it.\n\n"
+    "Writes DIR/summary.{md,html,csv,json} and DIR/<name>/ for each assessed component, the\n"
+    "folder `freestand assess CASE --out DIR/<name>` writes, all published as a whole.\n"
+    "A component that fails (missing or bad case file, numerical failure) gets its row with the\n"
+    "error and its exit class, and the others run on. Exit 0 when every component was\n"
+    "assessed, 1 when one failed; a bad list is exit 3 (2 a path that is no list, 5\n"
+    "unreadable) before anything runs.\n\n"
+    "--shard K/N assesses every N-th component from the K-th and writes only\n"
+    "DIR/shard-K-of-N.jsonl; `freestand merge` of all N writes the folder this run would,\n"
+    "byte for byte (give every shard the same LIST path and build)";
+
+unsigned parse_threads(const std::string& text) {
+    const double t = parse_double(text, "--threads");
+    if (!(t >= 1.0 && t <= 1024.0) || t != static_cast<double>(static_cast<unsigned>(t)))
+        throw UsageError(fmt::format("--threads: expected a whole number in [1, 1024]; got {}",
+                                     text));
+    return static_cast<unsigned>(t);
+}
+
+// Shard k of n: its components' rows and report files as JSON lines for `freestand merge`.
+int run_shard(const batch::BatchList& list, std::array<int, 2> share, unsigned threads,
+              const std::filesystem::path& out) {
+    const std::vector<std::size_t> mine =
+        batch::shard_indices(list.entries.size(), share[0], share[1]);
+    const std::vector<batch::BatchRow> rows = batch::run_rows(list, mine, threads, build_commit);
+    std::vector<nlohmann::ordered_json> records;
+    std::size_t failed = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        records.push_back(batch::shard_record(mine[i], rows[i]));
+        if (!rows[i].row.outcome) {
+            ++failed;
+            std::cout << batch::row_line(rows[i].row) << "\n";
+        }
+    }
+    const auto file = write_shard(out, "batch", share[0], share[1],
+                                  batch::shard_run_json(batch::batch_stamp(list, build_commit), list),
+                                  records);
+    std::cout << fmt::format("shard {} of {}: {} of {} components ({} failed) written to {}\n",
+                             share[0], share[1], rows.size(), list.entries.size(), failed,
+                             file.string());
+    return failed == 0 ? 0 : static_cast<int>(ExitCode::failure);
+}
+
+int run(const std::vector<std::string>& args) {
+    po::options_description desc("options");
+    desc.add_options()("list", po::value<std::string>()->required(),
+                       "folder of case files, or a .csv or .toml list")(
+        "out", po::value<std::string>()->default_value("out/batch"),
+        "output folder (summary files and one report folder per component; with --shard, the "
+        "folder of the shard file)")(
+        "threads", po::value<std::string>(),
+        "worker threads, each assessing one component at a time (default: every core); the "
+        "outputs are the same bytes whatever the count")(
+        "json", po::bool_switch(), "print the summary as JSON on stdout (also written as "
+                                   "summary.json)")(
+        "shard", po::value<std::string>(),
+        "K/N: assess only this share of the components and write DIR/shard-K-of-N.jsonl for "
+        "`freestand merge`");
+    const auto vm = parse_options("batch", usage, desc, args, {"list"});
+    if (!vm) return 0;
+    const unsigned threads = vm->count("threads")
+                                 ? parse_threads((*vm)["threads"].as<std::string>())
+                                 : std::max(1u, std::thread::hardware_concurrency());
+    const bool json = (*vm)["json"].as<bool>();
+    std::optional<std::array<int, 2>> share;
+    if (vm->count("shard")) share = parse_shard((*vm)["shard"].as<std::string>(), "--shard");
+    if (share && json)
+        throw UsageError("--json prints the whole batch's summary; give it to `freestand merge`, "
+                         "not to a --shard run");
+    const std::filesystem::path out = (*vm)["out"].as<std::string>();
+    const batch::BatchList list = batch::read_batch_list((*vm)["list"].as<std::string>());
+    if (share) return run_shard(list, *share, threads, out);
+    core::check_publish_target(out);
+    const auto start = std::chrono::steady_clock::now();
+    const batch::BatchRun r = batch::run_batch(list, threads, build_commit);
+    const double run_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // Timing goes to stdout only, never into the outputs (byte-identical per input).
+    return write_batch_outputs(
+        r, out, json,
+        fmt::format(", in {:.2f} s on {} thread(s)", run_s,
+                    std::min<std::size_t>(threads, r.summary.rows.size())));
+}
+
+const CommandRegistrar reg{
+    {"batch",
+     "assess a list of components (a folder, CSV or TOML list): summary.md/html/csv/json and "
+     "each component's report",
+     &run}};
+
+}  // namespace
+}  // namespace freestand::cli
