@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 #include "motion/criteria.hpp"
 #include "motion/internal.hpp"
@@ -73,6 +74,11 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
             throw InputError(SourceLocation{"", 0, "duration_s"},
                              fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s",
                                          o.duration_s, criteria::min_duration_s));
+        // Before synthesize allocates duration / dt samples: --duration 1e7 took 24 GB and
+        // --dt 1e-7 ran without end (issue 16 defect 3).
+        core::limits::require_within(o.duration_s / o.dt_s + 1.0, core::limits::max_samples,
+                                     SourceLocation{"", 0, "duration_s"},
+                                     "the synthetic record's sampling (duration / dt)");
         return;
     }
     if (o.seed_records.size() != o.components.size())

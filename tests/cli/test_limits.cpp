@@ -46,6 +46,40 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
     }
 }
 
+TEST_CASE("generate bounds a synthetic record's samples before it allocates them",
+          "[cli][limits][hardening]") {
+    // Defect 3 for generate: --duration 1e7 took 24 GB until the kernel killed it, --dt 1e-7 ran
+    // for minutes at 20 GB, --duration 1e300 looped without end (6 MB), and --duration 1e5
+    // allocated 2.8 GB to end in "sample 367 is 994.9 m/s^2, beyond the limit" of the record
+    // it had made. The probes here are the two a regressed build survives: under `timeout` it
+    // fails (exit 124 or the wrong message) instead of exhausting the machine.
+    const std::filesystem::path out =
+        std::filesystem::temp_directory_path() / "freestand_limits_generate";
+    std::filesystem::remove_all(out);
+    struct Probe {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Probe> probes{
+        {"--duration 1e300",
+         "--duration: the synthetic record's sampling (duration / dt): 2e+302 is above the limit "
+         "1e+07"},
+        {"--duration 1e5",
+         "--duration: the synthetic record's sampling (duration / dt): 2e+07 is above the limit "
+         "1e+07"},
+    };
+    for (const Probe& p : probes) {
+        INFO(p.args);
+        const auto r = run_cli("generate --target rg1.60 --pga 0.3 " + p.args + " --out '" +
+                                   out.string() + "'",
+                               "timeout 60 ");
+        CHECK(r.exit_code == 3);
+        CHECK_THAT(r.err, Contains(p.message));
+        CHECK_THAT(r.err, Contains("(README, Limits)"));
+        CHECK_FALSE(std::filesystem::exists(out));
+    }
+}
+
 TEST_CASE("a folder where a file is expected is an I/O error", "[cli][hardening]") {
     const auto r = run_cli("assess cases");
     CHECK(r.exit_code == 5);
