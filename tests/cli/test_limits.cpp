@@ -33,7 +33,12 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
          "a response-spectrum frequency (Hz): 1e+08 is above the limit 1000"},
         {"spectrum " + record + "--frequencies 1e300",
          "a response-spectrum frequency (Hz): 1e+300 is above the limit 1000"},
-        // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0.
+        // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0 (a frequency
+        // of 1e-300 Hz still printed -nan; 1e-6 Hz a PSA 480 times the exact one).
+        {"spectrum " + record + "--frequencies 1e-300",
+         "a response-spectrum frequency (Hz): 1e-300 is below the limit 0.001"},
+        {"spectrum " + record + "--frequencies 1e-6,1",
+         "a response-spectrum frequency (Hz): 1e-06 is below the limit 0.001"},
         {"simulate " + block + "--motion " + record + "--scale 1e308",
          "an excitation acceleration (m/s^2, 100 g): 3.585e+305 is above the limit 981"},
     };
