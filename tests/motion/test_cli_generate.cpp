@@ -167,6 +167,16 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
         std::ofstream(p) << text;
         return p.string();
     };
+    // Issue 16 defect 9: an all-zero seed record said "sample 0 is not a finite number".
+    std::string zeros = "# dt_s: 0.005\naccel_g\n";
+    for (int i = 0; i < 5000; ++i) zeros += "0\n";
+    const std::string zero_file = write("zero.csv", zeros);
+    r = run_cli("generate --target rg1.60 --pga 0.2 --components h1 --seed-record '" + zero_file +
+                "' --out '" + (out / "zero_out").string() + "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("zero.csv: seed record \"zero\" is zero at all 5000 "
+                                      "samples; a seed record needs motion to match"));
+    CHECK_FALSE(fs::exists(out / "zero_out"));
     r = run_cli("generate --target-file '" +
                 write("nodamp.csv", "frequency_hz,psa_g\n0.1,0.1\n10,0.5\n") + "' --out '" +
                 out.string() + "'");
