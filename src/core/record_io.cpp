@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "core/text_parse.hpp"
 #include "core/units.hpp"
@@ -23,10 +24,12 @@ Record read_record(const std::filesystem::path& path) {
 
 namespace {
 
-/// A label on one comment line: line breaks would start a data line.
-std::string one_line(std::string s) {
+/// A label on one comment line: line breaks would start a data line, and other control
+/// characters (ESC, BEL from a file name) are shown as \xNN (issue 16 defect 10).
+std::string one_line(const std::string& label) {
+    std::string s = printable(label);
     for (char& c : s)
-        if (c == '\n' || c == '\r') c = ' ';
+        if (c == '\n' || c == '\t') c = ' ';
     return s;
 }
 
