@@ -35,7 +35,7 @@ std::string one_line(const std::string& label) {
 
 }  // namespace
 
-void write_csv_g(const Record& record, const std::filesystem::path& path) {
+std::string csv_g_text(const Record& record) {
     validate(record);
     std::string out;
     out.reserve(40 * record.size() + 200);
@@ -46,7 +46,11 @@ void write_csv_g(const Record& record, const std::filesystem::path& path) {
     out += "time_s,accel_g\n";
     for (std::size_t i = 0; i < record.size(); ++i)
         fmt::format_to(std::back_inserter(out), "{},{}\n", record.time_s(i), units::mps2_to_g(record.accel_mps2[i]));
-    write_file_atomic(path, out);
+    return out;
+}
+
+void write_csv_g(const Record& record, const std::filesystem::path& path) {
+    write_file_atomic(path, csv_g_text(record));
 }
 
 }  // namespace freestand::core
