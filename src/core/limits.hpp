@@ -30,6 +30,10 @@ inline constexpr double max_dt_s = 1.0;
 /// Largest acceleration of a record or an excitation, m/s^2 (100 g): beyond it the products of
 /// the integrators overflow long before anything physical is left to compute.
 inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
+/// Largest design level of a design spectrum, g (target's and generate's --pga, --sds, --sd1,
+/// --ag), the upper end of a case's pga_g levels: 'target --design rg1.60 --pga 1e300' printed
+/// spectral accelerations of 7.5e298 g with exit 0.
+inline constexpr double max_design_level_g = 3.0;
 /// Steps of one fixed-step integration (central difference: duration / dt).
 inline constexpr double max_fixed_steps = 1e8;
 /// Characters of one line of a TOML case file. toml++ builds the tables of a dotted key

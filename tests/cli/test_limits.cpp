@@ -35,6 +35,11 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
          "a response-spectrum frequency (Hz): 1e+300 is above the limit 1000"},
         // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0 (a frequency
         // of 1e-300 Hz still printed -nan; 1e-6 Hz a PSA 480 times the exact one).
+        // A design level of 1e300 g printed spectral accelerations of 7.5e298 g.
+        {"target --design rg1.60 --pga 1e300", "--pga: a design level (g): 1e+300 is above the limit 3"},
+        {"target --design asce7 --sds 1 --sd1 4 --tl 8", "--sd1: a design level (g): 4 is above the limit 3"},
+        {"generate --target ec8 --ag 5 --type 1 --ground A --out /nonexistent/never",
+         "--ag: a design level (g): 5 is above the limit 3"},
         {"spectrum " + record + "--frequencies 1e-300",
          "a response-spectrum frequency (Hz): 1e-300 is below the limit 0.001"},
         {"spectrum " + record + "--frequencies 1e-6,1",
