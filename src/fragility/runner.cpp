@@ -134,14 +134,14 @@ struct Runner::Impl {
     bool prepared = false;
 };
 
-Runner::Runner(const assess::Case& c, Config config) : impl_(new Impl) {
+Runner::Runner(const assess::Case& c, Config config) : impl_(std::make_unique<Impl>()) {
     validate(config);
     impl_->c = c;
     impl_->config = std::move(config);
     impl_->laws = laws_of(c);
 }
 
-Runner::~Runner() { delete impl_; }
+Runner::~Runner() = default;
 
 std::size_t Runner::total() const {
     return impl_->config.pga_g.size() * static_cast<std::size_t>(impl_->config.samples);
