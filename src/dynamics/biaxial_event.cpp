@@ -51,11 +51,12 @@ double toms748_root(F f, double a, double b, double fa, double fb) {
 Vec2 vel(const State& x) { return {x[2], x[3]}; }
 Vec2 pos(const State& x) { return {x[0], x[1]}; }
 
-// Below this slip speed, while the base pushes along v harder than friction holds
-// (|a_g| > mu_k G, a_g . v < 0), the friction direction is taken as -a_g / |a_g|. The direction
-// of a slow slip relaxes towards it in |v| / (mu_k G) (the equation's stiffness: 1e-10 s at
-// 1e-10 m/s), which an explicit method cannot follow at a useful step: a record whose |a_g|
-// hovers at mu_k G kept v near 1e-10 m/s for 0.16 s in 3e7 steps. The slip this changes is
+// Below this slip speed a slip is treated quasi-statically. Its direction relaxes towards
+// -a_g in |v| / (mu_k G) (the equation's stiffness: 1e-10 s at 1e-10 m/s), which an explicit
+// method cannot follow at a useful step: a record whose |a_g| hovers at mu_k G kept v near
+// 1e-10 m/s for 0.16 s in 3e7 steps. So a step that starts this slow either stops the block
+// (|a_g| <= mu_k G: friction would bring it to rest within |v| / (mu_k G - |a_g|)) or slides
+// it with friction along -a_g / |a_g| until it is faster than this. The slip this changes is
 // below v_slaved times the time so spent.
 constexpr double v_slaved_mps = 1e-6;
 
@@ -71,7 +72,7 @@ struct SlideRhs {
         const double s = norm(v);
         Vec2 n = d;
         const double a_norm = norm(a);
-        if (s < v_slaved_mps && a_norm > mu_k * G && dot(a, v) < 0.0) {
+        if (s < v_slaved_mps && a_norm > mu_k * G) {
             n = {-a[0] / a_norm, -a[1] / a_norm};
         } else if (s > 0.0) {
             const double sg = dot(v, d) >= 0.0 ? 1.0 / s : -1.0 / s;
@@ -189,6 +190,12 @@ private:
         if (lifts) t_end = t - G / seg_.G1;
         while (t < t_end) {
             const double speed = norm(st_.v);
+            if (speed > 0.0 && speed < v_slaved_mps && !(norm(seg_.a(t)) > m_.mu_k * seg_.G(t))) {
+                // A slow slip the friction holds: it stops here (see v_slaved_mps).
+                st_.v = {0.0, 0.0};
+                start_from_rest(t);
+                return t;
+            }
             rhs_.d = speed > 0.0 ? Vec2{st_.v[0] / speed, st_.v[1] / speed} : d_start_;
             const State x0 = {st_.u[0], st_.u[1], st_.v[0], st_.v[1]};
             State dx0{}, x1{}, dx1{};
