@@ -9,6 +9,7 @@
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/publish.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
 #include "report/history_json.hpp"
@@ -200,8 +201,12 @@ int run(const std::vector<std::string>& args) {
     j["target"] = targets.label;
     j["passed"] = set.passed;
     j["components"] = nlohmann::ordered_json::array();
+    // The folder is published whole (issue 16 defects 4 and 5): each CSV was written in turn,
+    // so h1.csv was replaced before h2.csv was found to be an input of the run, and two runs
+    // into one folder mixed their files.
+    std::vector<core::OutputFile> files;
     for (const motion::GeneratedComponent& c : set.components) {
-        core::write_csv_g(c.record, out / (c.record.component + ".csv"));
+        files.push_back({c.record.component + ".csv", core::csv_g_text(c.record)});
         j["components"].push_back(component_json(c, timing));
     }
     j["correlations"] = nlohmann::ordered_json::array();
@@ -227,7 +232,8 @@ int run(const std::vector<std::string>& args) {
     j["methods"] = "docs/methods.md s.8";
     j["references"] = references_json();
     j["freestand_version"] = FREESTAND_VERSION;
-    core::write_file_atomic(out / "match.json", j.dump(2) + "\n");
+    files.push_back({"match.json", j.dump(2) + "\n"});
+    core::publish_folder(out, files);
     std::cout << fmt::format("{} component(s) written to {}: {}\n", set.components.size(),
                              out.string(),
                              set.passed ? "all pass SRP 3.7.1 and the realism checks"

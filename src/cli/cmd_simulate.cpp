@@ -7,6 +7,7 @@
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
 #include "cli/simulate_biaxial.hpp"
@@ -36,6 +37,16 @@ dynamics::Excitation parse_motion(const std::string& text, double scale) {
 }
 
 
+/// The excitation's label (from a file name) on the CSV's comment line: control characters as
+/// \xNN, a line break as a blank (issue 16 defect 10: a file named with ESC and BEL put them
+/// raw into the CSV).
+std::string one_line_label(const std::string& label) {
+    std::string s = core::printable(label);
+    for (char& c : s)
+        if (c == '\n' || c == '\t') c = ' ';
+    return s;
+}
+
 std::string series_csv(const dynamics::SimulationResult& r, const std::string& label) {
     std::string out = fmt::format(
         "# freestand simulate: {} integrator, excitation {}\n"
@@ -44,7 +55,7 @@ std::string series_csv(const dynamics::SimulationResult& r, const std::string& l
         "acceleration m/s^2\n"
         "time_s,slide_m,slide_velocity_mps,rotation_rad,angular_velocity_radps,mode,"
         "normal_force_N,friction_force_N,top_accel_mps2\n",
-        r.summary.integrator, label);
+        r.summary.integrator, one_line_label(label));
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}\n", s.time_s,
                            s.slide_m, s.slide_velocity_mps, s.rotation_rad,

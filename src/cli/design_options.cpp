@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "spectra/design.hpp"
 
 namespace freestand::cli {
@@ -34,6 +35,9 @@ double required_positive(const po::variables_map& vm, const std::string& selecto
         throw UsageError(fmt::format("{} {} needs --{}", selector, design, name));
     const double v = parse_double(vm[name].as<std::string>(), "--" + name);
     require_positive(v, SourceLocation{"", 0, "--" + name});
+    if (name == "pga" || name == "sds" || name == "sd1" || name == "ag")
+        core::limits::require_within(v, core::limits::max_design_level_g,
+                                     SourceLocation{"", 0, "--" + name}, "a design level (g)");
     return v;
 }
 

@@ -22,6 +22,11 @@ inline const std::map<std::string, std::string>& flag_names() {
         {"sine.dt_s", "--sine dt (s)"},
         {"cd_dt_s", "--dt"},
         {"pga_levels", "--pga"},
+        // motion::GenerateOptions, behind generate's options
+        {"dt_s", "--dt"},
+        {"duration_s", "--duration"},
+        {"components", "--components"},
+        {"seed_records", "--seed-record"},
         {"frequency_hz", "--frequencies"},
         // block::Block and sliding::box_spec, behind --block, --cg and --inertia
         {"b (half-width, m)", "--block b (half-width, m)"},

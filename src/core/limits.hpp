@@ -14,6 +14,11 @@ inline constexpr double max_samples = 1e7;
 /// Highest frequency of a response spectrum or a sine input, Hz. Above a record's Nyquist
 /// frequency its pseudo-acceleration is its PGA; sub-stepping to T / 20 there costs without end.
 inline constexpr double max_frequency_hz = 1000.0;
+/// Lowest frequency of a response spectrum, Hz (a period of 1000 s). Below it the one-sample
+/// map's coefficients lose every digit to cancellation, (omega dt)^2 against 1: at 1e-6 Hz the
+/// PSA was 480 times the exact omega^2 PGD, and from about 1e-160 Hz omega^2 underflows and the
+/// PSA is NaN. At 1e-3 Hz it is within 1% of omega^2 PGD for every step from 1e-6 s to 1 s.
+inline constexpr double min_frequency_hz = 1e-3;
 /// Frequencies of one response-spectrum request.
 inline constexpr double max_frequencies = 1e5;
 /// Bytes of one input file (a record, a case, a spectrum) read into memory.
@@ -25,6 +30,10 @@ inline constexpr double max_dt_s = 1.0;
 /// Largest acceleration of a record or an excitation, m/s^2 (100 g): beyond it the products of
 /// the integrators overflow long before anything physical is left to compute.
 inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
+/// Largest design level of a design spectrum, g (target's and generate's --pga, --sds, --sd1,
+/// --ag), the upper end of a case's pga_g levels: 'target --design rg1.60 --pga 1e300' printed
+/// spectral accelerations of 7.5e298 g with exit 0.
+inline constexpr double max_design_level_g = 3.0;
 /// Steps of one fixed-step integration (central difference: duration / dt).
 inline constexpr double max_fixed_steps = 1e8;
 /// Characters of one line of a TOML case file. toml++ builds the tables of a dotted key
@@ -36,5 +45,10 @@ inline constexpr std::size_t max_case_line_chars = 4096;
 /// "<what>: <needed> is above the limit <limit> (README, Limits)".
 void require_within(double needed, double limit, const SourceLocation& where,
                     std::string_view what);
+
+/// Throws InputError at where unless given >= limit (a NaN counts as too small):
+/// "<what>: <given> is below the limit <limit> (README, Limits)".
+void require_at_least(double given, double limit, const SourceLocation& where,
+                      std::string_view what);
 
 }  // namespace freestand::core::limits

@@ -40,4 +40,7 @@ Record read_record(const std::filesystem::path& path);
 /// returns the values to about 1 ulp. Throws InputError if the record fails core::validate.
 void write_csv_g(const Record& record, const std::filesystem::path& path);
 
+/// The text write_csv_g writes (for a caller that publishes it with other files).
+std::string csv_g_text(const Record& record);
+
 }  // namespace freestand::core

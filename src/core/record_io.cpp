@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "core/text_parse.hpp"
 #include "core/units.hpp"
@@ -23,16 +24,18 @@ Record read_record(const std::filesystem::path& path) {
 
 namespace {
 
-/// A label on one comment line: line breaks would start a data line.
-std::string one_line(std::string s) {
+/// A label on one comment line: line breaks would start a data line, and other control
+/// characters (ESC, BEL from a file name) are shown as \xNN (issue 16 defect 10).
+std::string one_line(const std::string& label) {
+    std::string s = printable(label);
     for (char& c : s)
-        if (c == '\n' || c == '\r') c = ' ';
+        if (c == '\n' || c == '\t') c = ' ';
     return s;
 }
 
 }  // namespace
 
-void write_csv_g(const Record& record, const std::filesystem::path& path) {
+std::string csv_g_text(const Record& record) {
     validate(record);
     std::string out;
     out.reserve(40 * record.size() + 200);
@@ -43,7 +46,11 @@ void write_csv_g(const Record& record, const std::filesystem::path& path) {
     out += "time_s,accel_g\n";
     for (std::size_t i = 0; i < record.size(); ++i)
         fmt::format_to(std::back_inserter(out), "{},{}\n", record.time_s(i), units::mps2_to_g(record.accel_mps2[i]));
-    write_file_atomic(path, out);
+    return out;
+}
+
+void write_csv_g(const Record& record, const std::filesystem::path& path) {
+    write_file_atomic(path, csv_g_text(record));
 }
 
 }  // namespace freestand::core

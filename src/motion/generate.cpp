@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 #include "motion/criteria.hpp"
 #include "motion/internal.hpp"
@@ -73,6 +74,11 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
             throw InputError(SourceLocation{"", 0, "duration_s"},
                              fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s",
                                          o.duration_s, criteria::min_duration_s));
+        // Before synthesize allocates duration / dt samples: --duration 1e7 took 24 GB and
+        // --dt 1e-7 ran without end (issue 16 defect 3).
+        core::limits::require_within(o.duration_s / o.dt_s + 1.0, core::limits::max_samples,
+                                     SourceLocation{"", 0, "duration_s"},
+                                     "the synthetic record's sampling (duration / dt)");
         return;
     }
     if (o.seed_records.size() != o.components.size())
@@ -82,6 +88,15 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
                         o.seed_records.size(), o.components.size()));
     for (const core::Record& r : o.seed_records) {
         core::validate(r);
+        // An all-zero record has no spectrum to scale to the target: the scale factor was
+        // infinite and the error "sample 0 is not a finite number" (issue 16 defect 9).
+        bool moves = false;
+        for (double a : r.accel_mps2) moves = moves || a != 0.0;
+        if (!moves)
+            throw InputError(SourceLocation{r.source, 0, ""},
+                             fmt::format("seed record \"{}\" is zero at all {} samples; a seed "
+                                         "record needs motion to match",
+                                         r.name, r.accel_mps2.size()));
         const SourceLocation where{r.source, 0, "dt"};
         if (r.dt_s > criteria::max_dt_s + 1e-12)
             throw InputError(
@@ -214,6 +229,11 @@ MatchResult match_record(const core::Record& seed, const Target& target,
         log_sum += std::log(target.psa_5pct.psa_at(f[i]) / psa[i]);
     core::Record scaled = seed;
     const double k = std::exp(log_sum / static_cast<double>(f.size()));
+    if (!std::isfinite(k) || k <= 0.0)
+        throw InputError(SourceLocation{seed.source, 0, ""},
+                         fmt::format("seed record \"{}\" has no usable response in the {}-{} Hz "
+                                     "band to scale to the target (scale factor {})",
+                                     seed.name, f.front(), f.back(), k));
     for (double& a : scaled.accel_mps2) a *= k;
     return match_in_place(std::move(scaled), target, options);
 }

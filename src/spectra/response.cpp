@@ -257,6 +257,9 @@ void check_inputs(const core::Record& record, const std::vector<double>& damping
         core::limits::require_within(f, core::limits::max_frequency_hz,
                                      SourceLocation{"", 0, "frequency_hz"},
                                      "a response-spectrum frequency (Hz)");
+        core::limits::require_at_least(f, core::limits::min_frequency_hz,
+                                       SourceLocation{"", 0, "frequency_hz"},
+                                       "a response-spectrum frequency (Hz)");
     }
 }
 

@@ -33,7 +33,17 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
          "a response-spectrum frequency (Hz): 1e+08 is above the limit 1000"},
         {"spectrum " + record + "--frequencies 1e300",
          "a response-spectrum frequency (Hz): 1e+300 is above the limit 1000"},
-        // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0.
+        // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0 (a frequency
+        // of 1e-300 Hz still printed -nan; 1e-6 Hz a PSA 480 times the exact one).
+        // A design level of 1e300 g printed spectral accelerations of 7.5e298 g.
+        {"target --design rg1.60 --pga 1e300", "--pga: a design level (g): 1e+300 is above the limit 3"},
+        {"target --design asce7 --sds 1 --sd1 4 --tl 8", "--sd1: a design level (g): 4 is above the limit 3"},
+        {"generate --target ec8 --ag 5 --type 1 --ground A --out /nonexistent/never",
+         "--ag: a design level (g): 5 is above the limit 3"},
+        {"spectrum " + record + "--frequencies 1e-300",
+         "a response-spectrum frequency (Hz): 1e-300 is below the limit 0.001"},
+        {"spectrum " + record + "--frequencies 1e-6,1",
+         "a response-spectrum frequency (Hz): 1e-06 is below the limit 0.001"},
         {"simulate " + block + "--motion " + record + "--scale 1e308",
          "an excitation acceleration (m/s^2, 100 g): 3.585e+305 is above the limit 981"},
     };
@@ -43,6 +53,40 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
         CHECK(r.exit_code == 3);
         CHECK_THAT(r.err, Contains(p.message));
         CHECK_THAT(r.err, Contains("(README, Limits)"));
+    }
+}
+
+TEST_CASE("generate bounds a synthetic record's samples before it allocates them",
+          "[cli][limits][hardening]") {
+    // Defect 3 for generate: --duration 1e7 took 24 GB until the kernel killed it, --dt 1e-7 ran
+    // for minutes at 20 GB, --duration 1e300 looped without end (6 MB), and --duration 1e5
+    // allocated 2.8 GB to end in "sample 367 is 994.9 m/s^2, beyond the limit" of the record
+    // it had made. The probes here are the two a regressed build survives: under `timeout` it
+    // fails (exit 124 or the wrong message) instead of exhausting the machine.
+    const std::filesystem::path out =
+        std::filesystem::temp_directory_path() / "freestand_limits_generate";
+    std::filesystem::remove_all(out);
+    struct Probe {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Probe> probes{
+        {"--duration 1e300",
+         "--duration: the synthetic record's sampling (duration / dt): 2e+302 is above the limit "
+         "1e+07"},
+        {"--duration 1e5",
+         "--duration: the synthetic record's sampling (duration / dt): 2e+07 is above the limit "
+         "1e+07"},
+    };
+    for (const Probe& p : probes) {
+        INFO(p.args);
+        const auto r = run_cli("generate --target rg1.60 --pga 0.3 " + p.args + " --out '" +
+                                   out.string() + "'",
+                               "timeout 60 ");
+        CHECK(r.exit_code == 3);
+        CHECK_THAT(r.err, Contains(p.message));
+        CHECK_THAT(r.err, Contains("(README, Limits)"));
+        CHECK_FALSE(std::filesystem::exists(out));
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
 
@@ -154,6 +155,22 @@ TEST_CASE("write_csv_g round-trips values to 1e-12 and keeps the labels", "[core
     for (std::size_t i = 0; i < rec.size(); ++i)
         worst = std::max(worst, std::abs(back.accel_mps2[i] - rec.accel_mps2[i]) / std::abs(rec.accel_mps2[i]));
     CHECK(worst <= 1e-12);
+}
+
+TEST_CASE("write_csv_g shows control characters in its labels as \\xNN", "[core][csv][hardening]") {
+    // Issue 16 defect 10: write_csv_g (generate's h1/h2/v.csv) copied a label's ESC, BEL or
+    // DEL (a seed record's file name is in its source) raw into its comment lines.
+    core::Record rec;
+    rec.name = "a\x1b]0;pwned\x07" "b";
+    rec.source = "x\x7f" "y";  // DEL
+    rec.component = "h1";
+    rec.dt_s = 0.01;
+    rec.accel_mps2 = {0.0, 1.0};
+    const fs::path out = fs::temp_directory_path() / "freestand_csv_out" / "ctl.csv";
+    core::write_csv_g(rec, out);
+    const std::string text = core::read_text_file(out);
+    CHECK(text.rfind("# name: a\\x1B]0;pwned\\x07b\n# source: x\\x7Fy\n# component: h1\n", 0) == 0);
+    for (char c : text) CHECK_FALSE((c != '\n' && core::is_control(c)));
 }
 
 TEST_CASE("write_csv_g refuses an invalid record", "[core][csv]") {

@@ -106,6 +106,26 @@ TEST_CASE("simulate --out naming the --motion file is refused and the input kept
     std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("simulate --out shows control characters of the motion's name as \\xNN",
+          "[dynamics][cli][hardening]") {
+    // Issue 16 defect 10: a motion file named with ESC and BEL put them raw into the CSV's
+    // comment line (the terminal title changed on `head series.csv`).
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "freestand_sim_control_name";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path motion = dir / "a\x1b]0;pwned\x07" "b.csv";
+    std::ofstream(motion) << "# dt_s: 0.01\naccel_g\n0\n0.1\n0\n";
+    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.5 --motion '" +
+                           motion.string() + "' --out '" + (dir / "series.csv").string() + "'");
+    REQUIRE(r.exit_code == 0);
+    const std::string csv = freestand::test::slurp(dir / "series.csv");
+    CHECK(csv.rfind("# freestand simulate: event integrator, excitation a\\x1B]0;pwned\\x07b\n", 0) ==
+          0);
+    for (char c : csv) CHECK_FALSE((c != '\n' && static_cast<unsigned char>(c) < 0x20));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("simulate --out never replaces a FIFO, a device or a symlink", "[dynamics][cli][hardening]") {
     // Issue 16 defect 1: each was replaced by a regular file with exit 0.
     namespace fs = std::filesystem;

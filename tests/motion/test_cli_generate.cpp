@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/readers.hpp"
 #include "support/run_cli.hpp"
 
 using freestand::test::run_cli;
@@ -126,6 +127,30 @@ TEST_CASE("generate matches a seed record given on the command line", "[motion][
     fs::remove_all(out);
 }
 
+TEST_CASE("generate refuses an output that is an input of the run before writing any file",
+          "[motion][cli][hardening]") {
+    // Issue 16 defect 5: with --seed-record A.AT2,gdir/h2.csv --out gdir, h1.csv was replaced
+    // before h2.csv was found to be an input (exit 5 with a changed folder).
+    const fs::path dir = scratch("input_out");
+    fs::create_directories(dir);
+    // A folder a previous run wrote (its marker lists its files), holding a seed record.
+    std::ofstream(dir / ".freestand-run") << "Written by freestand.\nh1.csv\nh2.csv\n";
+    std::ofstream(dir / "h1.csv") << "previous run\n";
+    freestand::core::write_csv_g(
+        freestand::core::read_at2(fs::path(FREESTAND_TEST_DATA) / "RSN175_IMPVALL.H_H-E12230.AT2"),
+        dir / "h2.csv");
+    const std::string h2_before = slurp(dir / "h2.csv");
+    const auto r = run_cli("generate --target rg1.60 --pga 0.3 --seed-record "
+                           "tests/data/RSN175_IMPVALL.H_H-E12140.AT2,'" +
+                           (dir / "h2.csv").string() + "' --out '" + dir.string() + "'");
+    CHECK(r.exit_code == 5);
+    CHECK_THAT(r.err, Catch::Contains("h2.csv: refusing to overwrite an input file of this run"));
+    CHECK(slurp(dir / "h1.csv") == "previous run\n");
+    CHECK(slurp(dir / "h2.csv") == h2_before);
+    CHECK_FALSE(fs::exists(dir / "match.json"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("generate rejects bad requests with a clear message and exit code",
           "[motion][cli][errors]") {
     const fs::path out = scratch("d");
@@ -167,6 +192,16 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
         std::ofstream(p) << text;
         return p.string();
     };
+    // Issue 16 defect 9: an all-zero seed record said "sample 0 is not a finite number".
+    std::string zeros = "# dt_s: 0.005\naccel_g\n";
+    for (int i = 0; i < 5000; ++i) zeros += "0\n";
+    const std::string zero_file = write("zero.csv", zeros);
+    r = run_cli("generate --target rg1.60 --pga 0.2 --components h1 --seed-record '" + zero_file +
+                "' --out '" + (out / "zero_out").string() + "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("zero.csv: seed record \"zero\" is zero at all 5000 "
+                                      "samples; a seed record needs motion to match"));
+    CHECK_FALSE(fs::exists(out / "zero_out"));
     r = run_cli("generate --target-file '" +
                 write("nodamp.csv", "frequency_hz,psa_g\n0.1,0.1\n10,0.5\n") + "' --out '" +
                 out.string() + "'");

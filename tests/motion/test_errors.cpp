@@ -78,6 +78,19 @@ TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[m
     CHECK_THROWS_MATCHES(
         motion::generate_set(targets(), o), InputError,
         Catch::Message("short.AT2: duration: seed record lasts 9.995 s; SRP 3.7.1 needs >= 20 s"));
+    // Issue 16 defect 9: an all-zero seed record said "sample 0 is not a finite number" (its
+    // scale factor to the target was infinite); match_record alone said the same.
+    core::Record zero = short_rec;
+    zero.accel_mps2.assign(5000, 0.0);  // 25 s
+    zero.source = "zero.csv";
+    zero.name = "zero";
+    o.seed_records = {zero};
+    CHECK_THROWS_MATCHES(
+        motion::generate_set(targets(), o), InputError,
+        Catch::Message("zero.csv: seed record \"zero\" is zero at all 5000 samples; a seed record "
+                       "needs motion to match"));
+    CHECK_THROWS_WITH(motion::match_record(zero, targets().horizontal, motion::MatchOptions{}),
+                      Contains("zero.csv: seed record \"zero\" has no usable response"));
     motion::Envelope e;
     e.strong_s = 30.0;
     CHECK_THROWS_WITH(motion::synthesize(targets().horizontal, 20.0, 0.005, 1, e),

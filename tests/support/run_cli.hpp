@@ -25,14 +25,16 @@ inline std::string slurp(const std::filesystem::path& p) {
 }
 
 /// Runs `freestand <args>` (args already shell-quoted as needed) from the source directory.
-inline CliResult run_cli(const std::string& args) {
+/// prefix goes before the executable, e.g. "timeout 60 " so a regressed build fails instead of
+/// hanging the suite.
+inline CliResult run_cli(const std::string& args, const std::string& prefix = "") {
     static int counter = 0;
     const auto dir = std::filesystem::temp_directory_path() /
                      ("freestand_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
     std::filesystem::create_directories(dir);
     const auto out = dir / "out.txt";
     const auto err = dir / "err.txt";
-    const std::string cmd = std::string("cd '") + FREESTAND_SOURCE_DIR + "' && '" + FREESTAND_EXE +
+    const std::string cmd = std::string("cd '") + FREESTAND_SOURCE_DIR + "' && " + prefix + "'" + FREESTAND_EXE +
                             "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(cmd.c_str());
     CliResult r;
