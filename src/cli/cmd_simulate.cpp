@@ -10,6 +10,7 @@
 #include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
+#include "cli/simulate_biaxial.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::cli {
@@ -17,30 +18,12 @@ namespace {
 
 const char* const usage =
     "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
-    "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--scale S] | --sine 0.8g,2Hz,5s[,ramp=1s]) "
+    "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--motion-y FILE] [--scale S] | "
+    "--sine 0.8g,2Hz,5s[,ramp=1s] | --sine-y 0.8g,2Hz,5s[,ramp=1s][,phase=90]) "
     "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json]";
 
-// "0.8g" -> 0.8 with suffix "g"; throws UsageError naming the option otherwise.
-double with_suffix(std::string text, const std::string& suffix, const std::string& option) {
-    if (text.size() > suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0)
-        text.resize(text.size() - suffix.size());
-    return parse_double(text, option);
-}
-
 dynamics::Excitation parse_sine(const std::string& text) {
-    const std::vector<std::string> parts = split_list(text);
-    if (parts.size() < 3 || parts.size() > 4)
-        throw UsageError(fmt::format("--sine: expected A g,f Hz,T s[,ramp=t s]; got \"{}\"", text));
-    dynamics::SineSpec spec;
-    spec.amplitude_g = with_suffix(parts[0], "g", "--sine amplitude (g)");
-    spec.frequency_hz = with_suffix(parts[1], "Hz", "--sine frequency (Hz)");
-    spec.duration_s = with_suffix(parts[2], "s", "--sine duration (s)");
-    if (parts.size() == 4) {
-        if (parts[3].rfind("ramp=", 0) != 0)
-            throw UsageError(fmt::format("--sine: expected ramp=<s> as 4th item; got \"{}\"", parts[3]));
-        spec.ramp_s = with_suffix(parts[3].substr(5), "s", "--sine ramp (s)");
-    }
-    return dynamics::sine_excitation(spec);
+    return dynamics::sine_excitation(parse_sine_spec(text, "--sine", false));
 }
 
 dynamics::Excitation parse_motion(const std::string& text, double scale) {
@@ -148,14 +131,21 @@ int run(const std::vector<std::string>& args) {
         ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
         ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
         ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
+        ("motion-y", po::value<std::string>(),
+         "FILE: second horizontal component with --motion; runs biaxial sliding")
+        ("sine-y", po::value<std::string>(),
+         "A g,f Hz,T s[,ramp=t s][,phase=DEG]: biaxial sliding under x = A sin(2 pi f t), "
+         "y = A sin(2 pi f t + phase) (phase 0 by default)")
         ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
         ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
         ("out", po::value<std::string>(), "write the time series CSV here")
         ("json", po::bool_switch(), "print the summary as JSON");
     const auto vm = parse_options("simulate", usage, desc, args);
     if (!vm) return 0;
-    if (vm->count("motion") == vm->count("sine"))
-        throw UsageError("simulate: give exactly one of --motion and --sine");
+    if (vm->count("motion") + vm->count("sine") + vm->count("sine-y") != 1)
+        throw UsageError("simulate: give exactly one of --motion, --sine and --sine-y");
+    if (vm->count("motion-y") && !vm->count("motion"))
+        throw UsageError("--motion-y: needs --motion (the x component)");
     std::optional<double> inertia;
     if (vm->count("inertia")) inertia = (*vm)["inertia"].as<double>();
     const block::Block blk = block_from_options((*vm)["block"].as<std::string>(),
@@ -166,7 +156,6 @@ int run(const std::vector<std::string>& args) {
     if (vm->count("restitution")) r = (*vm)["restitution"].as<double>();
     std::optional<double> top;
     if (vm->count("top")) top = (*vm)["top"].as<double>();
-    const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     dynamics::Options opt;
     const std::string integ = (*vm)["integrator"].as<std::string>();
     if (integ == "cd") opt.integrator = dynamics::Integrator::central_difference;
@@ -175,6 +164,8 @@ int run(const std::vector<std::string>& args) {
     opt.cd_dt_s = (*vm)["dt"].as<double>();
     require_positive(opt.cd_dt_s, {"", 0, "--dt"});
     opt.record_series = vm->count("out") > 0;
+    if (vm->count("motion-y") || vm->count("sine-y")) return run_biaxial_simulation(*vm, blk, opt);
+    const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     const dynamics::Excitation exc =
         vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())
                           : parse_motion((*vm)["motion"].as<std::string>(), (*vm)["scale"].as<double>());

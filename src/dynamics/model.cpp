@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
+#include "dynamics/resample.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::dynamics {
@@ -71,9 +72,8 @@ double Excitation::pga_mps2() const {
     return peak;
 }
 
-namespace {
+namespace detail {
 
-// Linear interpolation of a record at time t (zero outside its span).
 double sample_at(const core::Record& rec, double t) {
     if (t < 0.0 || rec.accel_mps2.empty()) return 0.0;
     const double x = t / rec.dt_s;
@@ -86,7 +86,8 @@ double sample_at(const core::Record& rec, double t) {
     return (1.0 - w) * rec.accel_mps2[i] + w * rec.accel_mps2[i + 1];
 }
 
-}  // namespace
+}  // namespace detail
+using detail::sample_at;
 
 Excitation excitation_from_record(const core::Record& horizontal, double scale,
                                   const core::Record* vertical, double vertical_scale) {
@@ -117,6 +118,8 @@ Excitation sine_excitation(const SineSpec& spec) {
     if (!std::isfinite(spec.ramp_s) || spec.ramp_s < 0.0)
         throw InputError({"", 0, "sine.ramp_s"}, fmt::format("must be >= 0 s; got {}", spec.ramp_s));
     if (spec.dt_s != 0.0) require_positive(spec.dt_s, {"", 0, "sine.dt_s"});
+    if (!std::isfinite(spec.phase_deg))
+        throw InputError({"", 0, "sine.phase_deg"}, fmt::format("must be finite; got {}", spec.phase_deg));
     const double dt_target =
         spec.dt_s > 0.0 ? spec.dt_s : std::min(0.005, 1.0 / (400.0 * spec.frequency_hz));
     core::limits::require_within(spec.frequency_hz, core::limits::max_frequency_hz,
@@ -129,6 +132,8 @@ Excitation sine_excitation(const SineSpec& spec) {
     e.label = fmt::format("sine {} g, {} Hz, {} s", spec.amplitude_g, spec.frequency_hz,
                           spec.duration_s);
     if (spec.ramp_s > 0.0) e.label += fmt::format(", ramp {} s", spec.ramp_s);
+    if (spec.phase_deg != 0.0) e.label += fmt::format(", phase {} deg", spec.phase_deg);
+    const double phase_rad = spec.phase_deg * units::pi / 180.0;
     e.dt_s = spec.duration_s / steps;
     const auto n = static_cast<std::size_t>(steps) + 1;
     e.horizontal_mps2.resize(n);
@@ -137,7 +142,7 @@ Excitation sine_excitation(const SineSpec& spec) {
         const double t = e.dt_s * static_cast<double>(i);
         double taper = 1.0;
         if (t < spec.ramp_s) taper = 0.5 * (1.0 - std::cos(units::pi * t / spec.ramp_s));
-        e.horizontal_mps2[i] = taper * a * std::sin(units::two_pi * spec.frequency_hz * t);
+        e.horizontal_mps2[i] = taper * a * std::sin(units::two_pi * spec.frequency_hz * t + phase_rad);
     }
     return e;
 }

@@ -68,10 +68,13 @@ struct SineSpec {
     double duration_s = 0.0;
     double ramp_s = 0.0;  ///< 0: no ramp
     double dt_s = 0.0;    ///< sampling; 0: min(0.005 s, 1 / (400 f)), adjusted so T / dt is whole
+    /// Phase, degrees: A g sin(2 pi f t + phase). The second horizontal component of a biaxial
+    /// sine (docs/methods.md s.10); 0 for the planar convention.
+    double phase_deg = 0.0;
 };
 /// Samples the sine (piecewise-linear between samples; max relative error (pi/N)^2/2 with N
 /// samples per cycle, 3e-5 at the default N >= 400). Throws InputError on a non-positive
-/// frequency or duration, a negative amplitude or ramp.
+/// frequency or duration, a negative amplitude or ramp, a non-finite phase.
 Excitation sine_excitation(const SineSpec& spec);
 
 enum class Integrator { event, central_difference };

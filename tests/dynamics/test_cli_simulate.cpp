@@ -75,7 +75,7 @@ TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][erro
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg x=0.15,h=0.5 --inertia 1 --sine 0.5g,2Hz,1s", "--cg x (right of the base's centre", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg 0.1 --sine 0.5g,2Hz,1s", "--cg: expected x,y or x=OFFSET,h=HEIGHT", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg 0.12,0.5 --sine 0.5g,2Hz,1s", "--inertia: a CG position away from the box centre needs", 3},
-        {"--block b=0.1,h=0.6,m=3 --mu 0.2", "exactly one of --motion and --sine", 2},
+        {"--block b=0.1,h=0.6,m=3 --mu 0.2", "exactly one of --motion, --sine and --sine-y", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz", "--sine", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --sine 0.5g,2Hz,1s --integrator rk", "--integrator", 2},
     };

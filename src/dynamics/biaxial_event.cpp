@@ -1,0 +1,380 @@
+// Event-driven biaxial sliding (docs/methods.md s.10). Rest and flight are exact on each linear
+// input segment (a quadratic for |a_g|^2 - (mu_s G)^2, cubics for flight). Sliding has no
+// closed form in two components (the friction direction v / |v| turns), so it is integrated by
+// Boost.Odeint's controlled Dormand-Prince 5(4) with its dense output: an explicit method with
+// error control whose steps end at every input sample (the input's slope jumps there), and
+// whose order-4 interpolant locates the events inside a step. Dormand-Prince rather than the
+// Taylor machinery of taylor.hpp: the right-hand side is non-polynomial in v, and a stage-based
+// method needs only its values. In one component the right-hand side is linear in t, which
+// Dormand-Prince and its interpolant integrate exactly: the planar closed form to round-off.
+//
+// The stop |v| = 0 is located through a continuation of the friction direction: within a step
+// the direction is sgn(v . d) v / |v|, d the direction at the step's start, which is smooth
+// through a stop (v ~ c (t_s - t) there), so the step crosses it without upsetting the error
+// control and the stop is the root of v . d on the interpolant. A root where |v| is not nil is
+// a turn of more than 90 degrees inside one step (a near miss of a stop); the step is rejected
+// and retried up to half the way to it.
+#include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
+#include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "dynamics/biaxial_detail.hpp"
+
+namespace freestand::dynamics::detail {
+
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+using State = std::array<double, 4>;  // u_x, u_y, v_x, v_y
+using Stepper = odeint::runge_kutta_dopri5<State>;
+using Controlled = odeint::controlled_runge_kutta<Stepper>;
+
+constexpr std::size_t max_stalled_events = 100000;  // events at one instant before giving up
+constexpr int flight_probes = 16;                   // sub-samples per segment for a landing
+
+// Root of f in [a, b] with f(a) > 0 >= f(b).
+template <class F>
+double toms748_root(F f, double a, double b, double fa, double fb) {
+    if (fb == 0.0) return b;
+    std::uintmax_t iters = 200;
+    const auto r = boost::math::tools::toms748_solve(
+        f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50), iters);
+    return 0.5 * (r.first + r.second);
+}
+
+Vec2 vel(const State& x) { return {x[2], x[3]}; }
+Vec2 pos(const State& x) { return {x[0], x[1]}; }
+
+// Below this slip speed a slip is treated quasi-statically. Its direction relaxes towards
+// -a_g in |v| / (mu_k G) (the equation's stiffness: 1e-10 s at 1e-10 m/s), which an explicit
+// method cannot follow at a useful step: a record whose |a_g| hovers at mu_k G kept v near
+// 1e-10 m/s for 0.16 s in 3e7 steps. So a step that starts this slow either stops the block
+// (|a_g| <= mu_k G: friction would bring it to rest within |v| / (mu_k G - |a_g|)) or slides
+// it with friction along -a_g / |a_g| until it is faster than this. The slip this changes is
+// below v_slaved times the time so spent.
+constexpr double v_slaved_mps = 1e-6;
+
+// u'' = -a_g - mu_k G n (docs/methods.md s.10), n the continued friction direction.
+struct SlideRhs {
+    const BiaxialSegment* seg = nullptr;
+    double mu_k = 0.0;
+    Vec2 d{1.0, 0.0};  // direction at the step's start
+    void operator()(const State& x, State& dxdt, double t) const {
+        const Vec2 a = seg->a(t);
+        const double G = seg->G(t);
+        const Vec2 v = vel(x);
+        const double s = norm(v);
+        Vec2 n = d;
+        const double a_norm = norm(a);
+        if (s < v_slaved_mps && a_norm > mu_k * G) {
+            n = {-a[0] / a_norm, -a[1] / a_norm};
+        } else if (s > 0.0) {
+            const double sg = dot(v, d) >= 0.0 ? 1.0 / s : -1.0 / s;
+            n = {sg * v[0], sg * v[1]};
+        }
+        dxdt = {v[0], v[1], -a[0] - mu_k * G * n[0], -a[1] - mu_k * G * n[1]};
+    }
+};
+
+class BiaxialEngine {
+public:
+    BiaxialEngine(const BiaxialModel& m, const Options& o, BiaxialRecorder& rec, BiaxialState& st)
+        : m_(m), o_(o), rec_(rec), st_(st),
+          ctrl_(odeint::make_controlled(o.abs_tol, o.rel_tol, Stepper())) {
+        rhs_.mu_k = m.mu_k;
+    }
+
+    // Advances from t towards tb (the end of segment seg); returns the time reached (tb or an
+    // event).
+    double advance(const BiaxialSegment& seg, double t, double tb) {
+        seg_ = seg;
+        tb_ = tb;
+        rhs_.seg = &seg_;
+        const double te = st_.mode == Mode::rest    ? advance_rest(t)
+                          : st_.mode == Mode::slide ? advance_slide(t)
+                                                    : advance_flight(t);
+        stalled_ = te > t ? 0 : stalled_ + 1;
+        if (stalled_ > max_stalled_events)
+            throw NumericalError(fmt::format(
+                "biaxial event-driven integrator: events accumulate at t = {} s", t));
+        return te;
+    }
+
+private:
+    // A start exactly at a threshold is classified a little after it (strict inequalities).
+    double probe_time(double t) const { return t + std::min(1e-9, 0.5 * (tb_ - t)); }
+
+    void set_mode(Mode next) {
+        rec_.transition(st_.mode, next);
+        if (next == Mode::flight && st_.mode != Mode::flight) {
+            st_.Y = st_.Yd = 0.0;
+            armed_ = false;
+        }
+        if (next == Mode::rest) st_.v = {0.0, 0.0};
+        st_.mode = next;
+    }
+
+    // From rest (v = 0) at t: stick, restart along -a_g, or leave the base.
+    void start_from_rest(double t) {
+        const double tp = probe_time(t);
+        const Vec2 a = seg_.a(tp);
+        const Mode next = biaxial_from_rest(m_, a, seg_.G(tp));
+        if (next == Mode::slide) {
+            const double s = norm(a);
+            d_start_ = {-a[0] / s, -a[1] / s};
+        }
+        set_mode(next);
+    }
+
+    // Rest holds while |a|^2 - (mu_s G)^2 <= 0 and G >= 0; both are polynomials on the segment
+    // (quadratic, linear), so the first failure is a root found in closed form.
+    double advance_rest(double t) {
+        const Vec2 a = seg_.a(t), a1 = seg_.a1;
+        const double G = seg_.G(t), G1 = seg_.G1, mu2 = m_.mu_s * m_.mu_s;
+        const double c0 = dot(a, a) - mu2 * G * G;
+        const double c1 = 2.0 * (dot(a, a1) - mu2 * G * G1);
+        const double c2 = dot(a1, a1) - mu2 * G1 * G1;
+        const double span = tb_ - t;
+        auto q = [&](double tau) { return c0 + tau * (c1 + tau * c2); };
+        double t_ev = std::numeric_limits<double>::infinity();
+        if (c0 > 0.0 || G < 0.0) t_ev = 0.0;
+        if (G1 < 0.0 && -G / G1 <= span) t_ev = std::min(t_ev, std::max(0.0, -G / G1));
+        // Roots of q in (0, span]; q > 0 just after one is a failure of the friction bound.
+        double roots[2] = {-1.0, -1.0};
+        if (c2 != 0.0) {
+            const double disc = c1 * c1 - 4.0 * c2 * c0;
+            if (disc >= 0.0) {
+                const double qq = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+                roots[0] = qq / c2;
+                roots[1] = qq != 0.0 ? c0 / qq : -1.0;
+            }
+        } else if (c1 != 0.0) {
+            roots[0] = -c0 / c1;
+        }
+        std::sort(std::begin(roots), std::end(roots));
+        for (int i = 0; i < 2; ++i) {
+            const double r = roots[i];
+            if (!(r > 0.0 && r <= span)) continue;
+            const double next = (i == 0 && roots[1] > r && roots[1] <= span) ? roots[1] : span;
+            if (q(0.5 * (r + next)) > 0.0 || (next == r && q(r + 1e-9) > 0.0)) {
+                t_ev = std::min(t_ev, r);
+                break;
+            }
+        }
+        if (!(t_ev <= span)) {
+            rec_.time_in(Mode::rest, span);
+            return tb_;
+        }
+        const double te = t + t_ev;
+        rec_.time_in(Mode::rest, t_ev);
+        start_from_rest(te);
+        if (st_.mode == Mode::rest) return probe_time(te);  // touched the bound only
+        return te;
+    }
+
+    // Dormand-Prince steps to the segment's end, lift-off (G = 0) or a stop.
+    double advance_slide(double t) {
+        const double G = seg_.G(t);
+        if (G < 0.0) {
+            set_mode(Mode::flight);
+            return t;
+        }
+        double t_end = tb_;
+        const bool lifts = seg_.G1 < 0.0 && t - G / seg_.G1 < tb_;
+        if (lifts) t_end = t - G / seg_.G1;
+        while (t < t_end) {
+            const double speed = norm(st_.v);
+            if (speed > 0.0 && speed < v_slaved_mps && !(norm(seg_.a(t)) > m_.mu_k * seg_.G(t))) {
+                // A slow slip the friction holds: it stops here (see v_slaved_mps).
+                st_.v = {0.0, 0.0};
+                start_from_rest(t);
+                return t;
+            }
+            rhs_.d = speed > 0.0 ? Vec2{st_.v[0] / speed, st_.v[1] / speed} : d_start_;
+            const State x0 = {st_.u[0], st_.u[1], st_.v[0], st_.v[1]};
+            State dx0{}, x1{}, dx1{};
+            rhs_(x0, dx0, t);
+            if (h_next_ < 1e-14 * std::max(1.0, t))
+                throw NumericalError(fmt::format(
+                    "biaxial event-driven integrator: the step fell below 1e-14 s at t = {} s", t));
+            double h = std::min({h_next_, t_end - t, o_.max_contact_step_s});
+            if (t_end - (t + h) < 1e-12 * h + 8.0 * eps_ * t_end) h = t_end - t;
+            double tt = t, hh = h;
+            if (ctrl_.try_step(std::cref(rhs_), x0, dx0, tt, x1, dx1, hh) == odeint::fail) {
+                rec_.rejected();
+                h_next_ = hh;
+                continue;
+            }
+            h_next_ = hh;
+            const double t1 = (h == t_end - t) ? t_end : t + h;
+            auto dense = [&](double te) {
+                State y{};
+                ctrl_.stepper().calc_state(te, y, x0, dx0, t, x1, dx1, t + h);
+                return y;
+            };
+            const double t_stop = stop_in_step(dense, x0, x1, t, t1);
+            if (t_stop < 0.0) {  // a turn, not a stop: retry up to half the way to it
+                rec_.rejected();
+                h_next_ = 0.5 * (-t_stop - t);
+                continue;
+            }
+            const double te = t_stop < t1 ? t_stop : t1;
+            const State xe = t_stop < t1 ? dense(te) : x1;
+            rec_.step();
+            rec_.time_in(Mode::slide, te - t);
+            observe_peaks(dense, x0, xe, t, te);
+            st_.u = pos(xe);
+            st_.v = vel(xe);
+            if (t_stop < t1) {
+                st_.v = {0.0, 0.0};
+                start_from_rest(te);
+                return te;
+            }
+            t = te;
+        }
+        if (lifts) set_mode(Mode::flight);
+        return t_end;
+    }
+
+    // The stop inside the accepted step [t, t1]: its time, or t1 + 1 if none, or -(root time)
+    // for a root of v . d that is a turn (|v| not nil there).
+    template <class Dense>
+    double stop_in_step(const Dense& dense, const State& x0, const State& x1, double t,
+                        double t1) const {
+        const Vec2 d = rhs_.d;
+        const double f1 = dot(vel(x1), d);
+        if (f1 > 0.0) return t1 + 1.0;
+        auto f = [&](double te) { return dot(vel(dense(te)), d); };
+        double ta = t, fa = dot(vel(x0), d);
+        if (!(fa > 0.0)) {
+            // A restart from v = 0: look for the excursion along d inside the step.
+            fa = 0.0;
+            for (int j = 1; j < 8 && !(fa > 0.0); ++j) {
+                ta = t + (t1 - t) * j / 8.0;
+                fa = f(ta);
+            }
+            if (!(fa > 0.0)) return t;  // pushed against d at once: a stop now
+        }
+        const double ts = toms748_root(f, ta, t1, fa, f1);
+        const double vmax = std::max(norm(vel(x0)), norm(vel(x1)));
+        const double tol = 10.0 * (o_.abs_tol + o_.rel_tol * vmax);
+        if (norm(vel(dense(ts))) <= tol || ts - t <= 1e-12) return ts;
+        return -ts;
+    }
+
+    // Peaks of |u|, |u_x|, |u_y| inside [t, te]: where u . v, u_x v_x or u_y v_y (half the rate
+    // of |u|^2, u_x^2, u_y^2) passes from + to -.
+    template <class Dense>
+    void observe_peaks(const Dense& dense, const State& x0, const State& xe, double t,
+                       double te) {
+        auto rate = [](const State& x, int which) {
+            return which == 0 ? x[0] * x[2] + x[1] * x[3] : x[which - 1] * x[which + 1];
+        };
+        for (int which = 0; which < 3; ++which) {
+            const double f0 = rate(x0, which), f1 = rate(xe, which);
+            if (!(f0 > 0.0 && f1 <= 0.0)) continue;
+            auto f = [&](double tt) { return rate(dense(tt), which); };
+            rec_.observe(pos(dense(toms748_root(f, t, te, f0, f1))));
+        }
+        rec_.observe(pos(xe));
+    }
+
+    // Ballistic translation: u'' = -a_g, Y'' = -G, both cubic on the segment.
+    BiaxialState flight_at(const BiaxialState& s0, double t0, double tau) const {
+        const Vec2 a = seg_.a(t0), a1 = seg_.a1;
+        const double G = seg_.G(t0), G1 = seg_.G1;
+        const double t2 = tau * tau, t3 = t2 * tau;
+        BiaxialState s = s0;
+        for (int i = 0; i < 2; ++i) {
+            s.u[i] += s0.v[i] * tau - a[i] * t2 / 2.0 - a1[i] * t3 / 6.0;
+            s.v[i] += -a[i] * tau - a1[i] * t2 / 2.0;
+        }
+        s.Y += s0.Yd * tau - G * t2 / 2.0 - G1 * t3 / 6.0;
+        s.Yd += -G * tau - G1 * t2 / 2.0;
+        return s;
+    }
+
+    double advance_flight(double t) {
+        rec_.step();
+        const BiaxialState s0 = st_;
+        const double span = tb_ - t;
+        auto height = [&](double tau) { return flight_at(s0, t, tau).Y; };
+        double prev = 0.0, hprev = s0.Y, tau_land = -1.0;
+        if (hprev > 0.0) armed_ = true;
+        for (int j = 1; j <= flight_probes; ++j) {
+            const double tau = span * j / flight_probes;
+            const double hj = height(tau);
+            rec_.observe(flight_at(s0, t, tau).u);
+            if (armed_ && hj <= 0.0) {
+                tau_land = hprev > 0.0 ? toms748_root(height, prev, tau, hprev, hj) : prev;
+                break;
+            }
+            if (hj > 0.0) armed_ = true;
+            prev = tau;
+            hprev = hj;
+        }
+        if (tau_land < 0.0) {
+            st_ = flight_at(s0, t, span);
+            rec_.time_in(Mode::flight, span);
+            rec_.observe(st_.u);
+            return tb_;
+        }
+        const double te = t + tau_land;
+        st_ = flight_at(s0, t, tau_land);
+        rec_.time_in(Mode::flight, tau_land);
+        rec_.observe(st_.u);
+        // Flat landing (no rotation in this model): a Coulomb impulse against the slip.
+        st_.v = biaxial_landing_velocity(m_, st_.v, st_.Yd);
+        st_.Y = st_.Yd = 0.0;
+        armed_ = false;
+        const double speed = norm(st_.v);
+        if (speed > 0.0) {
+            set_mode(Mode::slide);
+        } else {
+            start_from_rest(te);
+        }
+        return te;
+    }
+
+    static constexpr double eps_ = std::numeric_limits<double>::epsilon();
+    const BiaxialModel& m_;
+    const Options& o_;
+    BiaxialRecorder& rec_;
+    BiaxialState& st_;
+    Controlled ctrl_;
+    SlideRhs rhs_;
+    BiaxialSegment seg_;
+    double tb_ = 0.0;
+    double h_next_ = 1e-3;    // step the error control proposes next
+    Vec2 d_start_{1.0, 0.0};  // slip direction of a start from v = 0
+    bool armed_ = false;      // in flight, the block has left the base
+    std::size_t stalled_ = 0;
+};
+
+}  // namespace
+
+BiaxialResult run_biaxial_event(const BiaxialModel& m, const BiaxialBase& base,
+                                const Options& o) {
+    constexpr const char* name = "event";
+    BiaxialRecorder rec(o, 0.0);
+    const std::size_t n_seg = base.segments(o.tail_s);
+    BiaxialState st;
+    rec.sample(0.0, st);
+    BiaxialEngine engine(m, o, rec, st);
+    for (std::size_t k = 0; k < n_seg; ++k) {
+        const BiaxialSegment seg = base.segment(k);
+        const double tb = base.t_k(k + 1);
+        for (double t = base.t_k(k); t < tb;) t = engine.advance(seg, t, tb);
+        rec.sample(tb, st);
+        if (st.mode == Mode::rest && tb >= base.quiet_from_s()) return rec.finish(st, tb, name);
+    }
+    return rec.finish(st, base.t_k(n_seg), name);
+}
+
+}  // namespace freestand::dynamics::detail
