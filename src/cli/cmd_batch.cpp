@@ -37,14 +37,6 @@ const char* const usage =
     "DIR/shard-K-of-N.jsonl; `freestand merge` of all N writes the folder this run would,\n"
     "byte for byte (give every shard the same LIST path and build)";
 
-unsigned parse_threads(const std::string& text) {
-    const double t = parse_double(text, "--threads");
-    if (!(t >= 1.0 && t <= 1024.0) || t != static_cast<double>(static_cast<unsigned>(t)))
-        throw UsageError(fmt::format("--threads: expected a whole number in [1, 1024]; got {}",
-                                     text));
-    return static_cast<unsigned>(t);
-}
-
 // Shard k of n: its components' rows and report files as JSON lines for `freestand merge`.
 int run_shard(const batch::BatchList& list, std::array<int, 2> share, unsigned threads,
               const std::filesystem::path& out) {
@@ -87,7 +79,8 @@ int run(const std::vector<std::string>& args) {
     const auto vm = parse_options("batch", usage, desc, args, {"list"});
     if (!vm) return 0;
     const unsigned threads = vm->count("threads")
-                                 ? parse_threads((*vm)["threads"].as<std::string>())
+                                 ? static_cast<unsigned>(
+                                       parse_whole((*vm)["threads"].as<std::string>(), "--threads", 1, 1024))
                                  : std::max(1u, std::thread::hardware_concurrency());
     const bool json = (*vm)["json"].as<bool>();
     std::optional<std::array<int, 2>> share;

@@ -27,18 +27,12 @@ const char* const usage =
 fragility::Config config_from(const po::variables_map& vm, const assess::Case& c) {
     fragility::Config cfg;
     cfg.pga_g = parse_levels(vm["pga"].as<std::string>(), "--pga");
-    cfg.samples = static_cast<int>(parse_double(vm["samples"].as<std::string>(), "--samples"));
-    if (std::to_string(cfg.samples) != vm["samples"].as<std::string>())
-        throw UsageError(fmt::format("--samples: expected a whole number; got \"{}\"",
-                                     vm["samples"].as<std::string>()));
-    cfg.pool = static_cast<int>(parse_double(vm["pool"].as<std::string>(), "--pool"));
-    cfg.seed = c.options.seed;
-    if (vm.count("seed")) {
-        const double s = parse_double(vm["seed"].as<std::string>(), "--seed");
-        if (!(s >= 0.0 && s < 9.0e15 && s == std::floor(s)))
-            throw UsageError(fmt::format("--seed: {}; expected a non-negative integer", s));
-        cfg.seed = static_cast<std::uint64_t>(s);
-    }
+    // Whole numbers here; their ranges are the fragility config's to check (exit 3).
+    constexpr double int_max = 2147483647.0;
+    cfg.samples = static_cast<int>(parse_whole(vm["samples"].as<std::string>(), "--samples", 0, int_max));
+    cfg.pool = static_cast<int>(parse_whole(vm["pool"].as<std::string>(), "--pool", 0, int_max));
+    cfg.seed = vm.count("seed") ? parse_whole(vm["seed"].as<std::string>(), "--seed", 0, 9.0e15)
+                                : c.options.seed;
     if (vm.count("records")) cfg.record_files = vm["records"].as<std::vector<std::string>>();
     return cfg;
 }
@@ -67,8 +61,8 @@ int run(const std::vector<std::string>& args) {
     const std::string bytes = core::read_input_file(case_file);
     const assess::Case c = assess::parse_case(bytes, case_file.string());
     const fragility::Config cfg = config_from(*vm, c);
-    const int threads = static_cast<int>(parse_double((*vm)["threads"].as<std::string>(), "--threads"));
-    if (threads < 0) throw UsageError("--threads: expected 0 (all cores) or a positive count");
+    const int threads =
+        static_cast<int>(parse_whole((*vm)["threads"].as<std::string>(), "--threads", 0, 1024));
     const std::filesystem::path out =
         vm->count("out") ? std::filesystem::path((*vm)["out"].as<std::string>())
                          : std::filesystem::path("out") / (case_file.stem().string() + "-fragility");

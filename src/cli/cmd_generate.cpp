@@ -172,11 +172,7 @@ int run(const std::vector<std::string>& args) {
     motion::TargetSet targets = targets_from(*vm);
     apply_realism_options(*vm, targets);
     motion::GenerateOptions go;
-    const double seed = parse_double((*vm)["seed"].as<std::string>(), "--seed");
-    if (!(seed >= 0.0 && seed < 9.0e15 &&
-          seed == static_cast<double>(static_cast<std::uint64_t>(seed))))
-        throw UsageError(fmt::format("--seed: {}; expected a non-negative integer", seed));
-    go.seed = static_cast<std::uint64_t>(seed);
+    go.seed = parse_whole((*vm)["seed"].as<std::string>(), "--seed", 0, 9.0e15);
     if (vm->count("seed-record")) {
         for (const std::string& group : (*vm)["seed-record"].as<std::vector<std::string>>())
             for (const std::string& file : split_list(group))

@@ -45,6 +45,14 @@ double parse_double(const std::string& text, const std::string& option) {
     return value;
 }
 
+std::uint64_t parse_whole(const std::string& text, const std::string& option, double lo, double hi) {
+    const double value = parse_double(text, option);
+    if (!(value >= lo && value <= hi && value == std::floor(value)))
+        throw UsageError(fmt::format("{}: expected a whole number in [{:g}, {:g}]; got \"{}\"", option,
+                                     lo, hi, text));
+    return static_cast<std::uint64_t>(value);
+}
+
 std::vector<std::string> split_list(const std::string& text) {
     std::vector<std::string> items;
     std::size_t start = 0;

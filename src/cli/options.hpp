@@ -3,8 +3,8 @@
 /// syntaxes several commands use (comma lists, key=value lists).
 #include <boost/program_options.hpp>
 #include <array>
+#include <cstdint>
 #include <map>
-#include <optional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +40,10 @@ std::array<int, 2> parse_shard(const std::string& text, const std::string& optio
 
 /// One number; accepts a trailing unit suffix listed in allowed_suffixes ("g", "Hz", "s").
 double parse_double(const std::string& text, const std::string& option);
+
+/// A whole number in [lo, hi] (counts, seeds, thread numbers; "1e2" is 100); UsageError naming
+/// option otherwise, so that "2.5" is never truncated to 2.
+std::uint64_t parse_whole(const std::string& text, const std::string& option, double lo, double hi);
 
 /// "b=0.15,h=0.6,m=38" -> {{"b",0.15},{"h",0.6},{"m",38}}; keys must be in allowed.
 std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,

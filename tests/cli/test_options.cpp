@@ -18,6 +18,19 @@ TEST_CASE("one splitter keeps empty items for the caller to name", "[cli][option
                       Catch::Contains("--block: expected key=value; got \"\""));
 }
 
+TEST_CASE("whole numbers: counts, seeds and threads are never truncated", "[cli][options]") {
+    CHECK(cli::parse_whole("100", "--samples", 0, 1e6) == 100);
+    CHECK(cli::parse_whole("1e2", "--samples", 0, 1e6) == 100);
+    CHECK(cli::parse_whole("0", "--threads", 0, 1024) == 0);
+    CHECK(cli::parse_whole("8999999999999999", "--seed", 0, 9e15) == 8999999999999999ULL);
+    for (const char* bad : {"2.5", "-1", "1025", "nan", "", "3x"}) {
+        INFO(bad);
+        CHECK_THROWS_AS(cli::parse_whole(bad, "--threads", 0, 1024), UsageError);
+    }
+    CHECK_THROWS_WITH(cli::parse_whole("2.5", "--pool", 0, 100),
+                      "--pool: expected a whole number in [0, 100]; got \"2.5\"");
+}
+
 TEST_CASE("the block options give the same block in both --cg forms", "[cli][options]") {
     const block::Block a = cli::block_from_options("b=0.2,h=0.5,m=10", std::string("0.25,0.4"), 1.5);
     const block::Block b = cli::block_from_options("b=0.2,h=0.5,m=10", std::string("x=0.05,h=0.4"), 1.5);

@@ -195,6 +195,9 @@ TEST_CASE("fragility options are checked before any sample runs", "[fragility][c
     fails("--shard 4/3", 2, "--shard");
     fails("--shard 0/3", 2, "--shard");
     fails("--threads -1", 2, "--threads");
+    // Counts that are not whole are refused, not truncated (2.5 ran 2 threads, 2.5 sets 2).
+    fails("--threads 1.5", 2, "--threads: expected a whole number");
+    fails("--pool 2.5", 2, "--pool: expected a whole number");
     fails("--seed -3", 2, "--seed");
     const auto missing = run_cli("fragility '" + s.case_file + "' --records '" +
                                  (s.dir / "nope.csv").string() + "' --out '" +
