@@ -7,10 +7,10 @@
 
 #include "core/publish.hpp"
 #include "core/statistics.hpp"
-#include "report/escape_guard.hpp"
 #include "report/references.hpp"
 #include "report/render.hpp"
 #include "report/svg.hpp"
+#include "report/template_render.hpp"
 
 namespace freestand::report {
 
@@ -90,6 +90,11 @@ std::string method_text(const fragility::Meta& m) {
         m.config.samples);
 }
 
+// What a fragility report cites.
+std::vector<Reference> cited_references() {
+    return references({"docs/methods.md", "FEMA P-58", "Baker 2015", "Clopper & Pearson 1934"});
+}
+
 std::string levels_text(const std::vector<double>& pga) {
     std::string out;
     for (double a : pga) out += (out.empty() ? "" : ", ") + fmt::format("{:g}", a);
@@ -135,8 +140,7 @@ ordered_json fragility_body_json(const fragility::Result& r) {
                    {"events", events},
                    {"methods", "docs/methods.md s.9"}};
     ordered_json refs = ordered_json::array();
-    for (const Reference& ref :
-         references({"docs/methods.md", "FEMA P-58", "Baker 2015", "Clopper & Pearson 1934"}))
+    for (const Reference& ref : cited_references())
         refs.push_back({{"key", ref.key}, {"text", ref.text}});
     j["references"] = refs;
     return j;
@@ -255,30 +259,17 @@ RenderedFragility render_fragility(const fragility::Result& r, const Stamp& stam
     out.figure = fragility_figure(r);
     mstch::map ctx = fragility_section_context(r, out.figure);
     ctx.emplace("frag_case", r.meta.case_name);
-    mstch::array refs;
-    for (const Reference& ref :
-         references({"docs/methods.md", "FEMA P-58", "Baker 2015", "Clopper & Pearson 1934"}))
-        refs.push_back(mstch::map{{"key", ref.key}, {"text", ref.text}});
-    ctx.emplace("references", refs);
+    ctx.emplace("references", reference_items(cited_references()));
     ctx.emplace("stamp_version", stamp.tool_version);
     ctx.emplace("stamp_commit", stamp.commit);
     ctx.emplace("stamp_case_file", stamp.case_file);
     ctx.emplace("stamp_sha256", stamp.input_sha256);
     ctx.emplace("stamp_seed", std::to_string(stamp.seed));
-    mstch::array inputs;
-    for (const StampedInput& i : stamp.inputs)
-        inputs.push_back(mstch::map{{"file", i.file}, {"sha256", i.sha256}});
-    ctx.emplace("stamp_inputs", inputs);
-    {
-        EscapeGuard guard(markdown_escape);
-        out.markdown = mstch::render(template_fragility_md, ctx,
-                                     {{"section", template_fragility_section_md}});
-    }
-    {
-        EscapeGuard guard(html_escape);
-        out.html = mstch::render(template_fragility_html, ctx,
-                                 {{"section", template_fragility_section_html}});
-    }
+    ctx.emplace("stamp_inputs", stamp_input_items(stamp));
+    out.markdown = render_markdown(template_fragility_md, ctx,
+                                   {{"section", template_fragility_section_md}});
+    out.html = render_html(template_fragility_html, ctx,
+                           {{"section", template_fragility_section_html}});
     out.json = fragility_json(r, stamp).dump(2) + "\n";
     out.csv = samples_csv(r);
     return out;

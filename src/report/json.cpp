@@ -192,12 +192,6 @@ ordered_json upgrade_json(const Upgrade& up) {
     return j;
 }
 
-ordered_json inputs_json(const std::vector<StampedInput>& inputs) {
-    ordered_json out = ordered_json::array();
-    for (const StampedInput& i : inputs) out.push_back({{"file", i.file}, {"sha256", i.sha256}});
-    return out;
-}
-
 ordered_json case_json(const Case& c) {
     const Component& k = c.component;
     ordered_json comp;
@@ -274,6 +268,12 @@ std::vector<StampedInput> stamped_inputs(const Case& c) {
             if (*t) target(**t);
     }
     for (const auto& r : c.options.seed_records) add(r.string(), r);
+    return out;
+}
+
+ordered_json inputs_json(const std::vector<StampedInput>& inputs) {
+    ordered_json out = ordered_json::array();
+    for (const StampedInput& i : inputs) out.push_back({{"file", i.file}, {"sha256", i.sha256}});
     return out;
 }
 

@@ -35,6 +35,9 @@ Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, st
 /// The case's other input files (target spectra, seed records), hashed.
 std::vector<StampedInput> stamped_inputs(const assess::Case& c);
 
+/// [{"file", "sha256"}] of a stamp's other inputs, as written under "stamp"/"inputs".
+nlohmann::ordered_json inputs_json(const std::vector<StampedInput>& inputs);
+
 /// The stamp as written under "stamp", and read back (shard files carry it to `merge`).
 nlohmann::ordered_json stamp_json(const Stamp& stamp);
 Stamp stamp_from_json(const nlohmann::json& j);

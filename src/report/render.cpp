@@ -9,9 +9,9 @@
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
 #include "core/publish.hpp"
-#include "report/escape_guard.hpp"
 #include "report/fragility_report.hpp"
 #include "report/references.hpp"
+#include "report/template_render.hpp"
 
 namespace freestand::report {
 
@@ -210,20 +210,6 @@ std::string governing_bound(const LevelResult& l) {
     return none;
 }
 
-mstch::array stamp_inputs(const Stamp& stamp) {
-    mstch::array out;
-    for (const StampedInput& i : stamp.inputs)
-        out.push_back(mstch::map{{"file", i.file}, {"sha256", i.sha256}});
-    return out;
-}
-
-mstch::array reference_list() {
-    mstch::array out;
-    for (const Reference& r : references())
-        out.push_back(mstch::map{{"key", r.key}, {"text", r.text}});
-    return out;
-}
-
 mstch::array text_list(const std::vector<std::string>& items) {
     mstch::array out;
     for (const std::string& s : items) out.push_back(mstch::map{{"text", s}});
@@ -411,13 +397,13 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"history_checks", checks},
         {"assumptions", text_list(r.assumptions)},
         {"limits", text_list(r.limits)},
-        {"references", reference_list()},
+        {"references", reference_items(references())},
         {"stamp_version", stamp.tool_version},
         {"stamp_commit", stamp.commit},
         {"stamp_case_file", stamp.case_file},
         {"stamp_sha256", stamp.input_sha256},
         {"stamp_seed", std::to_string(stamp.seed)},
-        {"stamp_inputs", stamp_inputs(stamp)},
+        {"stamp_inputs", stamp_input_items(stamp)},
     };
 }
 
@@ -514,16 +500,10 @@ Rendered render(const AssessmentResult& r, const Stamp& stamp,
             ctx.emplace(key, value);
         out.extra_files.push_back({fig.file, fig.svg});
     }
-    {
-        EscapeGuard guard(markdown_escape);
-        out.markdown = mstch::render(template_report_md, ctx,
-                                     {{"fragility_section", template_fragility_section_md}});
-    }
-    {
-        EscapeGuard guard(html_escape);
-        out.html = mstch::render(template_report_html, ctx,
-                                 {{"fragility_section", template_fragility_section_html}});
-    }
+    out.markdown = render_markdown(template_report_md, ctx,
+                                   {{"fragility_section", template_fragility_section_md}});
+    out.html = render_html(template_report_html, ctx,
+                           {{"fragility_section", template_fragility_section_html}});
     nlohmann::ordered_json json = to_json(r, stamp);
     if (fragility) json["fragility"] = fragility_body_json(*fragility);
     out.json = json.dump(2) + "\n";

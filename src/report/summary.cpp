@@ -7,7 +7,7 @@
 
 #include "assess/verdict.hpp"
 #include "core/csv_table.hpp"
-#include "report/escape_guard.hpp"
+#include "report/template_render.hpp"
 #include "report/json.hpp"
 #include "report/render.hpp"
 
@@ -182,14 +182,8 @@ ordered_json summary_json(const Summary& s) {
 RenderedSummary render_summary(const Summary& s) {
     RenderedSummary out;
     const mstch::map ctx = context(s);
-    {
-        EscapeGuard guard(markdown_escape);
-        out.markdown = mstch::render(template_summary_md, ctx);
-    }
-    {
-        EscapeGuard guard(html_escape);
-        out.html = mstch::render(template_summary_html, ctx);
-    }
+    out.markdown = render_markdown(template_summary_md, ctx);
+    out.html = render_html(template_summary_html, ctx);
     out.csv = summary_csv(s);
     out.json = summary_json(s).dump(2) + "\n";
     return out;

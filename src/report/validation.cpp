@@ -7,7 +7,7 @@
 
 #include "core/file_io.hpp"
 #include "core/publish.hpp"
-#include "report/escape_guard.hpp"
+#include "report/template_render.hpp"
 #include "report/references.hpp"
 #include "report/render.hpp"
 #include "report/sha256.hpp"
@@ -131,22 +131,18 @@ mstch::map context(const validate::Validation& v, const Stamp& stamp) {
             {"line", std::to_string(f->cite.line)},
             {"quote", f->cite.quote}});
     }
-    mstch::array refs;
-    for (const Reference& r : references()) {
-        if (cited.count(r.key)) refs.push_back(mstch::map{{"key", r.key}, {"text", r.text}});
-    }
-    mstch::array inputs;
-    for (const StampedInput& i : stamp.inputs)
-        inputs.push_back(mstch::map{{"file", i.file}, {"sha256", i.sha256}});
+    std::vector<Reference> refs;
+    for (const Reference& r : references())
+        if (cited.count(r.key)) refs.push_back(r);
     return mstch::map{{"title", std::string(title)},
                       {"summary", summary_text(v)},
                       {"groups", groups},
                       {"notes", text_list(v.notes)},
                       {"facts", facts},
-                      {"references", refs},
+                      {"references", reference_items(refs)},
                       {"stamp_version", stamp.tool_version},
                       {"stamp_commit", stamp.commit},
-                      {"stamp_inputs", inputs}};
+                      {"stamp_inputs", stamp_input_items(stamp)}};
 }
 
 }  // namespace
@@ -198,26 +194,18 @@ ordered_json validation_json(const validate::Validation& v, const Stamp& stamp) 
     j["thesis"] = {{"reference", "Saraswat 2017"},
                    {"text_file", std::string("shared/thesis/") + validate::thesis_text_file},
                    {"values", facts}};
-    ordered_json inputs = ordered_json::array();
-    for (const StampedInput& i : stamp.inputs) inputs.push_back({{"file", i.file}, {"sha256", i.sha256}});
     j["stamp"] = {{"tool", "freestand"},
                   {"version", stamp.tool_version},
                   {"commit", stamp.commit},
-                  {"inputs", inputs}};
+                  {"inputs", inputs_json(stamp.inputs)}};
     return j;
 }
 
 ValidationReport render_validation(const validate::Validation& v, const Stamp& stamp) {
     ValidationReport out;
     const mstch::map ctx = context(v, stamp);
-    {
-        EscapeGuard guard(markdown_escape);
-        out.markdown = mstch::render(template_validation_md, ctx);
-    }
-    {
-        EscapeGuard guard(html_escape);
-        out.html = mstch::render(template_validation_html, ctx);
-    }
+    out.markdown = render_markdown(template_validation_md, ctx);
+    out.html = render_html(template_validation_html, ctx);
     out.json = validation_json(v, stamp).dump(2) + "\n";
     return out;
 }

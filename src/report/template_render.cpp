@@ -1,0 +1,32 @@
+#include "report/template_render.hpp"
+
+#include "report/escape_guard.hpp"
+#include "report/render.hpp"
+
+namespace freestand::report {
+
+std::string render_markdown(const std::string& tpl, const mstch::map& ctx,
+                            const Partials& partials) {
+    EscapeGuard guard(markdown_escape);
+    return mstch::render(tpl, ctx, partials);
+}
+
+std::string render_html(const std::string& tpl, const mstch::map& ctx, const Partials& partials) {
+    EscapeGuard guard(html_escape);
+    return mstch::render(tpl, ctx, partials);
+}
+
+mstch::array stamp_input_items(const Stamp& stamp) {
+    mstch::array out;
+    for (const StampedInput& i : stamp.inputs)
+        out.push_back(mstch::map{{"file", i.file}, {"sha256", i.sha256}});
+    return out;
+}
+
+mstch::array reference_items(const std::vector<Reference>& refs) {
+    mstch::array out;
+    for (const Reference& r : refs) out.push_back(mstch::map{{"key", r.key}, {"text", r.text}});
+    return out;
+}
+
+}  // namespace freestand::report
