@@ -12,18 +12,16 @@
 
 #include "batch/list.hpp"
 #include "batch/run.hpp"
+#include "timing.hpp"
 
 using namespace freestand;
 namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-fs::path source_dir() { return fs::path(FREESTAND_TEST_DATA).parent_path().parent_path(); }
+using bench::Clock;
+using bench::seconds_since;
+using bench::source_dir;
 
 struct Timed {
     batch::BatchRun run;

@@ -14,16 +14,13 @@
 
 #include "core/readers.hpp"
 #include "dynamics/biaxial.hpp"
+#include "timing.hpp"
 
 using namespace freestand;
 
 namespace {
 
-double cpu_now() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+using bench::thread_cpu_s;
 
 struct Config {
     const char* label;
@@ -84,9 +81,9 @@ int main() {
     for (int round = 0; round < 5; ++round)
         for (Config& c : configs)
             for (int i = 0; i < c.reps; ++i) {
-                const double t0 = cpu_now();
+                const double t0 = thread_cpu_s();
                 c.peak_m = c.run(c.steps);
-                c.best_s = std::min(c.best_s, cpu_now() - t0);
+                c.best_s = std::min(c.best_s, thread_cpu_s() - t0);
             }
     std::printf("biaxial reference (rel_tol 1e-12): peak |u| %.6g m\n", ref);
     std::printf("%-18s %12s %12s %10s %10s\n", "config", "cpu_s", "rel_error", "steps",

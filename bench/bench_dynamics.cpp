@@ -19,6 +19,7 @@
 #include "dynamics/integrators.hpp"
 #include "dynamics/simulate.hpp"
 #include "dynamics/taylor.hpp"
+#include "timing.hpp"
 
 using namespace freestand;
 
@@ -29,11 +30,7 @@ struct Case {
     double half_width_m, pga_g, mu;
 };
 
-double cpu_now() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+using bench::thread_cpu_s;
 
 // Best CPU time per run of each configuration. Rounds run every configuration in turn, so a
 // slow phase of the (shared, virtual) machine falls on all of them alike and the ratios hold
@@ -52,12 +49,12 @@ void time_interleaved(const dynamics::BlockModel& m, const dynamics::Excitation&
     for (int r = 0; r < rounds; ++r)
         for (Config& c : configs)
             for (int i = 0; i < c.reps; ++i) {
-                const double t0 = cpu_now();
+                const double t0 = thread_cpu_s();
                 if (c.run)
                     c.run();
                 else
                     c.s = dynamics::simulate(m, e, c.o).summary;
-                c.best_s = std::min(c.best_s, cpu_now() - t0);
+                c.best_s = std::min(c.best_s, thread_cpu_s() - t0);
             }
 }
 

@@ -26,16 +26,16 @@
 #include "fragility/fragility.hpp"
 #include "report/fragility_report.hpp"
 #include "support/sliding_sine.hpp"
+#include "timing.hpp"
 
 using namespace freestand;
 namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using bench::Clock;
+using bench::seconds_since;
+using bench::source_dir;
 // CPU time of the whole process (all threads): on a loaded machine, simulations per CPU
 // second is the per-core rate a quiet machine would give.
 double cpu_s() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -46,7 +46,6 @@ std::vector<std::size_t> all_indices(const fragility::Runner& r) {
     return all;
 }
 
-fs::path source_dir() { return fs::path(FREESTAND_TEST_DATA).parent_path().parent_path(); }
 
 struct Mix {
     int rest = 0, slide_only = 0, rocked = 0, overturned = 0;

@@ -580,13 +580,7 @@ Case parse_case(const std::string& text, const std::string& file_label) {
 Case parse_case(const std::string& text, const std::string& file_label,
                 const CaseOverrides& overrides) {
     check_line_lengths(text, file_label);
-    toml::table root;
-    try {
-        root = toml::parse(text, file_label);
-    } catch (const toml::parse_error& e) {
-        throw InputError(SourceLocation{file_label, static_cast<int>(e.source().begin.line), ""},
-                         fmt::format("TOML syntax error: {}", e.description()));
-    }
+    toml::table root = parse_toml(text, file_label);
     apply_overrides(root, overrides);
     Case out;
     out.file = file_label;

@@ -8,6 +8,15 @@
 
 namespace freestand::assess {
 
+toml::table parse_toml(const std::string& text, const std::string& file_label) {
+    try {
+        return toml::parse(text, file_label);
+    } catch (const toml::parse_error& e) {
+        throw InputError(SourceLocation{file_label, static_cast<int>(e.source().begin.line), ""},
+                         fmt::format("TOML syntax error: {}", e.description()));
+    }
+}
+
 namespace {
 
 const char* type_name(toml::node_type t) {

@@ -12,6 +12,9 @@
 
 namespace freestand::assess {
 
+/// The TOML document; a syntax error is an InputError at file_label and its line.
+toml::table parse_toml(const std::string& text, const std::string& file_label);
+
 /// Allowed interval of a number; bounds inclusive unless stated.
 struct Range {
     double lo;

@@ -57,13 +57,7 @@ const toml::array& case_tables(const toml::table& root, const std::string& file)
 }  // namespace
 
 BatchList parse_toml_list(const std::string& text, const std::string& file_label) {
-    toml::table root;
-    try {
-        root = toml::parse(text, file_label);
-    } catch (const toml::parse_error& e) {
-        throw InputError(SourceLocation{file_label, static_cast<int>(e.source().begin.line), ""},
-                         fmt::format("TOML syntax error: {}", e.description()));
-    }
+    const toml::table root = assess::parse_toml(text, file_label);
     const toml::array& tables = case_tables(root, file_label);
     BatchList list{file_label, "", {}};
     detail::EntryCollector collect(list);

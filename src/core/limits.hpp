@@ -4,6 +4,7 @@
 /// naming the parameter, what the request needs and the limit.
 #include <cstddef>
 #include <string_view>
+#include <vector>
 
 #include "core/errors.hpp"
 
@@ -50,5 +51,9 @@ void require_within(double needed, double limit, const SourceLocation& where,
 /// "<what>: <given> is below the limit <limit> (README, Limits)".
 void require_at_least(double given, double limit, const SourceLocation& where,
                       std::string_view what);
+
+/// Throws InputError at where unless every sample is finite and within max_abs_accel_mps2
+/// (an excitation's accelerations, after any scaling).
+void require_accelerations(const std::vector<double>& series_mps2, const SourceLocation& where);
 
 }  // namespace freestand::core::limits

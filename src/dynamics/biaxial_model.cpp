@@ -120,13 +120,7 @@ void require_excitation(const BiaxialExcitation& e) {
         throw InputError({"", 0, "excitation vertical_mps2"},
                          "must be empty or as long as the horizontal samples");
     for (const auto* series : {&e.x_mps2, &e.y_mps2, &e.vertical_mps2})
-        for (double a : *series) {
-            if (!std::isfinite(a))
-                throw InputError({"", 0, "excitation"}, "an acceleration is not a finite number");
-            core::limits::require_within(std::abs(a), core::limits::max_abs_accel_mps2,
-                                         {"", 0, "excitation"},
-                                         "an excitation acceleration (m/s^2, 100 g)");
-        }
+        core::limits::require_accelerations(*series, {"", 0, "excitation"});
     core::limits::require_within(static_cast<double>(e.x_mps2.size()), core::limits::max_samples,
                                  {"", 0, "excitation"}, "the excitation's samples");
 }

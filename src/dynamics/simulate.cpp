@@ -10,15 +10,8 @@ namespace freestand::dynamics {
 namespace {
 // Out-of-range physics is an input error (issue 16): --scale 1e308 reported 8e304 m.
 void require_accelerations(const Excitation& e) {
-    for (const auto* series : {&e.horizontal_mps2, &e.vertical_mps2}) {
-        for (double a : *series) {
-            if (!std::isfinite(a))
-                throw InputError({"", 0, "excitation"}, "an acceleration is not a finite number");
-            core::limits::require_within(std::abs(a), core::limits::max_abs_accel_mps2,
-                                         {"", 0, "excitation"},
-                                         "an excitation acceleration (m/s^2, 100 g)");
-        }
-    }
+    for (const auto* series : {&e.horizontal_mps2, &e.vertical_mps2})
+        core::limits::require_accelerations(*series, {"", 0, "excitation"});
 }
 }  // namespace
 
