@@ -380,3 +380,66 @@ TEST_CASE("a case line beyond 4096 characters is refused before the TOML parser 
     CHECK(error_of(base_component + base_site + longest).find("site.x: unknown key") !=
           std::string::npos);
 }
+
+TEST_CASE("[uncertainty] laws are read or refused at their key", "[assess][case][fragility]") {
+    const Case none = parse_case(base_component + base_site, "case.toml");
+    CHECK_FALSE(none.uncertainty.mu_s.has_value());
+    CHECK_FALSE(none.uncertainty.restitution.has_value());
+    const Case c = parse_case(base_component + base_site +
+                                  "[uncertainty]\n"
+                                  "mu_s = { dist = \"uniform\", lo = 0.12, hi = 0.18 }\n"
+                                  "restitution = { dist = \"lognormal\", median = 0.9, beta = 0.1 }\n",
+                              "case.toml");
+    REQUIRE(c.uncertainty.mu_s.has_value());
+    CHECK(c.uncertainty.mu_s->kind == core::Distribution::Kind::uniform);
+    CHECK(c.uncertainty.mu_s->a == 0.12);
+    CHECK(c.uncertainty.mu_s->b == 0.18);
+    REQUIRE(c.uncertainty.restitution.has_value());
+    CHECK(c.uncertainty.restitution->kind == core::Distribution::Kind::lognormal);
+    CHECK(c.uncertainty.restitution->a == 0.9);
+    CHECK(c.uncertainty.restitution->upper == 1.0);  // a restitution above 1 is never drawn
+    const std::string u = base_component + base_site + "[uncertainty]\n";
+    CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = nan, hi = 0.2 }\n") ==
+          "case.toml:12: uncertainty.mu_s.lo: value nan is out of range; expected [0, 10]");
+    CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = 0.3, hi = 0.2 }\n") ==
+          "case.toml:12: uncertainty.mu_s.hi: 0.2 is below lo = 0.3; expected lo <= hi");
+    CHECK(error_of(u + "mu_s = { lo = 0.1, hi = 0.2 }\n") ==
+          "case.toml:12: uncertainty.mu_s.dist: missing required key (a string)");
+    CHECK(error_of(u + "mu_s = { dist = \"lognormal\", median = 0.2, beta = 0 }\n") ==
+          "case.toml:12: uncertainty.mu_s.beta: value 0 is out of range; expected (0, 2]");
+    CHECK(error_of(u + "mu_s = { dist = \"weibull\" }\n") ==
+          "case.toml:12: uncertainty.mu_s.dist: \"weibull\"; expected \"uniform\" or \"lognormal\"");
+    CHECK(error_of(u + "restitution = { dist = \"uniform\", lo = 0.5, hi = 1.5 }\n") ==
+          "case.toml:12: uncertainty.restitution.hi: value 1.5 is out of range; expected [0, 1]");
+    CHECK(error_of(u + "mu_s = 0.2\n") ==
+          "case.toml:12: uncertainty.mu_s: expected a table, got a number");
+    CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = 0.1, hi = 0.2, x = 1 }\n") ==
+          "case.toml:12: uncertainty.mu_s.x: unknown key; allowed keys: dist, lo, hi");
+    CHECK(error_of(u + "mu_k = { dist = \"uniform\", lo = 0.1, hi = 0.2 }\n")
+              .find("uncertainty.mu_k: unknown key") != std::string::npos);
+}
+
+TEST_CASE("[options] fragility keys: defaults, values and errors", "[assess][case][fragility]") {
+    const Case off = parse_case(base_component + base_site, "case.toml");
+    CHECK_FALSE(off.options.fragility.enabled);
+    const std::string o = base_component + base_site + "[options]\n";
+    const Case on = parse_case(o + "fragility = true\n", "case.toml");
+    CHECK(on.options.fragility.enabled);
+    CHECK(on.options.fragility.samples == 100);
+    CHECK(on.options.fragility.pga_g.size() == 10);
+    const Case set = parse_case(
+        o + "fragility = true\nfragility_pga_g = [0.2, 0.4]\nfragility_samples = 30\n", "case.toml");
+    CHECK(set.options.fragility.pga_g == std::vector<double>{0.2, 0.4});
+    CHECK(set.options.fragility.samples == 30);
+    CHECK(error_of(o + "fragility = true\nfragility_pga_g = [0.4, 0.2]\n")
+              .find("options.fragility_pga_g: levels must be strictly increasing") !=
+          std::string::npos);
+    CHECK(error_of(o + "fragility = true\nfragility_pga_g = [0.2, 4]\n")
+              .find("options.fragility_pga_g") != std::string::npos);
+    CHECK(error_of(o + "fragility = true\nfragility_samples = 0\n")
+              .find("options.fragility_samples") != std::string::npos);
+    CHECK(error_of(o + "fragility_samples = 30\n")
+              .find("options.fragility_samples: applies only with fragility = true") !=
+          std::string::npos);
+    CHECK(error_of(o + "fragility = \"yes\"\n").find("options.fragility") != std::string::npos);
+}
