@@ -203,6 +203,13 @@ Initiation classify(const block::Block& blk, double mu_s, const LevelDemand& dem
     return out;
 }
 
+std::string planar_model_reason(const LevelResult& r) {
+    std::string out = fmt::format("one direction at a time ({}): the rigid block needs no more",
+                                  r.direction == Direction::x ? "x" : "y");
+    if (r.flexible.raised) out += "; the flexible-body flag is raised and stays a condition";
+    return out;
+}
+
 }  // namespace
 
 std::vector<double> design_frequencies() { return spectra::log_frequencies(0.05, 100.0, 100); }
@@ -416,6 +423,8 @@ LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand
         const bool rocking_mode =
             r.initiation.mode == Mode::rock || r.initiation.mode == Mode::slide_rock;
         r.simulation = simulate_level(c, r.bounds, d, demand.pga_g, bank, rocking_mode);
+        r.model = planar_model_name;
+        r.model_reason = planar_model_reason(r);
         // The energy estimate needs the histories' DeltaD: now they exist.
         r.sliding = closed_form_sliding(c, r.bounds.sliding, d, r.initiation_lower.mode,
                                         demand, bank, true);

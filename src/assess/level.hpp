@@ -45,6 +45,10 @@ struct LevelDemand {
     }
 };
 
+/// The model name LevelResult::model carries for the planar rigid-block simulation.
+inline constexpr const char* planar_model_name =
+    "rigid planar block, resting, sliding, rocking or slide-rocking (docs/methods.md s.3)";
+
 /// Builds the demand of a level from the site.
 LevelDemand level_demand(const Site& site, double pga_g);
 

@@ -200,6 +200,10 @@ struct LevelResult {
     Screen screen;
     std::optional<Simulation> simulation;
     std::string simulation_reason;  ///< why it was run or skipped
+    /// The dynamic model the level's simulation used (empty when not simulated) and why that
+    /// model suits the scene (docs/methods.md s.10: model only what a scene needs).
+    std::string model;
+    std::string model_reason;
     Verdict verdict;
     /// Screen result -> why simulated -> what governed, one line each (the decision trail).
     std::vector<std::string> trail;

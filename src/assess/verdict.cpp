@@ -324,6 +324,9 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
     out.push_back(fmt::format("screen {}: {}", s.passed ? "passed" : "failed",
                               fmt::join(checks, "; ")));
     out.push_back(level.simulation_reason);
+    if (!level.model.empty()) {
+        out.push_back(fmt::format("model: {}; why: {}", level.model, level.model_reason));
+    }
     if (level.simulation) {
         const Simulation& sim = *level.simulation;
         out.push_back(fmt::format(

@@ -167,6 +167,8 @@ ordered_json level_json(const LevelResult& l) {
     j["screen"] = screen_json(l.screen);
     j["simulated"] = l.simulation.has_value();
     j["simulation_reason"] = l.simulation_reason;
+    j["model"] = l.model.empty() ? ordered_json(nullptr) : ordered_json(l.model);
+    j["model_reason"] = l.model_reason.empty() ? ordered_json(nullptr) : ordered_json(l.model_reason);
     j["simulation"] = simulation_json(l.simulation);
     j["verdict"] = verdict_json(l.verdict);
     j["trail"] = l.trail;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "assess/level.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
@@ -26,6 +27,7 @@ TEST_CASE("at rest everywhere: no histories, no simulation", "[assess][pipeline]
     REQUIRE(r.levels.size() == 2);
     CHECK(r.histories_generated == 0);
     CHECK(r.simulations_run == 0);
+    CHECK(r.levels.at(0).model.empty());
     CHECK(r.overall.verdict.kind == VerdictKind::acceptable);
     // A = 0.05 / (1 - 0.0333) = 0.05172; margin = lower mu_s / A = 0.12 / 0.05172 = 2.3.
     CHECK(*r.overall.verdict.margin ==
@@ -57,6 +59,12 @@ TEST_CASE("glove box at 0.2 g: the ASCE 4 estimate by hand at the lower friction
     CHECK_FALSE(x.screen.passed);
     REQUIRE(x.simulation.has_value());
     CHECK(x.verdict.decided_by == Model::simulation_slide);
+    // The level says which dynamic model ran and why, and the trail repeats it.
+    CHECK(x.model == planar_model_name);
+    CHECK(x.model_reason.find("one direction at a time (x)") != std::string::npos);
+    CHECK(std::count_if(x.trail.begin(), x.trail.end(), [](const std::string& t) {
+              return t.rfind("model: rigid planar block", 0) == 0;
+          }) == 1);
     CHECK(r.histories_generated == 1);
     // Simulated levels also show the (informational) energy estimate; its DeltaD is the
     // histories' displacement after the zero-phase 0.5 Hz high-pass (docs/methods.md s.4).
