@@ -11,6 +11,7 @@
 #include "core/readers.hpp"
 #include "core/units.hpp"
 #include "cli/simulate_biaxial.hpp"
+#include "cli/simulate_pair.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::cli {
@@ -20,7 +21,8 @@ const char* const usage =
     "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
     "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--motion-y FILE] [--scale S] | "
     "--sine 0.8g,2Hz,5s[,ramp=1s] | --sine-y 0.8g,2Hz,5s[,ramp=1s][,phase=90]) "
-    "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json]";
+    "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json] "
+    "[--block2 ... [--cg2 ...] --mu2 MU [--mu-k2 MU] [--restitution2 R] --tunnel-height H]";
 
 dynamics::Excitation parse_sine(const std::string& text) {
     return dynamics::sine_excitation(parse_sine_spec(text, "--sine", false));
@@ -140,6 +142,7 @@ int run(const std::vector<std::string>& args) {
         ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
         ("out", po::value<std::string>(), "write the time series CSV here")
         ("json", po::bool_switch(), "print the summary as JSON");
+    add_pair_options(desc);
     const auto vm = parse_options("simulate", usage, desc, args);
     if (!vm) return 0;
     if (vm->count("motion") + vm->count("sine") + vm->count("sine-y") != 1)
@@ -164,11 +167,13 @@ int run(const std::vector<std::string>& args) {
     opt.cd_dt_s = (*vm)["dt"].as<double>();
     require_positive(opt.cd_dt_s, {"", 0, "--dt"});
     opt.record_series = vm->count("out") > 0;
+    if (pair_requested(*vm)) require_pair_options(*vm);
     if (vm->count("motion-y") || vm->count("sine-y")) return run_biaxial_simulation(*vm, blk, opt);
     const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     const dynamics::Excitation exc =
         vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())
                           : parse_motion((*vm)["motion"].as<std::string>(), (*vm)["scale"].as<double>());
+    if (pair_requested(*vm)) return run_pair_simulation(*vm, model, exc, opt);
     const dynamics::SimulationResult res = dynamics::simulate(model, exc, opt);
     if (vm->count("out")) core::write_file_atomic((*vm)["out"].as<std::string>(), series_csv(res, exc.label));
     if ((*vm)["json"].as<bool>()) {

@@ -134,16 +134,18 @@ std::map<std::string, double> parse_key_values(const std::string& text, const st
 }
 
 block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
-                                std::optional<double> inertia_cg_kgm2) {
-    const auto box = parse_key_values(block, "--block", {"b", "h", "m"});
+                                std::optional<double> inertia_cg_kgm2, const std::string& suffix) {
+    const std::string block_option = "--block" + suffix, cg_option = "--cg" + suffix;
+    const auto box = parse_key_values(block, block_option, {"b", "h", "m"});
     std::map<std::string, double> cg_kv;
     if (cg && cg->find('=') != std::string::npos) {
-        cg_kv = parse_key_values(*cg, "--cg", {"x", "h"});
+        cg_kv = parse_key_values(*cg, cg_option, {"x", "h"});
     } else if (cg) {
         // Positional x,y: x from the left edge, y up; the same point as x = x - b, h = y.
-        const auto xy = parse_double_list(*cg, "--cg");
-        if (xy.size() != 2) throw UsageError("--cg: expected x,y or x=OFFSET,h=HEIGHT (m)");
-        if (!box.count("b")) throw InputError(SourceLocation{"", 0, "block b"}, "missing key b");
+        const auto xy = parse_double_list(*cg, cg_option);
+        if (xy.size() != 2) throw UsageError(cg_option + ": expected x,y or x=OFFSET,h=HEIGHT (m)");
+        if (!box.count("b"))
+            throw InputError(SourceLocation{"", 0, "block" + suffix + " b"}, "missing key b");
         cg_kv["x"] = xy[0] - box.at("b");
         cg_kv["h"] = xy[1];
     }

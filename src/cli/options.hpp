@@ -59,7 +59,9 @@ inline std::optional<std::string> opt_string(const po::variables_map& vm, const 
 /// classify, rock and simulate (sliding::box_spec / make_block: a uniform box unless a CG or an
 /// inertia is given; m defaults to 1 kg). --cg is x=OFFSET,h=HEIGHT (x right of the base's
 /// centre) or the positional x,y (x from the left edge, y up). InputError naming the field.
+/// suffix names a second block's options (--block2, --cg2 for "2").
 block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
-                                std::optional<double> inertia_cg_kgm2);
+                                std::optional<double> inertia_cg_kgm2,
+                                const std::string& suffix = "");
 
 }  // namespace freestand::cli
