@@ -571,6 +571,43 @@ void check_line_lengths(const std::string& text, const std::string& file_label) 
     }
 }
 
+int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+
+// [[unit]] x 2 and [tunnel] (docs/methods.md s.10), each unit read as a [component].
+void read_units(const toml::table& root, const toml::node& units, const std::string& file,
+                Case& out) {
+    const toml::array* arr = units.as_array();
+    if (arr == nullptr || !arr->is_array_of_tables())
+        throw InputError(SourceLocation{file, line_of(units), "unit"},
+                         "expected [[unit]] tables (an array of tables)");
+    if (root.get("component") != nullptr)
+        throw InputError(SourceLocation{file, line_of(*root.get("component")), "component"},
+                         "[component] and [[unit]] are exclusive: describe one component, or "
+                         "two units joined by a [tunnel]");
+    if (arr->size() != 2)
+        throw InputError(SourceLocation{file, line_of(arr->back()), "unit"},
+                         fmt::format("expected exactly two [[unit]] tables, got {}", arr->size()));
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+        const std::string name = fmt::format("unit[{}]", i + 1);
+        TableReader r((*arr)[i].as_table(), file, name);
+        if (r.has("allowable_relative_m"))
+            r.fail("allowable_relative_m", "give the relative allowable once, in [tunnel]");
+        out.units.push_back(read_component(r, out.assumptions));
+    }
+    const toml::table* tunnel = subtable(root, "tunnel", file);
+    if (tunnel == nullptr)
+        throw InputError(SourceLocation{file, 0, "tunnel"},
+                         "missing required table [tunnel] (height_m, allowable_relative_m) for "
+                         "the two [[unit]] tables");
+    TableReader rt(tunnel, file, "tunnel");
+    Tunnel t;
+    t.height_m = rt.required_number("height_m", Range{0.0, 100.0});
+    t.allowable_relative_m =
+        rt.required_number("allowable_relative_m", Range{0.0, 10.0, false, true});
+    rt.finish({"height_m", "allowable_relative_m"});
+    out.tunnel = t;
+}
+
 }  // namespace
 
 Case parse_case(const std::string& text, const std::string& file_label) {
@@ -586,21 +623,32 @@ Case parse_case(const std::string& text, const std::string& file_label,
     out.file = file_label;
     for (const auto& [k, node] : root) {
         const std::string key(k.str());
-        if (key != "component" && key != "site" && key != "options" && key != "uncertainty") {
+        if (key != "component" && key != "site" && key != "options" && key != "uncertainty" &&
+            key != "unit" && key != "tunnel") {
             throw InputError(
                 SourceLocation{file_label, static_cast<int>(node.source().begin.line), key},
-                "unknown table; allowed tables: [component], [site], [options], [uncertainty]");
+                "unknown table; allowed tables: [component] (or two [[unit]] and a [tunnel]), "
+                "[site], [options], [uncertainty]");
         }
     }
     const toml::table* comp = subtable(root, "component", file_label);
     const toml::table* site = subtable(root, "site", file_label);
-    if (comp == nullptr)
+    if (const toml::node* units = root.get("unit")) {
+        read_units(root, *units, file_label, out);
+    } else if (const toml::node* tunnel = root.get("tunnel")) {
+        throw InputError(SourceLocation{file_label, line_of(*tunnel), "tunnel"},
+                         "[tunnel] joins two [[unit]] tables; a [component] has none (a braced "
+                         "pair is one component: give allowable_relative_m there)");
+    } else if (comp == nullptr) {
         throw InputError(SourceLocation{file_label, 0, "component"},
-                         "missing required table [component]");
+                         "missing required table [component] (or two [[unit]] and a [tunnel])");
+    }
     if (site == nullptr)
         throw InputError(SourceLocation{file_label, 0, "site"}, "missing required table [site]");
-    TableReader rc(comp, file_label, "component");
-    out.component = read_component(rc, out.assumptions);
+    if (out.units.empty()) {
+        TableReader rc(comp, file_label, "component");
+        out.component = read_component(rc, out.assumptions);
+    }
     TableReader rs(site, file_label, "site");
     out.site = read_site(rs, out.assumptions, std::filesystem::path(file_label).parent_path());
     TableReader ro(subtable(root, "options", file_label), file_label, "options");

@@ -142,10 +142,21 @@ struct Options {
     FragilitySection fragility;
 };
 
+/// The transfer tunnel joining two units ([tunnel], docs/methods.md s.10).
+struct Tunnel {
+    double height_m = 0.0;              ///< tunnel height above the base, m
+    double allowable_relative_m = 0.0;  ///< its slack: relative displacement allowed, m
+};
+
 /// A parsed case plus what the report must echo.
 struct Case {
     std::string file;  ///< path as given
+    /// The component; unused (default) when the case describes two units.
     Component component;
+    /// Two free-standing units joined by a tunnel ([[unit]] tables, each with the keys of
+    /// [component]; exclusive with [component]); empty for a one-component case.
+    std::vector<Component> units;
+    std::optional<Tunnel> tunnel;  ///< with units
     Site site;
     Options options;
     Uncertainty uncertainty;
