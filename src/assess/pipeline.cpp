@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "assess/histories.hpp"
+#include "assess/joined.hpp"
 #include "assess/level.hpp"
 #include "assess/materials.hpp"
 #include "assess/plot_data.hpp"
@@ -268,6 +269,7 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
 }  // namespace
 
 AssessmentResult assess(const Case& c) {
+    if (!c.units.empty()) return assess_joined(c);
     AssessmentResult res;
     res.input = c;
     HistoryBank bank(res.input);

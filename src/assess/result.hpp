@@ -3,6 +3,7 @@
 /// Absent numbers are std::nullopt with a reason, never a sentinel value.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -262,6 +263,8 @@ struct HistoryCheck {
     motion::Acceptance acceptance;
 };
 
+struct JoinedResult;  // assess/joined.hpp
+
 /// The whole assessment.
 struct AssessmentResult {
     Case input;
@@ -280,6 +283,9 @@ struct AssessmentResult {
     int histories_generated = 0;
     std::vector<HistoryCheck> history_checks;  ///< empty when no histories were generated
     int simulations_run = 0;
+    /// Two units joined by a tunnel (Case::units): each unit's own assessment and the tunnel
+    /// check (assess/joined.hpp). levels is then empty; the headline is the pair's.
+    std::shared_ptr<const JoinedResult> joined;
 };
 
 }  // namespace freestand::assess

@@ -135,6 +135,9 @@ struct Runner::Impl {
 };
 
 Runner::Runner(const assess::Case& c, Config config) : impl_(std::make_unique<Impl>()) {
+    if (!c.units.empty())
+        throw InputError(SourceLocation{c.file, 0, "unit"},
+                         "the fragility analysis takes one component, not two [[unit]] tables");
     validate(config);
     impl_->c = c;
     impl_->config = std::move(config);

@@ -10,6 +10,7 @@
 #include "core/printable.hpp"
 #include "core/publish.hpp"
 #include "report/fragility_report.hpp"
+#include "report/joined.hpp"
 #include "report/references.hpp"
 #include "report/template_render.hpp"
 
@@ -488,6 +489,7 @@ std::string html_escape(const std::string& text) {
 
 Rendered render(const AssessmentResult& r, const Stamp& stamp,
                 const fragility::Result* fragility) {
+    if (r.joined) return render_joined(r, stamp);
     Rendered out;
     out.figures = figures(r);
     mstch::map ctx = context(r, stamp, out.figures);

@@ -5,7 +5,9 @@
 #include "assess/overrides.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
+#include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "report/joined.hpp"
 
 namespace freestand::report {
 
@@ -16,6 +18,10 @@ CaseRun assess_and_render(const assess::Case& c, const std::string& case_bytes,
                           const std::filesystem::path& case_file, const std::string& commit,
                           int fragility_threads) {
     CaseRun run;
+    if (!c.units.empty() && c.options.fragility.enabled)
+        throw InputError(SourceLocation{case_file.string(), 0, "options.fragility"},
+                         "not available for two [[unit]] tables (the fragility analysis takes "
+                         "one component)");
     run.result = assess::assess(c);
     if (c.options.fragility.enabled) {
         fragility::Config config;
@@ -44,10 +50,15 @@ CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& cas
                  const assess::CaseOverrides& overrides, const std::string& commit,
                  int fragility_threads) {
     const assess::Case c = assess::parse_case(case_bytes, case_file.string(), overrides);
+    if (!c.units.empty())
+        throw InputError(SourceLocation{case_file.string(), 0, "unit"},
+                         "a batch runs one-component cases; assess two [[unit]] tables with "
+                         "`freestand assess`");
     return assess_and_render(c, case_bytes, case_file, commit, fragility_threads);
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {
+    if (r.joined) return joined_verdict_line(r);
     const assess::Verdict& v = r.overall.verdict;
     std::string out =
         fmt::format("{}: {} (governing {}, margin {}, decided by {})", r.input.component.name,
