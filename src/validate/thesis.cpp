@@ -179,6 +179,18 @@ const std::vector<Fact>& facts() {
             "56 mm"),
         num("braced.asce_0.3g_mm", 105.0, "mm", "ASCE 4, braced pair, 0.3 g", "s.7.4", 2630,
             "105 mm"),
+        num("unbraced.box_kg", 370.0, "kg", "each glove box of the unbraced pair", "s.2.4.2", 398,
+            "370 Kg each"),
+        num("unbraced.lead_kg", 96.0, "kg", "eccentric lead shielding in one box", "s.2.4.2", 429,
+            "eccentric mass of 96 kg"),
+        num("unbraced.central_kg", 250.0, "kg", "central mass in the other box", "s.2.4.2", 429,
+            "250 Kg fixed central mass"),
+        num("unbraced.relative_0.2g_mm", 7.0, "mm", "relative sliding up to 0.2 g, tunnel seated",
+            "s.6.3", 2385, "limited to 0.007m"),
+        obs("unbraced.tilt_0.3g", "at 0.3 g the tunnel tilted", "s.6.3", 2385,
+            "at 0.3g pba value, material transfer tunnel tilted"),
+        num("unbraced.relative_0.4g_mm", 25.0, "mm", "relative displacement at 0.4 g, tunnel "
+            "slipped off its O-rings", "s.6.3", 2385, "relative displacement increased to 0.025m"),
     };
     return list;
 }

@@ -47,7 +47,7 @@ TEST_CASE("every row has the thesis, the prediction, the difference and a reason
           "disagree",
           "[validate][slow]") {
     const Validation& v = shipped();
-    REQUIRE(v.groups.size() == 3);
+    REQUIRE(v.groups.size() == 4);
     for (const Row& r : v.rows) {
         INFO(r.id);
         CHECK(std::any_of(v.groups.begin(), v.groups.end(),
@@ -123,4 +123,25 @@ TEST_CASE("validation without the shipped cases is an I/O error naming the file"
     CHECK_THROWS_WITH(run(none), Catch::Contains("glovebox-single.toml: cannot open file for "
                                                  "reading"));
     fs::remove_all(none);
+}
+
+TEST_CASE("the unbraced pair's tunnel demand stands beside the thesis at 0.2, 0.3 and 0.4 g",
+          "[validate][slow]") {
+    const Validation& v = shipped();
+    std::vector<const Row*> rows;
+    for (const Row& r : v.rows)
+        if (r.group == "joined") rows.push_back(&r);
+    REQUIRE(rows.size() == 3);
+    CHECK(rows[0]->id == "unbraced-pair-0.2g");
+    CHECK(rows[0]->thesis_value == 7.0);
+    CHECK(rows[0]->sources == std::vector<std::string>{"unbraced.relative_0.2g_mm"});
+    CHECK(rows[1]->id == "unbraced-pair-0.3g");
+    CHECK(rows[1]->agreement == Agreement::not_comparable);
+    CHECK(rows[1]->predicted_value.has_value());
+    CHECK(rows[2]->id == "unbraced-pair-0.4g");
+    CHECK(rows[2]->thesis_value == 25.0);
+    REQUIRE(rows[2]->predicted_value);
+    REQUIRE(rows[2]->difference_value);
+    CHECK(*rows[2]->difference_value == Approx(*rows[2]->predicted_value - 25.0));
+    for (const Row* r : rows) CHECK(r->predicted.find("common lower friction bound") != std::string::npos);
 }
