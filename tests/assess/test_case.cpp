@@ -166,7 +166,8 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     }
     SECTION("unknown table") {
         CHECK(error_of(base_component + base_site + "[extra]\n") ==
-              "case.toml:11: extra: unknown table; allowed tables: [component], [site], [options], [uncertainty]");
+              "case.toml:11: extra: unknown table; allowed tables: [component] (or two [[unit]] and a "
+              "[tunnel]), [site], [options], [uncertainty]");
     }
     SECTION("missing table") {
         CHECK(error_of(base_component) == "case.toml: site: missing required table [site]");

@@ -88,3 +88,9 @@ TEST_CASE("joined case: errors name file:line and key", "[assess][case][joined][
           "pair.toml:3: tunnel: [tunnel] joins two [[unit]] tables; a [component] has none (a "
           "braced pair is one component: give allowable_relative_m there)");
 }
+
+TEST_CASE("joined case: neither [component] nor [[unit]] names both", "[assess][case][joined][errors]") {
+    CHECK(error_of(site) ==
+          "pair.toml: component: missing required table [component] (or two [[unit]] and a "
+          "[tunnel])");
+}

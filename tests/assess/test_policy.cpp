@@ -7,6 +7,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "assess/joined.hpp"
 #include "assess/materials.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
@@ -61,6 +62,7 @@ void check_same_verdict(const Governing& direct, const Governing& trial) {
 // over every case took 100-200 s, several times that under the sanitizers).
 const std::vector<std::string> kShippedCases{"block-ts1",          "block-ts2",
                                              "block-ts3",          "cabinet-user-target",
+                                             "glovebox-pair-unbraced",
                                              "glovebox-pair",      "glovebox-single",
                                              "glovebox-steel-pads"};
 
@@ -103,6 +105,25 @@ FREESTAND_MATERIAL_TRIAL_TEST("glovebox-single")
 FREESTAND_MATERIAL_TRIAL_TEST("glovebox-steel-pads")
 #undef FREESTAND_MATERIAL_TRIAL_TEST
 
+// Two joined units: each unit's material trials are its own case with the material's whole
+// property set (the per-unit case assess_joined assesses).
+TEST_CASE("every material trial equals a direct assessment: each unit of glovebox-pair-unbraced",
+          "[assess][policy][materials][joined]") {
+    const Case pair =
+        read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair-unbraced.toml");
+    REQUIRE(pair.units.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const Case c = unit_case(pair, i);
+        const Upgrade search = search_materials(c);
+        REQUIRE(search.trials.size() == materials().size());
+        for (const MaterialTrial& t : search.trials) {
+            INFO("unit " << i + 1 << " with " << t.material);
+            const AssessmentResult direct = assess::assess(with_base_material(c, t.material));
+            check_same_verdict(direct.own, t.governing);
+        }
+    }
+}
+
 namespace {
 
 void check_auto_equals_always(const std::string& name) {
@@ -122,6 +143,20 @@ void check_auto_equals_always(const std::string& name) {
 }
 
 }  // namespace
+
+TEST_CASE("simulate = \"auto\" and \"always\" give the same verdict: glovebox-pair-unbraced",
+          "[assess][policy][simulate][joined]") {
+    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair-unbraced.toml");
+    c.options.simulate = SimulatePolicy::automatic;
+    const AssessmentResult automatic = assess::assess(c);
+    c.options.simulate = SimulatePolicy::always;
+    const AssessmentResult always = assess::assess(c);
+    REQUIRE(automatic.joined);
+    REQUIRE(always.joined);
+    CHECK(automatic.joined->verdict == always.joined->verdict);
+    for (std::size_t i = 0; i < 2; ++i)
+        check_same_verdict(automatic.joined->units[i].overall, always.joined->units[i].overall);
+}
 
 #define FREESTAND_SIMULATE_POLICY_TEST(NAME)                                                  \
     TEST_CASE("simulate = \"auto\" and \"always\" give the same verdict: " NAME,             \
