@@ -15,6 +15,34 @@
 #include "dynamics/simulate.hpp"
 
 namespace freestand::cli {
+
+nlohmann::ordered_json summary_json(const dynamics::Summary& s) {
+    nlohmann::ordered_json j;
+    j["slide_max_m"] = s.slide_max_m;
+    j["slide_residual_m"] = s.slide_residual_m;
+    j["rock_max_rad"] = s.rock_max_rad;
+    j["rock_max_over_alpha"] = s.rock_max_over_alpha;
+    j["overturned"] = s.overturned;
+    j["overturn_time_s"] = s.overturn_time_s ? nlohmann::ordered_json(*s.overturn_time_s) : nullptr;
+    j["overturn_mode"] = s.overturn_mode ? nlohmann::ordered_json(*s.overturn_mode) : nullptr;
+    j["impacts"] = s.impacts;
+    j["mode_changes"] = s.mode_changes;
+    j["top_accel_max_g"] = s.top_accel_max_g;
+    j["amplification"] = s.amplification;
+    j["wall_s"] = s.wall_s;
+    j["integrator"] = s.integrator;
+    j["overturn_criterion"] = dynamics::overturn_criterion_name(s.overturn_criterion);
+    nlohmann::ordered_json t;
+    for (std::size_t m = 0; m < dynamics::mode_count; ++m)
+        t[dynamics::mode_name(static_cast<dynamics::Mode>(m))] = s.time_in_mode_s[m];
+    j["time_in_mode_s"] = t;
+    j["pga_g"] = s.pga_g;
+    j["settlements"] = s.settlements;
+    j["steps"] = s.steps;
+    j["end_time_s"] = s.end_time_s;
+    return j;
+}
+
 namespace {
 
 const char* const usage =
@@ -64,33 +92,6 @@ std::string series_csv(const dynamics::SimulationResult& r, const std::string& l
                            s.angular_velocity_radps, dynamics::mode_name(s.mode),
                            s.normal_force_N, s.friction_force_N, s.top_accel_mps2);
     return out;
-}
-
-nlohmann::ordered_json summary_json(const dynamics::Summary& s) {
-    nlohmann::ordered_json j;
-    j["slide_max_m"] = s.slide_max_m;
-    j["slide_residual_m"] = s.slide_residual_m;
-    j["rock_max_rad"] = s.rock_max_rad;
-    j["rock_max_over_alpha"] = s.rock_max_over_alpha;
-    j["overturned"] = s.overturned;
-    j["overturn_time_s"] = s.overturn_time_s ? nlohmann::ordered_json(*s.overturn_time_s) : nullptr;
-    j["overturn_mode"] = s.overturn_mode ? nlohmann::ordered_json(*s.overturn_mode) : nullptr;
-    j["impacts"] = s.impacts;
-    j["mode_changes"] = s.mode_changes;
-    j["top_accel_max_g"] = s.top_accel_max_g;
-    j["amplification"] = s.amplification;
-    j["wall_s"] = s.wall_s;
-    j["integrator"] = s.integrator;
-    j["overturn_criterion"] = dynamics::overturn_criterion_name(s.overturn_criterion);
-    nlohmann::ordered_json t;
-    for (std::size_t m = 0; m < dynamics::mode_count; ++m)
-        t[dynamics::mode_name(static_cast<dynamics::Mode>(m))] = s.time_in_mode_s[m];
-    j["time_in_mode_s"] = t;
-    j["pga_g"] = s.pga_g;
-    j["settlements"] = s.settlements;
-    j["steps"] = s.steps;
-    j["end_time_s"] = s.end_time_s;
-    return j;
 }
 
 void print_text(const dynamics::Summary& s, const dynamics::BlockModel& m) {

@@ -37,20 +37,6 @@ dynamics::BlockModel unit2_model(const po::variables_map& vm) {
     return dynamics::make_block_model(blk, mu, mu_k, r);
 }
 
-nlohmann::ordered_json unit_json(const dynamics::Summary& s) {
-    nlohmann::ordered_json j;
-    j["slide_max_m"] = s.slide_max_m;
-    j["slide_residual_m"] = s.slide_residual_m;
-    j["rock_max_rad"] = s.rock_max_rad;
-    j["rock_max_over_alpha"] = s.rock_max_over_alpha;
-    j["overturned"] = s.overturned;
-    j["impacts"] = s.impacts;
-    j["steps"] = s.steps;
-    j["end_time_s"] = s.end_time_s;
-    j["wall_s"] = s.wall_s;
-    return j;
-}
-
 }  // namespace
 
 void add_pair_options(po::options_description& desc) {
@@ -101,8 +87,8 @@ int run_pair_simulation(const po::variables_map& vm, const dynamics::BlockModel&
         j["overturned"] = r.overturned;
         j["sampled_at"] = "the input samples";
         j["model"] = "two rigid planar blocks under the same base motion (docs/methods.md s.10)";
-        j["unit1"] = unit_json(r.units[0]);
-        j["unit2"] = unit_json(r.units[1]);
+        j["unit1"] = summary_json(r.units[0]);
+        j["unit2"] = summary_json(r.units[1]);
         std::cout << j.dump(2) << "\n";
         return 0;
     }
