@@ -87,7 +87,8 @@ std::string bounds_text(const Case& c) {
         "common lower bound is shown beside it. The relative displacement u_1 - u_2 + h_t "
         "(theta_1 - theta_2) is taken at the input samples (the miss between samples is below "
         "0.1% of the peak on El Centro at 0.01 s, tests/dynamics/test_pair.cpp). Any overturned "
-        "unit loses the tunnel.",
+        "unit loses the tunnel. The check runs on the case's own base: a material the units' "
+        "search recommends is not re-checked at the tunnel.",
         c.tunnel->height_m);
 }
 
