@@ -103,8 +103,9 @@ inline void biaxial_record_rows(const core::Record& x140) {
                 "integrator", "cpu_s", "rel_error", "steps", "planar");
     for (const BiaxialConfig& c : configs) {
         const bool is_planar = &c == &configs[0];
-        std::printf("%-11s %-16s %12.3e %12s %10zu %7.1fx\n", "biaxial", c.label, c.best_s,
-                    is_planar ? "-" : std::to_string(std::abs(c.peak_m - ref) / ref).c_str(),
+        char err[32] = "-";
+        if (!is_planar) std::snprintf(err, sizeof err, "%.3e", std::abs(c.peak_m - ref) / ref);
+        std::printf("%-11s %-16s %12.3e %12s %10zu %7.1fx\n", "biaxial", c.label, c.best_s, err,
                     c.steps, c.best_s / configs[0].best_s);
     }
     std::printf("(planar row: its own peak %.6g m, not compared with the biaxial reference)\n",

@@ -335,13 +335,13 @@ dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g
     return dynamics::excitation_from_record(h, pga_g, &set.v, pga_g);
 }
 
-namespace {
-
 Stats stats_of(const std::vector<double>& values) {
     if (values.empty()) return Stats{};
     return Stats{core::mean(values), core::quantile(values, 0.84),
                  *std::max_element(values.begin(), values.end())};
 }
+
+namespace {
 
 bool same_contact(const ContactBound& a, const ContactBound& b) {
     return a.mu_s == b.mu_s && a.mu_k == b.mu_k && a.restitution == b.restitution &&

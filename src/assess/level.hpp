@@ -75,6 +75,9 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
 /// The excitation of history k in direction d at the demand's PGA (horizontal and vertical).
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g);
 
+/// Mean, 84th percentile and maximum of per-history peaks (zeros when there are none).
+Stats stats_of(const std::vector<double>& values);
+
 /// Simulates every history at both bounds (once when they coincide) and gathers the
 /// statistics of docs/methods.md s.6 step 5; rocking_mode picks the governing history's measure.
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,

@@ -96,6 +96,7 @@ public:
                           : st_.mode == Mode::slide ? advance_slide(t)
                                                     : advance_flight(t);
         stalled_ = te > t ? 0 : stalled_ + 1;
+
         if (stalled_ > max_stalled_events)
             throw NumericalError(fmt::format(
                 "biaxial event-driven integrator: events accumulate at t = {} s", t));
@@ -125,6 +126,7 @@ private:
         if (next == Mode::slide) {
             const double s = norm(a);
             d_start_ = {-a[0] / s, -a[1] / s};
+            redirected_ = false;
         }
         set_mode(next);
     }
@@ -220,6 +222,15 @@ private:
                 rec_.rejected();
                 fsal_ = true;
                 h_next_ = 0.5 * (-t_stop - t);
+                continue;
+            }
+            if (t_stop == t && speed == 0.0 && !redirected_ && norm(vel(x1)) > 0.0) {
+                // A restart whose load turns within the step (a frictionless base under a load
+                // passing through zero): it leaves along the slip it gains, not along -a_g.
+                redirected_ = true;
+                rec_.rejected();
+                d_start_ = {x1[2] / norm(vel(x1)), x1[3] / norm(vel(x1))};
+                fsal_ = false;
                 continue;
             }
             const double te = t_stop < t1 ? t_stop : t1;
@@ -356,6 +367,7 @@ private:
     double tb_ = 0.0;
     double h_next_ = 1e-3;    // step the error control proposes next
     Vec2 d_start_{1.0, 0.0};  // slip direction of a start from v = 0
+    bool redirected_ = false; // d_start_ was taken from the first step's slip
     bool armed_ = false;      // in flight, the block has left the base
     std::size_t stalled_ = 0;
 };
