@@ -92,9 +92,9 @@ struct BiaxialResult {
 
 /// The biaxial slide's default options: Options{} with rel_tol 1e-6 and abs_tol 1e-8 (m, m/s).
 /// Looser than the planar 1e-9: a Dormand-Prince step costs far more than a closed-form planar
-/// segment, and at 1e-6 the peak |u| of bench_dynamics's biaxial case is within 1e-4 relative
-/// of its converged value (rel_tol 1e-12), twenty times closer than central difference at
-/// 1e-4 s, at a fifth of the steps 1e-9 takes.
+/// segment, and at 1e-6 the peak |u| of bench_dynamics's biaxial El Centro case is within
+/// 3e-7 relative of its converged value (rel_tol 1e-12), against 2e-3 for central difference
+/// at 1e-4 s, in half the steps 1e-9 takes (docs/methods.md s.10).
 Options biaxial_options();
 
 /// Simulates the block from rest at t = 0 until the excitation's end + Options::tail_s (earlier

@@ -1,7 +1,7 @@
 // Event-driven biaxial sliding (docs/methods.md s.10). Rest and flight are exact on each linear
 // input segment (a quadratic for |a_g|^2 - (mu_s G)^2, cubics for flight). Sliding has no
 // closed form in two components (the friction direction v / |v| turns), so it is integrated by
-// Boost.Odeint's controlled Dormand-Prince 5(4) with its dense output: an explicit method with
+// a controlled Dormand-Prince 5(4) with its dense output (dopri5.hpp): an explicit method with
 // error control whose steps end at every input sample (the input's slope jumps there), and
 // whose order-4 interpolant locates the events inside a step. Dormand-Prince rather than the
 // Taylor machinery of taylor.hpp: the right-hand side is non-polynomial in v, and a stage-based
