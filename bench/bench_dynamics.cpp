@@ -1,13 +1,15 @@
-// Speed against error of the block simulator (issue 5): slide, rock and slide-rock cases on
+// Speed against error of the block simulator (issues 5 and 15): slide, rock and slide-rock cases on
 // the first 20 s of El Centro #12 (140), event-driven at its default tolerance (and at 1e-10 and
 // 1e-6) and central difference at dt = 1e-3, 1e-4, 1e-5 s; the floor of the rock case (its Taylor
 // steps chained alone); then the same cases on the record decimated to 0.01 and 0.02 s. Error:
 // against the tightest event-driven solution (rel_tol 1e-13), on the peak slip (slide), peak
 // rotation (rock) or both (slide-rock). Time: best per-run CPU time of the thread over rounds
 // that run every configuration in turn (the machine is a shared virtual one whose speed drifts
-// by up to 2x between minutes; interleaving keeps the ratios steadier than the times). Last, two
+// by up to 2x between minutes; interleaving keeps the ratios steadier than the times). Then, two
 // units joined by a tunnel (dynamics::simulate_pair): time against the two planar runs and the
 // peak relative displacement's error at 1, 4 and 16 samples per input step against 64.
+// Last, biaxial sliding (issue 15; biaxial_rows.hpp): El Centro 140 as x and 230 as y, and the
+// histories of cases/glovebox-single.toml, each against the planar run of its x component.
 #include <algorithm>
 #include <array>
 #include <string>
@@ -24,6 +26,7 @@
 #include "dynamics/pair.hpp"
 #include "dynamics/simulate.hpp"
 #include "dynamics/taylor.hpp"
+#include "biaxial_rows.hpp"
 #include "timing.hpp"
 
 using namespace freestand;
@@ -264,5 +267,6 @@ int main() {
               {dynamics::make_block_model(block::Block::uniform(0.4, 1.6, 400.0), 0.6),
                dynamics::make_block_model(block::Block::uniform(0.5, 1.5, 400.0), 0.6)},
               1.5);
+    bench::biaxial_rows(rec);
     return 0;
 }

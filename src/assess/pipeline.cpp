@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "assess/biaxial_level.hpp"
 #include "assess/histories.hpp"
 #include "assess/joined.hpp"
 #include "assess/level.hpp"
@@ -23,6 +24,7 @@ std::vector<LevelResult> evaluate_all(const Case& c, const std::vector<LevelDema
     std::vector<LevelResult> out;
     for (const LevelDemand& dem : demands) {
         for (Direction d : directions) out.push_back(evaluate_level(c, d, dem, bank));
+        apply_biaxial(c, dem, {&out[out.size() - 2], &out.back()}, bank);
     }
     return out;
 }
@@ -240,8 +242,10 @@ std::string realism_text(const motion::RealismLimits& lim) {
 
 std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
     std::vector<std::string> out{
-        "Each horizontal direction is a planar rigid block (docs/methods.md s.1); bidirectional "
-        "effects (twisting, walking) are not modelled.",
+        "Each horizontal direction is a planar rigid block (docs/methods.md s.1), except the "
+        "sliding demand of simulated levels whose block slides without rocking, simulated with "
+        "both horizontal components at once (biaxial sliding, s.10); twisting and rocking "
+        "under both components are not modelled.",
         "A flexible body may uplift below the static threshold (frequency-induced rocking, "
         "Saraswat 2017; docs/methods.md s.2); the rigid-body models cannot show it: see the "
         "flexible-body flag.",

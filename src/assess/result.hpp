@@ -24,6 +24,7 @@ enum class Model {
     equivalent_linear_rocking,  ///< docs/methods.md s.5a screen
     simulation_slide,           ///< docs/methods.md s.3 time-history simulation, peak slip
     simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
+    simulation_biaxial_slide,   ///< docs/methods.md s.10 biaxial sliding simulation, peak |u|
 };
 const char* to_string(Model m);
 
@@ -187,6 +188,19 @@ struct Simulation {
     double governing(const Stats& s) const { return mean_governs ? s.mean : s.max; }
 };
 
+/// Biaxial sliding of a simulated level (docs/methods.md s.10): every history's two horizontal
+/// components at once (h1 along x, h2 along y, with the vertical) at the sliding bound. When it
+/// ran, its peak |u| replaces the planar peak slip in the sliding verdict; the planar
+/// statistics stay in Simulation for comparison.
+struct BiaxialSlide {
+    bool ran = false;             ///< false: the planar model stays, for `reason`
+    std::string reason;           ///< why it ran, or why it does not apply
+    Stats slide_m;                ///< peak |u| over the histories, m (when ran)
+    double planar_governing_m = 0.0;  ///< the larger governing planar peak slip of x and y, m
+    Direction planar_direction = Direction::x;  ///< the direction of that planar peak
+    std::optional<double> ratio;  ///< biaxial governing / planar_governing_m (absent if that is 0)
+};
+
 /// One PGA level in one direction.
 struct LevelResult {
     double pga_g = 0.0;
@@ -205,6 +219,8 @@ struct LevelResult {
     /// model suits the scene (docs/methods.md s.10: model only what a scene needs).
     std::string model;
     std::string model_reason;
+    /// Biaxial sliding at this level: empty when the level was not simulated.
+    std::optional<BiaxialSlide> biaxial;
     Verdict verdict;
     /// Screen result -> why simulated -> what governed, one line each (the decision trail).
     std::vector<std::string> trail;

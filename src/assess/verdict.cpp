@@ -22,6 +22,9 @@ const char* to_string(Model m) {
             return "time-history simulation, peak slip (docs/methods.md s.3)";
         case Model::simulation_rocking:
             return "time-history simulation, rocking and overturning (docs/methods.md s.3)";
+        case Model::simulation_biaxial_slide:
+            return "biaxial sliding simulation, peak |u| of both horizontal components at once "
+                   "(docs/methods.md s.10)";
     }
     return "";
 }
@@ -268,7 +271,8 @@ SimulationNeed simulation_need(const Screen& screen, SimulatePolicy policy) {
             "(docs/methods.md s.6 step 4)"};
 }
 
-Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs) {
+Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs,
+                           const BiaxialSlide* biaxial) {
     const std::string stat = stat_name(sim);
     if (sim.overturned > 0) {
         return overturn_verdict(
@@ -278,9 +282,12 @@ Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, doub
                         sim.overturned, sim.histories, 100.0 * sim.overturn_ci[0],
                         100.0 * sim.overturn_ci[1]));
     }
-    const Verdict slide = slide_demand_verdict(sim.governing(sim.slide_m), allowable_slide_m,
-                                               Model::simulation_slide,
-                                               fmt::format("simulated peak slip ({})", stat));
+    // The biaxial peak |u|, when it ran, is the sliding demand (docs/methods.md s.10).
+    const bool bi = biaxial && biaxial->ran;
+    const double slide_m = sim.governing(bi ? biaxial->slide_m : sim.slide_m);
+    const Verdict slide = slide_demand_verdict(
+        slide_m, allowable_slide_m, bi ? Model::simulation_biaxial_slide : Model::simulation_slide,
+        fmt::format("simulated {} ({})", bi ? "biaxial peak |u|" : "peak slip", stat));
     Verdict rock;
     const double theta_rad = sim.governing(sim.rock_rad);
     const double theta_over_alpha = sim.governing(sim.rock_over_alpha);
@@ -297,15 +304,31 @@ Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, doub
         return no_motion(Model::simulation_rocking,
                          fmt::format("simulated ({}) peak slip {:.2f} mm < 1 mm and peak rotation "
                                      "{:.4f} rad < 0.003 rad (no motion)",
-                                     stat, mm(sim.governing(sim.slide_m)), theta_rad));
+                                     stat, mm(slide_m), theta_rad));
     }
     return combine(slide, rock);
 }
 
+namespace {
+std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
+    if (!b.ran) return "biaxial sliding not run: " + b.reason;
+    const std::string vs =
+        b.ratio ? fmt::format("{:.2f} x the larger planar peak slip, {:.1f} mm ({})", *b.ratio,
+                              mm(b.planar_governing_m), to_string(b.planar_direction))
+                : "the planar peak slips are nil";
+    return fmt::format("biaxial sliding (h1 along x, h2 along y, with the vertical): peak |u| "
+                       "mean/84th/max {:.1f}/{:.1f}/{:.1f} mm at mu_s {:.3f}; {} {:.1f} mm is {}",
+                       mm(b.slide_m.mean), mm(b.slide_m.p84), mm(b.slide_m.max),
+                       sim.sliding_bound.mu_s, sim.mean_governs ? "the mean" : "the maximum",
+                       mm(sim.governing(b.slide_m)), vs);
+}
+}  // namespace
+
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs) {
     Verdict v = screen_verdict(level.screen);
     if (!level.screen.passed && level.simulation) {
-        v = simulation_verdict(*level.simulation, allowable_slide_m, required_fs);
+        v = simulation_verdict(*level.simulation, allowable_slide_m, required_fs,
+                               level.biaxial ? &*level.biaxial : nullptr);
     }
     if (level.flexible.raised && passes(v)) v.conditions.push_back(flexible_condition(level));
     return v;
@@ -338,9 +361,11 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
             sim.rock_over_alpha.mean, sim.rock_over_alpha.p84, sim.rock_over_alpha.max,
             sim.rocking_bound.mu_s, sim.rocking_bound.restitution, sim.overturned,
             sim.histories));
+        if (level.biaxial) out.push_back(biaxial_trail_line(sim, *level.biaxial));
         if (s.passed) {
             // Reported beside the screen, which decides: say so when the two disagree.
-            const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs);
+            const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs,
+                                                      level.biaxial ? &*level.biaxial : nullptr);
             out.push_back(fmt::format(
                 "the screen decides; the simulation beside it gives {}, margin {}{}",
                 passes(beside) ? "a pass" : "a FAILURE", margin_text(beside),

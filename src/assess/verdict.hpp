@@ -35,8 +35,10 @@ SimulationNeed simulation_need(const Screen& screen, SimulatePolicy policy);
 
 /// The simulation's verdict: sliding at the sliding bound (governing statistic of the peak slip
 /// against the allowable), rocking at the rocking bound (any overturn fails; the governing
-/// statistic of theta_max / alpha against 1 / FS_required); the more severe of the two.
-Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs);
+/// statistic of theta_max / alpha against 1 / FS_required); the more severe of the two. When
+/// biaxial sliding ran (biaxial->ran), its peak |u| is the sliding demand (docs/methods.md s.10).
+Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, double required_fs,
+                           const BiaxialSlide* biaxial = nullptr);
 
 /// The level's verdict: the screen's when it passed (a simulation run then is reported beside
 /// it), the simulation's when the screen failed and it ran, else the screen's failure.

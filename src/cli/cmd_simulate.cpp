@@ -160,7 +160,8 @@ int run(const std::vector<std::string>& args) {
     if (vm->count("restitution")) r = (*vm)["restitution"].as<double>();
     std::optional<double> top;
     if (vm->count("top")) top = (*vm)["top"].as<double>();
-    dynamics::Options opt;
+    const bool biaxial = vm->count("motion-y") || vm->count("sine-y");
+    dynamics::Options opt = biaxial ? dynamics::biaxial_options() : dynamics::Options{};
     const std::string integ = (*vm)["integrator"].as<std::string>();
     if (integ == "cd") opt.integrator = dynamics::Integrator::central_difference;
     else if (integ != "event")
@@ -169,7 +170,7 @@ int run(const std::vector<std::string>& args) {
     require_positive(opt.cd_dt_s, {"", 0, "--dt"});
     opt.record_series = vm->count("out") > 0;
     if (pair_requested(*vm)) require_pair_options(*vm);
-    if (vm->count("motion-y") || vm->count("sine-y")) return run_biaxial_simulation(*vm, blk, opt);
+    if (biaxial) return run_biaxial_simulation(*vm, blk, opt);
     const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     const dynamics::Excitation exc =
         vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())

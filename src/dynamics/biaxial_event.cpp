@@ -1,7 +1,7 @@
 // Event-driven biaxial sliding (docs/methods.md s.10). Rest and flight are exact on each linear
 // input segment (a quadratic for |a_g|^2 - (mu_s G)^2, cubics for flight). Sliding has no
 // closed form in two components (the friction direction v / |v| turns), so it is integrated by
-// Boost.Odeint's controlled Dormand-Prince 5(4) with its dense output: an explicit method with
+// a controlled Dormand-Prince 5(4) with its dense output (dopri5.hpp): an explicit method with
 // error control whose steps end at every input sample (the input's slope jumps there), and
 // whose order-4 interpolant locates the events inside a step. Dormand-Prince rather than the
 // Taylor machinery of taylor.hpp: the right-hand side is non-polynomial in v, and a stage-based
@@ -16,24 +16,20 @@
 // and retried up to half the way to it.
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
-#include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
-#include <boost/numeric/odeint/stepper/generation.hpp>
-#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
 #include "core/errors.hpp"
 #include "dynamics/biaxial_detail.hpp"
+#include "dynamics/dopri5.hpp"
 
 namespace freestand::dynamics::detail {
 
 namespace {
 
-namespace odeint = boost::numeric::odeint;
-using State = std::array<double, 4>;  // u_x, u_y, v_x, v_y
-using Stepper = odeint::runge_kutta_dopri5<State>;
-using Controlled = odeint::controlled_runge_kutta<Stepper>;
+using Stepper = Dopri5<4>;
+using State = Stepper::State;  // u_x, u_y, v_x, v_y
 
 constexpr std::size_t max_stalled_events = 100000;  // events at one instant before giving up
 constexpr int flight_probes = 16;                   // sub-samples per segment for a landing
@@ -57,7 +53,8 @@ Vec2 pos(const State& x) { return {x[0], x[1]}; }
 // 1e-10 m/s for 0.16 s in 3e7 steps. So a step that starts this slow either stops the block
 // (|a_g| <= mu_k G: friction would bring it to rest within |v| / (mu_k G - |a_g|)) or slides
 // it with friction along -a_g / |a_g| until it is faster than this. The slip this changes is
-// below v_slaved times the time so spent.
+// below v_slaved times the time so spent. (The same stiffness makes the steps shrink with |v|
+// on the approach to every stop under a turning load: most of the steps of a record.)
 constexpr double v_slaved_mps = 1e-6;
 
 // u'' = -a_g - mu_k G n (docs/methods.md s.10), n the continued friction direction.
@@ -69,9 +66,9 @@ struct SlideRhs {
         const Vec2 a = seg->a(t);
         const double G = seg->G(t);
         const Vec2 v = vel(x);
-        const double s = norm(v);
+        const double s = std::sqrt(v[0] * v[0] + v[1] * v[1]);
         Vec2 n = d;
-        const double a_norm = norm(a);
+        const double a_norm = std::sqrt(a[0] * a[0] + a[1] * a[1]);
         if (s < v_slaved_mps && a_norm > mu_k * G) {
             n = {-a[0] / a_norm, -a[1] / a_norm};
         } else if (s > 0.0) {
@@ -85,8 +82,7 @@ struct SlideRhs {
 class BiaxialEngine {
 public:
     BiaxialEngine(const BiaxialModel& m, const Options& o, BiaxialRecorder& rec, BiaxialState& st)
-        : m_(m), o_(o), rec_(rec), st_(st),
-          ctrl_(odeint::make_controlled(o.abs_tol, o.rel_tol, Stepper())) {
+        : m_(m), o_(o), rec_(rec), st_(st) {
         rhs_.mu_k = m.mu_k;
     }
 
@@ -100,6 +96,7 @@ public:
                           : st_.mode == Mode::slide ? advance_slide(t)
                                                     : advance_flight(t);
         stalled_ = te > t ? 0 : stalled_ + 1;
+
         if (stalled_ > max_stalled_events)
             throw NumericalError(fmt::format(
                 "biaxial event-driven integrator: events accumulate at t = {} s", t));
@@ -112,6 +109,7 @@ private:
 
     void set_mode(Mode next) {
         rec_.transition(st_.mode, next);
+        fsal_ = false;
         if (next == Mode::flight && st_.mode != Mode::flight) {
             st_.Y = st_.Yd = 0.0;
             armed_ = false;
@@ -128,6 +126,7 @@ private:
         if (next == Mode::slide) {
             const double s = norm(a);
             d_start_ = {-a[0] / s, -a[1] / s};
+            redirected_ = false;
         }
         set_mode(next);
     }
@@ -198,30 +197,40 @@ private:
             }
             rhs_.d = speed > 0.0 ? Vec2{st_.v[0] / speed, st_.v[1] / speed} : d_start_;
             const State x0 = {st_.u[0], st_.u[1], st_.v[0], st_.v[1]};
-            State dx0{}, x1{}, dx1{};
-            rhs_(x0, dx0, t);
+            if (!fsal_) rhs_(x0, k1_, t);
             if (h_next_ < 1e-14 * std::max(1.0, t))
                 throw NumericalError(fmt::format(
                     "biaxial event-driven integrator: the step fell below 1e-14 s at t = {} s", t));
             double h = std::min({h_next_, t_end - t, o_.max_contact_step_s});
             if (t_end - (t + h) < 1e-12 * h + 8.0 * eps_ * t_end) h = t_end - t;
-            double tt = t, hh = h;
-            if (ctrl_.try_step(std::cref(rhs_), x0, dx0, tt, x1, dx1, hh) == odeint::fail) {
+            const bool clipped = h < h_next_;
+            const double err = dp_.step(rhs_, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            if (!(err <= 1.0)) {
                 rec_.rejected();
-                h_next_ = hh;
+                fsal_ = true;
+                h_next_ = h * std::min(1.0, Stepper::factor(err));
                 continue;
             }
-            h_next_ = hh;
+            // A step cut short by the segment's end keeps the longer step it was allowed.
+            h_next_ = clipped ? std::max(h_next_, h * Stepper::factor(err))
+                              : h * Stepper::factor(err);
             const double t1 = (h == t_end - t) ? t_end : t + h;
-            auto dense = [&](double te) {
-                State y{};
-                ctrl_.stepper().calc_state(te, y, x0, dx0, t, x1, dx1, t + h);
-                return y;
-            };
+            const State x1 = dp_.x1();
+            auto dense = [&](double te) { return dp_.dense((te - t) / h); };
             const double t_stop = stop_in_step(dense, x0, x1, t, t1);
             if (t_stop < 0.0) {  // a turn, not a stop: retry up to half the way to it
                 rec_.rejected();
+                fsal_ = true;
                 h_next_ = 0.5 * (-t_stop - t);
+                continue;
+            }
+            if (t_stop == t && speed == 0.0 && !redirected_ && norm(vel(x1)) > 0.0) {
+                // A restart whose load turns within the step (a frictionless base under a load
+                // passing through zero): it leaves along the slip it gains, not along -a_g.
+                redirected_ = true;
+                rec_.rejected();
+                d_start_ = {x1[2] / norm(vel(x1)), x1[3] / norm(vel(x1))};
+                fsal_ = false;
                 continue;
             }
             const double te = t_stop < t1 ? t_stop : t1;
@@ -232,10 +241,13 @@ private:
             st_.u = pos(xe);
             st_.v = vel(xe);
             if (t_stop < t1) {
+                fsal_ = false;
                 st_.v = {0.0, 0.0};
                 start_from_rest(te);
                 return te;
             }
+            k1_ = dp_.k7();  // f(x1, t1) with x1 . d > 0: the next step's first stage
+            fsal_ = true;
             t = te;
         }
         if (lifts) set_mode(Mode::flight);
@@ -347,12 +359,15 @@ private:
     const Options& o_;
     BiaxialRecorder& rec_;
     BiaxialState& st_;
-    Controlled ctrl_;
+    Stepper dp_;
+    State k1_{};
+    bool fsal_ = false;  // k1_ holds f at the current slide state
     SlideRhs rhs_;
     BiaxialSegment seg_;
     double tb_ = 0.0;
     double h_next_ = 1e-3;    // step the error control proposes next
     Vec2 d_start_{1.0, 0.0};  // slip direction of a start from v = 0
+    bool redirected_ = false; // d_start_ was taken from the first step's slip
     bool armed_ = false;      // in flight, the block has left the base
     std::size_t stalled_ = 0;
 };

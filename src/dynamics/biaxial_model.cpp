@@ -147,6 +147,13 @@ void require_options(const BiaxialExcitation& e, const Options& o) {
 
 }  // namespace
 
+Options biaxial_options() {
+    Options o;
+    o.rel_tol = 1e-6;
+    o.abs_tol = 1e-8;
+    return o;
+}
+
 BiaxialResult simulate_biaxial(const BiaxialModel& model, const BiaxialExcitation& excitation,
                                const Options& options) {
     require_excitation(excitation);

@@ -120,6 +120,19 @@ ordered_json simulation_json(const std::optional<Simulation>& sim) {
     return j;
 }
 
+// Biaxial sliding of a simulated level (null when the level was not simulated); slide_m and
+// ratio_to_planar are null when the biaxial model did not apply (reason says why).
+ordered_json biaxial_json(const std::optional<BiaxialSlide>& b) {
+    if (!b) return nullptr;
+    return {{"ran", b->ran},
+            {"reason", b->reason},
+            {"slide_m", b->ran ? stats_json(b->slide_m) : ordered_json(nullptr)},
+            {"planar_governing_m", b->ran ? num(b->planar_governing_m) : ordered_json(nullptr)},
+            {"planar_direction", b->ran ? ordered_json(to_string(b->planar_direction))
+                                        : ordered_json(nullptr)},
+            {"ratio_to_planar", num(b->ratio)}};
+}
+
 ordered_json level_json(const LevelResult& l) {
     ordered_json j;
     j["pga_g"] = num(l.pga_g);
@@ -170,6 +183,7 @@ ordered_json level_json(const LevelResult& l) {
     j["model"] = l.model.empty() ? ordered_json(nullptr) : ordered_json(l.model);
     j["model_reason"] = l.model_reason.empty() ? ordered_json(nullptr) : ordered_json(l.model_reason);
     j["simulation"] = simulation_json(l.simulation);
+    j["biaxial"] = biaxial_json(l.biaxial);
     j["verdict"] = verdict_json(l.verdict);
     j["trail"] = l.trail;
     return j;

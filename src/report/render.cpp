@@ -191,6 +191,14 @@ std::string overturned_text(const Simulation& sim) {
                        100.0 * sim.overturn_ci[0], 100.0 * sim.overturn_ci[1]);
 }
 
+// Biaxial peak |u| statistics (mm) and their ratio to the larger planar peak slip.
+std::string biaxial_text(const LevelResult& l) {
+    if (!l.biaxial || !l.biaxial->ran) return none;
+    const BiaxialSlide& b = *l.biaxial;
+    return fmt::format("{} ({} x {})", stats_text(b.slide_m, 1000.0, 1),
+                       b.ratio ? fixed(*b.ratio, 2) : none, to_string(b.planar_direction));
+}
+
 std::string level_verdict_text(const Verdict& v) {
     return passes(v) ? verdict_text(v)
                      : fmt::format("{} ({})", verdict_text(v), to_string(v.failure));
@@ -202,6 +210,7 @@ std::string governing_bound(const LevelResult& l) {
         case Model::static_initiation:
         case Model::asce4_sliding:
         case Model::simulation_slide:
+        case Model::simulation_biaxial_slide:
             return l.bounds.sliding.name.empty() ? "lower friction bound" : l.bounds.sliding.name;
         case Model::equivalent_linear_rocking:
         case Model::simulation_rocking:
@@ -257,6 +266,7 @@ mstch::map level_row(const LevelResult& l) {
         {"histories",
          sim ? fmt::format("{} ({})", sim->histories, sim->mean_governs ? "mean" : "max") : none},
         {"sim_slide", sim ? stats_text(sim->slide_m, 1000.0, 1) : none},
+        {"sim_biaxial", biaxial_text(l)},
         {"sim_residual", sim ? mm(sim->slide_residual_m.max) : none},
         {"rock_sim", standing ? stats_text(sim->rock_over_alpha, 1.0, 3) : none},
         {"overturned", sim ? overturned_text(*sim) : none},

@@ -236,7 +236,8 @@ TEST_CASE("no report cites the methods note outside the repository, and the mode
         {Model::asce4_sliding, "(docs/methods.md s.4; ASCE 4-16)"},
         {Model::equivalent_linear_rocking, "(docs/methods.md s.5a; ASCE 43-05 App. A approach)"},
         {Model::simulation_slide, "(docs/methods.md s.3)"},
-        {Model::simulation_rocking, "(docs/methods.md s.3)"}};
+        {Model::simulation_rocking, "(docs/methods.md s.3)"},
+        {Model::simulation_biaxial_slide, "(docs/methods.md s.10)"}};
     for (const auto& [model, citation] : cited) {
         const std::string name = assess::to_string(model);
         INFO(name);

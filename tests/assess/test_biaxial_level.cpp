@@ -1,0 +1,79 @@
+// Biaxial sliding in assess (issue 15, docs/methods.md s.10): a simulated level whose block
+// slides without rocking takes its sliding demand from both horizontal components at once; a
+// rocking level keeps the planar model and says why. The JSON: tests/report/test_biaxial_json.cpp.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <filesystem>
+
+#include "assess/biaxial_level.hpp"
+#include "assess/level.hpp"
+#include "assess/pipeline.hpp"
+#include "assess/verdict.hpp"
+
+namespace fs = std::filesystem;
+using namespace freestand;
+using namespace freestand::assess;
+
+namespace {
+
+Case shipped(const char* name, const std::vector<double>& pga, int histories) {
+    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / name);
+    c.options.histories_per_level = histories;
+    return with_pga_levels(c, pga);
+}
+
+bool trail_has(const LevelResult& l, const std::string& start) {
+    return std::any_of(l.trail.begin(), l.trail.end(),
+                       [&](const std::string& t) { return t.rfind(start, 0) == 0; });
+}
+
+}  // namespace
+
+TEST_CASE("a sliding level's verdict uses the biaxial peak; the planar stays for comparison",
+          "[assess][biaxial]") {
+    // The glove box slides at 0.2 g (mu_s 0.12 at the lower bound, tan(alpha) well above).
+    const AssessmentResult r = assess::assess(shipped("glovebox-single.toml", {0.2}, 2));
+    REQUIRE(r.levels.size() == 2);
+    const LevelResult& x = r.levels.at(0);
+    const LevelResult& y = r.levels.at(1);
+    for (const LevelResult* l : {&x, &y}) {
+        INFO(to_string(l->direction));
+        REQUIRE(l->simulation.has_value());
+        REQUIRE(l->biaxial.has_value());
+        CHECK(l->biaxial->ran);
+        CHECK(l->model == biaxial_model_name);
+        CHECK(l->model_reason.find("slides without rocking") != std::string::npos);
+        CHECK(l->verdict.decided_by == Model::simulation_biaxial_slide);
+        // Two histories: the maximum governs; the margin is the allowable over the biaxial peak.
+        CHECK_FALSE(l->simulation->mean_governs);
+        CHECK(*l->verdict.margin ==
+              Approx(r.input.component.allowable_slide_m / l->biaxial->slide_m.max).epsilon(1e-12));
+        CHECK(l->biaxial->slide_m.max != l->simulation->slide_m.max);
+        CHECK(trail_has(*l, "biaxial sliding (h1 along x, h2 along y"));
+        CHECK(trail_has(*l, "model: biaxial sliding"));
+    }
+    // One biaxial run per PGA level, shared by x and y; the ratio is to the larger planar peak.
+    CHECK(x.biaxial->slide_m.mean == y.biaxial->slide_m.mean);
+    const double planar = std::max(x.simulation->slide_m.max, y.simulation->slide_m.max);
+    CHECK(x.biaxial->planar_governing_m == planar);
+    CHECK(*x.biaxial->ratio == Approx(x.biaxial->slide_m.max / planar).epsilon(1e-12));
+    CHECK(x.biaxial->planar_direction ==
+          (x.simulation->slide_m.max >= y.simulation->slide_m.max ? Direction::x : Direction::y));
+}
+
+TEST_CASE("a rocking level keeps the planar model and says why the biaxial one does not apply",
+          "[assess][biaxial]") {
+    // The slender TS1 block rocks at 0.3 g at both friction bounds.
+    const AssessmentResult r = assess::assess(shipped("block-ts1.toml", {0.3}, 1));
+    const LevelResult& x = r.levels.at(0);
+    REQUIRE(x.simulation.has_value());
+    REQUIRE(x.biaxial.has_value());
+    CHECK_FALSE(x.biaxial->ran);
+    CHECK(x.biaxial->reason.find("does not slide alone at the sliding bound (mode rock)") !=
+          std::string::npos);
+    CHECK(x.model == planar_model_name);
+    CHECK(x.model_reason.find("biaxial sliding does not apply: the block does not slide alone") !=
+          std::string::npos);
+    CHECK(x.verdict.decided_by != Model::simulation_biaxial_slide);
+    CHECK(trail_has(x, "biaxial sliding not run: "));
+}
