@@ -7,6 +7,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include "support/run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -15,7 +17,9 @@ using freestand::test::slurp;
 
 namespace {
 fs::path temp_dir(const std::string& name) {
-    const fs::path d = fs::temp_directory_path() / ("freestand_validate_" + name);
+    // The pid keeps concurrent test runs (other build trees, ctest -j) out of each other's way.
+    const fs::path d = fs::temp_directory_path() /
+                       ("freestand_validate_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
     return d;

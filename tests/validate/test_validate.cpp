@@ -1,6 +1,8 @@
 // The validation table: every row the issue asks for, each complete (issue 13 s.3).
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -115,7 +117,8 @@ TEST_CASE("glove-box modes: rest at 0.1 g on PVC and to 0.3 g on steel pads", "[
 }
 
 TEST_CASE("validation without the shipped cases is an I/O error naming the file", "[validate]") {
-    const fs::path none = fs::temp_directory_path() / "freestand_validate_no_cases";
+    const fs::path none = fs::temp_directory_path() /
+                          ("freestand_validate_no_cases_" + std::to_string(::getpid()));
     fs::create_directories(none);
     CHECK_FALSE(has_cases(none));
     CHECK(has_cases(fs::path(FREESTAND_SOURCE_DIR) / "cases"));
