@@ -124,7 +124,6 @@ private:
         if (is_flight(next.mode) && !is_flight(m_.mode)) {
             const Pose p = pose(x_);
             x_ = {p.X, p.Xd, p.Y, p.Yd, p.phi, p.phid, p.q, p.qd};
-            armed_ = false;
         }
         if (next.mode == Mode::rock || next.mode == Mode::slide_rock || is_flight(next.mode))
             out_.summary.uplifted = true;
@@ -274,7 +273,7 @@ private:
             case Mode::rock: return {Ev::impact, Ev::overturn, Ev::lift, Ev::friction};
             case Mode::slide_rock: return {Ev::impact, Ev::overturn, Ev::lift, Ev::stop};
             case Mode::slide: return {Ev::unload_left, Ev::unload_right, Ev::stop, Ev::none};
-            case Mode::flight: return {Ev::overturn, armed_ ? Ev::land : Ev::none, Ev::none, Ev::none};
+            case Mode::flight: return {Ev::overturn, Ev::land, Ev::none, Ev::none};
             case Mode::rest: break;
         }
         return {Ev::none, Ev::none, Ev::none, Ev::none};
@@ -331,7 +330,6 @@ private:
             observe_peaks(dense, x0, xe, t, t_ev);
             time_in(t_ev - t);
             x_ = xe;
-            if (m_.mode == Mode::flight && !armed_ && lowest_corner_y(x_) > 1e-9) armed_ = true;
             if (first == Ev::none) {
                 t = t1;
                 continue;
@@ -472,7 +470,6 @@ private:
     FlexMode m_{};
     State x_{};
     double h_next_ = 1e-3;
-    bool armed_ = false;
     double acc_peak_ = 0.0;
     double last_event_ = -1.0;
     std::size_t burst_ = 0;
