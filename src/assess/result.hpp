@@ -23,6 +23,7 @@ enum class Model {
     equivalent_linear_rocking,  ///< docs/methods.md s.5a screen
     simulation_slide,           ///< docs/methods.md s.3 time-history simulation, peak slip
     simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
+    simulation_flexible,        ///< docs/methods.md s.10 flexible-body simulation (a raised flag)
 };
 const char* to_string(Model m);
 
@@ -186,6 +187,19 @@ struct Simulation {
     double governing(const Stats& s) const { return mean_governs ? s.mean : s.max; }
 };
 
+/// The flexible-body simulation of a level with a raised flexible-body flag (docs/methods.md
+/// s.10): the same histories and bounds as Simulation, the reduced-order model.
+struct FlexibleSimulation {
+    Simulation sim;              ///< slip, rotation of the base, overturning: as the planar one
+    Stats modal_m;               ///< peak |q| (modal displacement relative to the base), m
+    Stats modal_accel_g;         ///< peak absolute acceleration of the modal mass, g
+    int uplifted = 0;            ///< histories in which the base uplifted (either bound)
+    double frequency_hz = 0.0;   ///< the mode it ran with
+    double damping = 0.0;
+    double mass_fraction = 0.0;
+    double height_m = 0.0;
+};
+
 /// One PGA level in one direction.
 struct LevelResult {
     double pga_g = 0.0;
@@ -204,6 +218,9 @@ struct LevelResult {
     /// model suits the scene (docs/methods.md s.10: model only what a scene needs).
     std::string model;
     std::string model_reason;
+    /// The flexible-body simulation, run where the flag is raised; it then decides the level and
+    /// `simulation` (the rigid planar one) is reported beside it.
+    std::optional<FlexibleSimulation> flexible_simulation;
     Verdict verdict;
     /// Screen result -> why simulated -> what governed, one line each (the decision trail).
     std::vector<std::string> trail;
