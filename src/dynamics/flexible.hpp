@@ -21,8 +21,9 @@
 
 namespace freestand::dynamics {
 
-/// Uniform cantilever, first mode (e.g. Chopra, Dynamics of Structures, s.17: effective modal
-/// mass 0.613 M at 0.726 of the height): the defaults when a case gives no modal mass or height.
+/// Uniform cantilever, first mode (e.g. Chopra, Dynamics of Structures, distributed-mass
+/// systems: effective modal mass 0.613 M at 0.726 of the height): the defaults when a case
+/// gives no modal mass or height.
 inline constexpr double cantilever_modal_mass_fraction = 0.613;
 inline constexpr double cantilever_modal_height_ratio = 0.726;
 /// Modal damping when none is given (steel equipment, ASCE 4 / RG 1.61 welded steel: 2%).
