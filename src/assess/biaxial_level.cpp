@@ -83,10 +83,17 @@ void apply_biaxial(const Case& c, const LevelDemand& demand, std::vector<LevelRe
             b.planar_governing_m = planar->simulation->governing(planar->simulation->slide_m);
             if (b.planar_governing_m > 0.0)
                 b.ratio = l->simulation->governing(b.slide_m) / b.planar_governing_m;
-            l->model = biaxial_model_name;
-            l->model_reason = b.reason + "; rocking and overturning stay with the planar block";
-            if (l->flexible.raised)
-                l->model_reason += "; the flexible-body flag is raised and stays a condition";
+            if (l->flexible_simulation) {
+                // The flexible model stays the level's model; the biaxial |u| joins its sliding
+                // demand (decide_level takes the larger).
+                l->model_reason += "; biaxial sliding of the rigid block ran too (" + b.reason +
+                                   "): the larger sliding demand of the two governs";
+            } else {
+                l->model = biaxial_model_name;
+                l->model_reason = b.reason + "; rocking and overturning stay with the planar block";
+                if (l->flexible.raised)
+                    l->model_reason += "; the flexible-body flag is raised and stays a condition";
+            }
         }
         l->biaxial = std::move(b);
         const double allowable = c.component.allowable_slide_m;

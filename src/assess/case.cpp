@@ -12,6 +12,7 @@
 #include "core/file_io.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
+#include "dynamics/flexible.hpp"
 
 namespace freestand::assess {
 
@@ -35,6 +36,9 @@ const std::vector<std::string> component_keys{"name",
                                               "p_radps",
                                               "footprint",
                                               "fixed_base_frequency_hz",
+                                              "modal_damping",
+                                              "modal_mass_fraction",
+                                              "modal_height_m",
                                               "free_rocking_band_hz",
                                               "base_material",
                                               "mu_s",
@@ -232,6 +236,46 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
     }
 }
 
+// The flexible body's mode (docs/methods.md s.10): its keys need the fixed-base frequency; the
+// defaults are stated as assumptions.
+void read_modal(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
+    c.modal_damping = r.number("modal_damping", Range{0.0, 1.0, true, false});
+    c.modal_mass_fraction = r.number("modal_mass_fraction", Range{0.0, 1.0, false, false});
+    c.modal_height_m = r.number("modal_height_m", positive_size);
+    for (const char* key : {"modal_damping", "modal_mass_fraction", "modal_height_m"})
+        if (r.has(key) && !c.fixed_base_frequency_hz)
+            r.fail(key, "needs fixed_base_frequency_hz (the mode it describes)");
+    if (!c.fixed_base_frequency_hz) return;
+    dynamics::FlexibleMode mode;
+    mode.frequency_hz = *c.fixed_base_frequency_hz;
+    mode.mass_fraction = c.modal_mass_fraction;
+    mode.height_m = c.modal_height_m;
+    for (const Direction d : {Direction::x, Direction::y}) {
+        try {
+            dynamics::make_flexible_model(dynamics::make_block_model(c.block(d), 0.0), mode);
+        } catch (const InputError& e) {
+            r.fail(c.modal_height_m ? "modal_height_m" : "modal_mass_fraction",
+                   fmt::format("in the {} direction: {}", to_string(d), e.message()));
+        }
+    }
+    std::vector<std::string> defaults;
+    if (!c.modal_damping)
+        defaults.push_back(fmt::format("modal damping {}", dynamics::default_modal_damping));
+    if (!c.modal_mass_fraction)
+        defaults.push_back(fmt::format("modal mass {} M (uniform cantilever, first mode)",
+                                       dynamics::cantilever_modal_mass_fraction));
+    if (!c.modal_height_m)
+        defaults.push_back(fmt::format(
+            "modal height {} x the body's height, taken as 2 x the CG height = {:.3f} m (uniform "
+            "cantilever)",
+            dynamics::cantilever_modal_height_ratio,
+            dynamics::cantilever_modal_height_ratio * 2.0 * c.cg_height_m));
+    if (!defaults.empty())
+        assumptions.push_back(fmt::format(
+            "Flexible-body model (run where a flexible-body flag is raised): {}.",
+            fmt::join(defaults, "; ")));
+}
+
 Component read_component(TableReader& r, std::vector<std::string>& assumptions) {
     Component c;
     // The case's own assumptions (data not published, chosen by the author) come first.
@@ -245,6 +289,7 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     read_inertia(r, c, assumptions);
     c.footprint = r.string("footprint").value_or("");
     c.fixed_base_frequency_hz = r.number("fixed_base_frequency_hz", frequency_range);
+    read_modal(r, c, assumptions);
     if (const auto band = r.numbers("free_rocking_band_hz", frequency_range, 2)) {
         if ((*band)[0] >= (*band)[1]) {
             r.fail("free_rocking_band_hz",

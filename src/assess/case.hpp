@@ -63,6 +63,11 @@ struct Component {
     bool uniform_block = false;  ///< given as width/depth/height of a uniform block
     std::string footprint;       ///< legs or footprint description (free text)
     std::optional<double> fixed_base_frequency_hz;
+    /// The flexible body's mode (docs/methods.md s.10), used when a flexible-body flag is raised;
+    /// absent: dynamics::default_modal_damping and a uniform cantilever's first mode.
+    std::optional<double> modal_damping;
+    std::optional<double> modal_mass_fraction;  ///< m_s / M
+    std::optional<double> modal_height_m;       ///< h_s above the base, m
     std::optional<std::array<double, 2>> free_rocking_band_hz;
     BaseContact base;
     double allowable_slide_m = 0.0;     ///< absolute slide allowed: clearance to walls, neighbours

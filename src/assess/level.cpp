@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "assess/flexible_level.hpp"
 #include "assess/verdict.hpp"
 #include "core/contract.hpp"
 #include "core/measures.hpp"
@@ -330,15 +331,15 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
     return dynamics::make_block_model(blk, contact.mu_s, contact.mu_k, r);
 }
 
-dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g) {
-    const core::Record& h = d == Direction::x ? set.h1 : set.h2;
-    return dynamics::excitation_from_record(h, pga_g, &set.v, pga_g);
-}
-
 Stats stats_of(const std::vector<double>& values) {
     if (values.empty()) return Stats{};
     return Stats{core::mean(values), core::quantile(values, 0.84),
                  *std::max_element(values.begin(), values.end())};
+}
+
+dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g) {
+    const core::Record& h = d == Direction::x ? set.h1 : set.h2;
+    return dynamics::excitation_from_record(h, pga_g, &set.v, pga_g);
 }
 
 namespace {
@@ -351,7 +352,8 @@ bool same_contact(const ContactBound& a, const ContactBound& b) {
 }  // namespace
 
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
-                          double pga_g, HistoryBank& bank, bool rocking_mode) {
+                          double pga_g, HistoryBank& bank, bool rocking_mode,
+                          const HistoryRunner& run) {
     const dynamics::BlockModel slide_model = block_model(c.component, bounds.sliding, d);
     const dynamics::BlockModel rock_model = block_model(c.component, bounds.rocking, d);
     dynamics::Options opt;
@@ -366,11 +368,13 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
     sim.mean_governs = sim.histories >= min_histories_for_mean;
     std::vector<double> slide, residual, rock_over_alpha, rock_rad, amplification;
     double worst = -1.0;
+    const auto run_one = [&](const dynamics::BlockModel& m, const dynamics::Excitation& ex) {
+        return run ? run(m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
+    };
     for (std::size_t k = 0; k < sets.size(); ++k) {
         const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
-        const dynamics::Summary s_slide = dynamics::simulate(slide_model, ex, opt).summary;
-        const dynamics::Summary s_rock =
-            sim.bounds_differ ? dynamics::simulate(rock_model, ex, opt).summary : s_slide;
+        const dynamics::Summary s_slide = run_one(slide_model, ex);
+        const dynamics::Summary s_rock = sim.bounds_differ ? run_one(rock_model, ex) : s_slide;
         slide.push_back(s_slide.slide_max_m);
         residual.push_back(s_slide.slide_residual_m);
         amplification.push_back(s_rock.amplification);
@@ -419,7 +423,8 @@ LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand
     r.screen = screen_level(r, allowable, fs);
     const SimulationNeed need = simulation_need(r.screen, c.options.simulate);
     r.simulation_reason = need.reason;
-    if (need.run) {
+    const bool flexible = r.flexible.raised && !flexible_model_blocker(c);
+    if (need.run || flexible) {
         const bool rocking_mode =
             r.initiation.mode == Mode::rock || r.initiation.mode == Mode::slide_rock;
         r.simulation = simulate_level(c, r.bounds, d, demand.pga_g, bank, rocking_mode);
@@ -428,6 +433,7 @@ LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand
         // The energy estimate needs the histories' DeltaD: now they exist.
         r.sliding = closed_form_sliding(c, r.bounds.sliding, d, r.initiation_lower.mode,
                                         demand, bank, true);
+        if (flexible) simulate_flexible_level(c, r, demand.pga_g, bank, rocking_mode);
     }
     if (r.simulation) r.rocking.pgv_mps = bank.mean_pgv_mps(d, demand.pga_g);
     r.verdict = decide_level(r, allowable, fs);

@@ -2,6 +2,7 @@
 /// One PGA level in one direction: classification, closed forms, and (when needed) the
 /// simulation over the level's histories (docs/methods.md s.6 steps 1-4).
 #include <array>
+#include <functional>
 #include <map>
 #include <utility>
 #include <optional>
@@ -75,12 +76,19 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
 /// The excitation of history k in direction d at the demand's PGA (horizontal and vertical).
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g);
 
-/// Mean, 84th percentile and maximum of values (all 0 when empty).
+/// Mean, 84th percentile and maximum of the values (all 0 when empty).
 Stats stats_of(const std::vector<double>& values);
+
+/// One history's run at one bound (the sliding bound's first, then the rocking bound's when
+/// they differ): the summary the statistics read.
+using HistoryRunner = std::function<dynamics::Summary(
+    const dynamics::BlockModel&, const dynamics::Excitation&, const dynamics::Options&)>;
 
 /// Simulates every history at both bounds (once when they coincide) and gathers the
 /// statistics of docs/methods.md s.6 step 5; rocking_mode picks the governing history's measure.
+/// run: the model each history runs (empty: the planar rigid block, dynamics::simulate).
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
-                          double pga_g, HistoryBank& bank, bool rocking_mode);
+                          double pga_g, HistoryBank& bank, bool rocking_mode,
+                          const HistoryRunner& run = {});
 
 }  // namespace freestand::assess

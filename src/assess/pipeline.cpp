@@ -247,8 +247,9 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
         "both horizontal components at once (biaxial sliding, s.10); twisting and rocking "
         "under both components are not modelled.",
         "A flexible body may uplift below the static threshold (frequency-induced rocking, "
-        "Saraswat 2017; docs/methods.md s.2); the rigid-body models cannot show it: see the "
-        "flexible-body flag.",
+        "Saraswat 2017; docs/methods.md s.2); the rigid-body models cannot show it: where the "
+        "flexible-body flag is raised the reduced-order flexible model (rigid base and one "
+        "elastic mode, docs/methods.md s.10) runs and decides.",
         "The equivalent-linear rocking estimate is a screen following the ASCE 43-05 App. A "
         "approach, not the standard's text; a rocking block is not an oscillator (Makris & "
         "Konstantinidis 2003) and the simulation is the reference (docs/methods.md s.5a).",
@@ -321,6 +322,10 @@ AssessmentResult assess(const Case& c) {
         if (l.simulation) {
             res.simulations_run +=
                 l.simulation->histories * (l.simulation->bounds_differ ? 2 : 1);
+        }
+        if (l.flexible_simulation) {
+            const Simulation& f = l.flexible_simulation->sim;
+            res.simulations_run += f.histories * (f.bounds_differ ? 2 : 1);
         }
     }
     return res;

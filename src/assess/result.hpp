@@ -25,6 +25,7 @@ enum class Model {
     simulation_slide,           ///< docs/methods.md s.3 time-history simulation, peak slip
     simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
     simulation_biaxial_slide,   ///< docs/methods.md s.10 biaxial sliding simulation, peak |u|
+    simulation_flexible,        ///< docs/methods.md s.10 flexible-body simulation (a raised flag)
 };
 const char* to_string(Model m);
 
@@ -201,6 +202,19 @@ struct BiaxialSlide {
     std::optional<double> ratio;  ///< biaxial governing / planar_governing_m (absent if that is 0)
 };
 
+/// The flexible-body simulation of a level with a raised flexible-body flag (docs/methods.md
+/// s.10): the same histories and bounds as Simulation, the reduced-order model.
+struct FlexibleSimulation {
+    Simulation sim;              ///< slip, rotation of the base, overturning: as the planar one
+    Stats modal_m;               ///< peak |q| (modal displacement relative to the base), m
+    Stats modal_accel_g;         ///< peak absolute acceleration of the modal mass, g
+    int uplifted = 0;            ///< histories in which the base uplifted (either bound)
+    double frequency_hz = 0.0;   ///< the mode it ran with
+    double damping = 0.0;
+    double mass_fraction = 0.0;
+    double height_m = 0.0;
+};
+
 /// One PGA level in one direction.
 struct LevelResult {
     double pga_g = 0.0;
@@ -221,6 +235,9 @@ struct LevelResult {
     std::string model_reason;
     /// Biaxial sliding at this level: empty when the level was not simulated.
     std::optional<BiaxialSlide> biaxial;
+    /// The flexible-body simulation, run where the flag is raised; it then decides the level and
+    /// `simulation` (the rigid planar one) is reported beside it.
+    std::optional<FlexibleSimulation> flexible_simulation;
     Verdict verdict;
     /// Screen result -> why simulated -> what governed, one line each (the decision trail).
     std::vector<std::string> trail;

@@ -25,6 +25,9 @@ const char* to_string(Model m) {
         case Model::simulation_biaxial_slide:
             return "biaxial sliding simulation, peak |u| of both horizontal components at once "
                    "(docs/methods.md s.10)";
+        case Model::simulation_flexible:
+            return "time-history simulation of the flexible body, rigid base and one elastic mode "
+                   "(docs/methods.md s.10)";
     }
     return "";
 }
@@ -233,6 +236,19 @@ std::string stat_name(const Simulation& sim) {
                             : fmt::format("max of {}", sim.histories);
 }
 
+std::string flexible_trail_line(const FlexibleSimulation& f) {
+    const Simulation& sim = f.sim;
+    return fmt::format(
+        "flexible body ({:.3g} Hz, damping {:.3g}, modal mass {:.3g} M at {:.3g} m), {} "
+        "histories: base uplifted in {}; peak modal displacement mean/max {:.1f}/{:.1f} mm; peak "
+        "slip mean/84th/max {:.1f}/{:.1f}/{:.1f} mm; theta/alpha {:.3f}/{:.3f}/{:.3f}; "
+        "overturned {}/{}",
+        f.frequency_hz, f.damping, f.mass_fraction, f.height_m, sim.histories, f.uplifted,
+        mm(f.modal_m.mean), mm(f.modal_m.max), mm(sim.slide_m.mean), mm(sim.slide_m.p84),
+        mm(sim.slide_m.max), sim.rock_over_alpha.mean, sim.rock_over_alpha.p84,
+        sim.rock_over_alpha.max, sim.overturned, sim.histories);
+}
+
 }  // namespace
 
 Screen screen_level(const LevelResult& closed, double allowable_slide_m, double required_fs) {
@@ -325,6 +341,23 @@ std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
 }  // namespace
 
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs) {
+    if (level.flexible_simulation) {
+        // A raised flag resolved by the flexible model: its result decides (s.10).
+        Verdict v = simulation_verdict(level.flexible_simulation->sim, allowable_slide_m, required_fs);
+        v.decided_by = Model::simulation_flexible;
+        v.margin_basis = "flexible body: " + v.margin_basis;
+        // Neither model has both effects, so where biaxial sliding ran too the sliding demand is
+        // the larger of the flexible body's planar slip and the rigid block's biaxial |u| (s.10).
+        if (level.biaxial && level.biaxial->ran) {
+            const Simulation& sim = level.flexible_simulation->sim;
+            v = combine(v, slide_demand_verdict(
+                               sim.governing(level.biaxial->slide_m), allowable_slide_m,
+                               Model::simulation_biaxial_slide,
+                               fmt::format("simulated biaxial peak |u| of the rigid block ({})",
+                                           stat_name(sim))));
+        }
+        return v;
+    }
     Verdict v = screen_verdict(level.screen);
     if (!level.screen.passed && level.simulation) {
         v = simulation_verdict(*level.simulation, allowable_slide_m, required_fs,
@@ -362,7 +395,14 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
             sim.rocking_bound.mu_s, sim.rocking_bound.restitution, sim.overturned,
             sim.histories));
         if (level.biaxial) out.push_back(biaxial_trail_line(sim, *level.biaxial));
-        if (s.passed) {
+        if (level.flexible_simulation) {
+            out.push_back(flexible_trail_line(*level.flexible_simulation));
+            const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs);
+            out.push_back(fmt::format(
+                "the flexible-body model decides; the rigid planar simulation beside it gives {}, "
+                "margin {}",
+                passes(beside) ? "a pass" : "a FAILURE", margin_text(beside)));
+        } else if (s.passed) {
             // Reported beside the screen, which decides: say so when the two disagree.
             const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs,
                                                       level.biaxial ? &*level.biaxial : nullptr);
@@ -425,7 +465,8 @@ std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels)
         "docs/methods.md s.2), "
         "which the rigid-block models cannot show. The verdict holds at these levels only if the "
         "component is shown to respond as a rigid body (fixed-base frequency well above the "
-        "band) or by test; freestand has no flexible-body model yet.",
+        "band) or by test; the flexible-body model (docs/methods.md s.10) did not run there "
+        "(it needs the fixed-base frequency and a simulation the case allows).",
         fmt::join(where, ", "), basis)};
 }
 

@@ -12,6 +12,7 @@
 #include "core/units.hpp"
 #include "cli/simulate_biaxial.hpp"
 #include "cli/simulate_pair.hpp"
+#include "cli/simulate_flexible.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::cli {
@@ -49,6 +50,7 @@ const char* const usage =
     "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
     "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--motion-y FILE] [--scale S] | "
     "--sine 0.8g,2Hz,5s[,ramp=1s] | --sine-y 0.8g,2Hz,5s[,ramp=1s][,phase=90]) "
+    "[--flexible f=HZ[,zeta=Z][,mass=FRACTION][,height=M]] "
     "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json] "
     "[--block2 ... [--cg2 ...] --mu2 MU [--mu-k2 MU] [--restitution2 R] --tunnel-height H]";
 
@@ -139,6 +141,10 @@ int run(const std::vector<std::string>& args) {
         ("sine-y", po::value<std::string>(),
          "A g,f Hz,T s[,ramp=t s][,phase=DEG]: biaxial sliding under x = A sin(2 pi f t), "
          "y = A sin(2 pi f t + phase) (phase 0 by default)")
+        ("flexible", po::value<std::string>(),
+         "f=HZ[,zeta=RATIO][,mass=FRACTION][,height=M]: reduced-order flexible body (fixed-base "
+         "frequency, modal damping, modal mass as a fraction of m, its height above the base; "
+         "defaults zeta 0.02 and a uniform cantilever's 0.613 m at 0.726 x 2 h)")
         ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
         ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
         ("out", po::value<std::string>(), "write the time series CSV here")
@@ -170,12 +176,16 @@ int run(const std::vector<std::string>& args) {
     require_positive(opt.cd_dt_s, {"", 0, "--dt"});
     opt.record_series = vm->count("out") > 0;
     if (pair_requested(*vm)) require_pair_options(*vm);
+    if (vm->count("flexible") && (biaxial || pair_requested(*vm) || integ != "event"))
+        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit) "
+                         "with --integrator event");
     if (biaxial) return run_biaxial_simulation(*vm, blk, opt);
     const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     const dynamics::Excitation exc =
         vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())
                           : parse_motion((*vm)["motion"].as<std::string>(), (*vm)["scale"].as<double>());
     if (pair_requested(*vm)) return run_pair_simulation(*vm, model, exc, opt);
+    if (vm->count("flexible")) return run_flexible_simulation(*vm, model, exc, opt);
     const dynamics::SimulationResult res = dynamics::simulate(model, exc, opt);
     if (vm->count("out")) core::write_file_atomic((*vm)["out"].as<std::string>(), series_csv(res, exc.label));
     if ((*vm)["json"].as<bool>()) {
@@ -189,4 +199,7 @@ int run(const std::vector<std::string>& args) {
 const CommandRegistrar reg{{"simulate", "rigid-block time history (slide, rock, overturn)", &run}};
 
 }  // namespace
+
+nlohmann::ordered_json simulate_summary_json(const dynamics::Summary& s) { return summary_json(s); }
+
 }  // namespace freestand::cli

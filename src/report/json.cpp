@@ -133,6 +133,23 @@ ordered_json biaxial_json(const std::optional<BiaxialSlide>& b) {
             {"ratio_to_planar", num(b->ratio)}};
 }
 
+// The flexible-body simulation of a level (docs/methods.md s.10), null where it did not run.
+ordered_json flexible_simulation_json(const std::optional<FlexibleSimulation>& f) {
+    if (!f) return nullptr;
+    ordered_json j;
+    j["frequency_hz"] = num(f->frequency_hz);
+    j["damping"] = num(f->damping);
+    j["modal_mass_fraction"] = num(f->mass_fraction);
+    j["modal_height_m"] = num(f->height_m);
+    j["uplifted"] = f->uplifted;
+    j["modal_m"] = stats_json(f->modal_m);
+    j["modal_accel_g"] = stats_json(f->modal_accel_g);
+    ordered_json sim = simulation_json(f->sim);
+    sim.erase("amplification");  // the rigid top-corner measure; modal_accel_g replaces it
+    j.update(sim);
+    return j;
+}
+
 ordered_json level_json(const LevelResult& l) {
     ordered_json j;
     j["pga_g"] = num(l.pga_g);
@@ -184,6 +201,7 @@ ordered_json level_json(const LevelResult& l) {
     j["model_reason"] = l.model_reason.empty() ? ordered_json(nullptr) : ordered_json(l.model_reason);
     j["simulation"] = simulation_json(l.simulation);
     j["biaxial"] = biaxial_json(l.biaxial);
+    j["flexible_simulation"] = flexible_simulation_json(l.flexible_simulation);
     j["verdict"] = verdict_json(l.verdict);
     j["trail"] = l.trail;
     return j;

@@ -1,5 +1,6 @@
 #include "report/render.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -216,6 +217,8 @@ std::string governing_bound(const LevelResult& l) {
         case Model::simulation_rocking:
             return l.bounds.rocking.name.empty() ? "upper friction and restitution bounds"
                                                  : l.bounds.rocking.name;
+        case Model::simulation_flexible:
+            return "slip at the lower friction bound, rocking at the upper bounds";
     }
     return none;
 }
@@ -291,6 +294,36 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
                                  "docs/methods.md s.2).",
                                  l.pga_g, to_string(l.direction), to_string(l.initiation.mode),
                                  l.flexible.basis, l.flexible.reason)}});
+    }
+    return out;
+}
+
+// Rigid and flexible side by side at each level the flexible-body model ran (docs/methods.md
+// s.10): one row per model over the same histories and bounds.
+mstch::array flex_compare(const std::vector<LevelResult>& levels) {
+    mstch::array out;
+    const auto row = [](const LevelResult& l, const Simulation& sim, const std::string& model,
+                        const std::string& uplifted, const std::string& modal) {
+        const bool standing = sim.overturned < sim.histories;
+        return mstch::map{{"pga", fixed(l.pga_g, 3)},
+                          {"dir", std::string(to_string(l.direction))},
+                          {"model", model},
+                          {"sim_slide", stats_text(sim.slide_m, 1000.0, 1)},
+                          {"rock_sim", standing ? stats_text(sim.rock_over_alpha, 1.0, 3) : none},
+                          {"overturned", overturned_text(sim)},
+                          {"uplifted", uplifted},
+                          {"modal", modal}};
+    };
+    for (const LevelResult& l : levels) {
+        if (!l.flexible_simulation) continue;
+        const FlexibleSimulation& f = *l.flexible_simulation;
+        if (l.simulation) {
+            out.push_back(row(l, *l.simulation, "rigid planar block (beside)", none, none));
+        }
+        out.push_back(row(l, f.sim,
+                          fmt::format("flexible body, {:.3g} Hz (decides)", f.frequency_hz),
+                          fmt::format("{} / {}", f.uplifted, f.sim.histories),
+                          stats_text(f.modal_m, 1000.0, 2)));
     }
     return out;
 }
@@ -402,6 +435,10 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"inputs", inputs(r.input, r.levels)},
         {"levels", levels},
         {"flex_notes", flex_notes(r.levels)},
+        {"flex_compare", flex_compare(r.levels)},
+        {"has_flex_compare", std::any_of(r.levels.begin(), r.levels.end(), [](const LevelResult& l) {
+             return l.flexible_simulation.has_value();
+         })},
         {"figures", figures},
         {"has_history_checks", !r.history_checks.empty()},
         {"history_basis", history_basis(r.input.site)},

@@ -175,8 +175,8 @@ Row mode_row(const assess::AssessmentResult& r, const std::string& base_key,
     std::string reason = std::move(caveat);
     if (l.flexible.raised) {
         reason += (reason.empty() ? "" : " ") +
-                  fmt::format("freestand raises its flexible-body flag here ({}): "
-                              "frequency-induced rocking is outside the rigid model.",
+                  fmt::format("freestand raises its flexible-body flag here ({}): its "
+                              "flexible-body model decides the level (the flexible-body rows).",
                               l.flexible.basis);
     }
     row.reason = reason;
@@ -195,7 +195,7 @@ const assess::LevelResult& level_x(const assess::AssessmentResult& r, double pga
 GloveBoxRuns run_glove_boxes(const std::filesystem::path& cases_dir) {
     GloveBoxRuns runs;
     runs.pvc = assess_case(cases_dir / "glovebox-single.toml", {0.1, 0.15, 0.2, 0.3});
-    runs.steel = assess_case(cases_dir / "glovebox-steel-pads.toml", {0.1, 0.2, 0.3});
+    runs.steel = assess_case(cases_dir / "glovebox-steel-pads.toml", {0.1, 0.2, 0.3, 0.4});
     runs.pair = assess_case(cases_dir / "glovebox-pair.toml", {0.2, 0.3});
     return runs;
 }

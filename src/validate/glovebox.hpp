@@ -16,7 +16,7 @@ namespace freestand::validate {
 /// so every level has its simulated peaks and the energy method its DeltaD.
 struct GloveBoxRuns {
     assess::AssessmentResult pvc;    ///< glovebox-single.toml at 0.1, 0.15, 0.2, 0.3 g
-    assess::AssessmentResult steel;  ///< glovebox-steel-pads.toml at 0.1, 0.2, 0.3 g
+    assess::AssessmentResult steel;  ///< glovebox-steel-pads.toml at 0.1, 0.2, 0.3, 0.4 g
     assess::AssessmentResult pair;   ///< glovebox-pair.toml at 0.2, 0.3 g
 };
 
@@ -29,6 +29,10 @@ const assess::LevelResult& level_x(const assess::AssessmentResult& r, double pga
 /// Worked examples: the thesis's arithmetic with its own inputs, then the shipped cases.
 Group worked_group();
 std::vector<Row> worked_rows(const GloveBoxRuns& runs);
+
+/// Frequency-induced rocking on steel pads: the flexible-body model (glovebox_flexible.cpp).
+Group flexible_group();
+std::vector<Row> flexible_rows(const GloveBoxRuns& runs);
 
 /// Modes on PVC and on steel pads.
 Group modes_group();

@@ -33,10 +33,11 @@ bool has_cases(const std::filesystem::path& cases_dir) {
 
 Validation run(const std::filesystem::path& cases_dir) {
     Validation v;
-    v.groups = {specimen_group(), worked_group(), modes_group(), joined_group()};
+    v.groups = {specimen_group(), worked_group(), modes_group(), joined_group(),
+                flexible_group()};
     v.rows = specimen_rows();
     const GloveBoxRuns runs = run_glove_boxes(cases_dir);
-    for (auto* part : {&worked_rows, &mode_rows}) {
+    for (auto* part : {&worked_rows, &mode_rows, &flexible_rows}) {
         std::vector<Row> rows = (*part)(runs);
         v.rows.insert(v.rows.end(), rows.begin(), rows.end());
     }

@@ -444,3 +444,39 @@ TEST_CASE("[options] fragility keys: defaults, values and errors", "[assess][cas
           std::string::npos);
     CHECK(error_of(o + "fragility = \"yes\"\n").find("options.fragility") != std::string::npos);
 }
+
+TEST_CASE("flexible-body mode keys: defaults stated, values read, errors at their key",
+          "[assess][case][flexible]") {
+    const std::string f = base_component + "fixed_base_frequency_hz = 7.5\n";
+    const Case d = parse_case(f + base_site, "case.toml");
+    CHECK_FALSE(d.component.modal_damping);
+    const auto flex_note = std::find_if(d.assumptions.begin(), d.assumptions.end(), [](const auto& a) {
+        return a.rfind("Flexible-body model", 0) == 0;
+    });
+    REQUIRE(flex_note != d.assumptions.end());
+    CHECK(*flex_note ==
+          "Flexible-body model (run where a flexible-body flag is raised): modal damping 0.02; "
+          "modal mass 0.613 M (uniform cantilever, first mode); modal height 0.726 x the body's "
+          "height, taken as 2 x the CG height = 1.452 m (uniform cantilever).");
+    const Case set = parse_case(f + "modal_damping = 0.05\nmodal_mass_fraction = 0.7\n"
+                                    "modal_height_m = 1.2\n" + base_site, "case.toml");
+    CHECK(*set.component.modal_damping == 0.05);
+    CHECK(*set.component.modal_mass_fraction == 0.7);
+    CHECK(*set.component.modal_height_m == 1.2);
+    CHECK(std::none_of(set.assumptions.begin(), set.assumptions.end(), [](const auto& a) {
+        return a.rfind("Flexible-body model", 0) == 0;
+    }));
+    CHECK(error_of(f + "modal_damping = 1.0\n" + base_site) ==
+          "case.toml:10: component.modal_damping: value 1 is out of range; expected [0, 1)");
+    CHECK(error_of(f + "modal_mass_fraction = 0\n" + base_site) ==
+          "case.toml:10: component.modal_mass_fraction: value 0 is out of range; expected (0, 1)");
+    CHECK(error_of(f + "modal_height_m = -1\n" + base_site) ==
+          "case.toml:10: component.modal_height_m: value -1 is out of range; expected (0, 100]");
+    CHECK(error_of(base_component + "modal_damping = 0.05\n" + base_site) ==
+          "case.toml:9: component.modal_damping: needs fixed_base_frequency_hz (the mode it "
+          "describes)");
+    CHECK(error_of(f + "modal_mass_fraction = 0.95\nmodal_height_m = 1.9\n" + base_site)
+              .rfind("case.toml:11: component.modal_height_m: in the x direction: a modal mass of "
+                     "0.95 M at 1.9 m carries more second moment than the body has",
+                     0) == 0);
+}

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "assess/flexible_level.hpp"
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
@@ -59,7 +60,24 @@ TEST_CASE("glove box at 0.2 g: the ASCE 4 estimate by hand at the lower friction
     // (biaxially: the block slides without rocking; test_biaxial_level.cpp).
     CHECK_FALSE(x.screen.passed);
     REQUIRE(x.simulation.has_value());
-    CHECK(x.verdict.decided_by == Model::simulation_biaxial_slide);
+    // The flexible-body flag is raised (fixed-base 7.5 Hz in the band): the flexible model
+    // decides, the rigid planar simulation stays beside it (docs/methods.md s.10); the block
+    // slides without rocking, so biaxial sliding runs too and the larger sliding demand governs.
+    REQUIRE(x.flexible_simulation.has_value());
+    REQUIRE(x.biaxial.has_value());
+    REQUIRE(x.biaxial->ran);
+    const double flex_slide_m = x.flexible_simulation->sim.governing(x.flexible_simulation->sim.slide_m);
+    const double biaxial_m = x.flexible_simulation->sim.governing(x.biaxial->slide_m);
+    CHECK(x.verdict.decided_by == (biaxial_m > flex_slide_m ? Model::simulation_biaxial_slide
+                                                            : Model::simulation_flexible));
+    CHECK(*x.verdict.margin == Approx(0.05 / std::max(flex_slide_m, biaxial_m)));
+    CHECK(x.model_reason.find("biaxial sliding of the rigid block ran too") != std::string::npos);
+    // The level says which dynamic model ran and why, and the trail repeats it.
+    CHECK(x.model == flexible_model_name);
+    CHECK(x.model_reason.find("the flexible-body flag is raised") != std::string::npos);
+    CHECK(std::count_if(x.trail.begin(), x.trail.end(), [](const std::string& t) {
+              return t.rfind("model: flexible body", 0) == 0;
+          }) == 1);
     CHECK(r.histories_generated == 1);
     // Simulated levels also show the (informational) energy estimate; its DeltaD is the
     // histories' displacement after the zero-phase 0.5 Hz high-pass (docs/methods.md s.4).
@@ -146,6 +164,9 @@ TEST_CASE("documented values are assessed or refused at their key, never by an i
         c.component.base.mu_s = 0.0;
         c.component.base.mu_k = 0.0;
         c.component.base.mu_s_range = {0.0, 0.0};
+        // No flexible-body screen inputs: the planar simulation decides.
+        c.component.fixed_base_frequency_hz.reset();
+        c.component.free_rocking_band_hz.reset();
         const AssessmentResult r = assess::assess(c);
         const LevelResult& l = r.levels.at(0);
         CHECK_FALSE(l.screen.passed);
@@ -287,4 +308,60 @@ TEST_CASE("the reported extreme footprint (glove box, p_radps kept) is assessed"
     REQUIRE(x.simulation.has_value());
     CHECK(x.simulation->overturned == 1);
     CHECK(r.own.verdict.kind == VerdictKind::anchor);
+}
+
+namespace {
+Case steel_pads(const std::vector<double>& pga, int histories) {
+    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-steel-pads.toml");
+    c.options.histories_per_level = histories;
+    return with_pga_levels(c, pga);
+}
+}  // namespace
+
+TEST_CASE("a raised flexible-body flag runs the flexible model, which decides the level",
+          "[assess][pipeline][flexible]") {
+    // The glove box on steel pads at 0.3 g rests as a rigid block (A below tan alpha and mu_s)
+    // but its 7.5 Hz mode lies in the band: the screen passes, the flag is raised.
+    const AssessmentResult r = assess::assess(steel_pads({0.3}, 1));
+    const LevelResult& x = r.levels.at(0);
+    REQUIRE(x.flexible.raised);
+    CHECK(x.screen.passed);
+    REQUIRE(x.flexible_simulation.has_value());
+    REQUIRE(x.simulation.has_value());  // the rigid one, beside
+    CHECK(x.verdict.decided_by == Model::simulation_flexible);
+    CHECK(x.verdict.margin_basis.rfind("flexible body: ", 0) == 0);
+    CHECK(x.model == flexible_model_name);
+    CHECK(x.simulation_reason.find("flexible-body flag is raised") != std::string::npos);
+    // The flexible body uplifts where the rigid block does not move.
+    CHECK(x.flexible_simulation->uplifted == 1);
+    CHECK(x.simulation->rock_rad.max == 0.0);
+    CHECK(x.flexible_simulation->sim.rock_rad.max > 0.0);
+    CHECK(x.flexible_simulation->frequency_hz == 7.5);
+    CHECK(x.flexible_simulation->mass_fraction == 0.613);  // cantilever default
+    // Resolved by simulation: no open condition remains.
+    CHECK(x.verdict.conditions.empty());
+    CHECK(open_conditions(r.levels).empty());
+    CHECK(std::any_of(x.trail.begin(), x.trail.end(), [](const std::string& t) {
+        return t.rfind("the flexible-body model decides; the rigid planar simulation", 0) == 0;
+    }));
+    CHECK(r.simulations_run == 2 * (x.simulation->bounds_differ ? 2 : 1) * 2);
+}
+
+TEST_CASE("without a fixed-base frequency the flag stays an open condition",
+          "[assess][pipeline][flexible]") {
+    Case c = steel_pads({0.3}, 1);
+    c.component.fixed_base_frequency_hz.reset();  // the free-rocking band alone raises the flag
+    REQUIRE(flexible_model_blocker(c).has_value());
+    const AssessmentResult r = assess::assess(c);
+    const LevelResult& x = r.levels.at(0);
+    REQUIRE(x.flexible.raised);
+    CHECK_FALSE(x.flexible_simulation.has_value());
+    CHECK(x.verdict.conditions.size() == 1);
+    REQUIRE(open_conditions(r.levels).size() == 1);
+    CHECK(open_conditions(r.levels)[0].find("the flexible-body model (docs/methods.md s.10) did "
+                                            "not run there") != std::string::npos);
+    Case never = steel_pads({0.3}, 1);
+    never.options.simulate = SimulatePolicy::never;
+    CHECK(*flexible_model_blocker(never) ==
+          "options.simulate = \"never\" forbids the flexible-body simulation");
 }

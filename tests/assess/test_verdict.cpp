@@ -196,6 +196,26 @@ TEST_CASE("the flexible-body flag becomes an open condition of a passing level",
     CHECK(failing.verdict.conditions.empty());
 }
 
+TEST_CASE("a flexible-body simulation decides its level, pass or fail", "[assess][verdict][flexible]") {
+    LevelResult l = level(Mode::rest, Mode::rest, 0.1);  // the screen passes
+    l.flexible.raised = true;
+    FlexibleSimulation f;
+    f.sim = sim(7, same(0.2), Stats{});  // 200 mm of slip > the allowable
+    l.flexible_simulation = f;
+    l = decided(l);
+    CHECK_FALSE(passes(l.verdict));
+    CHECK(l.verdict.decided_by == Model::simulation_flexible);
+    CHECK(l.verdict.failure == Failure::slides_beyond_allowable);
+    CHECK(l.verdict.conditions.empty());
+    f.sim = sim(7, same(0.0), Stats{0.01, 0.02, 0.03});
+    l.flexible_simulation = f;
+    l = decided(l);
+    CHECK(passes(l.verdict));
+    CHECK(l.verdict.decided_by == Model::simulation_flexible);
+    CHECK(l.verdict.conditions.empty());
+    CHECK(std::string(to_string(Model::simulation_flexible)).find("s.10") != std::string::npos);
+}
+
 TEST_CASE("severity: failures first, then the smaller margin; no motion is least severe",
           "[assess][verdict]") {
     Verdict pass_small;

@@ -708,3 +708,37 @@ TEST_CASE("report_files lists every file of the folder, the fragility figure inc
         expected.push_back(n);
     CHECK(names == expected);
 }
+
+TEST_CASE("a flexible-body simulation appears in result.json and beside the rigid one in the "
+          "reports", "[report][flexible]") {
+    assess::AssessmentResult r = hand_result();
+    const auto plain = nlohmann::ordered_json::parse(render(r, stamp()).json);
+    CHECK(plain.at("levels").at(1).at("flexible_simulation").is_null());
+    assess::LevelResult& l = r.levels.at(1);
+    l.flexible.raised = true;
+    assess::FlexibleSimulation f;
+    f.sim = *l.simulation;
+    f.sim.rock_over_alpha = {0.01, 0.02, 0.03};
+    f.uplifted = 5;
+    f.frequency_hz = 7.5;
+    f.damping = 0.02;
+    f.mass_fraction = 0.613;
+    f.height_m = 1.77;
+    f.modal_m = {0.002, 0.003, 0.004};
+    l.flexible_simulation = f;
+    l.verdict.decided_by = assess::Model::simulation_flexible;
+    r.own.verdict = l.verdict;
+    r.overall = r.own;
+    const Rendered out = render(r, stamp());
+    const auto j = nlohmann::ordered_json::parse(out.json);
+    const auto& fj = j.at("levels").at(1).at("flexible_simulation");
+    CHECK(fj.at("frequency_hz") == 7.5);
+    CHECK(fj.at("uplifted") == 5);
+    CHECK(fj.at("modal_m").at("max") == 0.004);
+    CHECK(fj.at("rock_over_alpha").at("max") == 0.03);
+    CHECK_FALSE(fj.contains("amplification"));
+    CHECK(out.markdown.find("Rigid and flexible side by side") != std::string::npos);
+    CHECK(out.markdown.find("| 0.200 | y | rigid planar block (beside) |") != std::string::npos);
+    CHECK(out.markdown.find("| 0.200 | y | flexible body, 7.5 Hz (decides) |") != std::string::npos);
+    CHECK(out.html.find("flexible body, 7.5 Hz (decides)") != std::string::npos);
+}

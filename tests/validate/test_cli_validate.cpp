@@ -35,7 +35,7 @@ TEST_CASE("validate prints the table, writes the reports and is deterministic",
     for (const char* text : {"[differs] ts3-ishiyama:", "   thesis:     47 mm (s.5.5)",
                              "[agrees] gb-steel-pads-0.3g:", "Saraswat 2017", "\nnotes\n"})
         CHECK_THAT(a.out, Catch::Contains(text));
-    CHECK_THAT(a.err, Catch::Contains("wrote " + (dir / "a").string() + " (43 rows) in "));
+    CHECK_THAT(a.err, Catch::Contains("wrote " + (dir / "a").string() + " (46 rows) in "));
     for (const char* f : {"report.md", "report.html", "result.json"}) CHECK(fs::exists(dir / "a" / f));
     const auto b = run_cli("validate --out '" + (dir / "b").string() + "'");
     REQUIRE(b.exit_code == 0);
@@ -58,8 +58,8 @@ TEST_CASE("validate --json prints result.json", "[validate][cli][slow]") {
     REQUIRE(r.exit_code == 0);
     const auto j = nlohmann::json::parse(r.out);
     CHECK(r.out == slurp(dir / "o" / "result.json"));
-    REQUIRE(j.at("rows").size() == 43);
-    CHECK(j.at("summary").at("rows") == 43);
+    REQUIRE(j.at("rows").size() == 46);
+    CHECK(j.at("summary").at("rows") == 46);
     const auto& first = j.at("rows").at(0);
     for (const char* key : {"group", "id", "test", "thesis", "thesis_value", "predicted",
                             "predicted_value", "unit", "difference", "difference_value",
@@ -107,7 +107,7 @@ TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][
     CHECK(fs::exists(dir / "reports" / "validation" / "report.html"));
     const auto same = run_cli("regress " + args);
     CHECK(same.exit_code == 0);
-    CHECK_THAT(same.out, Catch::Contains("ok      validation: {\"rows\":43,"));
+    CHECK_THAT(same.out, Catch::Contains("ok      validation: {\"rows\":46,"));
     // Drift one predicted value by 1%.
     const fs::path golden = dir / "reports" / "validation" / "result.json";
     auto j = nlohmann::ordered_json::parse(slurp(golden));

@@ -1,0 +1,98 @@
+#include "assess/flexible_level.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <vector>
+
+#include "assess/level.hpp"
+
+namespace freestand::assess {
+
+std::optional<std::string> flexible_model_blocker(const Case& c) {
+    if (!c.component.fixed_base_frequency_hz)
+        return "the flag comes from the free-rocking band alone; the flexible-body model needs "
+               "component.fixed_base_frequency_hz";
+    if (c.options.simulate == SimulatePolicy::never)
+        return "options.simulate = \"never\" forbids the flexible-body simulation";
+    return std::nullopt;
+}
+
+dynamics::FlexibleModel flexible_model(const Component& comp, const ContactBound& contact,
+                                       Direction d) {
+    dynamics::FlexibleMode mode;
+    mode.frequency_hz = comp.fixed_base_frequency_hz.value_or(0.0);
+    mode.damping = comp.modal_damping.value_or(dynamics::default_modal_damping);
+    mode.mass_fraction = comp.modal_mass_fraction;
+    mode.height_m = comp.modal_height_m;
+    return dynamics::make_flexible_model(block_model(comp, contact, d), mode);
+}
+
+namespace {
+
+std::string model_reason(const LevelResult& level, const dynamics::FlexibleModel& m) {
+    std::vector<std::string> defaults;
+    if (m.mass_fraction_default) defaults.push_back("modal mass");
+    if (m.height_default) defaults.push_back("modal height");
+    return fmt::format(
+        "the flexible-body flag is raised ({}): a body whose fixed-base frequency lies in the "
+        "seismic band can uplift below g tan(alpha) (frequency-induced rocking), which a rigid "
+        "block cannot show, so the flexible model decides and the rigid planar simulation is "
+        "reported beside it; mode {:.3g} Hz, damping {:.3g}, modal mass {:.3g} M at {:.3g} m{}",
+        level.flexible.basis, m.frequency_hz, m.damping, m.mass_fraction, m.height_m,
+        defaults.empty() ? ""
+                         : fmt::format(" ({}: uniform cantilever defaults)",
+                                       fmt::join(defaults, " and ")));
+}
+
+}  // namespace
+
+void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, HistoryBank& bank,
+                             bool rocking_mode) {
+    const Direction d = level.direction;
+    const dynamics::FlexibleModel probe = flexible_model(c.component, level.bounds.rocking, d);
+    std::vector<dynamics::FlexibleSummary> runs;
+    const HistoryRunner run = [&](const dynamics::BlockModel& rigid,
+                                  const dynamics::Excitation& ex, const dynamics::Options& opt) {
+        dynamics::FlexibleModel m = probe;
+        m.rigid = rigid;
+        runs.push_back(dynamics::simulate_flexible(m, ex, opt).summary);
+        return runs.back().base;
+    };
+    FlexibleSimulation out;
+    out.sim = simulate_level(c, level.bounds, d, pga_g, bank, rocking_mode, run);
+    // One run per history, or two (sliding bound, rocking bound) when the bounds differ.
+    const std::size_t per = out.sim.bounds_differ ? 2 : 1;
+    std::vector<double> modal, accel;
+    for (std::size_t k = 0; k + per <= runs.size(); k += per) {
+        double q = 0.0, a = 0.0;
+        bool up = false;
+        for (std::size_t j = k; j < k + per; ++j) {
+            q = std::max(q, runs[j].modal_max_m);
+            a = std::max(a, runs[j].modal_accel_max_g);
+            up = up || runs[j].uplifted;
+        }
+        modal.push_back(q);
+        accel.push_back(a);
+        if (up) ++out.uplifted;
+    }
+    out.modal_m = stats_of(modal);
+    out.modal_accel_g = stats_of(accel);
+    out.frequency_hz = probe.frequency_hz;
+    out.damping = probe.damping;
+    out.mass_fraction = probe.mass_fraction;
+    out.height_m = probe.height_m;
+    level.flexible_simulation = out;
+    level.model = flexible_model_name;
+    level.model_reason = model_reason(level, probe);
+    level.simulation_reason =
+        level.screen.passed
+            ? "simulated because the flexible-body flag is raised: the flexible-body model runs "
+              "over the level's histories and decides (docs/methods.md s.10); the rigid planar "
+              "simulation is reported beside it"
+            : "simulated: the screen failed and the flexible-body flag is raised, so the "
+              "flexible-body model decides (docs/methods.md s.10); the rigid planar simulation "
+              "is reported beside it";
+}
+
+}  // namespace freestand::assess

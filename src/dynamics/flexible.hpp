@@ -1,0 +1,95 @@
+#pragma once
+/// Reduced-order flexible body (docs/methods.md s.10; Acikgoz & DeJong 2012, Earthquake Engng
+/// Struct. Dyn. 41; Vassiliou, Mackie & Stojadinovic 2014): the planar block of simulate.hpp
+/// split into a rigid base and one elastic mode, a modal mass m_s at height h_s above the base
+/// that moves relative to the base along the body's own horizontal axis (modal coordinate q)
+/// with the fixed-base frequency f and modal damping zeta. The base rests, slides, rocks about
+/// either edge, slide-rocks or flies, with the contact, friction, restitution and mode
+/// transitions of the rigid model (s.2, s.3).
+///
+/// The split keeps the whole body's mass M, CG height h and inertia I_c: the rigid remainder
+/// has mass M - m_s, first moment M h - m_s h_s and second moment about the base point below
+/// the CG I_c + M h^2 - m_s h_s^2. With q held at 0 the body is the rigid block, so an
+/// infinitely stiff mode gives the rigid model; with the base held, q is the linear oscillator
+/// q'' + 2 zeta omega q' + omega^2 q = -xg''.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dynamics/simulate.hpp"
+
+namespace freestand::dynamics {
+
+/// Uniform cantilever, first mode (e.g. Chopra, Dynamics of Structures, distributed-mass
+/// systems: effective modal mass 0.613 M at 0.726 of the height): the defaults when a case
+/// gives no modal mass or height.
+inline constexpr double cantilever_modal_mass_fraction = 0.613;
+inline constexpr double cantilever_modal_height_ratio = 0.726;
+/// Modal damping when none is given (steel equipment, ASCE 4 / RG 1.61 welded steel: 2%).
+inline constexpr double default_modal_damping = 0.02;
+
+/// The elastic mode. Unset mass and height take the cantilever defaults above with the body's
+/// height taken as 2 h (a uniform body).
+struct FlexibleMode {
+    double frequency_hz = 0.0;                ///< fixed-base frequency f, Hz (> 0)
+    double damping = default_modal_damping;   ///< modal damping ratio zeta, [0, 1)
+    std::optional<double> mass_fraction;      ///< m_s / M, (0, 1)
+    std::optional<double> height_m;           ///< h_s above the base, m (> 0)
+};
+
+/// A validated flexible body: the rigid model it is split from and the mode, defaults resolved.
+struct FlexibleModel {
+    BlockModel rigid;
+    double frequency_hz = 0.0;
+    double damping = 0.0;
+    double mass_fraction = 0.0;
+    double height_m = 0.0;
+    bool mass_fraction_default = false;  ///< mass_fraction came from the cantilever default
+    bool height_default = false;         ///< height_m came from the cantilever default
+};
+
+/// Validates the mode against the block. Throws InputError naming the field ("flexible.f",
+/// "flexible.zeta", "flexible.mass", "flexible.height") when f is not finite and > 0, zeta is
+/// outside [0, 1), the fraction outside (0, 1), the height not > 0, or the mass and height
+/// leave the rigid remainder a negative moment of inertia about its own CG (the mode carries
+/// more second moment than the whole body has).
+FlexibleModel make_flexible_model(const BlockModel& rigid, const FlexibleMode& mode);
+
+/// Peaks of the flexible run beyond the rigid Summary's.
+struct FlexibleSummary {
+    Summary base;                     ///< slip, uplift, overturning, modes of the rigid base
+    double modal_max_m = 0.0;         ///< peak |q|, m
+    double modal_drift_max = 0.0;     ///< peak |q| / h_s
+    double modal_accel_max_g = 0.0;   ///< peak |absolute horizontal acceleration| of m_s, g
+    bool uplifted = false;            ///< the base left flat contact (rock, slide-rock, flight)
+    std::size_t rejected_steps = 0;   ///< Dormand-Prince steps the error control rejected
+};
+
+/// One output sample (at the excitation's sample times, continued through the tail).
+struct FlexibleSample {
+    double time_s = 0.0;
+    double slide_m = 0.0;       ///< slip of the contact point (flight: of the base point)
+    double rotation_rad = 0.0;  ///< s theta (> 0 rocking on the right edge)
+    double modal_m = 0.0;       ///< q
+    Mode mode = Mode::rest;
+};
+
+struct FlexibleResult {
+    FlexibleSummary summary;
+    std::vector<FlexibleSample> series;  ///< empty unless Options::record_series
+    std::vector<ImpactEvent> impact_log;
+};
+
+/// Simulates the body from rest (q = q' = 0) at t = 0 until the excitation's end +
+/// Options::tail_s (earlier once the base is at rest and the mode has decayed below abs_tol
+/// after the excitation, or at overturning, theta = pi/2). Rest is stepped exactly (the linear
+/// oscillator under piecewise-linear input, Nigam & Jennings 1969); the other modes by
+/// Boost.Odeint's controlled Dormand-Prince 5(4) with steps ending at every input sample.
+/// Uses of Options: rel_tol, abs_tol, max_contact_step_s, settle_rebound_rad, tail_s,
+/// record_series, g_mps2 (initial_rotation_rad and initial_slide_velocity_mps must be 0, the
+/// integrator event). Throws InputError for those, NumericalError when the step collapses.
+FlexibleResult simulate_flexible(const FlexibleModel& model, const Excitation& excitation,
+                                 const Options& options = {});
+
+}  // namespace freestand::dynamics

@@ -1,0 +1,159 @@
+// The flexible body (docs/methods.md s.10): its two limits (an infinitely stiff mode is the
+// rigid block, a held base is the linear oscillator), frequency-induced rocking, bad input.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "dynamics/flexible.hpp"
+#include "helpers.hpp"
+#include "spectra/response.hpp"
+
+using namespace freestand;
+using Catch::Matchers::Message;
+
+namespace {
+// Relative agreement of the stiff limit: the mode's static deflection under 0.5 g at 150 Hz is
+// 5e-6 m, which moves the body's CG by ~1e-5 of its half-width.
+constexpr double kStiffRel = 2e-3;
+// The spectrum's oscillator samples its peak at sub-steps of T / 20: it reads low by at most
+// 1 - cos(pi / 20) = 1.2%; the model locates the peak exactly.
+constexpr double kOscRel = 0.013;
+
+dynamics::BlockModel rigid(double b, double h, double mu) {
+    return dynamics::make_block_model(block::Block::uniform(b, h, 1000.0), mu);
+}
+
+dynamics::FlexibleModel flexible(const dynamics::BlockModel& r, double f_hz, double zeta = 0.02) {
+    dynamics::FlexibleMode m;
+    m.frequency_hz = f_hz;
+    m.damping = zeta;
+    return dynamics::make_flexible_model(r, m);
+}
+
+dynamics::Options quick() {
+    dynamics::Options o;
+    o.tail_s = 2.0;
+    o.record_series = false;
+    return o;
+}
+}  // namespace
+
+TEST_CASE("a very stiff mode reproduces the rigid block", "[dynamics][flexible]") {
+    const auto sine = dynamics::sine_excitation({0.5, 2.0, 2.0, 0.0, 0.0});
+    SECTION("rocking (friction holds)") {
+        const auto r = rigid(0.2, 0.6, 0.7);
+        const auto rig = dynamics::simulate(r, sine, quick());
+        const auto flex = dynamics::simulate_flexible(flexible(r, 150.0), sine, quick());
+        REQUIRE(rig.summary.rock_max_rad > 0.01);
+        CHECK_FALSE(rig.summary.overturned);
+        CHECK(flex.summary.uplifted);
+        CHECK(flex.summary.base.overturned == rig.summary.overturned);
+        CHECK(flex.summary.base.rock_max_rad ==
+              Approx(rig.summary.rock_max_rad).epsilon(kStiffRel));
+        CHECK(flex.summary.base.impacts > 0);
+    }
+    SECTION("sliding (friction below tan alpha)") {
+        // The jump of friction at a slip reversal excites the mode with an acceleration that
+        // does not vanish as f grows (only its displacement does): the stick-slip sequence
+        // matches the rigid block's once that ringing is damped (the residual is 1.5% off at
+        // 150 Hz, 0.5% at 500 Hz, 0.13% at 2000 Hz).
+        const auto r = rigid(0.4, 0.6, 0.2);
+        const auto rig = dynamics::simulate(r, sine, quick());
+        const auto flex = dynamics::simulate_flexible(flexible(r, 2000.0, 0.5), sine, quick());
+        REQUIRE(rig.summary.slide_max_m > 0.01);
+        CHECK_FALSE(flex.summary.uplifted);
+        CHECK(flex.summary.base.slide_max_m ==
+              Approx(rig.summary.slide_max_m).epsilon(kStiffRel));
+        CHECK(flex.summary.base.slide_residual_m ==
+              Approx(rig.summary.slide_residual_m).epsilon(kStiffRel));
+    }
+}
+
+TEST_CASE("a held base gives the linear oscillator (Nigam-Jennings)", "[dynamics][flexible]") {
+    // Friction and slenderness far beyond any demand: the base never leaves rest.
+    const auto r = rigid(50.0, 0.6, 1000.0);
+    const core::Record rec = test::elcentro();
+    const auto e = test::scaled_to(rec, 0.3);
+    for (double f_hz : {2.0, 7.5}) {
+        auto o = quick();
+        o.tail_s = 0.0;
+        const auto flex = dynamics::simulate_flexible(flexible(r, f_hz, 0.05), e, o);
+        core::Record scaled = rec;
+        scaled.accel_mps2 = e.horizontal_mps2;
+        const auto ref = spectra::peak_responses(scaled, 0.05, {f_hz});
+        INFO("f = " << f_hz << " Hz");
+        CHECK_FALSE(flex.summary.uplifted);
+        CHECK(flex.summary.base.slide_max_m == 0.0);
+        CHECK(flex.summary.modal_max_m >= std::abs(ref[0].sd_m) * (1.0 - 1e-9));
+        CHECK(flex.summary.modal_max_m == Approx(std::abs(ref[0].sd_m)).epsilon(kOscRel));
+    }
+}
+
+TEST_CASE("a sine at the fixed-base frequency below g tan(alpha) rocks the flexible body only",
+          "[dynamics][flexible]") {
+    // tan(alpha) = 1/3: a rigid block needs 0.33 g to uplift; 0.1 g at 4 Hz excites the mode at
+    // resonance and its inertia lifts the base (docs/methods.md s.2, frequency-induced rocking).
+    const auto r = rigid(0.25, 0.75, 0.8);
+    const auto sine = dynamics::sine_excitation({0.1, 4.0, 5.0, 0.0, 0.0});
+    const auto rig = dynamics::simulate(r, sine, quick());
+    const auto flex = dynamics::simulate_flexible(flexible(r, 4.0), sine, quick());
+    CHECK(rig.summary.rock_max_rad == 0.0);
+    CHECK(rig.summary.time_in_mode_s[static_cast<std::size_t>(dynamics::Mode::rock)] == 0.0);
+    CHECK(flex.summary.uplifted);
+    CHECK(flex.summary.base.rock_max_rad > 1e-4);
+    // Off resonance (15 Hz) the same amplitude leaves it down.
+    const auto off = dynamics::sine_excitation({0.1, 15.0, 5.0, 0.0, 0.0});
+    CHECK_FALSE(dynamics::simulate_flexible(flexible(r, 4.0), off, quick()).summary.uplifted);
+}
+
+TEST_CASE("the flexible model states its cantilever defaults", "[dynamics][flexible]") {
+    const auto m = flexible(rigid(0.25, 0.75, 0.8), 5.0);
+    CHECK(m.mass_fraction == dynamics::cantilever_modal_mass_fraction);
+    CHECK(m.height_m == Approx(0.726 * 1.5));
+    CHECK(m.mass_fraction_default);
+    CHECK(m.height_default);
+}
+
+TEST_CASE("make_flexible_model refuses bad modes", "[dynamics][flexible][errors]") {
+    const auto r = rigid(0.25, 0.75, 0.8);
+    auto mode = [](double f, double z, std::optional<double> mass, std::optional<double> h) {
+        dynamics::FlexibleMode m;
+        m.frequency_hz = f;
+        m.damping = z;
+        m.mass_fraction = mass;
+        m.height_m = h;
+        return m;
+    };
+    CHECK_THROWS_MATCHES(dynamics::make_flexible_model(r, mode(0.0, 0.02, {}, {})), InputError,
+                         Message("flexible.f: fixed-base frequency must be > 0 Hz; got 0"));
+    CHECK_THROWS_MATCHES(dynamics::make_flexible_model(r, mode(NAN, 0.02, {}, {})), InputError,
+                         Message("flexible.f: fixed-base frequency must be > 0 Hz; got nan"));
+    CHECK_THROWS_MATCHES(dynamics::make_flexible_model(r, mode(5.0, 1.0, {}, {})), InputError,
+                         Message("flexible.zeta: modal damping ratio must be in [0, 1); got 1"));
+    CHECK_THROWS_MATCHES(dynamics::make_flexible_model(r, mode(5.0, -0.1, {}, {})), InputError,
+                         Message("flexible.zeta: modal damping ratio must be in [0, 1); got -0.1"));
+    CHECK_THROWS_MATCHES(dynamics::make_flexible_model(r, mode(5.0, 0.02, 1.0, {})), InputError,
+                         Message("flexible.mass: modal mass fraction must be in (0, 1); got 1"));
+    CHECK_THROWS_MATCHES(dynamics::make_flexible_model(r, mode(5.0, 0.02, {}, 0.0)), InputError,
+                         Message("flexible.height: modal height must be > 0 m; got 0"));
+    CHECK_THROWS_MATCHES(
+        dynamics::make_flexible_model(r, mode(5.0, 0.02, 0.9, 1.5)), InputError,
+        Message("flexible.height: a modal mass of 0.9 M at 1.5 m carries more second moment "
+                "than the body has (CG height 0.75 m, I_c 208.33333333333334 kg m^2): lower "
+                "the mass fraction or the height"));
+}
+
+TEST_CASE("simulate_flexible refuses settings it does not support", "[dynamics][flexible][errors]") {
+    const auto m = flexible(rigid(0.25, 0.75, 0.8), 5.0);
+    const auto sine = dynamics::sine_excitation({0.1, 4.0, 1.0, 0.0, 0.0});
+    auto o = quick();
+    o.initial_rotation_rad = 0.01;
+    CHECK_THROWS_MATCHES(dynamics::simulate_flexible(m, sine, o), InputError,
+                         Message("initial condition: the flexible-body model starts at rest (no "
+                                 "initial rotation or slip)"));
+    o = quick();
+    o.integrator = dynamics::Integrator::central_difference;
+    CHECK_THROWS_MATCHES(dynamics::simulate_flexible(m, sine, o), InputError,
+                         Message("integrator: the flexible-body model has the event-driven "
+                                 "integrator only"));
+}
