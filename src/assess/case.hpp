@@ -145,6 +145,9 @@ struct Options {
     std::vector<std::filesystem::path> seed_records;  ///< resolved against the case's folder
     SimulatePolicy simulate = SimulatePolicy::automatic;
     FragilitySection fragility;
+    /// false skips the base-material search of a failing case (no case key: `validate` reads
+    /// the own base's levels only and sets it).
+    bool search_materials = true;
 };
 
 /// The transfer tunnel joining two units ([tunnel], docs/methods.md s.10).

@@ -282,7 +282,7 @@ AssessmentResult assess(const Case& c) {
     for (double pga : c.site.pga_g) demands.push_back(level_demand(c.site, pga));
     res.levels = evaluate_all(res.input, demands, bank);
     res.own = headline(res.levels);
-    if (passes(res.own.verdict)) {
+    if (passes(res.own.verdict) || !c.options.search_materials) {
         res.overall = res.own;
     } else {
         Search search = search_materials(res.input, demands, bank);
