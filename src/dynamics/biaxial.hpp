@@ -93,14 +93,14 @@ struct BiaxialResult {
 /// The biaxial slide's default options: Options{} with rel_tol 1e-6 and abs_tol 1e-8 (m, m/s).
 /// Looser than the planar 1e-9: a Dormand-Prince step costs far more than a closed-form planar
 /// segment, and at 1e-6 the peak |u| of bench_dynamics's biaxial El Centro case is within
-/// 3e-7 relative of its converged value (rel_tol 1e-12), against 2e-3 for central difference
-/// at 1e-4 s, in half the steps 1e-9 takes (docs/methods.md s.10).
+/// 7e-8 relative of its converged value (rel_tol 1e-12), against 2e-3 for central difference
+/// at 1e-4 s, in a quarter of the steps 1e-9 takes (docs/methods.md s.10).
 Options biaxial_options();
 
 /// Simulates the block from rest at t = 0 until the excitation's end + Options::tail_s (earlier
 /// once at rest after it). Uses of Options: integrator, cd_dt_s, rel_tol, abs_tol (the
-/// Dormand-Prince error control, m and m/s; rel_tol also sets the slip speed below which a
-/// slip is treated quasi-statically, biaxial_event.cpp), max_contact_step_s (the longest step), tail_s,
+/// Dormand-Prince error control, m and m/s; rel_tol also sets the slip's relaxation time
+/// below which a slow slip is taken slaved to the load, biaxial_detail.hpp), max_contact_step_s (the longest step), tail_s,
 /// record_series, g_mps2. Throws InputError naming the parameter for a bad excitation or option
 /// (initial_rotation_rad and initial_slide_velocity_mps must be 0: the model starts at rest).
 BiaxialResult simulate_biaxial(const BiaxialModel& model, const BiaxialExcitation& excitation,

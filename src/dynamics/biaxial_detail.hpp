@@ -15,6 +15,50 @@ inline double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[
 // in the slide's inner loop.
 inline double norm(const Vec2& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1]); }
 
+/// The slip speed relative to the load, tau = |v| / |a_g| (s), below which a slide step is
+/// taken slaved to the load. The slip direction turns towards F = -a_g at the rate |a_g| / |v|
+/// and the friction term's stiffness is mu_k G / |v|: near every start and stop under a turning
+/// load an explicit method's steps shrink with |v| (a record whose |a_g| hovered at mu_k G kept
+/// them at 4e-6 s for 2 ms). Slaved, the slip follows F and lags behind it by tau omega (omega
+/// F's turning rate: Tikhonov's reduction of the fast direction equation); what is left out is
+/// of order (tau omega)^2. The threshold shrinks with the tolerance, so that a tight reference
+/// solves the full equation: 1e-5 s at rel_tol 1e-6, 1e-8 s at 1e-12.
+inline double slaved_tau_s(double rel_tol) { return 1e-2 * std::sqrt(rel_tol); }
+
+/// Whether a slide step starting with slip v under the base acceleration a_g is taken slaved:
+/// friction (mu_k > 0), a load, |v| < tau_s |a_g| and v within 0.1 rad of F = -a_g (or nil: a
+/// start). A slow slip against or across the load stops or turns within a few relaxation
+/// times, and a slip against it must pass through rest (the static friction check), not be
+/// turned onto the load.
+inline bool takes_slaved(const Vec2& v, const Vec2& a_g, double mu_k, double tau_s) {
+    const double F = norm(a_g), speed = norm(v);
+    if (!(mu_k > 0.0 && F > 0.0 && speed < tau_s * F)) return false;
+    constexpr double cos_max = 0.995;
+    return speed == 0.0 || -dot(v, a_g) > cos_max * speed * F;
+}
+
+/// The load F = -a_g of a slaved slip: its magnitude, direction e and the direction's rate
+/// e' = (F' - (e . F') e) / |F| on a segment whose acceleration has slope a1 (F' = -a1).
+struct SlavedLoad {
+    double F = 0.0;
+    Vec2 e{}, de{};
+};
+inline SlavedLoad slaved_load(const Vec2& a_g, const Vec2& a1) {
+    SlavedLoad L;
+    L.F = norm(a_g);
+    L.e = {-a_g[0] / L.F, -a_g[1] / L.F};
+    const double along = dot(L.e, a1);  // -(e . F')
+    L.de = {(-a1[0] + along * L.e[0]) / L.F, (-a1[1] + along * L.e[1]) / L.F};
+    return L;
+}
+
+/// The slaved slip's lag behind the load, s^2 / |F| e' (the quasi-steady lag angle s omega / |F|
+/// times s): the slip moves along s e minus this.
+inline Vec2 slaved_lag(double s, const SlavedLoad& L) {
+    const double k = s * s / L.F;
+    return {k * L.de[0], k * L.de[1]};
+}
+
 /// Base acceleration on one input segment, linear in tau = t - tk: a_g = a0 + a1 tau (the two
 /// horizontal components), G = g + yg'' = G0 + G1 tau.
 struct BiaxialSegment {

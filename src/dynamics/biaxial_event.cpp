@@ -53,19 +53,32 @@ Vec2 pos(const State& x) { return {x[0], x[1]}; }
 // 1e-10 m/s for 0.16 s in 3e7 steps. So a step that starts this slow either stops the block
 // (|a_g| <= mu_k G: friction would bring it to rest within |v| / (mu_k G - |a_g|)) or slides
 // it with friction along -a_g / |a_g| until it is faster than this. The slip this changes is
-// below v_slaved times the time so spent. (The same stiffness makes the steps shrink with |v|
-// on the approach to every stop under a turning load: most of the steps of a record.)
+// below v_slaved times the time so spent. A slip along the load is taken slaved well above
+// this (takes_slaved, biaxial_detail.hpp); this floor is for slips the slaved equation leaves
+// (across or against the load, or mu_k G or |a_g| tiny).
 constexpr double v_slaved_mps = 1e-6;
 
-// u'' = -a_g - mu_k G n (docs/methods.md s.10), n the continued friction direction.
+// u'' = -a_g - mu_k G n (docs/methods.md s.10), n the continued friction direction. Slaved
+// (takes_slaved), the slip is held along F = -a_g: v = s F^ with s' = |F| - mu_k G and
+// v' = s' F^ + s F^', and the position moves with the lagging slip (slaved_lag).
 struct SlideRhs {
     const BiaxialSegment* seg = nullptr;
     double mu_k = 0.0;
     Vec2 d{1.0, 0.0};  // direction at the step's start
+    bool slaved = false;
     void operator()(const State& x, State& dxdt, double t) const {
         const Vec2 a = seg->a(t);
         const double G = seg->G(t);
         const Vec2 v = vel(x);
+        if (slaved) {
+            const SlavedLoad L = slaved_load(a, seg->a1);
+            const double sp = dot(v, L.e);
+            const double ds = L.F - mu_k * G;
+            const Vec2 lag = slaved_lag(sp, L);
+            dxdt = {v[0] - lag[0], v[1] - lag[1], ds * L.e[0] + sp * L.de[0],
+                    ds * L.e[1] + sp * L.de[1]};
+            return;
+        }
         const double s = std::sqrt(v[0] * v[0] + v[1] * v[1]);
         Vec2 n = d;
         const double a_norm = std::sqrt(a[0] * a[0] + a[1] * a[1]);
@@ -84,6 +97,7 @@ public:
     BiaxialEngine(const BiaxialModel& m, const Options& o, BiaxialRecorder& rec, BiaxialState& st)
         : m_(m), o_(o), rec_(rec), st_(st) {
         rhs_.mu_k = m.mu_k;
+        tau_s_ = slaved_tau_s(o.rel_tol);
     }
 
     // Advances from t towards tb (the end of segment seg); returns the time reached (tb or an
@@ -115,6 +129,7 @@ private:
             armed_ = false;
         }
         if (next == Mode::rest) st_.v = {0.0, 0.0};
+        rhs_.slaved = false;
         st_.mode = next;
     }
 
@@ -195,7 +210,10 @@ private:
                 start_from_rest(t);
                 return t;
             }
-            rhs_.d = speed > 0.0 ? Vec2{st_.v[0] / speed, st_.v[1] / speed} : d_start_;
+            set_slaved(t);
+            const double speed_now = norm(st_.v);
+            rhs_.d = speed_now > 0.0 ? Vec2{st_.v[0] / speed_now, st_.v[1] / speed_now}
+                                     : d_start_;
             const State x0 = {st_.u[0], st_.u[1], st_.v[0], st_.v[1]};
             if (!fsal_) rhs_(x0, k1_, t);
             if (h_next_ < 1e-14 * std::max(1.0, t))
@@ -252,6 +270,23 @@ private:
         }
         if (lifts) set_mode(Mode::flight);
         return t_end;
+    }
+
+    // Chooses the slaved or the full equation for the step starting at t (takes_slaved) and
+    // carries the slip across a change: onto -a_g entering, the lagging slip leaving.
+    void set_slaved(double t) {
+        const bool slaved = takes_slaved(st_.v, seg_.a(t), m_.mu_k, tau_s_);
+        if (slaved == rhs_.slaved) return;
+        fsal_ = false;
+        rhs_.slaved = slaved;
+        const SlavedLoad L = slaved_load(seg_.a(t), seg_.a1);
+        if (slaved) {
+            const double speed = norm(st_.v);
+            st_.v = {speed * L.e[0], speed * L.e[1]};
+            return;
+        }
+        const Vec2 lag = slaved_lag(dot(st_.v, L.e), L);
+        st_.v = {st_.v[0] - lag[0], st_.v[1] - lag[1]};
     }
 
     // The stop inside the accepted step [t, t1]: its time, or t1 + 1 if none, or -(root time)
@@ -366,6 +401,7 @@ private:
     BiaxialSegment seg_;
     double tb_ = 0.0;
     double h_next_ = 1e-3;    // step the error control proposes next
+    double tau_s_ = 0.0;      // slaved_tau_s of the options' tolerance
     Vec2 d_start_{1.0, 0.0};  // slip direction of a start from v = 0
     bool redirected_ = false; // d_start_ was taken from the first step's slip
     bool armed_ = false;      // in flight, the block has left the base

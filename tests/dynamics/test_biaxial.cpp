@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "core/readers.hpp"
 #include "dynamics/biaxial.hpp"
+#include "dynamics/biaxial_detail.hpp"
 #include "dynamics/helpers.hpp"
 
 using namespace freestand;
@@ -60,6 +61,63 @@ TEST_CASE("biaxial: y = 0 reproduces the planar slide (both integrators)", "[bia
         CHECK(bi.mode_changes == planar.mode_changes);
         CHECK(bi.end_time_s == planar.end_time_s);
     }
+}
+
+TEST_CASE("biaxial: only a slow slip along the load, or a start, is taken slaved", "[biaxial]") {
+    using dynamics::detail::takes_slaved;
+    const double tau_s = dynamics::detail::slaved_tau_s(1e-6);
+    const dynamics::detail::Vec2 a_g{-2.0, 0.0};  // load F = -a_g along +x, 2 m/s^2
+    const double slow = 0.5 * tau_s * 2.0;
+    CHECK(takes_slaved({0.0, 0.0}, a_g, 0.2, tau_s));
+    CHECK(takes_slaved({slow, 0.0}, a_g, 0.2, tau_s));
+    CHECK(takes_slaved({slow * std::cos(0.09), slow * std::sin(0.09)}, a_g, 0.2, tau_s));
+    CHECK_FALSE(takes_slaved({slow * std::cos(0.2), slow * std::sin(0.2)}, a_g, 0.2, tau_s));
+    CHECK_FALSE(takes_slaved({-slow, 0.0}, a_g, 0.2, tau_s));  // against the load: it stops
+    CHECK_FALSE(takes_slaved({0.0, slow}, a_g, 0.2, tau_s));
+    CHECK_FALSE(takes_slaved({4.0 * slow, 0.0}, a_g, 0.2, tau_s));  // fast: the full equation
+    CHECK_FALSE(takes_slaved({slow, 0.0}, a_g, 0.0, tau_s));        // no friction: not stiff
+    CHECK_FALSE(takes_slaved({0.0, 0.0}, {0.0, 0.0}, 0.2, tau_s));  // no load
+    CHECK(dynamics::detail::slaved_tau_s(1e-12) == Approx(1e-8));
+}
+
+TEST_CASE("biaxial: y = 0 keeps the planar slide's stops at the default tolerance too",
+          "[biaxial]") {
+    // biaxial_options() takes slow slips along the load slaved (biaxial_event.cpp): in one
+    // component the slaved equation is the planar one, and every stop is kept.
+    const dynamics::Excitation x = elcentro_at(0.5, 20.0);
+    const dynamics::BiaxialExcitation xy =
+        dynamics::biaxial_excitation(x, std::vector<double>(x.horizontal_mps2.size(), 0.0));
+    auto o = dynamics::biaxial_options();
+    o.record_series = false;
+    const auto planar = dynamics::simulate(planar_block(0.2), x, test::opts()).summary;
+    const auto bi = dynamics::simulate_biaxial(dynamics::make_biaxial_model(0.2), xy, o).summary;
+    CHECK(bi.mode_changes == planar.mode_changes);
+    CHECK(bi.slide_max_m == Approx(planar.slide_max_m).epsilon(1e-6));
+    CHECK(bi.slide_residual_m == Approx(planar.slide_residual_m).epsilon(1e-6));
+}
+
+TEST_CASE("biaxial: a slip that follows a turning load is taken slaved at the default "
+          "tolerance, at a fraction of the steps and within it", "[biaxial]") {
+    // El Centro #12, 140 as x (0.5 g) and 230 as y, mu 0.2: the approach to each start and stop
+    // under a turning load is stiff (the direction relaxes in |v| / |a_g|): taken with the full
+    // equation, 11658 steps; slaved below tau_s |a_g|, 4798, within 7e-8 of rel_tol 1e-12.
+    auto x = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
+    auto y = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    const std::size_t n = static_cast<std::size_t>(20.0 / x.dt_s) + 1;
+    x.accel_mps2.resize(n);
+    y.accel_mps2.resize(n);
+    double peak = 0.0;
+    for (double a : x.accel_mps2) peak = std::max(peak, std::abs(a));
+    const auto e = dynamics::biaxial_excitation_from_records(x, y, 0.5 * g / peak);
+    const auto model = dynamics::make_biaxial_model(0.2);
+    auto o = dynamics::biaxial_options();
+    o.record_series = false;
+    const auto fast = dynamics::simulate_biaxial(model, e, o).summary;
+    o.rel_tol = 1e-12;
+    o.abs_tol = 1e-14;
+    const auto tight = dynamics::simulate_biaxial(model, e, o).summary;
+    CHECK(fast.steps < 6000);
+    CHECK(fast.slide_max_m == Approx(tight.slide_max_m).epsilon(1e-7));
 }
 
 TEST_CASE("biaxial: a 45-degree one-directional input equals the planar result along it",
