@@ -7,7 +7,8 @@
 // that run every configuration in turn (the machine is a shared virtual one whose speed drifts
 // by up to 2x between minutes; interleaving keeps the ratios steadier than the times). Then, two
 // units joined by a tunnel (dynamics::simulate_pair): time against the two planar runs and the
-// peak relative displacement's error at 1, 4 and 16 samples per input step against 64.
+// peak relative displacement's error at 1, 4 and 16 samples per input step against 64, and of
+// the pair of central-difference runs at 1e-4 and 1e-5 s.
 // Last, biaxial sliding (issue 15; biaxial_rows.hpp): El Centro 140 as x and 230 as y, and the
 // histories of cases/glovebox-single.toml, each against the planar run of its x component.
 #include <algorithm>
@@ -137,6 +138,12 @@ dynamics::Options central_difference(dynamics::Options o, double dt_s) {
     return o;
 }
 
+// The pair options at one sample per input step (central difference records its own steps).
+dynamics::PairOptions p1(dynamics::PairOptions p) {
+    p.refine = 1;
+    return p;
+}
+
 std::string fmt_refine(std::size_t refine) {
     return "pair, " + std::to_string(refine) + "/input step";
 }
@@ -144,7 +151,8 @@ std::string fmt_refine(std::size_t refine) {
 // Two units joined by a tunnel (docs/methods.md s.10), on the record scaled to pga_g. The pair
 // is two planar runs with their series recorded; its peak relative displacement is taken over
 // the samples, so the rows refine the sampling (the same piecewise-linear input, resampled) and
-// compare with 64 samples per input step. Time: against the two planar runs without series.
+// compare with 64 samples per input step; and the pair of central-difference runs at 1e-4 and
+// 1e-5 s against the same reference. Time: against the two planar runs without series.
 void pair_rows(const core::Record& rec, const char* label, double pga_g,
                const std::array<dynamics::BlockModel, 2>& units, double tunnel_height_m) {
     double peak = 0.0;
@@ -169,7 +177,17 @@ void pair_rows(const core::Record& rec, const char* label, double pga_g,
                                peaks[k] = dynamics::simulate_pair(units, e, pk, o).relative_max_m;
                            }});
     }
-    time_interleaved(units[0], e, configs, 15);
+    const double cd_dts[] = {1e-4, 1e-5};
+    double cd_peaks[2] = {0.0, 0.0};
+    for (std::size_t k = 0; k < 2; ++k) {
+        dynamics::Options ocd = o;
+        ocd.integrator = dynamics::Integrator::central_difference;
+        ocd.cd_dt_s = cd_dts[k];
+        configs.push_back({"pair cd", ocd, 1, [&, k, ocd] {
+                               cd_peaks[k] = dynamics::simulate_pair(units, e, p1(p), ocd).relative_max_m;
+                           }});
+    }
+    time_interleaved(units[0], e, configs, 5);
     std::printf("\npair, %s, %.2g g, tunnel %.2g m: peak relative %.6g m at 64 samples per input "
                 "step\n%-22s %12s %12s %8s\n",
                 label, pga_g, tunnel_height_m, ref, "configuration", "cpu_s", "rel_error",
@@ -180,6 +198,11 @@ void pair_rows(const core::Record& rec, const char* label, double pga_g,
         std::printf("%-22s %12.3e %12.3e %7.1fx\n", fmt_refine(refines[k]).c_str(),
                     configs[k + 1].best_s, std::abs(peaks[k] - ref) / ref,
                     configs[k + 1].best_s / t1);
+    for (std::size_t k = 0; k < 2; ++k) {
+        const Config& c = configs[refines.size() + 1 + k];
+        std::printf("pair, cd dt=%-10.0e %12.3e %12.3e %7.1fx\n", cd_dts[k], c.best_s,
+                    std::abs(cd_peaks[k] - ref) / ref, c.best_s / t1);
+    }
 }
 
 // The flexible body (docs/methods.md s.10): each case's block carrying a 7.5 Hz mode (damping
