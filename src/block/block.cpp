@@ -3,18 +3,37 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/units.hpp"
 
 namespace freestand::block {
+
+namespace {
+
+// Positive and within the limits of src/core/limits.hpp (README, Limits).
+void require_length(double v_m, const char* what) {
+    const SourceLocation where{"", 0, what};
+    require_positive(v_m, where);
+    core::limits::require_within(v_m, core::limits::max_length_m, where, "length (m)");
+}
+
+void require_mass(double m_kg) {
+    const SourceLocation where{"", 0, "m (mass, kg)"};
+    require_positive(m_kg, where);
+    core::limits::require_at_least(m_kg, core::limits::min_mass_kg, where, "mass (kg)");
+    core::limits::require_within(m_kg, core::limits::max_mass_kg, where, "mass (kg)");
+}
+
+}  // namespace
 
 double uniform_inertia_cg_kgm2(double mass_kg, double half_width_m, double cg_height_m) {
     return mass_kg * (half_width_m * half_width_m + cg_height_m * cg_height_m) / 3.0;
 }
 
 Block Block::uniform(double half_width_m, double cg_height_m, double mass_kg) {
-    require_positive(half_width_m, {"", 0, "b (half-width, m)"});
-    require_positive(cg_height_m, {"", 0, "h (CG height, m)"});
-    require_positive(mass_kg, {"", 0, "m (mass, kg)"});
+    require_length(half_width_m, "b (half-width, m)");
+    require_length(cg_height_m, "h (CG height, m)");
+    require_mass(mass_kg);
     Block blk;
     blk.mass_kg = mass_kg;
     blk.b_left_m = half_width_m;
@@ -26,10 +45,10 @@ Block Block::uniform(double half_width_m, double cg_height_m, double mass_kg) {
 
 Block Block::general(double b_left_m, double b_right_m, double h_m, double mass_kg,
                      double inertia_cg_kgm2) {
-    require_positive(b_left_m, {"", 0, "b_left (CG to left edge, m)"});
-    require_positive(b_right_m, {"", 0, "b_right (CG to right edge, m)"});
-    require_positive(h_m, {"", 0, "h (CG height, m)"});
-    require_positive(mass_kg, {"", 0, "m (mass, kg)"});
+    require_length(b_left_m, "b_left (CG to left edge, m)");
+    require_length(b_right_m, "b_right (CG to right edge, m)");
+    require_length(h_m, "h (CG height, m)");
+    require_mass(mass_kg);
     require_positive(inertia_cg_kgm2, {"", 0, "I_c (inertia about CG, kg m^2)"});
     return Block{mass_kg, b_left_m, b_right_m, h_m, inertia_cg_kgm2};
 }

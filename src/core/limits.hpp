@@ -35,6 +35,13 @@ inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
 /// --ag), the upper end of a case's pga_g levels: 'target --design rg1.60 --pga 1e300' printed
 /// spectral accelerations of 7.5e298 g with exit 0.
 inline constexpr double max_design_level_g = 3.0;
+/// A block's lengths (half-widths, CG height), m: above 100 m it is not equipment standing on
+/// a floor. No lower limit: a CG over an edge (CG to edge -> 0) is a needle that topples at
+/// once, and is assessed as one (issue 16).
+inline constexpr double max_length_m = 100.0;
+/// A block's mass, kg: from a gram to 100,000 t.
+inline constexpr double min_mass_kg = 1e-3;
+inline constexpr double max_mass_kg = 1e8;
 /// Steps of one fixed-step integration (central difference: duration / dt).
 inline constexpr double max_fixed_steps = 1e8;
 /// Characters of one line of a TOML case file. toml++ builds the tables of a dotted key

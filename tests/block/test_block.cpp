@@ -30,6 +30,20 @@ TEST_CASE("asymmetric block has per-edge geometry and picks the slenderer edge",
     CHECK_FALSE(blk.symmetric());
 }
 
+TEST_CASE("a block outside the size limits is an input error naming the field and the limit",
+          "[block]") {
+    CHECK_THROWS_AS(Block::uniform(0.15, 1e3), freestand::InputError);
+    CHECK_THROWS_WITH(Block::uniform(0.15, 1e3), Catch::Contains("h (CG height, m): length (m): "
+                                                                 "1000 is above the limit 100"));
+    CHECK_THROWS_WITH(Block::uniform(1e300, 0.6), Catch::Contains("b (half-width, m)"));
+    CHECK_THROWS_WITH(Block::uniform(0.15, 0.6, 1e-6),
+                      Catch::Contains("m (mass, kg): mass (kg): 1e-06 is below the limit 0.001"));
+    CHECK_THROWS_WITH(Block::uniform(0.15, 0.6, 1e9), Catch::Contains("m (mass, kg)"));
+    CHECK_THROWS_WITH(Block::general(0.1, 200.0, 1.0, 1.0, 1.0), Catch::Contains("b_right"));
+    CHECK_NOTHROW(Block::uniform(100.0, 100.0, 1e-3));
+    CHECK_NOTHROW(Block::uniform(1e-9, 1.0, 1e8));  // a CG over its edges: a needle
+}
+
 TEST_CASE("bad block dimensions are input errors naming the field", "[block]") {
     CHECK_THROWS_WITH(Block::uniform(0.0, 0.6), Catch::Contains("half-width"));
     CHECK_THROWS_WITH(Block::uniform(0.15, -1.0), Catch::Contains("CG height"));
