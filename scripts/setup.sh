@@ -6,7 +6,8 @@ packages=(g++ cmake make pkg-config ccache git
   libeigen3-dev libfftw3-dev libboost-dev libboost-program-options-dev libfmt-dev
   catch2 libtomlplusplus-dev libmstch-dev nlohmann-json3-dev
   clang-14 libclang-rt-14-dev
-  libopenmpi-dev openmpi-bin)
+  libopenmpi-dev openmpi-bin
+  python3-pytest python3-jsonschema)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

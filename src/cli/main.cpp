@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/flag_names.hpp"
 #include "core/errors.hpp"
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
         return all.empty() ? static_cast<int>(ExitCode::usage) : 0;
     }
     if (all[0] == "--version") {
-        std::cout << "freestand " FREESTAND_VERSION "\n";
+        std::cout << cli::version_text();
         return 0;
     }
     // Messages quote the user's arguments and the bytes of their files: control characters

@@ -1,16 +1,17 @@
 // CSV records (readers.hpp contract): '#' comment lines anywhere, blank lines ignored; a header
-// "time_s,accel_<unit>" (two columns) or "accel_<unit>" (one column, after a "# dt_s: <value>"
-// comment); <unit> is g, mps2 or cmps2. Optional "# name:" and "# component:" comments fill
-// the record's labels, so write_csv_g output reads back unchanged.
+// naming a time and an acceleration column in either order (names and units in csv_columns.hpp),
+// or one acceleration column after a "# dt_s: <value>" comment. The separator is the header's:
+// ';', else a tab, else ','. Optional "# name:" and "# component:" comments fill the record's
+// labels, so write_csv_g output reads back unchanged.
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
 
+#include "core/csv_columns.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/readers.hpp"
 #include "core/text_parse.hpp"
-#include "core/units.hpp"
 
 namespace freestand::core {
 
@@ -19,29 +20,49 @@ namespace {
 /// Relative tolerance on the time step of a two-column file (issue 2).
 constexpr double dt_rel_tol = 1e-6;
 
-std::optional<double> unit_to_mps2(std::string_view column) {
-    if (column == "accel_g") return units::g_mps2;
-    if (column == "accel_mps2") return 1.0;
-    if (column == "accel_cmps2") return units::cm_to_m;
-    return std::nullopt;
-}
-
-std::vector<std::string_view> split_commas(std::string_view line) {
+std::vector<std::string_view> split_fields(std::string_view line, char separator) {
     std::vector<std::string_view> fields;
     std::size_t start = 0;
     while (true) {
-        const std::size_t comma = line.find(',', start);
-        fields.push_back(text::trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-        if (comma == std::string_view::npos) return fields;
-        start = comma + 1;
+        const std::size_t end = line.find(separator, start);
+        fields.push_back(text::trim(line.substr(start, end == std::string_view::npos ? end : end - start)));
+        if (end == std::string_view::npos) return fields;
+        start = end + 1;
     }
+}
+
+char header_separator(std::string_view header) {
+    if (header.find(';') != std::string_view::npos) return ';';
+    if (header.find('\t') != std::string_view::npos) return '\t';
+    return ',';
+}
+
+std::string separator_name(char separator) {
+    if (separator == ';') return "semicolon";
+    if (separator == '\t') return "tab";
+    return "comma";
+}
+
+/// Where the separator is not ',' (a spreadsheet in a decimal-comma locale writes ';'), one
+/// ',' in a number without a '.' is its decimal point: "0,25" is 0.25.
+std::string decimal_point(std::string_view field, char separator) {
+    std::string number(field);
+    if (separator == ',' || number.find('.') != std::string::npos) return number;
+    const std::size_t comma = number.find(',');
+    if (comma != std::string::npos && number.find(',', comma + 1) == std::string::npos) number[comma] = '.';
+    return number;
 }
 
 struct CsvHeader {
     std::size_t line_index = 0;
-    bool has_time = false;
-    std::string accel_column;
-    double to_mps2 = 0.0;
+    char separator = ',';
+    std::size_t columns = 0;
+    std::optional<std::size_t> time_column;  ///< 0-based
+    std::size_t accel_column = 0;             ///< 0-based
+    std::string time_name = "time_s";         ///< as written, for messages
+    std::string accel_name;
+    double time_to_s = 1.0;
+    double accel_to_mps2 = 1.0;
 };
 
 class CsvParser {
@@ -56,8 +77,11 @@ private:
     }
     void read_comment(std::size_t index, Record& rec);
     CsvHeader read_header(std::size_t index) const;
-    double number(std::size_t index, std::string_view field, std::size_t column, const std::string& name) const;
-    void check_step(std::size_t index, double t_prev, double t) ;
+    void place_column(CsvHeader& h, std::size_t column, std::string_view name) const;
+    double number(std::size_t index, std::string_view field, std::size_t column, const std::string& name,
+                  char separator) const;
+    void read_row(std::size_t index, std::string_view line, const CsvHeader& h, Record& rec, std::vector<double>& times_s);
+    void check_step(std::size_t index, const std::string& where, double t_prev, double t);
 
     std::string file_;
     std::vector<std::string> lines_;
@@ -83,48 +107,99 @@ void CsvParser::read_comment(std::size_t index, Record& rec) {
     comment_dt_index_ = index;
 }
 
+void CsvParser::place_column(CsvHeader& h, std::size_t column, std::string_view name) const {
+    const csv::NameReading reading = csv::read_column_name(name);
+    const std::string& header = lines_[h.line_index];
+    if (!reading.quantity)
+        throw InputError(at(h.line_index, "header"),
+                         fmt::format("column {} \"{}\" of \"{}\" is not a recognised name; accepted names: {}",
+                                     column + 1, name, header, csv::accepted_names()));
+    if (!reading.column) {
+        const bool time = *reading.quantity == csv::Quantity::time;
+        throw InputError(at(h.line_index, "header"),
+                         fmt::format("column \"{}\" has no recognised unit; expected {} in {} (accepted names: {})", name,
+                                     time ? "a time" : "an acceleration", csv::accepted_units(*reading.quantity),
+                                     csv::accepted_names()));
+    }
+    const bool is_time = reading.column->quantity == csv::Quantity::time;
+    if ((is_time && h.time_column) || (!is_time && !h.accel_name.empty()))
+        throw InputError(at(h.line_index, "header"),
+                         fmt::format("two {} columns in \"{}\"; expected one time and one acceleration column",
+                                     is_time ? "time" : "acceleration", header));
+    if (is_time) {
+        h.time_column = column;
+        h.time_name = std::string(name);
+        h.time_to_s = reading.column->to_si;
+    } else {
+        h.accel_column = column;
+        h.accel_name = std::string(name);
+        h.accel_to_mps2 = reading.column->to_si;
+    }
+}
+
 CsvHeader CsvParser::read_header(std::size_t index) const {
-    const std::vector<std::string_view> cols = split_commas(lines_[index]);
     CsvHeader h;
     h.line_index = index;
-    h.has_time = cols.size() == 2;
-    if (cols.size() > 2 || (h.has_time && cols[0] != "time_s"))
-        throw InputError(at(index, "header"), fmt::format("expected \"time_s,accel_<unit>\" or \"accel_<unit>\"; "
-                                                          "got \"{}\"", lines_[index]));
-    h.accel_column = std::string(cols.back());
-    const std::optional<double> factor = unit_to_mps2(h.accel_column);
-    if (!factor)
+    const std::string_view line = text::trim(lines_[index]);
+    h.separator = header_separator(line);
+    const std::vector<std::string_view> cols = split_fields(line, h.separator);
+    h.columns = cols.size();
+    if (cols.size() > 2)
         throw InputError(at(index, "header"),
-                         fmt::format("column \"{}\" has no recognised unit; expected accel_g, accel_mps2 or accel_cmps2",
-                                     h.accel_column));
-    h.to_mps2 = *factor;
+                         fmt::format("expected \"time_s,accel_<unit>\" or \"accel_<unit>\" (a time and an acceleration "
+                                     "column, or one acceleration column); got {} columns in \"{}\"",
+                                     cols.size(), lines_[index]));
+    for (std::size_t c = 0; c < cols.size(); ++c) place_column(h, c, cols[c]);
+    if (h.accel_name.empty())
+        throw InputError(at(index, "header"),
+                         fmt::format("no acceleration column in \"{}\"; expected \"time_s,accel_<unit>\" or "
+                                     "\"accel_<unit>\"", lines_[index]));
     return h;
 }
 
-double CsvParser::number(std::size_t index, std::string_view field, std::size_t column, const std::string& name) const {
-    const std::string where = fmt::format("column {} ({})", column, name);
+double CsvParser::number(std::size_t index, std::string_view field, std::size_t column, const std::string& name,
+                         char separator) const {
+    const std::string where = fmt::format("column {} ({})", column + 1, name);
     double value = 0.0;
-    if (!text::parse_double(field, value))
+    if (!text::parse_double(decimal_point(field, separator), value))
         throw InputError(at(index, where), fmt::format("expected a number; got \"{}\"", field));
     if (!std::isfinite(value))
         throw InputError(at(index, where), fmt::format("value \"{}\" is not finite; expected a finite number", field));
     return value;
 }
 
-void CsvParser::check_step(std::size_t index, double t_prev, double t) {
+void CsvParser::check_step(std::size_t index, const std::string& where, double t_prev, double t) {
     const double step = t - t_prev;
     if (first_step_index_ == 0) {
         if (!(step > 0.0))
-            throw InputError(at(index, "column 1 (time_s)"),
+            throw InputError(at(index, where),
                              fmt::format("time {} s does not increase after {} s; expected a step > 0", t, t_prev));
         first_step_s_ = step;
         first_step_index_ = index;
         return;
     }
     if (std::abs(step - first_step_s_) > dt_rel_tol * first_step_s_)
-        throw InputError(at(index, "column 1 (time_s)"),
+        throw InputError(at(index, where),
                          fmt::format("non-uniform time step: {} s here but {} s at line {}; expected a uniform step "
                                      "(relative tolerance {})", step, first_step_s_, first_step_index_ + 1, dt_rel_tol));
+}
+
+void CsvParser::read_row(std::size_t index, std::string_view line, const CsvHeader& h, Record& rec,
+                         std::vector<double>& times_s) {
+    const std::vector<std::string_view> fields = split_fields(line, h.separator);
+    if (fields.size() != h.columns)
+        throw InputError(at(index, ""), fmt::format("expected {} {}-separated column(s) as in the header at line {}; "
+                                                    "got {}", h.columns, separator_name(h.separator), h.line_index + 1,
+                                                    fields.size()));
+    if (h.time_column) {
+        const std::size_t c = *h.time_column;
+        times_s.push_back(number(index, fields[c], c, h.time_name, h.separator) * h.time_to_s);
+        if (times_s.size() > 1)
+            check_step(index, fmt::format("column {} ({})", c + 1, h.time_name), times_s[times_s.size() - 2],
+                       times_s.back());
+    }
+    rec.accel_mps2.push_back(number(index, fields[h.accel_column], h.accel_column, h.accel_name, h.separator) *
+                             h.accel_to_mps2);
 }
 
 Record CsvParser::parse() {
@@ -132,7 +207,7 @@ Record CsvParser::parse() {
     rec.name = std::filesystem::path(file_).stem().string();
     rec.source = file_;
     std::optional<CsvHeader> header;
-    std::vector<double> times;
+    std::vector<double> times_s;
     std::size_t last_row = 0;
     for (std::size_t i = 0; i < lines_.size(); ++i) {
         const std::string_view line = text::trim(lines_[i]);
@@ -145,28 +220,20 @@ Record CsvParser::parse() {
             header = read_header(i);
             continue;
         }
-        const std::vector<std::string_view> fields = split_commas(line);
-        const std::size_t expected = header->has_time ? 2 : 1;
-        if (fields.size() != expected)
-            throw InputError(at(i, ""), fmt::format("expected {} comma-separated column(s) as in the header at line {}; "
-                                                    "got {}", expected, header->line_index + 1, fields.size()));
-        if (header->has_time) {
-            times.push_back(number(i, fields[0], 1, "time_s"));
-            if (times.size() > 1) check_step(i, times[times.size() - 2], times.back());
-        }
-        rec.accel_mps2.push_back(number(i, fields.back(), expected, header->accel_column) * header->to_mps2);
+        read_row(i, line, *header, rec, times_s);
         last_row = i;
     }
     if (!header)
         throw InputError(at(lines_.empty() ? 0 : lines_.size() - 1, ""),
                          "empty file; expected a header \"time_s,accel_<unit>\" or \"accel_<unit>\"");
     if (rec.accel_mps2.empty()) throw InputError(at(header->line_index, ""), "no data rows after the header");
-    if (header->has_time) {
-        if (times.size() < 2)
-            throw InputError(at(last_row, "time_s"), "a single row gives no time step; expected at least two rows");
+    if (header->time_column) {
+        if (times_s.size() < 2)
+            throw InputError(at(last_row, header->time_name),
+                             "a single row gives no time step; expected at least two rows");
         // The mean step: equal to every step within the tolerance, and least affected by the
         // rounding of printed times.
-        rec.dt_s = (times.back() - times.front()) / static_cast<double>(times.size() - 1);
+        rec.dt_s = (times_s.back() - times_s.front()) / static_cast<double>(times_s.size() - 1);
         if (comment_dt_s_ && std::abs(*comment_dt_s_ - rec.dt_s) > dt_rel_tol * rec.dt_s)
             throw InputError(at(comment_dt_index_, "dt_s"),
                              fmt::format("comment says dt_s {} but the time column steps by {} s", *comment_dt_s_, rec.dt_s));

@@ -19,10 +19,14 @@ Record read_at2(const std::filesystem::path& path);
 /// the number of values. Also used for .V2C files.
 Record read_cosmos_v2(const std::filesystem::path& path);
 
-/// CSV: header "time_s,accel_<unit>" with two columns, or one column "accel_<unit>" preceded
-/// by a "# dt_s: <value>" line. <unit> is one of g, mps2, cmps2. '#' lines are comments; blank
-/// lines are skipped. Time steps must agree to 1e-6 relative; dt is their mean, and the first row
-/// becomes t = 0. Optional "# name:" and "# component:" comments set those labels.
+/// CSV: a header naming a time and an acceleration column (either order), or one acceleration
+/// column preceded by a "# dt_s: <value>" line. Names carry their unit ("time_s", "t (ms)",
+/// "accel_g", "Acceleration [m/s^2]", "a_gal"; the list in csv_columns.hpp and docs/methods.md);
+/// an unknown name is an InputError listing the accepted ones. The separator is the header's:
+/// ';', else a tab, else ','; with ';' or a tab a number may use a decimal comma. A UTF-8 BOM
+/// and CRLF line ends are accepted. '#' lines are comments; blank lines are skipped. Time steps
+/// must agree to 1e-6 relative; dt is their mean, and the first row becomes t = 0. Optional
+/// "# name:" and "# component:" comments set those labels.
 Record read_csv(const std::filesystem::path& path);
 
 /// The same readers on text already in memory; file_label names the file in messages (and

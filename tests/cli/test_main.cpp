@@ -1,6 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <filesystem>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <fstream>
 
 #include "support/run_cli.hpp"
@@ -35,10 +40,27 @@ TEST_CASE("an unknown option is a usage error with the command prefixed once", "
     CHECK_THAT(r.err, Catch::Contains("(see freestand spectrum --help)"));
 }
 
-TEST_CASE("freestand --version prints the version", "[cli]") {
+TEST_CASE("freestand --version prints the version, the commit and each linked library's version", "[cli]") {
     const auto r = run_cli("--version");
     CHECK(r.exit_code == 0);
-    CHECK_THAT(r.out, Catch::StartsWith("freestand " FREESTAND_VERSION));
+    CHECK(r.err.empty());
+    // FREESTAND_VERSION is CMake's project(VERSION).
+    CHECK_THAT(r.out, Catch::StartsWith("freestand " FREESTAND_VERSION "\ncommit "));
+    std::vector<std::string> lines;
+    std::istringstream in(r.out);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    REQUIRE(lines.size() == 10);
+    CHECK(lines[1] != "commit unknown");
+    // Each library line is "<name> <version>": the name, then a version starting with a digit
+    // (FFTW's own string reads "fftw-3.3.10-...").
+    const char* names[] = {"Eigen ", "FFTW fftw-", "Boost ", "fmt ", "toml++ ", "nlohmann-json ", "mstch ", "compiler "};
+    for (std::size_t i = 0; i < std::size(names); ++i) {
+        INFO(lines[i + 2]);
+        CHECK_THAT(lines[i + 2], Catch::StartsWith(names[i]));
+        const std::string version = lines[i + 2].substr(std::string(names[i]).size());
+        CHECK_FALSE(version.empty());
+        if (!version.empty() && i != 7) CHECK(std::isdigit(static_cast<unsigned char>(version[0])));
+    }
 }
 
 TEST_CASE("report stamps carry a commit of this repository", "[cli]") {

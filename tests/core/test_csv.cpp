@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -95,14 +96,122 @@ TEST_CASE("CSV reader rejects an empty file and a file without rows", "[core][cs
 TEST_CASE("CSV reader requires a unit in the header", "[core][csv]") {
     const auto p = write_temp("nounit.csv", "time_s,accel\n0,0.1\n0.01,0.2\n");
     CHECK_THROWS_AS(core::read_csv(p), InputError);
-    CHECK_THROWS_WITH(core::read_csv(p), Contains(":1: header: column \"accel\" has no recognised unit; expected "
-                                                  "accel_g, accel_mps2 or accel_cmps2"));
+    CHECK_THROWS_WITH(core::read_csv(p), Contains(":1: header: column \"accel\" has no recognised unit; expected an "
+                                                  "acceleration in g, m/s2 (also mps2, ms-2) or cm/s2 (also cmps2, "
+                                                  "cms-2, gal) (accepted names: time: time or t"));
     const auto q = write_temp("ft.csv", "# dt_s: 0.01\naccel_ftps2\n1\n");
     CHECK_THROWS_WITH(core::read_csv(q), Contains(":2: header: column \"accel_ftps2\" has no recognised unit"));
-    const auto r = write_temp("time.csv", "t,accel_g\n0,1\n");
-    CHECK_THROWS_WITH(core::read_csv(r), Contains(":1: header: expected \"time_s,accel_<unit>\" or \"accel_<unit>\""));
+    const auto r = write_temp("three.csv", "time_s,accel_g,accel_mps2\n0,1,2\n");
+    CHECK_THROWS_WITH(core::read_csv(r), Contains(":1: header: expected \"time_s,accel_<unit>\" or \"accel_<unit>\" "
+                                                  "(a time and an acceleration column, or one acceleration column); "
+                                                  "got 3 columns in \"time_s,accel_g,accel_mps2\""));
 }
 
+TEST_CASE("CSV reader reads the usual spellings of the column names with their units", "[core][csv]") {
+    struct Spelling {
+        const char* header;
+        double accel_to_mps2;
+        double time_to_s;
+    };
+    const Spelling spellings[] = {
+        {"time_s,accel_g", units::g_mps2, 1.0},
+        {"time_s,acceleration_g", units::g_mps2, 1.0},
+        {"t_s,acc_g", units::g_mps2, 1.0},
+        {"Time (s),Accel (g)", units::g_mps2, 1.0},
+        {"time,a_g", units::g_mps2, 1.0},
+        {"T,ACCELERATION (G)", units::g_mps2, 1.0},
+        {"time [s],acceleration [g]", units::g_mps2, 1.0},
+        {"time sec,accel g", units::g_mps2, 1.0},
+        {" \"time_s\" , \"accel_g\" ", units::g_mps2, 1.0},
+        {"time_s,a_mps2", 1.0, 1.0},
+        {"time_s,acc_m/s2", 1.0, 1.0},
+        {"time (s),acceleration (m/s^2)", 1.0, 1.0},
+        {"time (s),acceleration (m / s ^ 2)", 1.0, 1.0},
+        {"time (s),acceleration (m/s\xC2\xB2)", 1.0, 1.0},
+        {"time (s),accel [ms-2]", 1.0, 1.0},
+        {"time_s,accel_cm/s2", units::cm_to_m, 1.0},
+        {"time_s,accel_cmps2", units::cm_to_m, 1.0},
+        {"time_s,acc (gal)", units::cm_to_m, 1.0},
+        {"time_s,a_Gal", units::cm_to_m, 1.0},
+        {"time_ms,accel_g", units::g_mps2, 1e-3},
+        {"t (ms),accel_g", units::g_mps2, 1e-3},
+    };
+    for (const Spelling& s : spellings) {
+        INFO(s.header);
+        const double step = 0.01 / s.time_to_s;
+        const auto p = write_temp("spelling.csv", fmt::format("{}\n0,0.5\n{},-1.5\n{},2\n", s.header, step, 2 * step));
+        const auto rec = core::read_csv(p);
+        REQUIRE(rec.size() == 3);
+        CHECK(rec.dt_s == Approx(0.01).epsilon(1e-12));
+        CHECK(rec.accel_mps2[1] == Approx(-1.5 * s.accel_to_mps2).epsilon(1e-15));
+    }
+}
+
+TEST_CASE("CSV reader takes the columns in either order", "[core][csv]") {
+    const auto rec = core::read_csv(write_temp("swapped.csv", "acc (g),t (s)\n0.5,0\n-1.5,0.02\n2,0.04\n"));
+    REQUIRE(rec.size() == 3);
+    CHECK(rec.dt_s == Approx(0.02).epsilon(1e-12));
+    CHECK(rec.accel_mps2[1] == Approx(-1.5 * units::g_mps2).epsilon(1e-15));
+    const auto p = write_temp("swapbad.csv", "acc (g),t (s)\n0.5,0\n-1.5,0.02\n2,0.05\n");
+    CHECK_THROWS_WITH(core::read_csv(p), Contains(":4: column 2 (t (s)): non-uniform time step"));
+}
+
+TEST_CASE("CSV reader accepts a BOM, CRLF, ';' and tab separators and a decimal comma after ';'", "[core][csv]") {
+    const auto bom = core::read_csv(write_temp("bom.csv", "\xEF\xBB\xBFtime_s,accel_g\r\n0,0.1\r\n0.01,0.2\r\n"));
+    CHECK(bom.size() == 2);
+    CHECK(bom.accel_mps2[1] == Approx(0.2 * units::g_mps2).epsilon(1e-15));
+    const auto semi = core::read_csv(write_temp("semi.csv", "\xEF\xBB\xBFTime (s);Acc (m/s2)\r\n0;0,25\r\n0,01;-1,5\r\n"
+                                                            "0,02;2\r\n"));
+    REQUIRE(semi.size() == 3);
+    CHECK(semi.dt_s == Approx(0.01).epsilon(1e-12));
+    CHECK(semi.accel_mps2[0] == 0.25);
+    CHECK(semi.accel_mps2[1] == -1.5);
+    const auto semi_point = core::read_csv(write_temp("semipoint.csv", "time_s ; accel_g\n0 ; 0.5\n0.01 ; 1\n"));
+    CHECK(semi_point.accel_mps2[0] == Approx(0.5 * units::g_mps2).epsilon(1e-15));
+    const auto tab = core::read_csv(write_temp("tab.csv", "time_s\taccel_mps2\n0\t1\n0.01\t2,5\n"));
+    CHECK(tab.accel_mps2[1] == 2.5);
+}
+
+TEST_CASE("CSV reader names the header and lists the accepted names for an unknown column", "[core][csv]") {
+    const auto p = write_temp("german.csv", "# from a logger\nZeit (s);Beschleunigung (g)\n0;0,1\n");
+    CHECK_THROWS_AS(core::read_csv(p), InputError);
+    CHECK_THROWS_WITH(core::read_csv(p),
+                      Contains("freestand_csv_german.csv:2: header: column 1 \"Zeit (s)\" of \"Zeit (s);Beschleunigung "
+                               "(g)\" is not a recognised name; accepted names: time: time or t, in s (also sec; s when "
+                               "no unit is written) or ms; acceleration: acceleration, accel, acc or a, in g, m/s2 (also "
+                               "mps2, ms-2) or cm/s2 (also cmps2, cms-2, gal); the unit follows '_' or a space or stands "
+                               "in (...) or [...], as in time_s, t (s), accel_g, acc (m/s^2), a [gal]; case, blanks and "
+                               "'^' are ignored"));
+    const auto q = write_temp("minutes.csv", "time_min,accel_g\n0,0.1\n");
+    CHECK_THROWS_WITH(core::read_csv(q), Contains(":1: header: column \"time_min\" has no recognised unit; expected a "
+                                                  "time in s (also sec; s when no unit is written) or ms (accepted"));
+    const auto r = write_temp("accel_ms.csv", "time_s,accel_ms\n0,0.1\n");
+    CHECK_THROWS_WITH(core::read_csv(r), Contains(":1: header: column \"accel_ms\" has no recognised unit"));
+}
+
+TEST_CASE("CSV reader requires one time and one acceleration column", "[core][csv]") {
+    const auto p = write_temp("twotimes.csv", "time_s,t (ms)\n0,0\n");
+    CHECK_THROWS_AS(core::read_csv(p), InputError);
+    CHECK_THROWS_WITH(core::read_csv(p), Contains(":1: header: two time columns in \"time_s,t (ms)\"; expected one time "
+                                                  "and one acceleration column"));
+    const auto q = write_temp("twoaccels.csv", "accel_g;acc_gal\n0;0\n");
+    CHECK_THROWS_WITH(core::read_csv(q), Contains(":1: header: two acceleration columns in \"accel_g;acc_gal\""));
+    const auto r = write_temp("timeonly.csv", "# dt_s: 0.01\ntime_s\n0\n");
+    CHECK_THROWS_WITH(core::read_csv(r), Contains(":2: header: no acceleration column in \"time_s\"; expected "
+                                                  "\"time_s,accel_<unit>\" or \"accel_<unit>\""));
+}
+
+TEST_CASE("CSV reader keeps to the header's separator", "[core][csv]") {
+    // A decimal comma is read only where ',' cannot be the separator.
+    const auto p = write_temp("commadecimal.csv", "time_s,accel_g\n0,0,1\n");
+    CHECK_THROWS_WITH(core::read_csv(p), Contains(":2: expected 2 comma-separated column(s) as in the header at line 1; "
+                                                  "got 3"));
+    const auto q = write_temp("semirow.csv", "time_s;accel_g\n0;0.1\n0.01,0.2\n");
+    CHECK_THROWS_WITH(core::read_csv(q), Contains(":3: expected 2 semicolon-separated column(s) as in the header at "
+                                                  "line 1; got 1"));
+    const auto r = write_temp("twocommas.csv", "time_s;accel_g\n0;1,000,5\n");
+    CHECK_THROWS_WITH(core::read_csv(r), Contains(":2: column 2 (accel_g): expected a number; got \"1,000,5\""));
+}
 TEST_CASE("CSV reader requires dt for one column and checks it", "[core][csv]") {
     const auto p = write_temp("nodt.csv", "accel_g\n0.1\n0.2\n");
     CHECK_THROWS_AS(core::read_csv(p), InputError);
