@@ -11,6 +11,12 @@
 
 namespace freestand::dynamics::detail {
 
+/// A damped linear oscillator: circular frequency omega (rad/s), damping ratio zeta in [0, 1).
+struct Oscillator {
+    double omega = 0.0;
+    double zeta = 0.0;
+};
+
 /// Constants of the split body. Body frame: origin O on the base plane below the CG, x along
 /// the base to the right, y up; edges at (-b_L, 0) and (b_R, 0); the rigid remainder's CG at
 /// (0, hr); the modal mass at (q, hs).
@@ -18,6 +24,10 @@ struct FlexGeometry {
     Geometry rigid;  ///< the whole block as the rigid model sees it (restitution, alpha, mu)
     double M = 0.0, Mr = 0.0, ms = 0.0, hr = 0.0, Ir = 0.0, hs = 0.0, Mh = 0.0;
     double omega = 0.0, zeta = 0.0, k = 0.0, c = 0.0;
+    /// The mode on the held base (omega, zeta) and against the flat-sliding remainder
+    /// (omega sqrt(M / M_r), zeta sqrt(M / M_r)); exact_slide when the latter is underdamped.
+    Oscillator held, sliding;
+    bool exact_slide = false;
     std::array<double, 2> b{};  ///< [0] left, [1] right half-widths
     double inv_width = 0.0;     ///< 1 / (b_L + b_R)
     /// The restitution was measured (BlockModel::restitution): an impact multiplies theta' by
@@ -136,22 +146,45 @@ Landing land_flexible(const FlexGeometry& g, const Pose& p, double flat_window_s
 /// to rebound, or chatter settled): q' by modal_rate_after.
 double flat_modal_rate(const FlexGeometry& g, const Pose& p, double u, double v);
 
-/// The linear oscillator q'' + 2 zeta omega q' + omega^2 q = -(a0 + a1 tau) advanced exactly
-/// by tau (Nigam & Jennings 1969).
-void oscillator_step(const FlexGeometry& g, double& q, double& qd, double a0, double a1,
+/// The oscillator q'' + 2 zeta omega q' + omega^2 q = -(a0 + a1 tau) advanced exactly by tau
+/// (Nigam & Jennings 1969).
+void oscillator_step(const Oscillator& osc, double& q, double& qd, double a0, double a1,
                      double tau);
 
 /// The same with the free-vibration factors of one step length tau precomputed (the rest
 /// phase's full input steps, all of one length).
 struct OscillatorStep {
     OscillatorStep() = default;
-    OscillatorStep(const FlexGeometry& g, double tau);
+    OscillatorStep(const Oscillator& osc, double tau);
     void apply(double& q, double& qd, double a0, double a1) const;
     double tau = 0.0;
 
 private:
     double w2_ = 0.0, inv_w2_ = 0.0, two_zw_ = 0.0, sig_ = 0.0, wd_ = 0.0, e_ = 0.0, c_ = 0.0,
            s_ = 0.0;
+};
+
+/// Flat sliding in direction sigma, exact on a linear input segment: with phi = Y = 0 and
+/// N = M G the equations are linear. The modal mass against the sliding remainder is the
+/// oscillator FlexGeometry::sliding, q'' + (c q' + k q) M / (m_s M_r) = sigma mu_k G M / M_r;
+/// the momentum M u' + m_s q' changes at -M xg'' - sigma mu_k M G, a polynomial.
+class SlideSegment {
+public:
+    /// From the state x (slip u, u', q, q') at the segment's point where the base is b0, the
+    /// input's slopes ax1 and G1 on it.
+    SlideSegment(const FlexGeometry& g, int sigma, const std::array<double, 8>& x, Base b0,
+                 double ax1, double G1);
+    /// The state and the quantities of the slide's events at tau after the start.
+    struct Point {
+        double u = 0, v = 0, q = 0, qd = 0;
+        FlexAccel a;  ///< Xdd = u'', qdd, F, N, NL, NR
+    };
+    Point at(double tau) const;
+
+private:
+    const FlexGeometry& g_;
+    double sigma_;
+    double u0_, q0_, qd0_, p0_, ax0_, ax1_, G0_, G1_;
 };
 
 /// Integrator state. Contact modes: (u, u', theta, theta', q, q', 0, 0) on the mode's edge

@@ -46,7 +46,7 @@ enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unloa
 class FlexEngine {
 public:
     FlexEngine(const FlexGeometry& g, const Options& o, double dt_s, FlexRecorder& rec)
-        : g_(g), o_(o), rec_(rec), full_step_(g, dt_s) {}
+        : g_(g), o_(o), rec_(rec), full_step_(g.held, dt_s) {}
 
     const FlexState& state() const { return x_; }
     const FlexMode& mode() const { return m_; }
@@ -57,7 +57,9 @@ public:
     double advance(const Segment& seg, double t, double tb) {
         seg_ = seg;
         tb_ = tb;
-        return m_.mode == Mode::rest ? advance_rest(t) : advance_ode(t);
+        if (m_.mode == Mode::rest) return advance_rest(t);
+        if (m_.mode == Mode::slide && g_.exact_slide) return advance_slide(t);
+        return advance_ode(t);
     }
 
     // The sample at time t, with the accelerations of the step that ended there if it did.
@@ -134,7 +136,7 @@ private:
             if (full && tt == tb_)
                 full_step_.apply(q, qd, b0.ax, seg_.ax1);
             else
-                oscillator_step(g_, q, qd, b0.ax, seg_.ax1, tt - t);
+                oscillator_step(g_.held, q, qd, b0.ax, seg_.ax1, tt - t);
             return std::pair<double, double>{q, qd};
         };
         auto margin_of = [&](double q, double qd, double tt) {
@@ -171,7 +173,7 @@ private:
 
     void step_rest(double t, double te) {
         double q = x_[4], qd = x_[5];
-        oscillator_step(g_, q, qd, seg_.at(t).ax, seg_.ax1, te - t);
+        oscillator_step(g_.held, q, qd, seg_.at(t).ax, seg_.ax1, te - t);
         commit_rest(t, te, q, qd);
     }
 
@@ -189,12 +191,12 @@ private:
             if (std::abs(A) + std::abs(B) * (te - t) + amp > rec_.modal_max()) {
                 auto rate = [&](double tt) {
                     double q = q0, qd = qd0;
-                    oscillator_step(g_, q, qd, a0, a1, tt - t);
+                    oscillator_step(g_.held, q, qd, a0, a1, tt - t);
                     return qd;
                 };
                 const double tp = toms748_root(rate, t, te, qd0, qd1);
                 double q = q0, qd = qd0;
-                oscillator_step(g_, q, qd, a0, a1, tp - t);
+                oscillator_step(g_.held, q, qd, a0, a1, tp - t);
                 rec_.modal_peak(q);
             }
         }
@@ -203,6 +205,69 @@ private:
         rec_.modal_peak(q1);
         rec_.time_in(Mode::rest, te - t);
         rec_.step();
+    }
+
+    // Flat sliding, exact (SlideSegment) to the segment's end or to the first event: the slip
+    // stopping (sigma u' reaching 0, also where it dips below 0 inside the segment) or an edge
+    // unloading, located by TOMS 748 on the exact solution.
+    double advance_slide(double t) {
+        const SlideSegment sl(g_, m_.sigma, x_, seg_.at(t), seg_.ax1, seg_.G1);
+        const double sg = static_cast<double>(m_.sigma), tau1 = tb_ - t;
+        const SlideSegment::Point p0 = sl.at(0.0), p1 = sl.at(tau1);
+        auto value = [&](Ev e, const SlideSegment::Point& p) {
+            return e == Ev::stop ? sg * p.v : e == Ev::unload_left ? p.a.NL : p.a.NR;
+        };
+        Ev first = Ev::none;
+        double tau_ev = tau1;
+        for (Ev e : {Ev::unload_left, Ev::unload_right, Ev::stop}) {
+            auto f = [&](double tau) { return value(e, sl.at(tau)); };
+            const double f0 = value(e, p0), f1 = value(e, p1);
+            bool hit = false;
+            double te = 0.0;
+            if (f1 < 0.0) {
+                hit = true;
+                if (f0 > 0.0) {
+                    te = toms748_root(f, 0.0, tau1, f0, f1);
+                } else if (f0 == 0.0) {  // a slip starting from 0: its next stop
+                    const double ta = 1e-6 * tau1, fa = f(ta);
+                    if (fa > 0.0) te = toms748_root(f, ta, tau1, fa, f1);
+                }
+            } else if (e == Ev::stop && f0 > 0.0 && sg * p0.a.Xdd < 0.0 && sg * p1.a.Xdd > 0.0) {
+                auto slope = [&](double tau) { return sg * sl.at(tau).a.Xdd; };
+                const double tm = toms748_root(slope, 0.0, tau1, sg * p0.a.Xdd, sg * p1.a.Xdd);
+                const double fm = f(tm);
+                if (fm < 0.0) {
+                    hit = true;
+                    te = toms748_root(f, 0.0, tm, f0, fm);
+                }
+            }
+            if (hit && (first == Ev::none || te < tau_ev)) {
+                first = e;
+                tau_ev = te;
+            }
+        }
+        const SlideSegment::Point pe = first == Ev::none ? p1 : sl.at(tau_ev);
+        if ((p0.qd > 0.0) != (pe.qd > 0.0) && p0.qd != 0.0 && tau_ev > 0.0) {
+            auto rate = [&](double tau) { return sl.at(tau).qd; };
+            rec_.modal_peak(sl.at(toms748_root(rate, 0.0, tau_ev, p0.qd, pe.qd)).q);
+        }
+        x_[0] = pe.u;
+        x_[1] = pe.v;
+        x_[4] = pe.q;
+        x_[5] = pe.qd;
+        rec_.observe(m_, x_);
+        rec_.time_in(Mode::slide, tau_ev);
+        rec_.step();
+        if (first == Ev::none) {
+            a_end_ = pe.a;
+            end_valid_ = true;
+            end_t_ = tb_;
+            return tb_;
+        }
+        const double te = t + tau_ev;
+        end_valid_ = false;
+        handle(first, te);
+        return te;
     }
 
     // Event functions of the mode, positive while it holds; a the accelerations at x.

@@ -163,6 +163,10 @@ FlexGeometry make_flex_geometry(const FlexibleModel& m) {
     g.zeta = m.damping;
     g.k = g.ms * g.omega * g.omega;
     g.c = 2.0 * g.zeta * g.ms * g.omega;
+    g.held = {g.omega, g.zeta};
+    const double root_kappa = std::sqrt(g.M / g.Mr);
+    g.sliding = {g.omega * root_kappa, g.zeta * root_kappa};
+    g.exact_slide = g.sliding.zeta < 1.0;
     g.b = {blk.b_left_m, blk.b_right_m};
     g.inv_width = 1.0 / (g.b[0] + g.b[1]);
     g.measured_restitution = m.rigid.restitution.has_value();

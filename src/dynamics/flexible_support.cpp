@@ -7,13 +7,13 @@
 
 namespace freestand::dynamics::detail {
 
-void oscillator_step(const FlexGeometry& g, double& q, double& qd, double a0, double a1,
+void oscillator_step(const Oscillator& osc, double& q, double& qd, double a0, double a1,
                      double tau) {
-    OscillatorStep(g, tau).apply(q, qd, a0, a1);
+    OscillatorStep(osc, tau).apply(q, qd, a0, a1);
 }
 
-OscillatorStep::OscillatorStep(const FlexGeometry& g, double tau_s) : tau(tau_s) {
-    const double w = g.omega, z = g.zeta;
+OscillatorStep::OscillatorStep(const Oscillator& osc, double tau_s) : tau(tau_s) {
+    const double w = osc.omega, z = osc.zeta;
     w2_ = w * w;
     inv_w2_ = 1.0 / w2_;
     two_zw_ = 2.0 * z * w;
@@ -31,6 +31,38 @@ void OscillatorStep::apply(double& q, double& qd, double a0, double a1) const {
     const double y0 = q - A, yd0 = qd - B;
     q = A + B * tau + e_ * (y0 * c_ + (yd0 + sig_ * y0) * s_);
     qd = B + e_ * (yd0 * c_ - (sig_ * yd0 + w2_ * y0) * s_);
+}
+
+SlideSegment::SlideSegment(const FlexGeometry& g, int sigma, const std::array<double, 8>& x,
+                           Base b0, double ax1, double G1)
+    : g_(g), sigma_(static_cast<double>(sigma)), u0_(x[0]), q0_(x[4]), qd0_(x[5]),
+      p0_(g.M * x[1] + g.ms * x[5]), ax0_(b0.ax), ax1_(ax1), G0_(b0.G), G1_(G1) {}
+
+SlideSegment::Point SlideSegment::at(double tau) const {
+    const FlexGeometry& g = g_;
+    const double smu = sigma_ * g.rigid.mu_k, kappa = g.M / g.Mr;
+    Point p;
+    p.q = q0_;
+    p.qd = qd0_;
+    oscillator_step(g.sliding, p.q, p.qd, -smu * kappa * G0_, -smu * kappa * G1_, tau);
+    const double t2 = tau * tau / 2.0, t3 = tau * tau * tau / 6.0;
+    const double P = p0_ - g.M * (ax0_ * tau + ax1_ * t2) - smu * g.M * (G0_ * tau + G1_ * t2);
+    p.v = (P - g.ms * p.qd) / g.M;
+    p.u = u0_ + (p0_ * tau - g.M * (ax0_ * t2 + ax1_ * t3) - smu * g.M * (G0_ * t2 + G1_ * t3) -
+                 g.ms * (p.q - q0_)) / g.M;
+    const double ax = ax0_ + ax1_ * tau, G = G0_ + G1_ * tau;
+    const double spring = g.k * p.q + g.c * p.qd;
+    FlexAccel& a = p.a;
+    a.N = g.M * G;
+    a.F = -smu * a.N;
+    a.Xdd = -ax + (spring + a.F) / g.Mr;
+    a.qdd = -spring / g.ms - ax - a.Xdd;
+    // Moment about O of the remainder at (0, h_r) and the modal mass at (q, h_s) under their
+    // accelerations and the base frame's gravity (0, -G) and inertia (-xg'', 0).
+    const double mo = -g.Mr * g.hr * (a.Xdd + ax) + g.ms * (p.q * G - g.hs * (a.Xdd + a.qdd + ax));
+    a.NR = (a.N * g.b[0] + mo) * g.inv_width;
+    a.NL = (a.N * g.b[1] - mo) * g.inv_width;
+    return p;
 }
 
 Pose pose_of(const FlexGeometry& g, const FlexMode& m, const FlexState& x) {

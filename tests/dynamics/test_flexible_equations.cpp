@@ -2,7 +2,8 @@
 // s.10): an impact conserves the angular momentum about the struck edge and, for a mode slow
 // against the contact pulse, the modal mass's velocity along the body; it never creates
 // kinetic energy; a mode much faster than the pulse moves with the base (the rigid block's
-// restitution). The structured solve of the equations against the full system.
+// restitution). The structured solve of the equations against the full system; the exact flat
+// slide against the equations and against Dormand-Prince.
 #include <catch2/catch.hpp>
 #include <Eigen/Dense>
 #include <cmath>
@@ -236,4 +237,66 @@ TEST_CASE("the flexible body's structured solve matches the full system", "[dyna
             CHECK(a.F == Approx(r.F).margin(1e-10 * g.M * scale));
         }
     }
+}
+
+TEST_CASE("the exact flat slide solves the slide's equations", "[dynamics][flexible]") {
+    const FlexGeometry g = make_flex_geometry(model(7.5));
+    REQUIRE(g.exact_slide);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> v(-0.5, 0.5), q(-0.01, 0.01), ax(-6.0, 6.0),
+        slope(-200.0, 200.0), G(5.0, 14.0);
+    for (int i = 0; i < 50; ++i) {
+        const int sigma = i % 2 == 0 ? 1 : -1;
+        const FlexState x = {0.02, v(rng), 0.0, 0.0, q(rng), v(rng), 0.0, 0.0};
+        const Base b0{ax(rng), G(rng)};
+        const double ax1 = slope(rng), G1 = slope(rng);
+        const SlideSegment sl(g, sigma, x, b0, ax1, G1);
+        INFO("case " << i);
+        // At its start: the state, and the accelerations and edge forces of flex_accel.
+        const auto p = sl.at(0.0);
+        const FlexAccel a = flex_accel(g, {dynamics::Mode::slide, sigma, sigma},
+                                       contact_pose(g, 1, x[0], x[1], 0.0, 0.0, x[4], x[5]), b0);
+        CHECK(p.u == x[0]);
+        CHECK(p.v == Approx(x[1]).margin(1e-15));
+        CHECK(p.a.Xdd == Approx(a.Xdd).margin(1e-10));
+        CHECK(p.a.qdd == Approx(a.qdd).margin(1e-10));
+        CHECK(p.a.NL == Approx(a.NL).epsilon(1e-10).margin(1e-8));
+        CHECK(p.a.NR == Approx(a.NR).epsilon(1e-10).margin(1e-8));
+        // Inside the segment: u' and u'' are the derivatives of u and u' (central differences,
+        // truncation ~h^2 u'''').
+        const double tau = 0.003, h = 1e-5;
+        const auto m = sl.at(tau), lo = sl.at(tau - h), hi = sl.at(tau + h);
+        CHECK((hi.u - lo.u) / (2.0 * h) == Approx(m.v).margin(1e-7));
+        CHECK((hi.v - lo.v) / (2.0 * h) == Approx(m.a.Xdd).margin(1e-5));
+        CHECK((hi.qd - lo.qd) / (2.0 * h) == Approx(m.a.qdd).margin(1e-5));
+        const Base bt{b0.ax + ax1 * tau, b0.G + G1 * tau};
+        const FlexAccel at = flex_accel(g, {dynamics::Mode::slide, sigma, sigma},
+                                        contact_pose(g, 1, m.u, m.v, 0.0, 0.0, m.q, m.qd), bt);
+        CHECK(m.a.Xdd == Approx(at.Xdd).margin(1e-10));
+        CHECK(m.a.qdd == Approx(at.qdd).margin(1e-10));
+    }
+}
+
+TEST_CASE("the exact flat slide agrees with Dormand-Prince on the slide's equations",
+          "[dynamics][flexible]") {
+    // A sliding body (mu 0.2 < tan(alpha)) stopping and reversing under a 0.5 g, 2 Hz sine.
+    const auto rigid = dynamics::make_block_model(block::Block::uniform(0.4, 0.6, 1000.0), 0.2);
+    dynamics::FlexibleMode mode;
+    mode.frequency_hz = 7.5;
+    FlexGeometry g = make_flex_geometry(dynamics::make_flexible_model(rigid, mode));
+    const auto e = dynamics::sine_excitation({0.5, 2.0, 2.0, 0.0, 0.0});
+    dynamics::Options o;
+    o.tail_s = 2.0;
+    o.record_series = false;
+    const BaseMotion bm(e, o.g_mps2);
+    REQUIRE(g.exact_slide);
+    const auto exact = run_flexible_event(g, bm, o).summary;
+    g.exact_slide = false;
+    const auto stepped = run_flexible_event(g, bm, o).summary;
+    REQUIRE(exact.base.slide_max_m > 0.05);
+    CHECK_FALSE(exact.uplifted);
+    CHECK(exact.base.slide_max_m == Approx(stepped.base.slide_max_m).epsilon(1e-7));
+    CHECK(exact.base.slide_residual_m == Approx(stepped.base.slide_residual_m).epsilon(1e-7));
+    CHECK(exact.modal_max_m == Approx(stepped.modal_max_m).epsilon(1e-7));
+    CHECK(exact.base.mode_changes == stepped.base.mode_changes);
 }
