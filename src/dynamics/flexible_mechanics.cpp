@@ -130,10 +130,63 @@ bool solve_small(const std::array<std::array<double, 3>, 3>& K, std::array<doubl
     return true;
 }
 
+// Rocking on the pivot at rc from O: its acceleration vanishes, (X'', Y'') = phi'^2 rc -
+// J rc phi'', so a = c + J (phi'', q'') and, the pivot's force doing no work along J,
+// (J^T A J) (phi'', q'') = J^T (f - A c): two unknowns. The pivot's force (F, N) from the
+// translation rows, A_0,1 . a - f_0,1. A: upper triangle.
+FlexAccel rock_by_projection(const Mat4& A, const std::array<double, 4>& f, Vec2 rc, double w2) {
+    const auto sym = [&](std::size_t i, std::size_t j) { return i <= j ? A[i][j] : A[j][i]; };
+    const Vec2 jr = perp(rc);
+    const std::array<double, 4> c = {w2 * rc[0], w2 * rc[1], 0.0, 0.0};
+    const std::array<double, 4> jphi = {-jr[0], -jr[1], 1.0, 0.0};
+    std::array<double, 4> r{}, ajphi{};  // f - A c, A J_phi
+    for (std::size_t i = 0; i < 4; ++i) {
+        r[i] = f[i] - sym(i, 0) * c[0] - sym(i, 1) * c[1];
+        ajphi[i] = sym(i, 0) * jphi[0] + sym(i, 1) * jphi[1] + sym(i, 2);
+    }
+    // J^T A J = [[jphi . A jphi, A jphi . e_q], [., A_qq]]; J^T r = [jphi . r, r_q].
+    const double k00 = dot4(jphi, ajphi), k01 = ajphi[3], k11 = A[3][3];
+    const double r0 = dot4(jphi, r), r1 = r[3];
+    const double det = k00 * k11 - k01 * k01;
+    if (!(det > 0.0))
+        throw NumericalError("flexible-body equations: the rocking mass matrix is not positive definite");
+    FlexAccel a;
+    a.phidd = (r0 * k11 - k01 * r1) / det;
+    a.qdd = (k00 * r1 - k01 * r0) / det;
+    a.Xdd = c[0] + jphi[0] * a.phidd;
+    a.Ydd = c[1] + jphi[1] * a.phidd;
+    const std::array<double, 4> acc = {a.Xdd, a.Ydd, a.phidd, a.qdd};
+    a.F = sym(0, 0) * acc[0] + sym(0, 1) * acc[1] + sym(0, 2) * acc[2] + sym(0, 3) * acc[3] - f[0];
+    a.N = sym(1, 0) * acc[0] + sym(1, 1) * acc[1] + sym(1, 2) * acc[2] + sym(1, 3) * acc[3] - f[1];
+    return a;
+}
+
 // A contact force lambda d applied at body point pc (rotated: rc).
 struct ForceCol {
     Vec2 rc{}, d{};
 };
+
+// The NF contact forces lambda of (C A^-1 D) lambda = gamma - C A^-1 f, with acc = A^-1 f on
+// entry and A^-1 (f + D lambda) on return; false if the contact system is singular.
+template <std::size_t NF>
+bool contact_forces(const MassSolve& mass, const std::array<ForceCol, 3>& fc,
+                    const std::array<std::array<double, 4>, 3>& C, const std::array<double, 3>& gamma,
+                    std::array<double, 4>& acc, std::array<double, 3>& lambda) {
+    std::array<std::array<double, 4>, NF> y;  // A^-1 D_j
+    for (std::size_t j = 0; j < NF; ++j) {
+        y[j] = {fc[j].d[0], fc[j].d[1], cross(fc[j].rc, fc[j].d), 0.0};
+        mass.solve(y[j]);
+    }
+    std::array<std::array<double, 3>, 3> K;
+    for (std::size_t i = 0; i < NF; ++i) {
+        lambda[i] = gamma[i] - dot4(C[i], acc);
+        for (std::size_t j = 0; j < NF; ++j) K[i][j] = dot4(C[i], y[j]);
+    }
+    if (!solve_small(K, lambda, NF)) return false;
+    for (std::size_t j = 0; j < NF; ++j)
+        for (std::size_t i = 0; i < 4; ++i) acc[i] += y[j][i] * lambda[j];
+    return true;
+}
 
 }  // namespace
 
@@ -252,6 +305,7 @@ FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Ba
             C[2][2] = 1.0;
             break;
     }
+    if (m.mode == Mode::rock) return rock_by_projection(A, f, edge_r(m.s), w2);
     // A a - D lambda = f, C a = gamma: a = A^-1 (f + D lambda), (C A^-1 D) lambda = gamma -
     // C A^-1 f.
     MassSolve mass;
@@ -259,21 +313,13 @@ FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Ba
         throw NumericalError("flexible-body equations: the mass matrix is not positive definite");
     std::array<double, 4> acc = f;
     mass.solve(acc);
-    std::array<std::array<double, 4>, 3> y{};  // A^-1 D_j
-    for (std::size_t j = 0; j < nf; ++j) {
-        y[j] = {fc[j].d[0], fc[j].d[1], cross(fc[j].rc, fc[j].d), 0.0};
-        mass.solve(y[j]);
-    }
-    std::array<std::array<double, 3>, 3> K;
     std::array<double, 3> lambda{};
-    for (std::size_t i = 0; i < nf; ++i) {
-        lambda[i] = gamma[i] - dot4(C[i], acc);
-        for (std::size_t j = 0; j < nf; ++j) K[i][j] = dot4(C[i], y[j]);
-    }
-    if (!solve_small(K, lambda, nf))
+    const bool ok = nf == 0   ? true
+                    : nf == 1 ? contact_forces<1>(mass, fc, C, gamma, acc, lambda)
+                    : nf == 2 ? contact_forces<2>(mass, fc, C, gamma, acc, lambda)
+                              : contact_forces<3>(mass, fc, C, gamma, acc, lambda);
+    if (!ok)
         throw NumericalError("flexible-body equations: the contact forces are indeterminate");
-    for (std::size_t j = 0; j < nf; ++j)
-        for (std::size_t i = 0; i < 4; ++i) acc[i] += y[j][i] * lambda[j];
     FlexAccel a;
     a.Xdd = acc[0];
     a.Ydd = acc[1];
