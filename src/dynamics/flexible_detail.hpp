@@ -80,8 +80,19 @@ struct FlexAccel {
 FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
 
 /// Rest (base held flat, docs/methods.md s.2 generalised): the modal equation and the base
-/// reactions in closed form, F = M xg'' + m_s q'', N = M G and the moment about O.
-FlexAccel rest_accel(const FlexGeometry& g, double q, double qd, Base base);
+/// reactions in closed form, F = M xg'' + m_s q'', N = M G and the moment about O (inline: once
+/// per input sample of a resting record).
+inline FlexAccel rest_accel(const FlexGeometry& g, double q, double qd, Base base) {
+    FlexAccel a;
+    a.qdd = -base.ax - 2.0 * g.zeta * g.omega * qd - g.omega * g.omega * q;
+    a.F = g.M * base.ax + g.ms * a.qdd;
+    a.N = g.M * base.G;
+    // Moment about O: N_R b_R - N_L b_L = -m_s h_s q'' + G m_s q - xg'' M h.
+    const double mo = -g.ms * g.hs * a.qdd + base.G * g.ms * q - base.ax * g.Mh;
+    a.NR = (a.N * g.b[0] + mo) * g.inv_width;
+    a.NL = (a.N * g.b[1] - mo) * g.inv_width;
+    return a;
+}
 /// Rest holds: |F| <= mu_s N, both edges pressed (NL, NR >= 0) and G >= 0.
 inline double rest_margin(const FlexGeometry& g, const FlexAccel& a, Base base) {
     double m = g.rigid.mu_s * a.N - std::abs(a.F);

@@ -46,7 +46,7 @@ enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unloa
 class FlexEngine {
 public:
     FlexEngine(const FlexGeometry& g, const Options& o, double dt_s, FlexRecorder& rec)
-        : g_(g), o_(o), rec_(rec), full_step_(g.held, dt_s) {}
+        : g_(g), o_(o), rec_(rec), full_step_(g.held, dt_s), g_mps2_(o.g_mps2) {}
 
     const FlexState& state() const { return x_; }
     const FlexMode& mode() const { return m_; }
@@ -78,6 +78,34 @@ public:
 
     bool settled(double g_mps2) const {
         return m_.mode == Mode::rest && settled_for_good(g_, x_[4], x_[5], g_mps2);
+    }
+
+    // The hot loop of long records: whole input segments from k at rest while the rest
+    // inequalities hold at their ends, each with its sample, as advance() and sample() would
+    // take them. Returns the first segment not taken (n_seg, or the one where rest fails or the
+    // body has settled for good: then settled_at is its end).
+    std::size_t rest_run(const BaseMotion& bm, std::size_t k, std::size_t n_seg, double& settled_at) {
+        if (m_.mode != Mode::rest || bm.t_k(k) < hold_until_) return k;
+        const double min_end = bm.min_end_s();
+        for (; k < n_seg; ++k) {
+            bm.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
+            seg_.tk = bm.t_k(k);
+            tb_ = bm.t_k(k + 1);
+            if (std::abs(tb_ - seg_.tk - full_step_.tau) > 1e-9 * full_step_.tau) return k;
+            double q = x_[4], qd = x_[5];
+            full_step_.apply(q, qd, seg_.ax0, seg_.ax1);
+            const Base b = seg_.at(tb_);
+            const FlexAccel a = rest_accel(g_, q, qd, b);
+            if (rest_margin(g_, a, b) < 0.0) return k;
+            commit_rest(seg_.tk, tb_, q, qd);
+            const Base bs = bm.sample(k + 1);
+            rec_.sample(tb_, m_, x_, bs.ax + a.qdd);
+            if (tb_ >= min_end && settled_for_good(g_, q, qd, g_mps2_)) {
+                settled_at = tb_;
+                return k + 1;
+            }
+        }
+        return k;
     }
 
 private:
@@ -496,6 +524,7 @@ private:
     const Options& o_;
     FlexRecorder& rec_;
     const OscillatorStep full_step_;  // the rest phase's whole input step
+    const double g_mps2_;
     Stepper dp_;
     Segment seg_;
     double tb_ = 0.0;
@@ -531,6 +560,13 @@ FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, c
     engine.sample(0.0, bm.sample(0));
     double t_end = bm.t_k(n_seg);
     for (std::size_t k = 0; k < n_seg; ++k) {
+        double settled_at = -1.0;
+        k = engine.rest_run(bm, k, n_seg, settled_at);
+        if (settled_at >= 0.0) {
+            t_end = settled_at;
+            break;
+        }
+        if (k == n_seg) break;
         const Segment s = segment(k);
         const double tb = bm.t_k(k + 1);
         for (double t = bm.t_k(k); t < tb && !rec.overturned();) t = engine.advance(s, t, tb);

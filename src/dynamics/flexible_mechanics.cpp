@@ -339,18 +339,6 @@ FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Ba
     return a;
 }
 
-FlexAccel rest_accel(const FlexGeometry& g, double q, double qd, Base base) {
-    FlexAccel a;
-    a.qdd = -base.ax - 2.0 * g.zeta * g.omega * qd - g.omega * g.omega * q;
-    a.F = g.M * base.ax + g.ms * a.qdd;
-    a.N = g.M * base.G;
-    // Moment about O: N_R b_R - N_L b_L = -m_s h_s q'' + G m_s q - xg'' M h.
-    const double mo = -g.ms * g.hs * a.qdd + base.G * g.ms * q - base.ax * g.Mh;
-    a.NR = (a.N * g.b[0] + mo) * g.inv_width;
-    a.NL = (a.N * g.b[1] - mo) * g.inv_width;
-    return a;
-}
-
 Pose contact_pose(const FlexGeometry& g, int s, double u, double v, double th, double om,
                   double q, double qd) {
     Pose p;
