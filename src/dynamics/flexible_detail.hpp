@@ -76,7 +76,8 @@ struct FlexAccel {
 /// the modal mass along the body's x axis: m_s a_s . e1 = -k q - c q' + forces . e1) with the
 /// mode's contact forces and constraints: M a - D lambda = f, C a = gamma (a the four pose
 /// accelerations, lambda the contact forces), solved through the 4 x 4 mass matrix M and the
-/// at most 3 x 3 system C M^-1 D lambda = gamma - C M^-1 f.
+/// at most 3 x 3 system C M^-1 D lambda = gamma - C M^-1 f; rocking by projection on the
+/// pivot's null space (two unknowns).
 FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
 
 /// Rest (base held flat, docs/methods.md s.2 generalised): the modal equation and the base
