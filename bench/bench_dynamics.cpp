@@ -9,8 +9,11 @@
 // units joined by a tunnel (dynamics::simulate_pair): time against the two planar runs and the
 // peak relative displacement's error at 1, 4 and 16 samples per input step against 64, and of
 // the pair of central-difference runs at 1e-4 and 1e-5 s.
-// Last, biaxial sliding (issue 15; biaxial_rows.hpp): El Centro 140 as x and 230 as y, and the
-// histories of cases/glovebox-single.toml, each against the planar run of its x component.
+// The flexible body (issue 15; flexible_rows.hpp): event-driven and central difference against
+// the model's own converged reference and the planar run. Last, biaxial sliding (issue 15;
+// biaxial_rows.hpp): El Centro 140 as x and 230 as y, and the histories of
+// cases/glovebox-single.toml, each against the planar run of its x component.
+// `bench_dynamics flexible` runs the flexible rows alone.
 #include <algorithm>
 #include <array>
 #include <string>
@@ -29,6 +32,7 @@
 #include "dynamics/simulate.hpp"
 #include "dynamics/taylor.hpp"
 #include "biaxial_rows.hpp"
+#include "flexible_rows.hpp"
 #include "timing.hpp"
 
 using namespace freestand;
@@ -205,63 +209,21 @@ void pair_rows(const core::Record& rec, const char* label, double pga_g,
     }
 }
 
-// The flexible body (docs/methods.md s.10): each case's block carrying a 7.5 Hz mode (damping
-// 0.02, cantilever defaults), plus the rock block at 0.2 g (below g tan(alpha) = 0.5 g: only
-// the flexible body uplifts). Error against its own reference (Dormand-Prince at rel_tol 1e-12)
-// on the peak slip, rotation and modal displacement; time against the planar rigid run of the
-// same block and record. No central-difference flexible integrator exists to compare with.
-void flexible_rows(const core::Record& rec, const Case* cases, std::size_t n) {
-    std::printf("\nflexible body, 7.5 Hz mode (Dormand-Prince 5(4); rest exact)\n"
-                "%-11s %-15s %12s %12s %10s %10s %12s\n",
-                "case", "integrator", "cpu_s", "rel_error", "steps", "uplifted", "flex/planar");
-    std::vector<Case> all(cases, cases + n);
-    all.push_back({"rock 0.2g", 0.3, 0.2, 0.6});
-    for (const Case& c : all) {
-        const SetUp u = set_up(c, rec);
-        dynamics::FlexibleMode mode;
-        mode.frequency_hz = 7.5;
-        const dynamics::FlexibleModel fm = dynamics::make_flexible_model(u.m, mode);
-        auto tight = u.o;
-        tight.rel_tol = 1e-12;
-        tight.abs_tol = 1e-14;
-        const dynamics::FlexibleSummary ref = dynamics::simulate_flexible(fm, u.e, tight).summary;
-        const auto rel = [](double a, double b) { return b > 0.0 ? std::abs(a - b) / b : 0.0; };
-        double planar_s = 1e9;
-        for (int r = 0; r < 10; ++r) {
-            const double t0 = thread_cpu_s();
-            (void)dynamics::simulate(u.m, u.e, u.o);
-            planar_s = std::min(planar_s, thread_cpu_s() - t0);
-        }
-        for (double tol : {1e-9, 1e-6}) {
-            auto o = u.o;
-            o.rel_tol = tol;
-            o.abs_tol = tol * 1e-2;
-            double best = 1e9;
-            dynamics::FlexibleSummary s;
-            for (int r = 0; r < 5; ++r) {
-                const double t0 = thread_cpu_s();
-                s = dynamics::simulate_flexible(fm, u.e, o).summary;
-                best = std::min(best, thread_cpu_s() - t0);
-            }
-            const double err = std::max({rel(s.base.slide_max_m, ref.base.slide_max_m),
-                                         rel(s.base.rock_max_rad, ref.base.rock_max_rad),
-                                         rel(s.modal_max_m, ref.modal_max_m)});
-            std::printf("%-11s %-15s %12.3e %12.3e %10zu %10s %11.1fx\n", c.name,
-                        tol == 1e-9 ? "flex tol 1e-9" : "flex tol 1e-6", best, err, s.base.steps,
-                        s.uplifted ? "yes" : "no", best / planar_s);
-        }
-    }
-}
-
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    // An argument names one section to run alone: "flexible" (the flexible-body rows).
+    const std::string_view only = argc > 1 ? argv[1] : "";
     auto rec = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
     rec.accel_mps2.resize(static_cast<std::size_t>(20.0 / rec.dt_s) + 1);
     // Slide: tan(alpha) = 0.25 > mu. Rock and slide-rock: tan(alpha) = 0.5; mu = 0.525 lies
     // between tan(alpha) and mu_crit at the peaks, so the block slide-rocks for ~0.3 s.
     const Case cases[] = {{"slide", 0.15, 0.5, 0.15}, {"rock", 0.3, 0.9, 0.6},
                           {"slide-rock", 0.3, 0.9, 0.525}};
+    if (only == "flexible") {
+        bench::flexible_rows(rec);
+        return 0;
+    }
     std::printf("%-11s %-15s %12s %12s %10s %8s\n", "case", "integrator", "cpu_s", "rel_error",
                 "steps", "speedup");
     double floor_ratio = 0.0;
@@ -308,7 +270,7 @@ int main() {
     }
     std::printf("\nrock: central difference at 1e-4 s over the kernel chain alone: %.1fx\n",
                 floor_ratio);
-    flexible_rows(rec, cases, std::size(cases));
+    bench::flexible_rows(rec);
     // The same cases on the record decimated to 0.01 and 0.02 s (every 2nd or 4th sample; the
     // content changes, as on a coarser recording): the event-driven integrator's contact steps end
     // at every sample, so it takes 2 or 4 times fewer, while central difference at 1e-4 s still

@@ -176,9 +176,8 @@ int run(const std::vector<std::string>& args) {
     require_positive(opt.cd_dt_s, {"", 0, "--dt"});
     opt.record_series = vm->count("out") > 0;
     if (pair_requested(*vm)) require_pair_options(*vm);
-    if (vm->count("flexible") && (biaxial || pair_requested(*vm) || integ != "event"))
-        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit) "
-                         "with --integrator event");
+    if (vm->count("flexible") && (biaxial || pair_requested(*vm)))
+        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit)");
     if (biaxial) return run_biaxial_simulation(*vm, blk, opt);
     const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
     const dynamics::Excitation exc =

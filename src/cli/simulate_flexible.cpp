@@ -12,11 +12,11 @@ namespace {
 
 std::string series_csv(const dynamics::FlexibleResult& r, const std::string& label) {
     std::string out = fmt::format(
-        "# freestand simulate (flexible body): event integrator, excitation {}\n"
+        "# freestand simulate (flexible body): {} integrator, excitation {}\n"
         "# units: time s, slide m (contact point relative to the base), rotation rad (+ on the "
         "right edge), modal displacement m (relative to the base, along the body)\n"
         "time_s,slide_m,rotation_rad,modal_m,mode\n",
-        label);
+        r.summary.base.integrator, label);
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slide_m,
                            s.rotation_rad, s.modal_m, dynamics::mode_name(s.mode));
@@ -85,6 +85,7 @@ int run_flexible_simulation(const po::variables_map& vm, const dynamics::BlockMo
     }
     std::cout << fmt::format(
         "model                 flexible body: f {} Hz, zeta {}, modal mass {} M at {:.4g} m\n"
+        "integrator            {}\n"
         "base uplifted         {}\n"
         "peak modal drift      {:.4g} m = {:.4g} of the modal height\n"
         "peak modal accel      {:.4g} g (PGA {:.4g} g)\n"
@@ -94,7 +95,8 @@ int run_flexible_simulation(const po::variables_map& vm, const dynamics::BlockMo
         "impacts               {}\n"
         "wall time             {:.4g} s\n",
         model.frequency_hz, model.damping, model.mass_fraction, model.height_m,
-        s.uplifted ? "yes" : "no", s.modal_max_m, s.modal_drift_max, s.modal_accel_max_g,
+        s.base.integrator, s.uplifted ? "yes" : "no", s.modal_max_m, s.modal_drift_max,
+        s.modal_accel_max_g,
         s.base.pga_g, s.base.slide_max_m, s.base.slide_residual_m, s.base.rock_max_rad,
         s.base.rock_max_over_alpha,
         s.base.overturned ? fmt::format("yes, at {:.4f} s", *s.base.overturn_time_s) : "no",

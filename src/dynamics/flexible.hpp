@@ -28,6 +28,10 @@ inline constexpr double cantilever_modal_mass_fraction = 0.613;
 inline constexpr double cantilever_modal_height_ratio = 0.726;
 /// Modal damping when none is given (steel equipment, ASCE 4 / RG 1.61 welded steel: 2%).
 inline constexpr double default_modal_damping = 0.02;
+/// Duration of an impact's contact pulse, s: about 0.1 ms for a steel or concrete contact (the
+/// impact time Options::flat_landing_window_s also assumes). A mode much slower than it keeps
+/// its momentum through an impact, one much faster follows the base (docs/methods.md s.10).
+inline constexpr double default_impact_duration_s = 1e-4;
 
 /// The elastic mode. Unset mass and height take the cantilever defaults above with the body's
 /// height taken as 2 h (a uniform body).
@@ -47,6 +51,10 @@ struct FlexibleModel {
     double height_m = 0.0;
     bool mass_fraction_default = false;  ///< mass_fraction came from the cantilever default
     bool height_default = false;         ///< height_m came from the cantilever default
+    /// Duration of an impact's contact pulse (a half-sine), s: the mode keeps the share of its
+    /// momentum an oscillator keeps through such a pulse (1 for a mode much slower than it, 0
+    /// for one much faster: the rigid block's impact).
+    double impact_duration_s = default_impact_duration_s;
 };
 
 /// Validates the mode against the block. Throws InputError naming the field ("flexible.f",
@@ -63,7 +71,7 @@ struct FlexibleSummary {
     double modal_drift_max = 0.0;     ///< peak |q| / h_s
     double modal_accel_max_g = 0.0;   ///< peak |absolute horizontal acceleration| of m_s, g
     bool uplifted = false;            ///< the base left flat contact (rock, slide-rock, flight)
-    std::size_t rejected_steps = 0;   ///< Dormand-Prince steps the error control rejected
+    std::size_t rejected_steps = 0;   ///< Dormand-Prince steps the error control rejected (event)
 };
 
 /// One output sample (at the excitation's sample times, continued through the tail).
@@ -82,13 +90,18 @@ struct FlexibleResult {
 };
 
 /// Simulates the body from rest (q = q' = 0) at t = 0 until the excitation's end +
-/// Options::tail_s (earlier once the base is at rest and the mode has decayed below abs_tol
-/// after the excitation, or at overturning, theta = pi/2). Rest is stepped exactly (the linear
-/// oscillator under piecewise-linear input, Nigam & Jennings 1969); the other modes by
-/// Boost.Odeint's controlled Dormand-Prince 5(4) with steps ending at every input sample.
-/// Uses of Options: rel_tol, abs_tol, max_contact_step_s, settle_rebound_rad, tail_s,
-/// record_series, g_mps2 (initial_rotation_rad and initial_slide_velocity_mps must be 0, the
-/// integrator event). Throws InputError for those, NumericalError when the step collapses.
+/// Options::tail_s (earlier once the base is at rest after the excitation with a mode too small
+/// ever to unsettle it, or at overturning, theta = pi/2). Options::integrator event: rest is
+/// stepped exactly (the linear oscillator under piecewise-linear input, Nigam & Jennings 1969),
+/// the other modes by Dormand-Prince 5(4) with error control (dopri5.hpp) with steps ending at
+/// every input sample and events located on its continuous extension; central_difference: the
+/// planar baseline's fixed-step scheme at Options::cd_dt_s (docs/methods.md s.10). An impact
+/// conserves the angular momentum about the struck edge (or multiplies theta' by a measured
+/// restitution) and the mode keeps the share FlexibleModel::impact_duration_s gives of its
+/// momentum (flexible_detail.hpp). Uses of Options: integrator, cd_dt_s, rel_tol, abs_tol,
+/// max_contact_step_s, settle_rebound_rad, settle_interval_s, flat_landing_window_s, tail_s,
+/// record_series, g_mps2 (initial_rotation_rad and initial_slide_velocity_mps must be 0).
+/// Throws InputError for those, NumericalError when the step collapses.
 FlexibleResult simulate_flexible(const FlexibleModel& model, const Excitation& excitation,
                                  const Options& options = {});
 

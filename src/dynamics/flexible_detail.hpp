@@ -1,11 +1,21 @@
 #pragma once
-/// Internal: equations of motion of the flexible body (flexible.hpp) in each contact mode.
+/// Internal: equations of motion of the flexible body (flexible.hpp) in each contact mode, its
+/// impact and landing rules and the bookkeeping its two integrators (flexible_event.cpp,
+/// flexible_cd.cpp) share.
 #include <array>
+#include <cmath>
 
 #include "dynamics/flexible.hpp"
+#include "dynamics/integrators.hpp"
 #include "dynamics/mechanics.hpp"
 
 namespace freestand::dynamics::detail {
+
+/// A damped linear oscillator: circular frequency omega (rad/s), damping ratio zeta in [0, 1).
+struct Oscillator {
+    double omega = 0.0;
+    double zeta = 0.0;
+};
 
 /// Constants of the split body. Body frame: origin O on the base plane below the CG, x along
 /// the base to the right, y up; edges at (-b_L, 0) and (b_R, 0); the rigid remainder's CG at
@@ -14,9 +24,25 @@ struct FlexGeometry {
     Geometry rigid;  ///< the whole block as the rigid model sees it (restitution, alpha, mu)
     double M = 0.0, Mr = 0.0, ms = 0.0, hr = 0.0, Ir = 0.0, hs = 0.0, Mh = 0.0;
     double omega = 0.0, zeta = 0.0, k = 0.0, c = 0.0;
+    /// The mode on the held base (omega, zeta) and against the flat-sliding remainder
+    /// (omega sqrt(M / M_r), zeta sqrt(M / M_r)); exact_slide when the latter is underdamped.
+    Oscillator held, sliding;
+    bool exact_slide = false;
     std::array<double, 2> b{};  ///< [0] left, [1] right half-widths
+    double inv_width = 0.0;     ///< 1 / (b_L + b_R)
+    /// The restitution was measured (BlockModel::restitution): an impact multiplies theta' by
+    /// it; otherwise angular momentum about the striking edge is conserved.
+    bool measured_restitution = false;
+    /// Share of a base velocity change at an impact that the mode does not follow (the modal
+    /// mass keeps its velocity): impact_modal_share(omega T), T the model's impact duration.
+    double modal_free = 1.0;
 };
 FlexGeometry make_flex_geometry(const FlexibleModel& m);
+
+/// The velocity an undamped oscillator of frequency omega keeps vibrating with after a
+/// half-sine pulse of duration T, per unit of the pulse's velocity change, x = omega T: 1 for
+/// x -> 0 (a slow mode does not follow the pulse), ~ (pi / x)^2 for x >> pi (a fast one does).
+double impact_modal_share(double x);
 
 /// Mode of the base with its edge s (rock, slide-rock) and slip direction sigma.
 struct FlexMode {
@@ -26,10 +52,19 @@ struct FlexMode {
 };
 
 /// Pose of the body relative to the moving base frame: O's position (X, Y), rotation phi
-/// (counter-clockwise), modal coordinate q, and their rates.
+/// (counter-clockwise), modal coordinate q, and their rates; cphi and sphi are cos(phi) and
+/// sin(phi), set with phi (contact_pose, pose_of, with_phi) so the equations need not repeat
+/// the trigonometry.
 struct Pose {
     double X = 0, Y = 0, phi = 0, q = 0, Xd = 0, Yd = 0, phid = 0, qd = 0;
+    double cphi = 1.0, sphi = 0.0;
 };
+/// The pose's phi and its cosine and sine.
+inline void with_phi(Pose& p, double phi) {
+    p.phi = phi;
+    p.cphi = std::cos(phi);
+    p.sphi = std::sin(phi);
+}
 
 /// Accelerations of the pose and the base reactions (F horizontal, N vertical, on the body);
 /// NL, NR the normal forces at the left and right edges in the flat modes.
@@ -39,12 +74,26 @@ struct FlexAccel {
 
 /// Newton-Euler equations of the two bodies (linear and angular momentum of the whole about O,
 /// the modal mass along the body's x axis: m_s a_s . e1 = -k q - c q' + forces . e1) with the
-/// mode's contact constraints, one linear system (at most 7 x 7) per call.
+/// mode's contact forces and constraints: M a - D lambda = f, C a = gamma (a the four pose
+/// accelerations, lambda the contact forces), solved through the 4 x 4 mass matrix M and the
+/// at most 3 x 3 system C M^-1 D lambda = gamma - C M^-1 f; rocking by projection on the
+/// pivot's null space (two unknowns).
 FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
 
 /// Rest (base held flat, docs/methods.md s.2 generalised): the modal equation and the base
-/// reactions in closed form, F = M xg'' + m_s q'', N = M G and the moment about O.
-FlexAccel rest_accel(const FlexGeometry& g, double q, double qd, Base base);
+/// reactions in closed form, F = M xg'' + m_s q'', N = M G and the moment about O (inline: once
+/// per input sample of a resting record).
+inline FlexAccel rest_accel(const FlexGeometry& g, double q, double qd, Base base) {
+    FlexAccel a;
+    a.qdd = -base.ax - 2.0 * g.zeta * g.omega * qd - g.omega * g.omega * q;
+    a.F = g.M * base.ax + g.ms * a.qdd;
+    a.N = g.M * base.G;
+    // Moment about O: N_R b_R - N_L b_L = -m_s h_s q'' + G m_s q - xg'' M h.
+    const double mo = -g.ms * g.hs * a.qdd + base.G * g.ms * q - base.ax * g.Mh;
+    a.NR = (a.N * g.b[0] + mo) * g.inv_width;
+    a.NL = (a.N * g.b[1] - mo) * g.inv_width;
+    return a;
+}
 /// Rest holds: |F| <= mu_s N, both edges pressed (NL, NR >= 0) and G >= 0.
 inline double rest_margin(const FlexGeometry& g, const FlexAccel& a, Base base) {
     double m = g.rigid.mu_s * a.N - std::abs(a.F);
@@ -56,7 +105,7 @@ inline double rest_margin(const FlexGeometry& g, const FlexAccel& a, Base base) 
 /// Pose of a contact state on edge s: slip u of the contact point (flat: of O), uplift theta.
 Pose contact_pose(const FlexGeometry& g, int s, double u, double v, double th, double om,
                   double q, double qd);
-/// Horizontal acceleration of the edge-s contact point and theta'' from the pose accelerations.
+/// Horizontal acceleration of the edge-s contact point from the pose accelerations.
 double contact_slip_accel(const FlexGeometry& g, int s, const Pose& p, const FlexAccel& a);
 
 /// Mode entered from flat contact (theta = 0, theta' = 0) with slip velocity v (0: from rest)
@@ -73,10 +122,140 @@ FlexMode classify_edge(const FlexGeometry& g, int s, const Pose& p, double v, Ba
 double angular_momentum_about(const FlexGeometry& g, const Pose& p, double xc);
 /// Absolute horizontal acceleration of the modal mass, m/s^2.
 double modal_abs_accel(const FlexGeometry& g, const Pose& p, const FlexAccel& a, Base base);
+/// Kinetic energy of the body relative to the base, J (a check of the impact rules).
+double kinetic_energy(const FlexGeometry& g, const Pose& p);
 
-/// The linear oscillator q'' + 2 zeta omega q' + omega^2 q = -(a0 + a1 tau) advanced exactly
-/// by tau (Nigam & Jennings 1969).
-void oscillator_step(const FlexGeometry& g, double& q, double& qd, double a0, double a1,
+/// q' after an impact changed the base's velocity from `before` to `after` (after.qd is not
+/// read): the modal mass's velocity along the body axis changes by (1 - modal_free) times its
+/// attachment's (the generalised momentum of q is conserved when the mode is free).
+double modal_rate_after(const FlexGeometry& g, const Pose& before, const Pose& after);
+
+/// A contact state on edge s: slip u and its rate v, uplift theta and its rate (both >= 0 on
+/// the edge), q and q'.
+struct EdgeState {
+    int s = 1;
+    double u = 0, v = 0, th = 0, om = 0, q = 0, qd = 0;
+};
+
+/// The body strikes edge s_new at theta = 0 while rotating towards it (pose p on the other
+/// edge, slip u, v kept): theta' about s_new after the impact (>= 0; 0 when it cannot rebound)
+/// and q'. Housner's rule generalised, conserving the angular momentum about s_new, or the
+/// measured restitution on theta'; the mode by modal_rate_after (docs/methods.md s.10).
+EdgeState edge_impact(const FlexGeometry& g, const Pose& p, int s_new, double u, double v);
+
+/// The end of a flight with the lowest corner touching (pose p in the flight's frame): a
+/// sticking impact on that corner conserving the angular momentum about it (s.3), or a flat
+/// landing (both edges, Coulomb impulse on the slip) when the tilt is nil or the far edge's gap
+/// closes within flat_window_s at the vertical speed; q' by modal_rate_after.
+struct Landing {
+    EdgeState st;
+    bool flat = false;
+    double om_before = 0.0;  ///< |phi'| before, rad/s
+};
+Landing land_flexible(const FlexGeometry& g, const Pose& p, double flat_window_s);
+
+/// The base set flat (theta = theta' = 0) with slip rate v, from pose p (an impact too small
+/// to rebound, or chatter settled): q' by modal_rate_after.
+double flat_modal_rate(const FlexGeometry& g, const Pose& p, double u, double v);
+
+/// The oscillator q'' + 2 zeta omega q' + omega^2 q = -(a0 + a1 tau) advanced exactly by tau
+/// (Nigam & Jennings 1969).
+void oscillator_step(const Oscillator& osc, double& q, double& qd, double a0, double a1,
                      double tau);
+
+/// The same with the free-vibration factors of one step length tau precomputed (the rest
+/// phase's full input steps, all of one length).
+struct OscillatorStep {
+    OscillatorStep() = default;
+    OscillatorStep(const Oscillator& osc, double tau);
+    void apply(double& q, double& qd, double a0, double a1) const;
+    double tau = 0.0;
+
+private:
+    double w2_ = 0.0, inv_w2_ = 0.0, two_zw_ = 0.0, sig_ = 0.0, wd_ = 0.0, e_ = 0.0, c_ = 0.0,
+           s_ = 0.0;
+};
+
+/// Flat sliding in direction sigma, exact on a linear input segment: with phi = Y = 0 and
+/// N = M G the equations are linear. The modal mass against the sliding remainder is the
+/// oscillator FlexGeometry::sliding, q'' + (c q' + k q) M / (m_s M_r) = sigma mu_k G M / M_r;
+/// the momentum M u' + m_s q' changes at -M xg'' - sigma mu_k M G, a polynomial.
+class SlideSegment {
+public:
+    /// From the state x (slip u, u', q, q') at the segment's point where the base is b0, the
+    /// input's slopes ax1 and G1 on it.
+    SlideSegment(const FlexGeometry& g, int sigma, const std::array<double, 8>& x, Base b0,
+                 double ax1, double G1);
+    /// The state and the quantities of the slide's events at tau after the start.
+    struct Point {
+        double u = 0, v = 0, q = 0, qd = 0;
+        FlexAccel a;  ///< Xdd = u'', qdd, F, N, NL, NR
+    };
+    Point at(double tau) const;
+
+private:
+    const FlexGeometry& g_;
+    double sigma_;
+    double u0_, q0_, qd0_, p0_, ax0_, ax1_, G0_, G1_;
+};
+
+/// Integrator state. Contact modes: (u, u', theta, theta', q, q', 0, 0) on the mode's edge
+/// (u of the contact point; flat: of O); flight: (X, X', Y, Y', phi, phi', q, q') of O.
+using FlexState = std::array<double, 8>;
+
+inline bool is_flight(Mode m) { return m == Mode::flight; }
+inline double modal_of(Mode m, const FlexState& x) { return is_flight(m) ? x[6] : x[4]; }
+inline double modal_rate_of(Mode m, const FlexState& x) { return is_flight(m) ? x[7] : x[5]; }
+Pose pose_of(const FlexGeometry& g, const FlexMode& m, const FlexState& x);
+inline FlexState flight_state(const Pose& p) {
+    return {p.X, p.Xd, p.Y, p.Yd, p.phi, p.phid, p.q, p.qd};
+}
+inline FlexState edge_state(const EdgeState& e) { return {e.u, e.v, e.th, e.om, e.q, e.qd, 0, 0}; }
+
+/// The state's time derivative in mode m (rest excluded) and the accelerations it came from.
+void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base base,
+              FlexState& dx, FlexAccel& a);
+
+/// Summary bookkeeping and the output series of both integrators.
+class FlexRecorder {
+public:
+    FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out)
+        : g_(g), o_(o), out_(out) {}
+    /// Peaks of slip, uplift and |q| at the state x in mode m.
+    void observe(const FlexMode& m, const FlexState& x);
+    /// A peak of |q| found between the integrator's points.
+    void modal_peak(double q) {
+        out_.summary.modal_max_m = std::max(out_.summary.modal_max_m, std::abs(q));
+    }
+    double modal_max() const { return out_.summary.modal_max_m; }
+    /// Output sample at time t: the modal mass's absolute acceleration (peak) and the series.
+    void sample(double t, const FlexMode& m, const FlexState& x, double modal_abs_accel_mps2);
+    void transition(Mode from, Mode to);
+    void time_in(Mode m, double dt_s) {
+        out_.summary.base.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s;
+    }
+    void step() { ++out_.summary.base.steps; }
+    void rejected() { ++out_.summary.rejected_steps; }
+    void impact(double t_s, double omega_before, double omega_after, bool settled);
+    void settlement() { ++out_.summary.base.settlements; }
+    void overturn(double t_s);
+    bool overturned() const { return out_.summary.base.overturned; }
+    /// Fills the summary's totals; slide_residual_m from the final state.
+    void finish(const char* integrator, double end_time_s, double pga_mps2, double residual_m,
+                double wall_s);
+
+private:
+    const FlexGeometry& g_;
+    const Options& o_;
+    FlexibleResult& out_;
+    double accel_peak_ = 0.0;
+};
+
+/// At rest with a mode too small ever to unsettle the base again: the free vibration's
+/// amplitude bounds q and omega q, so the rest inequalities hold for good.
+bool settled_for_good(const FlexGeometry& g, double q, double qd, double g_mps2);
+
+FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o);
+FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, const Options& o);
 
 }  // namespace freestand::dynamics::detail

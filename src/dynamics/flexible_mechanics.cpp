@@ -1,7 +1,7 @@
 // Equations of motion of the flexible body (flexible.hpp, docs/methods.md s.10).
-#include <Eigen/Dense>
 #include <cmath>
 #include <fmt/format.h>
+#include <numbers>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -56,13 +56,149 @@ Vec2 rot(double c, double s, Vec2 p) { return {c * p[0] - s * p[1], s * p[0] + c
 Vec2 perp(Vec2 v) { return {-v[1], v[0]}; }
 double cross(Vec2 a, Vec2 b) { return a[0] * b[1] - a[1] * b[0]; }
 
+using Mat4 = std::array<std::array<double, 4>, 4>;
+
+double dot4(const std::array<double, 4>& a, const std::array<double, 4>& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+}
+
+// The mass matrix of (X, Y, phi, q) is [[M I, B], [B^T, E]] (the translation block is the
+// whole mass): solved through the Schur complement S = E - B^T B / M of that block, 2 x 2.
+// Positive definite as a kinetic energy's matrix (S inherits it).
+class MassSolve {
+public:
+    // From the upper triangle of A; false unless S is positive definite.
+    bool factor(const Mat4& A) {
+        inv_m_ = 1.0 / A[0][0];
+        b_ = {{{A[0][2], A[0][3]}, {A[1][2], A[1][3]}}};
+        const double s00 = A[2][2] - (b_[0][0] * b_[0][0] + b_[1][0] * b_[1][0]) * inv_m_;
+        const double s01 = A[2][3] - (b_[0][0] * b_[0][1] + b_[1][0] * b_[1][1]) * inv_m_;
+        const double s11 = A[3][3] - (b_[0][1] * b_[0][1] + b_[1][1] * b_[1][1]) * inv_m_;
+        const double det = s00 * s11 - s01 * s01;
+        if (!(s00 > 0.0 && det > 0.0)) return false;
+        const double inv_det = 1.0 / det;
+        inv_ = {s11 * inv_det, -s01 * inv_det, s00 * inv_det};
+        return true;
+    }
+    // Solves A y = r in place.
+    void solve(std::array<double, 4>& r) const {
+        const double r2 = r[2] - (b_[0][0] * r[0] + b_[1][0] * r[1]) * inv_m_;
+        const double r3 = r[3] - (b_[0][1] * r[0] + b_[1][1] * r[1]) * inv_m_;
+        r[2] = inv_[0] * r2 + inv_[1] * r3;
+        r[3] = inv_[1] * r2 + inv_[2] * r3;
+        r[0] = (r[0] - b_[0][0] * r[2] - b_[0][1] * r[3]) * inv_m_;
+        r[1] = (r[1] - b_[1][0] * r[2] - b_[1][1] * r[3]) * inv_m_;
+    }
+
+private:
+    double inv_m_ = 1.0;
+    std::array<std::array<double, 2>, 2> b_{};
+    std::array<double, 3> inv_{};  // S^-1: [0][0], [0][1], [1][1]
+};
+
+// Solves the leading n x n block of K x = b (n <= 3) in place (Cramer's rule: the contact
+// systems are small and well conditioned); false if singular.
+bool solve_small(const std::array<std::array<double, 3>, 3>& K, std::array<double, 3>& b,
+                 std::size_t n) {
+    if (n == 0) return true;
+    if (n == 1) {
+        if (!(std::abs(K[0][0]) > 0.0)) return false;
+        b[0] /= K[0][0];
+        return true;
+    }
+    if (n == 2) {
+        const double det = K[0][0] * K[1][1] - K[0][1] * K[1][0];
+        if (!(std::abs(det) > 0.0)) return false;
+        const double x0 = (b[0] * K[1][1] - K[0][1] * b[1]) / det;
+        b[1] = (K[0][0] * b[1] - K[1][0] * b[0]) / det;
+        b[0] = x0;
+        return true;
+    }
+    const double c00 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
+    const double c01 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
+    const double c02 = K[1][0] * K[2][1] - K[1][1] * K[2][0];
+    const double det = K[0][0] * c00 + K[0][1] * c01 + K[0][2] * c02;
+    if (!(std::abs(det) > 0.0)) return false;
+    const double inv = 1.0 / det;
+    const double x0 = (b[0] * c00 + b[1] * (K[0][2] * K[2][1] - K[0][1] * K[2][2]) +
+                       b[2] * (K[0][1] * K[1][2] - K[0][2] * K[1][1])) * inv;
+    const double x1 = (b[0] * c01 + b[1] * (K[0][0] * K[2][2] - K[0][2] * K[2][0]) +
+                       b[2] * (K[0][2] * K[1][0] - K[0][0] * K[1][2])) * inv;
+    const double x2 = (b[0] * c02 + b[1] * (K[0][1] * K[2][0] - K[0][0] * K[2][1]) +
+                       b[2] * (K[0][0] * K[1][1] - K[0][1] * K[1][0])) * inv;
+    b = {x0, x1, x2};
+    return true;
+}
+
+// Rocking on the pivot at rc from O: its acceleration vanishes, (X'', Y'') = phi'^2 rc -
+// J rc phi'', so a = c + J (phi'', q'') and, the pivot's force doing no work along J,
+// (J^T A J) (phi'', q'') = J^T (f - A c): two unknowns. The pivot's force (F, N) from the
+// translation rows, A_0,1 . a - f_0,1. A: upper triangle.
+FlexAccel rock_by_projection(const Mat4& A, const std::array<double, 4>& f, Vec2 rc, double w2) {
+    const auto sym = [&](std::size_t i, std::size_t j) { return i <= j ? A[i][j] : A[j][i]; };
+    const Vec2 jr = perp(rc);
+    const std::array<double, 4> c = {w2 * rc[0], w2 * rc[1], 0.0, 0.0};
+    const std::array<double, 4> jphi = {-jr[0], -jr[1], 1.0, 0.0};
+    std::array<double, 4> r{}, ajphi{};  // f - A c, A J_phi
+    for (std::size_t i = 0; i < 4; ++i) {
+        r[i] = f[i] - sym(i, 0) * c[0] - sym(i, 1) * c[1];
+        ajphi[i] = sym(i, 0) * jphi[0] + sym(i, 1) * jphi[1] + sym(i, 2);
+    }
+    // J^T A J = [[jphi . A jphi, A jphi . e_q], [., A_qq]]; J^T r = [jphi . r, r_q].
+    const double k00 = dot4(jphi, ajphi), k01 = ajphi[3], k11 = A[3][3];
+    const double r0 = dot4(jphi, r), r1 = r[3];
+    const double det = k00 * k11 - k01 * k01;
+    if (!(det > 0.0))
+        throw NumericalError("flexible-body equations: the rocking mass matrix is not positive definite");
+    FlexAccel a;
+    a.phidd = (r0 * k11 - k01 * r1) / det;
+    a.qdd = (k00 * r1 - k01 * r0) / det;
+    a.Xdd = c[0] + jphi[0] * a.phidd;
+    a.Ydd = c[1] + jphi[1] * a.phidd;
+    const std::array<double, 4> acc = {a.Xdd, a.Ydd, a.phidd, a.qdd};
+    a.F = sym(0, 0) * acc[0] + sym(0, 1) * acc[1] + sym(0, 2) * acc[2] + sym(0, 3) * acc[3] - f[0];
+    a.N = sym(1, 0) * acc[0] + sym(1, 1) * acc[1] + sym(1, 2) * acc[2] + sym(1, 3) * acc[3] - f[1];
+    return a;
+}
+
 // A contact force lambda d applied at body point pc (rotated: rc).
 struct ForceCol {
     Vec2 rc{}, d{};
 };
 
-constexpr int kDof = 4;  // X'', Y'', phi'', q''
+// The NF contact forces lambda of (C A^-1 D) lambda = gamma - C A^-1 f, with acc = A^-1 f on
+// entry and A^-1 (f + D lambda) on return; false if the contact system is singular.
+template <std::size_t NF>
+bool contact_forces(const MassSolve& mass, const std::array<ForceCol, 3>& fc,
+                    const std::array<std::array<double, 4>, 3>& C, const std::array<double, 3>& gamma,
+                    std::array<double, 4>& acc, std::array<double, 3>& lambda) {
+    std::array<std::array<double, 4>, NF> y;  // A^-1 D_j
+    for (std::size_t j = 0; j < NF; ++j) {
+        y[j] = {fc[j].d[0], fc[j].d[1], cross(fc[j].rc, fc[j].d), 0.0};
+        mass.solve(y[j]);
+    }
+    std::array<std::array<double, 3>, 3> K;
+    for (std::size_t i = 0; i < NF; ++i) {
+        lambda[i] = gamma[i] - dot4(C[i], acc);
+        for (std::size_t j = 0; j < NF; ++j) K[i][j] = dot4(C[i], y[j]);
+    }
+    if (!solve_small(K, lambda, NF)) return false;
+    for (std::size_t j = 0; j < NF; ++j)
+        for (std::size_t i = 0; i < 4; ++i) acc[i] += y[j][i] * lambda[j];
+    return true;
+}
+
 }  // namespace
+
+double impact_modal_share(double x) {
+    // Residual shock spectrum of a half-sine pulse of duration T (e.g. Harris & Piersol, Shock
+    // and Vibration Handbook, ch. 8): an undamped oscillator is left vibrating with the velocity
+    // amplitude |cos(x / 2)| / |1 - (x / pi)^2| of the pulse's velocity change, x = omega T
+    // (pi / 4 at x = pi, where both vanish).
+    constexpr double pi = std::numbers::pi;
+    if (std::abs(x - pi) < 1e-6) return pi / 4.0;
+    return std::abs(std::cos(0.5 * x)) / std::abs(1.0 - (x / pi) * (x / pi));
+}
 
 FlexGeometry make_flex_geometry(const FlexibleModel& m) {
     FlexGeometry g;
@@ -80,12 +216,19 @@ FlexGeometry make_flex_geometry(const FlexibleModel& m) {
     g.zeta = m.damping;
     g.k = g.ms * g.omega * g.omega;
     g.c = 2.0 * g.zeta * g.ms * g.omega;
+    g.held = {g.omega, g.zeta};
+    const double root_kappa = std::sqrt(g.M / g.Mr);
+    g.sliding = {g.omega * root_kappa, g.zeta * root_kappa};
+    g.exact_slide = g.sliding.zeta < 1.0;
     g.b = {blk.b_left_m, blk.b_right_m};
+    g.inv_width = 1.0 / (g.b[0] + g.b[1]);
+    g.measured_restitution = m.rigid.restitution.has_value();
+    g.modal_free = impact_modal_share(g.omega * m.impact_duration_s);
     return g;
 }
 
 FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base) {
-    const double cp = std::cos(p.phi), sp = std::sin(p.phi), w = p.phid, w2 = w * w;
+    const double cp = p.cphi, sp = p.sphi, w = p.phid, w2 = w * w;
     const Vec2 e1 = {cp, sp};
     const Vec2 rr = rot(cp, sp, {0.0, g.hr});       // O to the rigid remainder's CG
     const Vec2 rs = rot(cp, sp, {p.q, g.hs});       // O to the modal mass
@@ -95,136 +238,116 @@ FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Ba
     const Vec2 vs = {-w2 * rs[0] + 2.0 * w * p.qd * je1[0], -w2 * rs[1] + 2.0 * w * p.qd * je1[1]};
     const Vec2 jr = perp(rr), js = perp(rs);
 
-    // Contact forces and constraints of the mode (docs/methods.md s.3).
-    std::array<ForceCol, 3> f{};
-    int nf = 0;
+    // Mass matrix of (X'', Y'', phi'', q'') and the forces without contact: the linear momentum
+    // of the whole, its angular momentum about O (r x a summed, plus the remainder's spin) and
+    // the modal mass along e1, m_s (X'' . e1 - h_s phi'' + q'' - phi'^2 q) = -k q - c q' +
+    // m_s g . e1 (cross(rs, e1) = -h_s).
+    const Vec2 S = {g.Mr * rr[0] + g.ms * rs[0], g.Mr * rr[1] + g.ms * rs[1]};
+    Mat4 A{};
+    std::array<double, 4> f{};
+    for (std::size_t i = 0; i < 2; ++i) {
+        A[i][i] = g.M;
+        A[i][2] = g.Mr * jr[i] + g.ms * js[i];
+        A[i][3] = g.ms * e1[i];
+        f[i] = g.M * gv[i] - g.Mr * vr[i] - g.ms * vs[i];
+    }
+    A[2][2] = g.Mr * (rr[0] * rr[0] + rr[1] * rr[1]) + g.ms * (rs[0] * rs[0] + rs[1] * rs[1]) + g.Ir;
+    A[2][3] = -g.ms * g.hs;
+    A[3][3] = g.ms;
+    f[2] = -g.Mr * cross(rr, vr) - g.ms * cross(rs, vs) + cross(S, gv);
+    f[3] = -g.k * p.q - g.c * p.qd + g.ms * (gv[0] * e1[0] + gv[1] * e1[1]) + g.ms * w2 * p.q;
+
+    // Contact forces of the mode (docs/methods.md s.3): force j acts along d_j at the body
+    // point r_j (column D_j of its generalised force), constraint i fixes the acceleration of a
+    // contact point (row C_i: X'' + J r phi'' - phi'^2 r, one component) or phi'' = 0.
+    std::array<ForceCol, 3> fc{};
+    std::size_t nf = 0;
     const auto edge_r = [&](int s) {
         const double bx = s > 0 ? g.b[1] : -g.b[0];
         return rot(cp, sp, {bx, 0.0});
     };
     const double mu = g.rigid.mu_k;
-    switch (m.mode) {
-        case Mode::flight: break;
-        case Mode::rock:
-            f[0] = {edge_r(m.s), {1.0, 0.0}};
-            f[1] = {edge_r(m.s), {0.0, 1.0}};
-            nf = 2;
-            break;
-        case Mode::slide_rock:
-            f[0] = {edge_r(m.s), {-m.sigma * mu, 1.0}};
-            nf = 1;
-            break;
-        case Mode::slide:
-            f[0] = {edge_r(-1), {-m.sigma * mu, 1.0}};
-            f[1] = {edge_r(1), {-m.sigma * mu, 1.0}};
-            nf = 2;
-            break;
-        case Mode::rest:
-            f[0] = {edge_r(-1), {1.0, 0.0}};
-            f[1] = {edge_r(-1), {0.0, 1.0}};
-            f[2] = {edge_r(1), {0.0, 1.0}};
-            nf = 3;
-            break;
-    }
-    const int n = kDof + nf;
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 7, 7> A =
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 7, 7>::Zero(n, n);
-    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 7, 1> rhs =
-        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 7, 1>::Zero(n);
-    // Linear momentum of the whole body.
-    const Vec2 S = {g.Mr * rr[0] + g.ms * rs[0], g.Mr * rr[1] + g.ms * rs[1]};
-    for (int i = 0; i < 2; ++i) {
-        const auto iu = static_cast<std::size_t>(i);
-        A(i, i) = g.M;
-        A(i, 2) = g.Mr * jr[iu] + g.ms * js[iu];
-        A(i, 3) = g.ms * e1[iu];
-        rhs(i) = g.M * gv[iu] - g.Mr * vr[iu] - g.ms * vs[iu];
-    }
-    // Angular momentum about O (r x a summed, plus the remainder's spin).
-    A(2, 0) = -S[1];
-    A(2, 1) = S[0];
-    A(2, 2) = g.Mr * (rr[0] * rr[0] + rr[1] * rr[1]) + g.ms * (rs[0] * rs[0] + rs[1] * rs[1]) + g.Ir;
-    A(2, 3) = g.ms * cross(rs, e1);
-    rhs(2) = -g.Mr * cross(rr, vr) - g.ms * cross(rs, vs) + cross(S, gv);
-    // The modal mass along e1: m_s (X'' . e1 - h_s phi'' + q'' - phi'^2 q) = -k q - c q' + m_s g . e1.
-    A(3, 0) = g.ms * e1[0];
-    A(3, 1) = g.ms * e1[1];
-    A(3, 2) = -g.ms * g.hs;
-    A(3, 3) = g.ms;
-    rhs(3) = -g.k * p.q - g.c * p.qd + g.ms * (gv[0] * e1[0] + gv[1] * e1[1]) + g.ms * w2 * p.q;
-    for (int j = 0; j < nf; ++j) {
-        const auto ju = static_cast<std::size_t>(j);
-        A(0, kDof + j) = -f[ju].d[0];
-        A(1, kDof + j) = -f[ju].d[1];
-        A(2, kDof + j) = -cross(f[ju].rc, f[ju].d);
-    }
-    // Constraint rows: acceleration of a contact point, X'' + J r phi'' - phi'^2 r.
-    const auto point_row = [&](int row, Vec2 rc, int comp) {
-        const auto cu = static_cast<std::size_t>(comp);
-        A(row, comp) = 1.0;
-        A(row, 2) = perp(rc)[cu];
-        rhs(row) = w2 * rc[cu];
+    std::array<std::array<double, 4>, 3> C{};
+    std::array<double, 3> gamma{};
+    const auto point_row = [&](std::size_t row, Vec2 rc, std::size_t comp) {
+        C[row][comp] = 1.0;
+        C[row][2] = perp(rc)[comp];
+        gamma[row] = w2 * rc[comp];
     };
     switch (m.mode) {
         case Mode::flight: break;
         case Mode::rock:
-            point_row(4, f[0].rc, 0);
-            point_row(5, f[0].rc, 1);
+            fc[0] = {edge_r(m.s), {1.0, 0.0}};
+            fc[1] = {edge_r(m.s), {0.0, 1.0}};
+            nf = 2;
+            point_row(0, fc[0].rc, 0);
+            point_row(1, fc[0].rc, 1);
             break;
-        case Mode::slide_rock: point_row(4, f[0].rc, 1); break;
+        case Mode::slide_rock:
+            fc[0] = {edge_r(m.s), {-m.sigma * mu, 1.0}};
+            nf = 1;
+            point_row(0, fc[0].rc, 1);
+            break;
         case Mode::slide:
-            point_row(4, f[0].rc, 1);
-            A(5, 2) = 1.0;
+            fc[0] = {edge_r(-1), {-m.sigma * mu, 1.0}};
+            fc[1] = {edge_r(1), {-m.sigma * mu, 1.0}};
+            nf = 2;
+            point_row(0, fc[0].rc, 1);
+            C[1][2] = 1.0;
             break;
         case Mode::rest:
-            point_row(4, f[0].rc, 0);
-            point_row(5, f[0].rc, 1);
-            A(6, 2) = 1.0;
+            fc[0] = {edge_r(-1), {1.0, 0.0}};
+            fc[1] = {edge_r(-1), {0.0, 1.0}};
+            fc[2] = {edge_r(1), {0.0, 1.0}};
+            nf = 3;
+            point_row(0, fc[0].rc, 0);
+            point_row(1, fc[0].rc, 1);
+            C[2][2] = 1.0;
             break;
     }
-    const auto x = A.partialPivLu().solve(rhs).eval();
+    if (m.mode == Mode::rock) return rock_by_projection(A, f, edge_r(m.s), w2);
+    // A a - D lambda = f, C a = gamma: a = A^-1 (f + D lambda), (C A^-1 D) lambda = gamma -
+    // C A^-1 f.
+    MassSolve mass;
+    if (!mass.factor(A))
+        throw NumericalError("flexible-body equations: the mass matrix is not positive definite");
+    std::array<double, 4> acc = f;
+    mass.solve(acc);
+    std::array<double, 3> lambda{};
+    const bool ok = nf == 0   ? true
+                    : nf == 1 ? contact_forces<1>(mass, fc, C, gamma, acc, lambda)
+                    : nf == 2 ? contact_forces<2>(mass, fc, C, gamma, acc, lambda)
+                              : contact_forces<3>(mass, fc, C, gamma, acc, lambda);
+    if (!ok)
+        throw NumericalError("flexible-body equations: the contact forces are indeterminate");
     FlexAccel a;
-    a.Xdd = x(0);
-    a.Ydd = x(1);
-    a.phidd = x(2);
-    a.qdd = x(3);
-    for (int j = 0; j < nf; ++j) {
-        const auto ju = static_cast<std::size_t>(j);
-        a.F += x(kDof + j) * f[ju].d[0];
-        a.N += x(kDof + j) * f[ju].d[1];
+    a.Xdd = acc[0];
+    a.Ydd = acc[1];
+    a.phidd = acc[2];
+    a.qdd = acc[3];
+    for (std::size_t j = 0; j < nf; ++j) {
+        a.F += lambda[j] * fc[j].d[0];
+        a.N += lambda[j] * fc[j].d[1];
     }
     if (m.mode == Mode::slide) {
-        a.NL = x(4);
-        a.NR = x(5);
+        a.NL = lambda[0];
+        a.NR = lambda[1];
     } else if (m.mode == Mode::rest) {
-        a.NL = x(5);
-        a.NR = x(6);
+        a.NL = lambda[1];
+        a.NR = lambda[2];
     }
-    return a;
-}
-
-FlexAccel rest_accel(const FlexGeometry& g, double q, double qd, Base base) {
-    FlexAccel a;
-    a.qdd = -base.ax - 2.0 * g.zeta * g.omega * qd - g.omega * g.omega * q;
-    a.F = g.M * base.ax + g.ms * a.qdd;
-    a.N = g.M * base.G;
-    // Moment about O: N_R b_R - N_L b_L = -m_s h_s q'' + G m_s q - xg'' M h.
-    const double mo = -g.ms * g.hs * a.qdd + base.G * g.ms * q - base.ax * g.Mh;
-    const double w = g.b[0] + g.b[1];
-    a.NR = (a.N * g.b[0] + mo) / w;
-    a.NL = (a.N * g.b[1] - mo) / w;
     return a;
 }
 
 Pose contact_pose(const FlexGeometry& g, int s, double u, double v, double th, double om,
                   double q, double qd) {
     Pose p;
-    p.phi = -static_cast<double>(s) * th;
+    with_phi(p, -static_cast<double>(s) * th);
     p.phid = -static_cast<double>(s) * om;
     p.q = q;
     p.qd = qd;
     const double bx = s > 0 ? g.b[1] : -g.b[0];
-    const double cp = std::cos(p.phi), sp = std::sin(p.phi);
+    const double cp = p.cphi, sp = p.sphi;
     const Vec2 re = rot(cp, sp, {bx, 0.0});
     // The contact point sits at (u + bx, 0) and slips at v: O = contact - r_e.
     p.X = u + bx - re[0];
@@ -237,7 +360,7 @@ Pose contact_pose(const FlexGeometry& g, int s, double u, double v, double th, d
 
 double contact_slip_accel(const FlexGeometry& g, int s, const Pose& p, const FlexAccel& a) {
     const double bx = s > 0 ? g.b[1] : -g.b[0];
-    const Vec2 re = rot(std::cos(p.phi), std::sin(p.phi), {bx, 0.0});
+    const Vec2 re = rot(p.cphi, p.sphi, {bx, 0.0});
     return a.Xdd + perp(re)[0] * a.phidd - p.phid * p.phid * re[0];
 }
 
@@ -287,7 +410,7 @@ FlexMode classify_edge(const FlexGeometry& g, int s, const Pose& p, double v, Ba
 }
 
 double angular_momentum_about(const FlexGeometry& g, const Pose& p, double xc) {
-    const double cp = std::cos(p.phi), sp = std::sin(p.phi);
+    const double cp = p.cphi, sp = p.sphi;
     const Vec2 rr = rot(cp, sp, {0.0, g.hr}), rs = rot(cp, sp, {p.q, g.hs});
     const Vec2 e1 = {cp, sp};
     const Vec2 o = {p.X - xc, p.Y};
@@ -298,24 +421,12 @@ double angular_momentum_about(const FlexGeometry& g, const Pose& p, double xc) {
 }
 
 double modal_abs_accel(const FlexGeometry& g, const Pose& p, const FlexAccel& a, Base base) {
-    const double cp = std::cos(p.phi), sp = std::sin(p.phi);
+    const double cp = p.cphi, sp = p.sphi;
     const Vec2 rs = rot(cp, sp, {p.q, g.hs});
     const double w = p.phid;
     // x of X'' + J rs phi'' - phi'^2 rs + 2 phi' q' J e1 + q'' e1, plus the base's xg''.
     return base.ax + a.Xdd - rs[1] * a.phidd - w * w * rs[0] - 2.0 * w * p.qd * sp +
            a.qdd * cp;
-}
-
-void oscillator_step(const FlexGeometry& g, double& q, double& qd, double a0, double a1,
-                     double tau) {
-    const double w = g.omega, z = g.zeta, w2 = w * w;
-    const double wd = w * std::sqrt(1.0 - z * z), sig = z * w;
-    // Particular solution A + B tau of q'' + 2 zeta w q' + w^2 q = -(a0 + a1 tau).
-    const double B = -a1 / w2, A = (-a0 - 2.0 * z * w * B) / w2;
-    const double y0 = q - A, yd0 = qd - B;
-    const double e = std::exp(-sig * tau), c = std::cos(wd * tau), s = std::sin(wd * tau);
-    q = A + B * tau + e * (y0 * c + (yd0 + sig * y0) / wd * s);
-    qd = B + e * (yd0 * c - (sig * yd0 + w2 * y0) / wd * s);
 }
 
 }  // namespace detail

@@ -1,0 +1,152 @@
+// What the two flexible-body integrators share (flexible_detail.hpp): the exact oscillator of
+// the rest phase, the state's derivative, the summary bookkeeping.
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/flexible_detail.hpp"
+
+namespace freestand::dynamics::detail {
+
+void oscillator_step(const Oscillator& osc, double& q, double& qd, double a0, double a1,
+                     double tau) {
+    OscillatorStep(osc, tau).apply(q, qd, a0, a1);
+}
+
+OscillatorStep::OscillatorStep(const Oscillator& osc, double tau_s) : tau(tau_s) {
+    const double w = osc.omega, z = osc.zeta;
+    w2_ = w * w;
+    inv_w2_ = 1.0 / w2_;
+    two_zw_ = 2.0 * z * w;
+    wd_ = w * std::sqrt(1.0 - z * z);
+    sig_ = z * w;
+    e_ = std::exp(-sig_ * tau);
+    c_ = std::cos(wd_ * tau);
+    s_ = std::sin(wd_ * tau) / wd_;
+}
+
+void OscillatorStep::apply(double& q, double& qd, double a0, double a1) const {
+    // Particular solution A + B tau of q'' + 2 zeta w q' + w^2 q = -(a0 + a1 tau), plus the
+    // damped free vibration of the rest.
+    const double B = -a1 * inv_w2_, A = (-a0 - two_zw_ * B) * inv_w2_;
+    const double y0 = q - A, yd0 = qd - B;
+    q = A + B * tau + e_ * (y0 * c_ + (yd0 + sig_ * y0) * s_);
+    qd = B + e_ * (yd0 * c_ - (sig_ * yd0 + w2_ * y0) * s_);
+}
+
+SlideSegment::SlideSegment(const FlexGeometry& g, int sigma, const std::array<double, 8>& x,
+                           Base b0, double ax1, double G1)
+    : g_(g), sigma_(static_cast<double>(sigma)), u0_(x[0]), q0_(x[4]), qd0_(x[5]),
+      p0_(g.M * x[1] + g.ms * x[5]), ax0_(b0.ax), ax1_(ax1), G0_(b0.G), G1_(G1) {}
+
+SlideSegment::Point SlideSegment::at(double tau) const {
+    const FlexGeometry& g = g_;
+    const double smu = sigma_ * g.rigid.mu_k, kappa = g.M / g.Mr;
+    Point p;
+    p.q = q0_;
+    p.qd = qd0_;
+    oscillator_step(g.sliding, p.q, p.qd, -smu * kappa * G0_, -smu * kappa * G1_, tau);
+    const double t2 = tau * tau / 2.0, t3 = tau * tau * tau / 6.0;
+    const double P = p0_ - g.M * (ax0_ * tau + ax1_ * t2) - smu * g.M * (G0_ * tau + G1_ * t2);
+    p.v = (P - g.ms * p.qd) / g.M;
+    p.u = u0_ + (p0_ * tau - g.M * (ax0_ * t2 + ax1_ * t3) - smu * g.M * (G0_ * t2 + G1_ * t3) -
+                 g.ms * (p.q - q0_)) / g.M;
+    const double ax = ax0_ + ax1_ * tau, G = G0_ + G1_ * tau;
+    const double spring = g.k * p.q + g.c * p.qd;
+    FlexAccel& a = p.a;
+    a.N = g.M * G;
+    a.F = -smu * a.N;
+    a.Xdd = -ax + (spring + a.F) / g.Mr;
+    a.qdd = -spring / g.ms - ax - a.Xdd;
+    // Moment about O of the remainder at (0, h_r) and the modal mass at (q, h_s) under their
+    // accelerations and the base frame's gravity (0, -G) and inertia (-xg'', 0).
+    const double mo = -g.Mr * g.hr * (a.Xdd + ax) + g.ms * (p.q * G - g.hs * (a.Xdd + a.qdd + ax));
+    a.NR = (a.N * g.b[0] + mo) * g.inv_width;
+    a.NL = (a.N * g.b[1] - mo) * g.inv_width;
+    return p;
+}
+
+Pose pose_of(const FlexGeometry& g, const FlexMode& m, const FlexState& x) {
+    if (is_flight(m.mode)) {
+        Pose p{x[0], x[2], x[4], x[6], x[1], x[3], x[5], x[7]};
+        with_phi(p, x[4]);
+        return p;
+    }
+    return contact_pose(g, m.s, x[0], x[1], x[2], x[3], x[4], x[5]);
+}
+
+void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base base,
+              FlexState& dx, FlexAccel& a) {
+    const Pose p = pose_of(g, m, x);
+    a = flex_accel(g, m, p, base);
+    if (is_flight(m.mode)) {
+        dx = {x[1], a.Xdd, x[3], a.Ydd, x[5], a.phidd, x[7], a.qdd};
+        return;
+    }
+    const double slip = m.mode == Mode::rock ? 0.0 : contact_slip_accel(g, m.s, p, a);
+    const double thdd = m.mode == Mode::slide ? 0.0 : -static_cast<double>(m.s) * a.phidd;
+    dx = {x[1], slip, x[3], thdd, x[5], a.qdd, 0.0, 0.0};
+}
+
+void FlexRecorder::observe(const FlexMode& m, const FlexState& x) {
+    Summary& s = out_.summary.base;
+    modal_peak(modal_of(m.mode, x));
+    s.slide_max_m = std::max(s.slide_max_m, std::abs(x[0]));
+    if (is_flight(m.mode) || x[2] <= 0.0) return;
+    s.rock_max_rad = std::max(s.rock_max_rad, x[2]);
+    const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(m.s))];
+    s.rock_max_over_alpha = std::max(s.rock_max_over_alpha, x[2] / alpha);
+}
+
+void FlexRecorder::sample(double t, const FlexMode& m, const FlexState& x,
+                          double modal_abs_accel_mps2) {
+    observe(m, x);
+    accel_peak_ = std::max(accel_peak_, std::abs(modal_abs_accel_mps2));
+    if (!o_.record_series) return;
+    FlexibleSample s;
+    s.time_s = t;
+    s.mode = m.mode;
+    s.modal_m = modal_of(m.mode, x);
+    s.slide_m = x[0];
+    s.rotation_rad = is_flight(m.mode) ? -x[4] : static_cast<double>(m.s) * x[2];
+    out_.series.push_back(s);
+}
+
+void FlexRecorder::transition(Mode from, Mode to) {
+    if (from != to) ++out_.summary.base.mode_changes;
+    if (to == Mode::rock || to == Mode::slide_rock || is_flight(to)) out_.summary.uplifted = true;
+}
+
+void FlexRecorder::impact(double t_s, double omega_before, double omega_after, bool settled) {
+    ++out_.summary.base.impacts;
+    out_.impact_log.push_back({t_s, omega_before, omega_after, settled});
+}
+
+void FlexRecorder::overturn(double t_s) {
+    Summary& s = out_.summary.base;
+    s.overturned = true;
+    s.overturn_time_s = t_s;
+    s.overturn_mode = s.impacts > 0 ? 1 : 2;
+    s.overturn_criterion = OverturnCriterion::angle_half_pi;
+}
+
+void FlexRecorder::finish(const char* integrator, double end_time_s, double pga_mps2,
+                          double residual_m, double wall_s) {
+    Summary& b = out_.summary.base;
+    b.integrator = integrator;
+    b.end_time_s = end_time_s;
+    b.pga_g = pga_mps2 / o_.g_mps2;
+    b.slide_residual_m = residual_m;
+    out_.summary.modal_drift_max = out_.summary.modal_max_m / g_.hs;
+    out_.summary.modal_accel_max_g = accel_peak_ / o_.g_mps2;
+    b.wall_s = wall_s;
+}
+
+bool settled_for_good(const FlexGeometry& g, double q, double qd, double g_mps2) {
+    const double amp = std::hypot(q, qd / g.omega);
+    const double shear = g.ms * g.omega * g.omega * amp * (1.0 + 2.0 * g.zeta);
+    const double moment = shear * g.hs + g_mps2 * g.ms * amp;
+    return shear <= g.rigid.mu_s * g.M * g_mps2 &&
+           moment <= g.M * g_mps2 * std::min(g.b[0], g.b[1]);
+}
+
+}  // namespace freestand::dynamics::detail
