@@ -195,7 +195,11 @@ int run(const std::vector<std::string>& args) {
     return 0;
 }
 
-const CommandRegistrar reg{{"simulate", "rigid-block time history (slide, rock, overturn)", &run}};
+const CommandRegistrar reg{{"simulate",
+                            "time history of a rigid block (slide, rock, overturn); with "
+                            "--motion-y/--sine-y biaxial sliding, --flexible a flexible body, "
+                            "--block2 two units joined by a tunnel",
+                            &run}};
 
 }  // namespace
 

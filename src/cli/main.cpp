@@ -32,6 +32,7 @@ void print_help() {
                  "commands:\n";
     for (const auto& [name, cmd] : command_table())
         std::cout << fmt::format("  {:<10} {}\n", name, cmd.summary);
+    std::cout << "\nfreestand --version: version, commit and the versions of the linked libraries\n";
     std::cout << "\nexit codes: 0 ok, 1 a check failed, 2 usage, 3 bad input, 4 numerical failure,"
                  " 5 file I/O, 70 internal error\n";
 }

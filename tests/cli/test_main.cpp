@@ -25,6 +25,8 @@ TEST_CASE("freestand --help lists every command and the exit codes", "[cli]") {
                             "slide", "rock", "simulate"})
         CHECK_THAT(r.out, Catch::Contains(cmd));
     CHECK_THAT(r.out, Catch::Contains("exit codes"));
+    CHECK_THAT(r.out, Catch::Contains("freestand --version"));
+    CHECK_THAT(r.out, Catch::Contains("--flexible a flexible body"));
 }
 
 TEST_CASE("an unknown command is a usage error naming it", "[cli]") {
