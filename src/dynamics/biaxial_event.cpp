@@ -15,12 +15,12 @@
 // a turn of more than 90 degrees inside one step (a near miss of a stop); the step is rejected
 // and retried up to half the way to it.
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
 #include "core/errors.hpp"
+#include "dynamics/roots.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/dopri5.hpp"
 
@@ -33,16 +33,6 @@ using State = Stepper::State;  // u_x, u_y, v_x, v_y
 
 constexpr std::size_t max_stalled_events = 100000;  // events at one instant before giving up
 constexpr int flight_probes = 16;                   // sub-samples per segment for a landing
-
-// Root of f in [a, b] with f(a) > 0 >= f(b).
-template <class F>
-double toms748_root(F f, double a, double b, double fa, double fb) {
-    if (fb == 0.0) return b;
-    std::uintmax_t iters = 200;
-    const auto r = boost::math::tools::toms748_solve(
-        f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50), iters);
-    return 0.5 * (r.first + r.second);
-}
 
 Vec2 vel(const State& x) { return {x[2], x[3]}; }
 Vec2 pos(const State& x) { return {x[0], x[1]}; }

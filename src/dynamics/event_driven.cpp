@@ -3,7 +3,6 @@
 // degree the tolerance needs, which is also the dense output; every switch located by root
 // finding (Newton or TOMS 748) on the closed form or the polynomial, never by the next sample.
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -11,6 +10,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "dynamics/roots.hpp"
 #include "dynamics/integrators.hpp"
 #include "dynamics/taylor.hpp"
 
@@ -38,16 +38,6 @@ struct Segment {
 };
 
 enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
-
-template <class F>
-double toms748_root(F f, double a, double b, double fa, double fb, int bits = 50) {
-    if (fa == 0.0) return a;
-    if (fb == 0.0) return b;
-    std::uintmax_t iters = 200;
-    const auto r = boost::math::tools::toms748_solve(
-        f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(bits), iters);
-    return 0.5 * (r.first + r.second);
-}
 
 // Root of a smooth f in a sign-changing bracket [a, b] by Newton's method with the derivative
 // g(t) = {f, f'} gives (the dense output carries theta and theta'), safeguarded by bisection

@@ -7,13 +7,13 @@
 // unloading, landing, theta = pi/2) are sign changes over a step, located by TOMS 748 on the
 // continuous extension.
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 #include <numbers>
 
 #include "core/errors.hpp"
+#include "dynamics/roots.hpp"
 #include "dynamics/dopri5.hpp"
 #include "dynamics/flexible_detail.hpp"
 
@@ -26,15 +26,6 @@ using Stepper = Dopri5<8>;
 constexpr double half_pi = std::numbers::pi / 2.0;
 constexpr std::size_t burst_settle = 64;
 constexpr std::size_t burst_fail = 100000;
-
-template <class F>
-double toms748_root(F f, double a, double b, double fa, double fb) {
-    if (fb == 0.0) return b;
-    std::uintmax_t iters = 200;
-    const auto r = boost::math::tools::toms748_solve(
-        f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50), iters);
-    return 0.5 * (r.first + r.second);
-}
 
 struct Segment {
     double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
