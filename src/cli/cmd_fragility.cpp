@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "cli/command.hpp"
+#include "cli/documents.hpp"
 #include "cli/fragility_output.hpp"
 #include "cli/mpi_split.hpp"
 #include "cli/options.hpp"
@@ -24,32 +25,9 @@ const char* const usage =
     "CASE.toml [--pga 0.1:1.0:0.1] [--samples 100] [--records FILE...] [--pool 20] [--seed S] "
     "[--threads T] [--out DIR] [--json] [--shard K/N]";
 
-fragility::Config config_from(const po::variables_map& vm, const assess::Case& c) {
-    fragility::Config cfg;
-    cfg.pga_g = parse_levels(vm["pga"].as<std::string>(), "--pga");
-    // Whole numbers here; their ranges are the fragility config's to check (exit 3).
-    constexpr double int_max = 2147483647.0;
-    cfg.samples = static_cast<int>(parse_whole(vm["samples"].as<std::string>(), "--samples", 0, int_max));
-    cfg.pool = static_cast<int>(parse_whole(vm["pool"].as<std::string>(), "--pool", 0, int_max));
-    cfg.seed = vm.count("seed") ? parse_whole(vm["seed"].as<std::string>(), "--seed", 0, 9.0e15)
-                                : c.options.seed;
-    if (vm.count("records")) cfg.record_files = vm["records"].as<std::vector<std::string>>();
-    return cfg;
-}
-
 int run(const std::vector<std::string>& args) {
-    po::options_description desc("options");
+    po::options_description desc = fragility_options();
     desc.add_options()("case", po::value<std::string>()->required(), "case file (TOML)")(
-        "pga", po::value<std::string>()->default_value("0.1:1.0:0.1"),
-        "PGA levels, g: START:STOP:STEP or a comma list")(
-        "samples", po::value<std::string>()->default_value("100"), "samples per level")(
-        "records", po::value<std::vector<std::string>>()->multitoken(),
-        "a user suite of horizontal records (each sample draws one and scales it to the level; "
-        "applied along x and y, no vertical); default: generated sets for the case's target")(
-        "pool", po::value<std::string>()->default_value("20"),
-        "generated three-component history sets the samples draw from")(
-        "seed", po::value<std::string>(), "run seed (default: the case's [options] seed)")(
-        "threads", po::value<std::string>()->default_value("0"), "worker threads (0: all cores)")(
         "out", po::value<std::string>(), "output folder (default: out/<case stem>-fragility/)")(
         "json", po::bool_switch(), "print fragility.json to stdout instead of the summary")(
         "shard", po::value<std::string>(),
@@ -60,9 +38,8 @@ int run(const std::vector<std::string>& args) {
     const std::filesystem::path case_file = (*vm)["case"].as<std::string>();
     const std::string bytes = core::read_input_file(case_file);
     const assess::Case c = assess::parse_case(bytes, case_file.string());
-    const fragility::Config cfg = config_from(*vm, c);
-    const int threads =
-        static_cast<int>(parse_whole((*vm)["threads"].as<std::string>(), "--threads", 0, 1024));
+    const fragility::Config cfg = fragility_config(*vm, c);
+    const int threads = fragility_threads(*vm);
     const std::filesystem::path out =
         vm->count("out") ? std::filesystem::path((*vm)["out"].as<std::string>())
                          : std::filesystem::path("out") / (case_file.stem().string() + "-fragility");

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/documents.hpp"
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
@@ -16,33 +17,6 @@
 #include "dynamics/simulate.hpp"
 
 namespace freestand::cli {
-
-nlohmann::ordered_json summary_json(const dynamics::Summary& s) {
-    nlohmann::ordered_json j;
-    j["slide_max_m"] = s.slide_max_m;
-    j["slide_residual_m"] = s.slide_residual_m;
-    j["rock_max_rad"] = s.rock_max_rad;
-    j["rock_max_over_alpha"] = s.rock_max_over_alpha;
-    j["overturned"] = s.overturned;
-    j["overturn_time_s"] = s.overturn_time_s ? nlohmann::ordered_json(*s.overturn_time_s) : nullptr;
-    j["overturn_mode"] = s.overturn_mode ? nlohmann::ordered_json(*s.overturn_mode) : nullptr;
-    j["impacts"] = s.impacts;
-    j["mode_changes"] = s.mode_changes;
-    j["top_accel_max_g"] = s.top_accel_max_g;
-    j["amplification"] = s.amplification;
-    j["wall_s"] = s.wall_s;
-    j["integrator"] = s.integrator;
-    j["overturn_criterion"] = dynamics::overturn_criterion_name(s.overturn_criterion);
-    nlohmann::ordered_json t;
-    for (std::size_t m = 0; m < dynamics::mode_count; ++m)
-        t[dynamics::mode_name(static_cast<dynamics::Mode>(m))] = s.time_in_mode_s[m];
-    j["time_in_mode_s"] = t;
-    j["pga_g"] = s.pga_g;
-    j["settlements"] = s.settlements;
-    j["steps"] = s.steps;
-    j["end_time_s"] = s.end_time_s;
-    return j;
-}
 
 namespace {
 
@@ -122,17 +96,8 @@ void print_text(const dynamics::Summary& s, const dynamics::BlockModel& m) {
 }
 
 int run(const std::vector<std::string>& args) {
-    po::options_description desc("simulate options");
+    po::options_description desc = simulate_model_options();
     desc.add_options()
-        ("block", po::value<std::string>()->required(), "b=half-width,h=CG height,m=mass (m, kg)")
-        ("cg", po::value<std::string>(),
-         "x,y: CG x from the left edge and y above the base (m); or x=OFFSET,h=HEIGHT: x right "
-         "of the base's centre, as classify and rock take it")
-        ("inertia", po::value<double>(), "I_c about the CG (kg m^2)")
-        ("top", po::value<double>(), "height of the top corners for top_accel (m; default 2 h)")
-        ("mu", po::value<double>()->required(), "static friction coefficient")
-        ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
-        ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
         ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
         ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
         ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
@@ -145,8 +110,6 @@ int run(const std::vector<std::string>& args) {
          "f=HZ[,zeta=RATIO][,mass=FRACTION][,height=M]: reduced-order flexible body (fixed-base "
          "frequency, modal damping, modal mass as a fraction of m, its height above the base; "
          "defaults zeta 0.02 and a uniform cantilever's 0.613 m at 0.726 x 2 h)")
-        ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
-        ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
         ("out", po::value<std::string>(), "write the time series CSV here")
         ("json", po::bool_switch(), "print the summary as JSON");
     add_pair_options(desc);
@@ -156,30 +119,16 @@ int run(const std::vector<std::string>& args) {
         throw UsageError("simulate: give exactly one of --motion, --sine and --sine-y");
     if (vm->count("motion-y") && !vm->count("motion"))
         throw UsageError("--motion-y: needs --motion (the x component)");
-    std::optional<double> inertia;
-    if (vm->count("inertia")) inertia = (*vm)["inertia"].as<double>();
-    const block::Block blk = block_from_options((*vm)["block"].as<std::string>(),
-                                                opt_string(*vm, "cg"), inertia);
-    const double mu = (*vm)["mu"].as<double>();
-    std::optional<double> mu_k, r;
-    if (vm->count("mu-k")) mu_k = (*vm)["mu-k"].as<double>();
-    if (vm->count("restitution")) r = (*vm)["restitution"].as<double>();
-    std::optional<double> top;
-    if (vm->count("top")) top = (*vm)["top"].as<double>();
+    const block::Block blk = simulate_block(*vm);
     const bool biaxial = vm->count("motion-y") || vm->count("sine-y");
-    dynamics::Options opt = biaxial ? dynamics::biaxial_options() : dynamics::Options{};
-    const std::string integ = (*vm)["integrator"].as<std::string>();
-    if (integ == "cd") opt.integrator = dynamics::Integrator::central_difference;
-    else if (integ != "event")
-        throw UsageError(fmt::format("--integrator: expected event or cd; got \"{}\"", integ));
-    opt.cd_dt_s = (*vm)["dt"].as<double>();
-    require_positive(opt.cd_dt_s, {"", 0, "--dt"});
+    dynamics::Options opt =
+        simulate_run_options(*vm, biaxial ? dynamics::biaxial_options() : dynamics::Options{});
     opt.record_series = vm->count("out") > 0;
     if (pair_requested(*vm)) require_pair_options(*vm);
     if (vm->count("flexible") && (biaxial || pair_requested(*vm)))
         throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit)");
     if (biaxial) return run_biaxial_simulation(*vm, blk, opt);
-    const dynamics::BlockModel model = dynamics::make_block_model(blk, mu, mu_k, r, top);
+    const dynamics::BlockModel model = simulate_model(*vm, blk);
     const dynamics::Excitation exc =
         vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())
                           : parse_motion((*vm)["motion"].as<std::string>(), (*vm)["scale"].as<double>());
@@ -202,7 +151,5 @@ const CommandRegistrar reg{{"simulate",
                             &run}};
 
 }  // namespace
-
-nlohmann::ordered_json simulate_summary_json(const dynamics::Summary& s) { return summary_json(s); }
 
 }  // namespace freestand::cli

@@ -66,7 +66,7 @@ int run_flexible_simulation(const po::variables_map& vm, const dynamics::BlockMo
         nlohmann::ordered_json j;
         j["model"] = "flexible";
         // The rigid top-corner acceleration does not apply: the modal mass's is given instead.
-        nlohmann::ordered_json base = simulate_summary_json(s.base);
+        nlohmann::ordered_json base = summary_json(s.base);
         base.erase("top_accel_max_g");
         base.erase("amplification");
         j.update(base);

@@ -4,13 +4,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/documents.hpp"
 #include "cli/options.hpp"
 #include "dynamics/flexible.hpp"
 
 namespace freestand::cli {
 
-/// The planar simulate's JSON summary (cmd_simulate.cpp), which the flexible run extends.
-nlohmann::ordered_json simulate_summary_json(const dynamics::Summary& s);
 
 /// --flexible's value as a mode: f (Hz) required, zeta, mass (fraction of M) and height (m above
 /// the base) optional. UsageError naming --flexible for bad syntax, unknown keys or no f.

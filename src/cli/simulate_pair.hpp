@@ -4,13 +4,12 @@
 /// (docs/methods.md s.10), printed as text or JSON (relative_max_m).
 #include <nlohmann/json.hpp>
 
+#include "cli/documents.hpp"
 #include "cli/options.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::cli {
 
-/// The summary `simulate --json` prints for one block (cmd_simulate.cpp), also each unit's.
-nlohmann::ordered_json summary_json(const dynamics::Summary& s);
 
 /// The options `simulate` adds for the second unit.
 void add_pair_options(po::options_description& desc);

@@ -1,0 +1,117 @@
+#pragma once
+/// The commands' computations from their parsed options, and the JSON documents they print with
+/// --json. The command line (cmd_*.cpp) and the Python module (python/) both call these, so a
+/// call from Python goes through the same option checks, gives the same errors and the same
+/// numbers as the command.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "assess/case.hpp"
+#include "core/record.hpp"
+#include "dynamics/simulate.hpp"
+#include "fragility/fragility.hpp"
+#include "report/fragility_report.hpp"
+#include "motion/motion.hpp"
+#include "rocking/summary.hpp"
+#include "sliding/asce.hpp"
+#include "sliding/initiation.hpp"
+#include "spectra/response.hpp"
+
+namespace freestand::cli {
+
+using json = nlohmann::ordered_json;
+
+/// Parses args (no command name) against desc: UsageError naming the option, as the command
+/// line does ("see freestand COMMAND --help").
+po::variables_map parse_document_options(const std::string& command,
+                                         const po::options_description& desc,
+                                         const std::vector<std::string>& args);
+
+// --- spectrum, target -------------------------------------------------------------------------
+
+/// --damping, --fmin, --fmax, --per-decade, --frequencies (`spectrum`'s defaults).
+po::options_description spectrum_grid_options();
+/// `spectrum --json`: the record's measures and its PSA, SD and PSV per damping on the grid of
+/// the options.
+json spectrum_document(const core::Record& record, const po::variables_map& grid);
+
+/// `target`'s options (design name, design values, grid, --vertical).
+po::options_description target_options();
+/// The design spectra the options name, one per damping.
+std::vector<spectra::Spectrum> target_spectra(const po::variables_map& vm);
+/// `target --json`.
+json target_document(const po::variables_map& vm, const std::vector<spectra::Spectrum>& spectra);
+
+// --- closed forms -----------------------------------------------------------------------------
+
+/// "left" or "right".
+const char* edge_name(block::Edge e);
+
+po::options_description slide_options();
+struct SlideRun {
+    sliding::SlidingInput input;
+    sliding::SlidingEstimate estimate;
+};
+SlideRun slide_run(const po::variables_map& vm);
+json slide_json(const SlideRun& run);
+
+po::options_description classify_options();
+struct ClassifyRun {
+    double mu_s = 0.0, a_h_g = 0.0, av_g = 0.0;
+    sliding::PeakInitiation initiation;
+};
+ClassifyRun classify_run(const po::variables_map& vm);
+json classify_json(const ClassifyRun& run);
+
+po::options_description rock_options();
+struct RockRun {
+    rocking::RockingInput input;
+    rocking::RockingChecks checks;
+};
+RockRun rock_run(const po::variables_map& vm);
+json rock_json(const RockRun& run);
+
+// --- simulate (planar rigid block) ------------------------------------------------------------
+
+/// The block, friction, restitution and integrator options of `simulate` (not the excitation).
+po::options_description simulate_model_options();
+/// The block the options describe (--block, --cg, --inertia).
+block::Block simulate_block(const po::variables_map& vm);
+/// The planar rigid-block model on blk (--mu, --mu-k, --restitution, --top).
+dynamics::BlockModel simulate_model(const po::variables_map& vm, const block::Block& blk);
+/// base with the integrator options (--integrator, --dt) applied.
+dynamics::Options simulate_run_options(const po::variables_map& vm, dynamics::Options base);
+/// `simulate --json`'s summary of one block.
+json summary_json(const dynamics::Summary& s);
+
+// --- generate ---------------------------------------------------------------------------------
+
+po::options_description generate_options();
+struct GenerateRequest {
+    motion::TargetSet targets;
+    motion::GenerateOptions options;
+};
+/// Targets (design or file, with the realism ranges) and generation options from the options.
+GenerateRequest generate_request(const po::variables_map& vm);
+/// match.json; wall_s is null unless timing.
+json match_document(const motion::TargetSet& targets, const motion::GeneratedSet& set,
+                    bool timing);
+
+// --- fragility --------------------------------------------------------------------------------
+
+/// --pga, --samples, --records, --pool, --seed, --threads.
+po::options_description fragility_options();
+/// The sampling configuration; the seed defaults to the case's.
+fragility::Config fragility_config(const po::variables_map& vm, const assess::Case& c);
+/// --threads (0: every core).
+int fragility_threads(const po::variables_map& vm);
+/// Every sample of the run on this machine, aggregated and rendered (fragility.json, report,
+/// samples.csv), stamped with the case's bytes and the build's commit.
+report::RenderedFragility fragility_document(const std::string& case_bytes,
+                                             const std::filesystem::path& case_file,
+                                             const po::variables_map& vm);
+
+}  // namespace freestand::cli
