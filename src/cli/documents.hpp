@@ -13,7 +13,7 @@
 #include "core/record.hpp"
 #include "dynamics/simulate.hpp"
 #include "fragility/fragility.hpp"
-#include "report/fragility_report.hpp"
+#include "report/json.hpp"
 #include "motion/motion.hpp"
 #include "rocking/summary.hpp"
 #include "sliding/asce.hpp"
@@ -108,10 +108,17 @@ po::options_description fragility_options();
 fragility::Config fragility_config(const po::variables_map& vm, const assess::Case& c);
 /// --threads (0: every core).
 int fragility_threads(const po::variables_map& vm);
-/// Every sample of the run on this machine, aggregated and rendered (fragility.json, report,
-/// samples.csv), stamped with the case's bytes and the build's commit.
-report::RenderedFragility fragility_document(const std::string& case_bytes,
-                                             const std::filesystem::path& case_file,
-                                             const po::variables_map& vm);
+/// The stamp of a fragility run: the case's bytes, the seed, the case's other inputs and the
+/// records of a user suite, each hashed, and the build's commit.
+report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
+                              const assess::Case& c, const fragility::Config& config);
+struct FragilityRun {
+    fragility::Result result;
+    report::Stamp stamp;
+};
+/// Every sample of the run on this machine, aggregated, with its stamp.
+FragilityRun fragility_result(const std::string& case_bytes,
+                              const std::filesystem::path& case_file,
+                              const po::variables_map& vm);
 
 }  // namespace freestand::cli

@@ -1,7 +1,9 @@
 // `fragility`: its sampling options and the run on one machine (cli/documents.hpp).
 #include "cli/documents.hpp"
 
-#include "cli/fragility_output.hpp"
+#include "cli/build_info.hpp"
+#include "core/file_io.hpp"
+#include "report/sha256.hpp"
 
 namespace freestand::cli {
 
@@ -38,13 +40,23 @@ int fragility_threads(const po::variables_map& vm) {
     return static_cast<int>(parse_whole(vm["threads"].as<std::string>(), "--threads", 0, 1024));
 }
 
-report::RenderedFragility fragility_document(const std::string& case_bytes,
-                                             const std::filesystem::path& case_file,
-                                             const po::variables_map& vm) {
+report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
+                              const assess::Case& c, const fragility::Config& config) {
+    report::Stamp stamp =
+        report::make_stamp(case_bytes, case_file, config.seed, build_commit);
+    stamp.inputs = report::stamped_inputs(c);
+    for (const std::string& f : config.record_files)
+        stamp.inputs.push_back({f, report::sha256_hex(core::read_input_file(f))});
+    return stamp;
+}
+
+FragilityRun fragility_result(const std::string& case_bytes,
+                              const std::filesystem::path& case_file,
+                              const po::variables_map& vm) {
     const assess::Case c = assess::parse_case(case_bytes, case_file.string());
     const fragility::Config cfg = fragility_config(vm, c);
-    const fragility::Result r = fragility::run_all(c, cfg, fragility_threads(vm));
-    return report::render_fragility(r, fragility_stamp(case_bytes, case_file.string(), c, cfg));
+    return {fragility::run_all(c, cfg, fragility_threads(vm)),
+            fragility_stamp(case_bytes, case_file.string(), c, cfg)};
 }
 
 }  // namespace freestand::cli

@@ -1,7 +1,5 @@
 #include "cli/fragility_output.hpp"
 
-#include "cli/build_info.hpp"
-
 #include <fmt/format.h>
 
 #include <iostream>
@@ -9,29 +7,18 @@
 #include "core/file_io.hpp"
 #include "fragility/serialize.hpp"
 #include "report/fragility_report.hpp"
-#include "report/sha256.hpp"
 
 namespace freestand::cli {
-
-report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
-                              const assess::Case& c, const fragility::Config& config) {
-    report::Stamp stamp =
-        report::make_stamp(case_bytes, case_file, config.seed, build_commit);
-    stamp.inputs = report::stamped_inputs(c);
-    for (const std::string& f : config.record_files)
-        stamp.inputs.push_back({f, report::sha256_hex(core::read_input_file(f))});
-    return stamp;
-}
 
 nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const report::Stamp& stamp) {
     return {{"meta", fragility::to_json(meta)}, {"stamp", report::stamp_json(stamp)}};
 }
 
 void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
-                             const std::filesystem::path& out, bool json) {
+                             const std::filesystem::path& out, bool print_json) {
     const report::RenderedFragility rendered = report::render_fragility(r, stamp);
     report::write_fragility(out, rendered);
-    if (json) {
+    if (print_json) {
         std::cout << rendered.json;
         return;
     }

@@ -4,15 +4,11 @@
 #include <nlohmann/json.hpp>
 
 #include "assess/case.hpp"
+#include "cli/documents.hpp"
 #include "fragility/fragility.hpp"
 #include "report/json.hpp"
 
 namespace freestand::cli {
-
-/// The stamp of a fragility run: the case's bytes, the seed, the case's other inputs and the
-/// records of a user suite, each hashed.
-report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
-                              const assess::Case& c, const fragility::Config& config);
 
 /// The run descriptor of a shard header: {"meta", "stamp"}.
 nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const report::Stamp& stamp);
@@ -20,6 +16,6 @@ nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const rep
 /// Renders and publishes the outputs into out, prints the summary (or fragility.json with
 /// json) to stdout.
 void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
-                             const std::filesystem::path& out, bool json);
+                             const std::filesystem::path& out, bool print_json);
 
 }  // namespace freestand::cli

@@ -9,19 +9,11 @@
 #include <mstch/mstch.hpp>
 
 #include "fragility/fragility.hpp"
+#include "report/fragility_json.hpp"
 #include "report/json.hpp"
 #include "report/plots.hpp"
 
 namespace freestand::report {
-
-/// {"levels": [{"pga_g", "n", "events": {"overturn": {"k", "p", "ci"}, "slide", "rock",
-/// "any"}}], "fit": {"overturn": {"theta_m_g", "beta", "pga_1pct_g", "pga_5pct_g",
-/// "pga_50pct_g", "log_likelihood", "chi2", "dof", "p_value"} | null, ...}, "fit_notes",
-/// "inputs", "references", "stamp"}; numbers to 10 significant digits.
-nlohmann::ordered_json fragility_json(const fragility::Result& r, const Stamp& stamp);
-
-/// fragility_json without the stamp: what an assessment's result.json carries as "fragility".
-nlohmann::ordered_json fragility_body_json(const fragility::Result& r);
 
 /// One row per sample: level, sample, pga_g, motion, mu_s, restitution_x, restitution_y,
 /// slide_max_m, rock_max_over_alpha, overturned (RFC 4180, numbers to 10 significant digits).

@@ -1,5 +1,7 @@
 #include "report/render.hpp"
 
+#include "report/case_assessment.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -553,9 +555,7 @@ Rendered render(const AssessmentResult& r, const Stamp& stamp,
                                    {{"fragility_section", template_fragility_section_md}});
     out.html = render_html(template_report_html, ctx,
                            {{"fragility_section", template_fragility_section_html}});
-    nlohmann::ordered_json json = to_json(r, stamp);
-    if (fragility) json["fragility"] = fragility_body_json(*fragility);
-    out.json = json.dump(2) + "\n";
+    out.json = result_json_text(r, stamp, fragility);
     return out;
 }
 

@@ -7,32 +7,18 @@
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "report/case_assessment.hpp"
 #include "report/joined.hpp"
 
 namespace freestand::report {
 
 namespace {
 
-// fragility_threads: 0 for every core; the fragility result does not depend on it.
-CaseRun assess_and_render(const assess::Case& c, const std::string& case_bytes,
-                          const std::filesystem::path& case_file, const std::string& commit,
-                          int fragility_threads) {
+CaseRun render_case(CaseAssessment a) {
     CaseRun run;
-    if (!c.units.empty() && c.options.fragility.enabled)
-        throw InputError(SourceLocation{case_file.string(), 0, "options.fragility"},
-                         "not available for two [[unit]] tables (the fragility analysis takes "
-                         "one component)");
-    run.result = assess::assess(c);
-    if (c.options.fragility.enabled) {
-        fragility::Config config;
-        config.pga_g = c.options.fragility.pga_g;
-        config.samples = c.options.fragility.samples;
-        config.seed = c.options.seed;
-        run.fragility = fragility::run_all(c, config, fragility_threads);
-    }
-    Stamp stamp = make_stamp(case_bytes, case_file.string(), c.options.seed, commit);
-    stamp.inputs = stamped_inputs(c);
-    run.rendered = render(run.result, stamp, run.fragility ? &*run.fragility : nullptr);
+    run.rendered = render(a.result, a.stamp, a.fragility ? &*a.fragility : nullptr);
+    run.result = std::move(a.result);
+    run.fragility = std::move(a.fragility);
     return run;
 }
 
@@ -40,10 +26,7 @@ CaseRun assess_and_render(const assess::Case& c, const std::string& case_bytes,
 
 CaseRun run_case(const std::filesystem::path& case_file,
                  const std::optional<std::vector<double>>& pga_g, const std::string& commit) {
-    const std::string bytes = core::read_input_file(case_file);
-    assess::Case c = assess::parse_case(bytes, case_file.string());
-    if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
-    return assess_and_render(c, bytes, case_file, commit, 0);
+    return render_case(assess_case_file(case_file, pga_g, commit));
 }
 
 CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
@@ -54,7 +37,7 @@ CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& cas
         throw InputError(SourceLocation{case_file.string(), 0, "unit"},
                          "a batch runs one-component cases; assess two [[unit]] tables with "
                          "`freestand assess`");
-    return assess_and_render(c, case_bytes, case_file, commit, fragility_threads);
+    return render_case(assess_case(c, case_bytes, case_file, commit, fragility_threads));
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {

@@ -1,0 +1,40 @@
+#pragma once
+/// One case assessed, without rendering: what `assess` renders and what the Python module
+/// returns as result.json (it links this without the templates).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assess/case.hpp"
+#include "assess/result.hpp"
+#include "fragility/fragility.hpp"
+#include "report/json.hpp"
+
+namespace freestand::report {
+
+struct CaseAssessment {
+    assess::AssessmentResult result;
+    std::optional<fragility::Result> fragility;  ///< with [options] fragility = true
+    Stamp stamp;
+};
+
+/// Assesses the parsed case c (case_bytes are hashed into the stamp, case_file names it), and
+/// runs its fragility analysis when it asks for one on fragility_threads (0: every core; the
+/// result does not depend on it). Errors propagate (InputError, NumericalError).
+CaseAssessment assess_case(const assess::Case& c, const std::string& case_bytes,
+                           const std::filesystem::path& case_file, const std::string& commit,
+                           int fragility_threads);
+
+/// Reads and assesses the case file, its PGA levels replaced by pga_g when given (IoError,
+/// InputError, NumericalError).
+CaseAssessment assess_case_file(const std::filesystem::path& case_file,
+                                const std::optional<std::vector<double>>& pga_g,
+                                const std::string& commit);
+
+/// result.json: the assessment with its stamp and, with a fragility result, its "fragility"
+/// object; 2-space indented with a trailing newline.
+std::string result_json_text(const assess::AssessmentResult& r, const Stamp& stamp,
+                             const fragility::Result* fragility);
+
+}  // namespace freestand::report
