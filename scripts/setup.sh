@@ -7,7 +7,8 @@ packages=(g++ cmake make pkg-config ccache git
   catch2 libtomlplusplus-dev libmstch-dev nlohmann-json3-dev
   clang-14 libclang-rt-14-dev
   libopenmpi-dev openmpi-bin
-  python3-pytest python3-jsonschema)
+  python3-pytest python3-jsonschema
+  pybind11-dev python3-dev python3-numpy python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

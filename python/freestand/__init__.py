@@ -1,0 +1,209 @@
+"""freestand from Python: must free-standing equipment be anchored to survive the design earthquake?
+
+Every function here runs the same C++ code as the `freestand` command of the same name, through
+the same option checks, and returns what that command prints with --json (or writes as
+result.json / fragility.json) as a dict; series of numbers come as float64 NumPy arrays. Units
+are SI and in the names (accel_mps2, dt_s, pga_g). Keyword options are the command's options
+with '-' written '_' (`a_g` is `--a-g`); an error names the option as the command line does
+(`--a-g`). Methods: docs/methods.md.
+
+Errors are exceptions carrying the command's message, one class per exit-code class:
+UsageError (2), InputError (3), NumericalError (4), IoError (5), all subclasses of Error, each
+with its `exit_code`.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any, Iterable, Mapping, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _freestand as _fs
+
+Error = _fs.Error
+UsageError = _fs.UsageError
+InputError = _fs.InputError
+NumericalError = _fs.NumericalError
+IoError = _fs.IoError
+
+__version__: str = _fs.version
+commit: str = _fs.commit
+#: Names of the simulation's contact modes, indexed by the codes in simulate()'s series["mode"].
+mode_names: tuple = tuple(_fs.mode_names)
+
+__all__ = [
+    "Error", "UsageError", "InputError", "NumericalError", "IoError", "Record", "read_record",
+    "response_spectrum", "design_target", "generate", "slide", "classify", "rock", "simulate",
+    "assess", "fragility", "mode_names",
+]
+
+PathLike = Union[str, os.PathLike]
+
+
+@dataclass
+class Record:
+    """A uniformly sampled acceleration history: sample i at i * dt_s seconds, in m/s^2."""
+
+    accel_mps2: np.ndarray
+    dt_s: float
+    name: str = ""
+    source: str = "python"
+    component: str = ""
+
+    @property
+    def time_s(self) -> np.ndarray:
+        return self.dt_s * np.arange(len(self.accel_mps2))
+
+    @property
+    def accel_g(self) -> np.ndarray:
+        """The samples in g (g = 9.81 m/s^2, as everywhere in freestand)."""
+        return self.accel_mps2 / 9.81
+
+
+def _text(value: Any) -> str:
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError("a flag takes True or False, not a value")
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))  # the shortest text that reads back as the same double
+    if isinstance(value, (str, os.PathLike)):
+        return os.fspath(value)
+    raise TypeError(f"expected a number or a string, got {type(value).__name__}")
+
+
+def _args(**options: Any) -> list:
+    """Command-line arguments from keyword options: None and False leave an option out, True
+    gives a flag, a sequence a comma list, anything else its text."""
+    args = []
+    for name, value in options.items():
+        if value is None or value is False:
+            continue
+        flag = "--" + name.replace("_", "-")
+        if value is True:
+            args.append(flag)
+        elif isinstance(value, (list, tuple, np.ndarray)):
+            args += [flag, ",".join(_text(v) for v in value)]
+        else:
+            args += [flag, _text(value)]
+    return args
+
+
+def _block(block: Union[str, Mapping[str, float]]) -> str:
+    """{"b": 0.15, "h": 0.6, "m": 38} (or the command line's "b=0.15,h=0.6,m=38")."""
+    if isinstance(block, str):
+        return block
+    return ",".join(f"{key}={_text(value)}" for key, value in block.items())
+
+
+def _cg(cg: Union[None, str, Sequence[float], Mapping[str, float]]) -> Optional[str]:
+    if cg is None or isinstance(cg, str):
+        return cg
+    if isinstance(cg, Mapping):
+        return _block(cg)
+    return ",".join(_text(v) for v in cg)
+
+
+def read_record(path: PathLike) -> Record:
+    """Reads a PEER .AT2, COSMOS .V2 or CSV record (docs/methods.md s.8 for the CSV headers)."""
+    r = _fs.read_record(os.fspath(path))
+    return Record(r["accel_mps2"], r["dt_s"], r["name"], r["source"], r["component"])
+
+
+def response_spectrum(record: Record, damping: Union[float, Sequence[float]] = 0.05, *,
+                      frequencies: Optional[Sequence[float]] = None, fmin: Optional[float] = None,
+                      fmax: Optional[float] = None, per_decade: Optional[int] = None) -> dict:
+    """The record's measures and its PSA (g), SD (m) and PSV (m/s) per damping
+    (`freestand spectrum --json`): psa_g["0.05"] is an array over frequencies_hz."""
+    damping = damping if isinstance(damping, (list, tuple, np.ndarray)) else [damping]
+    return _fs.spectrum(np.asarray(record.accel_mps2, dtype=float), record.dt_s, record.name,
+                        record.source, record.component,
+                        _args(damping=damping, frequencies=frequencies, fmin=fmin, fmax=fmax,
+                              per_decade=per_decade))
+
+
+def design_target(design: str, *, damping: Union[float, Sequence[float]] = 0.05,
+                  vertical: bool = False, frequencies: Optional[Sequence[float]] = None,
+                  fmin: Optional[float] = None, fmax: Optional[float] = None,
+                  per_decade: Optional[int] = None, **design_values: Any) -> dict:
+    """A design spectrum as a matching target (`freestand target --json`): design is rg1.60
+    (pga=), asce7 (sds=, sd1=, tl=), ec8 (ag=, type=, ground=) or is1893 (pga=, soil=)."""
+    damping = damping if isinstance(damping, (list, tuple, np.ndarray)) else [damping]
+    return _fs.target(_args(design=design, vertical=vertical, damping=damping,
+                            frequencies=frequencies, fmin=fmin, fmax=fmax, per_decade=per_decade,
+                            **design_values))
+
+
+def generate(target: Optional[str] = None, *, seed: int = 1, timing: bool = True,
+             seed_record: Optional[Sequence[PathLike]] = None,
+             **options: Any) -> tuple:
+    """Spectrum-compatible histories (`freestand generate`): returns (match, records), match
+    being match.json as a dict and records a dict of Record by component (h1, h2, v). Options
+    as the command's: pga=, target_file=, vertical_ratio=, components=, duration=, dt=,
+    va_range=, adv2_range=, da_max=, ... timing=False writes wall_s as None (--no-timing)."""
+    seed_files = None if seed_record is None else [os.fspath(p) for p in seed_record]
+    match, records = _fs.generate(_args(target=target, seed=seed, seed_record=seed_files,
+                                        **options), timing)
+    return match, {r["component"]: Record(r["accel_mps2"], r["dt_s"], r["component"], "generated",
+                                          r["component"]) for r in records}
+
+
+def slide(mu: float, **options: Any) -> dict:
+    """ASCE 4 and energy-conservation sliding estimates (`freestand slide --json`): av_g=,
+    pgd_m=, pga_g=, and fes_hz= or spectrum10=[H1.csv, H2.csv]."""
+    return _fs.slide(_args(mu=mu, **options))
+
+
+def classify(block: Union[str, Mapping[str, float]], mu: float, a_g: float, *, cg=None,
+             **options: Any) -> dict:
+    """Initiating mode of a block at rest (`freestand classify --json`): block {"b": half-width,
+    "h": half-height[, "m": kg]} in m; av_g=, inertia=."""
+    return _fs.classify(_args(block=_block(block), cg=_cg(cg), mu=mu, a_g=a_g, **options))
+
+
+def rock(block: Union[str, Mapping[str, float]], *, cg=None, **options: Any) -> dict:
+    """Closed-form rocking and overturning checks (`freestand rock --json`): spectrum=[files],
+    spectrum_v=, v_ratio=, pga_g=, av_g=, pgv_mps=, mu=, restitution=, fs_required=, fn_hz=,
+    rock_band_hz=(lo, hi), inertia=."""
+    return _fs.rock(_args(block=_block(block), cg=_cg(cg), **options))
+
+
+def simulate(block: Union[str, Mapping[str, float]], motion: Union[Record, np.ndarray],
+             dt_s: Optional[float] = None, *, mu: float, vertical_mps2: Optional[np.ndarray] = None,
+             scale: float = 1.0, series: bool = True, cg=None, **options: Any) -> dict:
+    """Time history of the planar rigid block (`freestand simulate --json`) under a record (or
+    an array of m/s^2 samples at dt_s), times scale; vertical_mps2 on the same samples. Options:
+    mu_k=, restitution=, inertia=, top=, integrator="event"|"cd", dt=. Returns the summary, and
+    with series=True also "series": NumPy arrays time_s, slide_m, slide_velocity_mps,
+    rotation_rad, angular_velocity_radps, mode (codes into mode_names), normal_force_N,
+    friction_force_N, top_accel_mps2."""
+    if isinstance(motion, Record):
+        if dt_s is not None and dt_s != motion.dt_s:
+            raise UsageError(f"dt_s {dt_s} s given for a record sampled at {motion.dt_s} s")
+        accel, dt_s, label = motion.accel_mps2, motion.dt_s, motion.name
+    else:
+        if dt_s is None:
+            raise UsageError("simulate: an array of samples needs dt_s (s)")
+        accel, label = motion, "python array"
+    vertical = None if vertical_mps2 is None else np.asarray(vertical_mps2, dtype=float)
+    return _fs.simulate(_args(block=_block(block), cg=_cg(cg), mu=mu, **options),
+                        np.asarray(accel, dtype=float), float(dt_s), vertical, float(scale),
+                        label, series)
+
+
+def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:
+    """Assesses a case file (`freestand assess`): result.json as a dict; pga_g replaces the
+    case's levels. The reports (HTML, Markdown, figures) are the command line's to write."""
+    return _fs.assess(os.fspath(case_file), None if pga_g is None else [float(p) for p in pga_g])
+
+
+def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.0:0.1",
+              records: Optional[Sequence[PathLike]] = None, **options: Any) -> dict:
+    """P(overturn), P(slide), P(rock) against PGA (`freestand fragility`): fragility.json as a
+    dict. pga as "START:STOP:STEP" or a list; samples=, pool=, seed=, threads= (0: all cores;
+    the result does not depend on it); records=[files] a user suite."""
+    args = _args(pga=pga, **options)
+    if records:
+        args += ["--records"] + [os.fspath(r) for r in records]
+    return _fs.fragility(os.fspath(case_file), args)

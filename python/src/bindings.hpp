@@ -1,0 +1,22 @@
+#pragma once
+/// The extension module's functions, by group.
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "core/record.hpp"
+
+namespace freestand::python {
+
+/// A record of the samples (m/s^2) at dt_s, validated as a file's would be (InputError).
+core::Record make_record(const pybind11::handle& accel_mps2, double dt_s, const std::string& name,
+                         const std::string& source, const std::string& component);
+
+/// read_record, spectrum.
+void bind_records(pybind11::module_& m);
+/// target, document (slide, classify, rock), generate.
+void bind_documents(pybind11::module_& m);
+/// simulate, assess, fragility.
+void bind_runs(pybind11::module_& m);
+
+}  // namespace freestand::python

@@ -1,0 +1,63 @@
+#include "convert.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/errors.hpp"
+
+namespace freestand::python {
+
+namespace {
+
+bool all_numbers(const nlohmann::ordered_json& array) {
+    return !array.empty() && std::all_of(array.begin(), array.end(), [](const auto& v) {
+        return v.is_number();
+    });
+}
+
+}  // namespace
+
+py::object to_python(const nlohmann::ordered_json& j, Arrays arrays) {
+    switch (j.type()) {
+    case nlohmann::ordered_json::value_t::null: return py::none();
+    case nlohmann::ordered_json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::ordered_json::value_t::number_integer: return py::int_(j.get<std::int64_t>());
+    case nlohmann::ordered_json::value_t::number_unsigned: return py::int_(j.get<std::uint64_t>());
+    case nlohmann::ordered_json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::ordered_json::value_t::string: return py::str(j.get_ref<const std::string&>());
+    case nlohmann::ordered_json::value_t::array: {
+        if (arrays == Arrays::numpy && all_numbers(j)) {
+            std::vector<double> values;
+            values.reserve(j.size());
+            for (const auto& v : j) values.push_back(v.get<double>());
+            return to_numpy(values);
+        }
+        py::list out;
+        for (const auto& v : j) out.append(to_python(v, arrays));
+        return out;
+    }
+    case nlohmann::ordered_json::value_t::object: {
+        py::dict out;
+        for (const auto& [key, value] : j.items()) out[py::str(key)] = to_python(value, arrays);
+        return out;
+    }
+    default: throw std::logic_error("to_python: a JSON value of an unexpected type");
+    }
+}
+
+py::array_t<double> to_numpy(const std::vector<double>& values) {
+    py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+    std::copy(values.begin(), values.end(), out.mutable_data());
+    return out;
+}
+
+std::vector<double> from_numpy(const py::handle& values, const std::string& what) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
+    if (!a || a.ndim() != 1)
+        throw InputError(SourceLocation{"", 0, what},
+                         "expected a one-dimensional array of numbers");
+    return {a.data(), a.data() + a.size()};
+}
+
+}  // namespace freestand::python

@@ -1,0 +1,66 @@
+// The `freestand._freestand` extension module: the library's commands as functions, their
+// errors as Python exceptions. python/freestand/__init__.py is the documented API on top.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "cli/build_info.hpp"
+#include "cli/flag_names.hpp"
+#include "core/errors.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+/// Python classes for the exit-code classes (README "Exit codes"): freestand.Error and one
+/// subclass per class, each with the exit code the command line would return.
+struct ErrorClasses {
+    py::object base, usage, input, numerical, io;
+};
+
+py::object make_class(py::module_& m, const char* name, py::handle base, int exit_code,
+                      const char* doc) {
+    py::object cls = py::reinterpret_steal<py::object>(
+        PyErr_NewExceptionWithDoc((std::string("freestand.") + name).c_str(), doc, base.ptr(),
+                                  nullptr));
+    cls.attr("exit_code") = exit_code;
+    m.attr(name) = cls;
+    return cls;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_freestand, m) {
+    m.doc() = "freestand's C++ library (see the freestand package for the documented API)";
+    static ErrorClasses errors;
+    errors.base = make_class(m, "Error", PyExc_Exception, 1, "Base of every freestand error.");
+    errors.usage = make_class(m, "UsageError", errors.base, 2,
+                              "A call the command line would refuse as usage (exit code 2).");
+    errors.input = make_class(m, "InputError", errors.base, 3,
+                              "Bad input data or value (exit code 3).");
+    errors.numerical = make_class(m, "NumericalError", errors.base, 4,
+                                  "A solver could not reach its tolerance or limit (exit code 4).");
+    errors.io = make_class(m, "IoError", errors.base, 5,
+                           "A file could not be read or written (exit code 5).");
+    py::register_exception_translator([](std::exception_ptr p) {
+        using namespace freestand;
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InputError& e) {
+            PyErr_SetString(errors.input.ptr(), cli::on_command_line(e).what());
+        } catch (const UsageError& e) {
+            PyErr_SetString(errors.usage.ptr(), e.what());
+        } catch (const NumericalError& e) {
+            PyErr_SetString(errors.numerical.ptr(), e.what());
+        } catch (const IoError& e) {
+            PyErr_SetString(errors.io.ptr(), e.what());
+        } catch (const Error& e) {
+            PyErr_SetString(errors.base.ptr(), e.what());
+        }
+    });
+    m.attr("version") = FREESTAND_VERSION;
+    m.attr("commit") = freestand::cli::build_commit;
+    freestand::python::bind_records(m);
+    freestand::python::bind_documents(m);
+    freestand::python::bind_runs(m);
+}
