@@ -13,18 +13,21 @@ namespace py = pybind11;
 namespace {
 
 /// Python classes for the exit-code classes (README "Exit codes"): freestand.Error and one
-/// subclass per class, each with the exit code the command line would return.
+/// subclass per class, each with the exit code the command line would return. Borrowed
+/// handles: the module's attributes own the classes, so nothing is released after the
+/// interpreter has shut down.
 struct ErrorClasses {
-    py::object base, usage, input, numerical, io;
+    py::handle base, usage, input, numerical, io;
 };
 
-py::object make_class(py::module_& m, const char* name, py::handle base, int exit_code,
+py::handle make_class(py::module_& m, const char* name, py::handle base, int exit_code,
                       const char* doc) {
     py::object cls = py::reinterpret_steal<py::object>(
         PyErr_NewExceptionWithDoc((std::string("freestand.") + name).c_str(), doc, base.ptr(),
                                   nullptr));
+    if (!cls) throw py::error_already_set();
     cls.attr("exit_code") = exit_code;
-    m.attr(name) = cls;
+    m.attr(name) = cls;  // the module's reference keeps the class alive
     return cls;
 }
 
