@@ -7,6 +7,25 @@
 
 namespace freestand::python {
 
+namespace {
+
+/// A closed-form command as a function of its arguments: its options parsed and checked as the
+/// command line does, its computation, and the document `COMMAND --json` prints.
+template <typename Run>
+void bind_closed_form(py::module_& m, const char* command,
+                      cli::po::options_description (*options)(),
+                      Run (*run)(const cli::po::variables_map&), cli::json (*to_json)(const Run&)) {
+    m.def(
+        command,
+        [command, options, run, to_json](const std::vector<std::string>& args) {
+            const auto vm = cli::parse_document_options(command, options(), args);
+            return to_python(to_json(run(vm)), Arrays::lists);
+        },
+        py::arg("args"));
+}
+
+}  // namespace
+
 void bind_documents(py::module_& m) {
     m.def(
         "target",
@@ -15,27 +34,9 @@ void bind_documents(py::module_& m) {
             return to_python(cli::target_document(vm, cli::target_spectra(vm)), Arrays::numpy);
         },
         py::arg("args"));
-    m.def(
-        "slide",
-        [](const std::vector<std::string>& args) {
-            const auto vm = cli::parse_document_options("slide", cli::slide_options(), args);
-            return to_python(cli::slide_json(cli::slide_run(vm)), Arrays::lists);
-        },
-        py::arg("args"));
-    m.def(
-        "classify",
-        [](const std::vector<std::string>& args) {
-            const auto vm = cli::parse_document_options("classify", cli::classify_options(), args);
-            return to_python(cli::classify_json(cli::classify_run(vm)), Arrays::lists);
-        },
-        py::arg("args"));
-    m.def(
-        "rock",
-        [](const std::vector<std::string>& args) {
-            const auto vm = cli::parse_document_options("rock", cli::rock_options(), args);
-            return to_python(cli::rock_json(cli::rock_run(vm)), Arrays::lists);
-        },
-        py::arg("args"));
+    bind_closed_form(m, "slide", cli::slide_options, cli::slide_run, cli::slide_json);
+    bind_closed_form(m, "classify", cli::classify_options, cli::classify_run, cli::classify_json);
+    bind_closed_form(m, "rock", cli::rock_options, cli::rock_run, cli::rock_json);
     m.def(
         "generate",
         [](const std::vector<std::string>& args, bool timing) {
