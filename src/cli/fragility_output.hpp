@@ -2,6 +2,7 @@
 /// What `fragility` and `merge` share: the run's stamp and writing its outputs.
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "assess/case.hpp"
 #include "fragility/fragility.hpp"
@@ -18,8 +19,10 @@ report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& 
 nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const report::Stamp& stamp);
 
 /// Renders and publishes the outputs into out, prints the summary (or fragility.json with
-/// json) to stdout.
+/// json) to stdout. With pdf_converter (report::find_pdf_converter) report.pdf, made from
+/// report.html, is published with them.
 void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
-                             const std::filesystem::path& out, bool json);
+                             const std::filesystem::path& out, bool json,
+                             const std::optional<std::filesystem::path>& pdf_converter = {});
 
 }  // namespace freestand::cli
