@@ -63,7 +63,8 @@ def reports():
     """The two report folders, written once for the module."""
     with tempfile.TemporaryDirectory(prefix="freestand_browser_") as tmp:
         tmp = pathlib.Path(tmp)
-        run([EXE, "assess", "cases/glovebox-single.toml", "--pdf", "--out", str(tmp / "assess")])
+        run([EXE, "assess", "cases/glovebox-single.toml", "--pga", "0.3", "--pdf", "--out",
+             str(tmp / "assess")])
         run([EXE, "fragility", "cases/block-ts1.toml", "--pga", "0.2:0.6:0.2", "--samples", "8",
              "--pool", "2", "--threads", "1", "--pdf", "--out", str(tmp / "fragility")])
         yield {"assess": tmp / "assess", "fragility": tmp / "fragility"}
