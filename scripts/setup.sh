@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages freestand builds against, only those missing.
-# Idempotent and silent when everything is already there.
+# Idempotent and silent when everything is already there. weasyprint (with a font) makes
+# `--pdf`; chromium, chromium-driver, python3-selenium, python3-pil and poppler-utils run the
+# browser and PDF checks of tests/browser/.
 set -euo pipefail
 packages=(g++ cmake make pkg-config ccache git
   libeigen3-dev libfftw3-dev libboost-dev libboost-program-options-dev libfmt-dev
@@ -8,7 +10,9 @@ packages=(g++ cmake make pkg-config ccache git
   clang-14 libclang-rt-14-dev
   libopenmpi-dev openmpi-bin
   python3-pytest python3-jsonschema
-  pybind11-dev python3-dev python3-numpy python3-matplotlib)
+  pybind11-dev python3-dev python3-numpy python3-matplotlib
+  weasyprint fonts-dejavu-core poppler-utils
+  chromium chromium-driver python3-selenium python3-pil)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -17,13 +17,14 @@
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
 #include "fragility/serialize.hpp"
+#include "report/pdf.hpp"
 
 namespace freestand::cli {
 namespace {
 
 const char* const usage =
     "CASE.toml [--pga 0.1:1.0:0.1] [--samples 100] [--records FILE...] [--pool 20] [--seed S] "
-    "[--threads T] [--out DIR] [--json] [--shard K/N]";
+    "[--threads T] [--out DIR] [--json] [--shard K/N] [--pdf]";
 
 int run(const std::vector<std::string>& args) {
     po::options_description desc = fragility_options();
@@ -32,9 +33,19 @@ int run(const std::vector<std::string>& args) {
         "json", po::bool_switch(), "print fragility.json to stdout instead of the summary")(
         "shard", po::value<std::string>(),
         "K/N: compute only this share of the samples and write out/shard-K-of-N.jsonl for "
-        "`freestand merge`");
+        "`freestand merge`")(
+        "pdf", po::bool_switch(),
+        "also write report.pdf: the HTML report paged for print (A4, page N of M), made by "
+        "WeasyPrint (scripts/setup.sh installs it); not with --shard, which writes no report");
     const auto vm = parse_options("fragility", usage, desc, args, {"case"});
     if (!vm) return 0;
+    const bool pdf = (*vm)["pdf"].as<bool>();
+    if (pdf && vm->count("shard"))
+        throw UsageError("--pdf makes report.pdf from report.html, which --shard does not write "
+                         "(the merged run's report is made by `freestand merge`)");
+    // A missing converter stops the command before the samples, not after them.
+    std::optional<std::filesystem::path> converter;
+    if (pdf) converter = report::find_pdf_converter();
     const std::filesystem::path case_file = (*vm)["case"].as<std::string>();
     const std::string bytes = core::read_input_file(case_file);
     const assess::Case c = assess::parse_case(bytes, case_file.string());
@@ -88,7 +99,8 @@ int run(const std::vector<std::string>& args) {
         if (mpi.rank() != 0) return 0;
     }
     const bool json = (*vm)["json"].as<bool>();
-    write_fragility_outputs(fragility::aggregate(meta, std::move(samples)), stamp, out, json);
+    write_fragility_outputs(fragility::aggregate(meta, std::move(samples)), stamp, out, json,
+                            converter);
     if (mpi.size() > 1 && !json)
         std::cout << fmt::format("samples computed on {} MPI ranks\n", mpi.size());
     return 0;

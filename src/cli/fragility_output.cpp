@@ -7,6 +7,7 @@
 #include "core/file_io.hpp"
 #include "fragility/serialize.hpp"
 #include "report/fragility_report.hpp"
+#include "report/pdf.hpp"
 
 namespace freestand::cli {
 
@@ -15,9 +16,13 @@ nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const rep
 }
 
 void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
-                             const std::filesystem::path& out, bool print_json) {
+                             const std::filesystem::path& out, bool print_json,
+                             const std::optional<std::filesystem::path>& pdf_converter) {
     const report::RenderedFragility rendered = report::render_fragility(r, stamp);
-    report::write_fragility(out, rendered);
+    std::vector<core::OutputFile> extra;
+    if (pdf_converter)
+        extra.push_back({"report.pdf", report::html_to_pdf(*pdf_converter, rendered.html)});
+    report::write_fragility(out, rendered, extra);
     if (print_json) {
         std::cout << rendered.json;
         return;

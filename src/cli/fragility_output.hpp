@@ -2,6 +2,7 @@
 /// What `fragility` and `merge` share: the run's stamp and writing its outputs.
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "assess/case.hpp"
 #include "cli/documents.hpp"
@@ -14,8 +15,10 @@ namespace freestand::cli {
 nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const report::Stamp& stamp);
 
 /// Renders and publishes the outputs into out, prints the summary (or fragility.json with
-/// json) to stdout.
+/// print_json) to stdout. With pdf_converter (report::find_pdf_converter) report.pdf, made from
+/// report.html, is published with them.
 void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
-                             const std::filesystem::path& out, bool print_json);
+                             const std::filesystem::path& out, bool print_json,
+                             const std::optional<std::filesystem::path>& pdf_converter = {});
 
 }  // namespace freestand::cli

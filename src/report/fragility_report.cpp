@@ -196,12 +196,15 @@ RenderedFragility render_fragility(const fragility::Result& r, const Stamp& stam
     return out;
 }
 
-void write_fragility(const std::filesystem::path& dir, const RenderedFragility& rendered) {
-    core::publish_folder(dir, {{rendered.figure.file, rendered.figure.svg},
-                               {"report.md", rendered.markdown},
-                               {"report.html", rendered.html},
-                               {"fragility.json", rendered.json},
-                               {"samples.csv", rendered.csv}});
+void write_fragility(const std::filesystem::path& dir, const RenderedFragility& rendered,
+                     const std::vector<core::OutputFile>& extra) {
+    std::vector<core::OutputFile> files{{rendered.figure.file, rendered.figure.svg},
+                                        {"report.md", rendered.markdown},
+                                        {"report.html", rendered.html},
+                                        {"fragility.json", rendered.json},
+                                        {"samples.csv", rendered.csv}};
+    files.insert(files.end(), extra.begin(), extra.end());
+    core::publish_folder(dir, files);
 }
 
 }  // namespace freestand::report

@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include <mstch/mstch.hpp>
 
+#include "core/publish.hpp"
 #include "fragility/fragility.hpp"
 #include "report/fragility_json.hpp"
 #include "report/json.hpp"
@@ -33,9 +35,10 @@ struct RenderedFragility {
 
 RenderedFragility render_fragility(const fragility::Result& r, const Stamp& stamp);
 
-/// Publishes report.md, report.html, fragility.json, samples.csv and the figure as the whole
-/// content of dir (core::publish_folder).
-void write_fragility(const std::filesystem::path& dir, const RenderedFragility& rendered);
+/// Publishes report.md, report.html, fragility.json, samples.csv, the figure and the extra
+/// files (report.pdf with `fragility --pdf`) as the whole content of dir (core::publish_folder).
+void write_fragility(const std::filesystem::path& dir, const RenderedFragility& rendered,
+                     const std::vector<core::OutputFile>& extra = {});
 
 /// The section's template values (frag_*), merged into an assessment report's context.
 mstch::map fragility_section_context(const fragility::Result& r, const Figure& figure);

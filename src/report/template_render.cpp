@@ -5,6 +5,8 @@
 
 namespace freestand::report {
 
+extern const char* const template_print_style_html;
+
 std::string render_markdown(const std::string& tpl, const mstch::map& ctx,
                             const Partials& partials) {
     EscapeGuard guard(markdown_escape);
@@ -13,7 +15,9 @@ std::string render_markdown(const std::string& tpl, const mstch::map& ctx,
 
 std::string render_html(const std::string& tpl, const mstch::map& ctx, const Partials& partials) {
     EscapeGuard guard(html_escape);
-    return mstch::render(tpl, ctx, partials);
+    Partials with_print = partials;
+    with_print.emplace("print_style", template_print_style_html);
+    return mstch::render(tpl, ctx, with_print);
 }
 
 mstch::array stamp_input_items(const Stamp& stamp) {

@@ -19,7 +19,9 @@ using Partials = std::map<std::string, std::string>;
 std::string render_markdown(const std::string& tpl, const mstch::map& ctx,
                             const Partials& partials = {});
 
-/// The template rendered with every {{value}} HTML-escaped (html_escape).
+/// The template rendered with every {{value}} HTML-escaped (html_escape). Every HTML template
+/// may include {{> print_style}}, the print CSS the reports share (templates/
+/// print_style.html.mustache: pages, page numbers, repeated table headers).
 std::string render_html(const std::string& tpl, const mstch::map& ctx,
                         const Partials& partials = {});
 

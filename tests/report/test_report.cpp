@@ -671,7 +671,7 @@ TEST_CASE("an assessment with a fragility result carries its section, figure and
     const Rendered with = render(hand_result(), stamp(), &f);
     const Rendered without = render(hand_result(), stamp());
     CHECK(without.markdown.find("## Fragility") == std::string::npos);
-    CHECK(without.html.find("<h2>Fragility</h2>") == std::string::npos);
+    CHECK(without.html.find(">Fragility</h2>") == std::string::npos);
     CHECK(without.extra_files.empty());
     CHECK_FALSE(nlohmann::json::parse(without.json).contains("fragility"));
     // The section comes before the assumptions, in both reports.
@@ -680,10 +680,10 @@ TEST_CASE("an assessment with a fragility result carries its section, figure and
     CHECK(md_at < with.markdown.find("## Assumptions"));
     CHECK(with.markdown.find("| 0.400 | 4 | 3 / 4 \\[") != std::string::npos);
     CHECK(with.markdown.find("](fragility.svg)") != std::string::npos);
-    const auto html_at = with.html.find("<h2>Fragility</h2>");
+    const auto html_at = with.html.find(">Fragility</h2>");
     REQUIRE(html_at != std::string::npos);
-    CHECK(html_at < with.html.find("<h2>Assumptions</h2>"));
-    CHECK(with.html.find("<svg", html_at) < with.html.find("<h2>Assumptions</h2>"));
+    CHECK(html_at < with.html.find(">Assumptions</h2>"));
+    CHECK(with.html.find("<svg", html_at) < with.html.find(">Assumptions</h2>"));
     REQUIRE(with.extra_files.size() == 1);
     CHECK(with.extra_files[0].name == "fragility.svg");
     const auto j = nlohmann::json::parse(with.json);
@@ -692,6 +692,30 @@ TEST_CASE("an assessment with a fragility result carries its section, figure and
     CHECK_FALSE(j["fragility"].contains("stamp"));
     // The rest of the report is untouched.
     CHECK(with.markdown.substr(0, md_at) == without.markdown.substr(0, md_at));
+}
+
+TEST_CASE("the HTML report carries the print CSS, and every table's header row is a <thead>",
+          "[report][html][pdf]") {
+    const fragility::Result f = hand_fragility();
+    const Rendered out = render(hand_result(), stamp(), &f);
+    // templates/print_style.html.mustache, inside the report's one <style>.
+    const auto style_end = out.html.find("</style>");
+    CHECK(out.html.find("@page") < style_end);
+    CHECK(out.html.find("content: \"page \" counter(page) \" of \" counter(pages)") < style_end);
+    CHECK(out.html.find("thead { display: table-header-group; }") < style_end);
+    CHECK(out.html.find("{{") == std::string::npos);
+    // A table opens with its header row in a <thead>, or is the stamp (one header per row).
+    std::size_t tables = 0;
+    for (auto at = out.html.find("<table"); at != std::string::npos;
+         at = out.html.find("<table", at + 1)) {
+        ++tables;
+        const std::string head = out.html.substr(at, 40);
+        INFO(head);
+        CHECK((head.rfind("<table>\n<thead><tr><th>", 0) == 0 ||
+               head.rfind("<table class=\"stamp\">", 0) == 0));
+    }
+    CHECK(tables >= 7);
+    CHECK(out.html.find("<h2 class=\"new-page\">Figures</h2>") != std::string::npos);
 }
 
 TEST_CASE("report_files lists every file of the folder, the fragility figure included",
