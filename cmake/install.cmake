@@ -4,7 +4,8 @@
 #
 # Installed tree (GNUInstallDirs):
 #   bin/freestand
-#   include/freestand/<stage>/*.hpp          one folder per stage, as in src/
+#   include/freestand/<stage>/*.hpp          one folder per stage, as in src/ (not *_detail.hpp,
+#                                            which only the stage's sources include)
 #   lib/libfreestand_<stage>.a
 #   lib/cmake/freestand/freestandConfig.cmake, freestandConfigVersion.cmake,
 #                       freestandTargets.cmake, freestandTargets-<config>.cmake
@@ -35,7 +36,7 @@ foreach(stage IN LISTS FREESTAND_STAGES)
     list(APPEND FREESTAND_INSTALLED_TARGETS freestand_${stage})
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/${stage}/
             DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/freestand/${stage}
-            FILES_MATCHING PATTERN "*.hpp")
+            FILES_MATCHING PATTERN "*.hpp" PATTERN "*_detail.hpp" EXCLUDE)
   endif()
 endforeach()
 
