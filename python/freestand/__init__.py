@@ -105,6 +105,15 @@ def _cg(cg: Union[None, str, Sequence[float], Mapping[str, float]]) -> Optional[
     return ",".join(_text(v) for v in cg)
 
 
+def _samples(values: Any, what: str) -> np.ndarray:
+    """values as float64 samples; InputError naming `what`, as the module does, when they are
+    not numbers (its shape is checked there)."""
+    try:
+        return np.asarray(values, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{what}: expected a one-dimensional array of numbers ({e})") from None
+
+
 def read_record(path: PathLike) -> Record:
     """Reads a PEER .AT2, COSMOS .V2 or CSV record (docs/methods.md s.8 for the CSV headers)."""
     r = _fs.read_record(os.fspath(path))
@@ -117,7 +126,7 @@ def response_spectrum(record: Record, damping: Union[float, Sequence[float]] = 0
     """The record's measures and its PSA (g), SD (m) and PSV (m/s) per damping
     (`freestand spectrum --json`): psa_g["0.05"] is an array over frequencies_hz."""
     damping = damping if isinstance(damping, (list, tuple, np.ndarray)) else [damping]
-    return _fs.spectrum(np.asarray(record.accel_mps2, dtype=float), record.dt_s, record.name,
+    return _fs.spectrum(_samples(record.accel_mps2, "accel_mps2"), record.dt_s, record.name,
                         record.source, record.component,
                         _args(damping=damping, frequencies=frequencies, fmin=fmin, fmax=fmax,
                               per_decade=per_decade))
@@ -186,9 +195,9 @@ def simulate(block: Union[str, Mapping[str, float]], motion: Union[Record, np.nd
         if dt_s is None:
             raise UsageError("simulate: an array of samples needs dt_s (s)")
         accel, label = motion, "python array"
-    vertical = None if vertical_mps2 is None else np.asarray(vertical_mps2, dtype=float)
+    vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
     return _fs.simulate(_args(block=_block(block), cg=_cg(cg), mu=mu, **options),
-                        np.asarray(accel, dtype=float), float(dt_s), vertical, float(scale),
+                        _samples(accel, "accel_mps2"), float(dt_s), vertical, float(scale),
                         label, series)
 
 

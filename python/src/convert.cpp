@@ -53,7 +53,10 @@ py::array_t<double> to_numpy(const std::vector<double>& values) {
 }
 
 std::vector<double> from_numpy(const py::handle& values, const std::string& what) {
+    // ensure() leaves a Python error (ValueError for strings) where it cannot convert: that is
+    // the same bad input as a 2-D array, so it is reported the same way.
     const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
+    if (!a) PyErr_Clear();
     if (!a || a.ndim() != 1)
         throw InputError(SourceLocation{"", 0, what},
                          "expected a one-dimensional array of numbers");

@@ -1,4 +1,5 @@
 // simulate, assess and fragility.
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include <ctime>
@@ -9,6 +10,7 @@
 #include "cli/build_info.hpp"
 #include "cli/documents.hpp"
 #include "convert.hpp"
+#include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "report/case_assessment.hpp"
 #include "report/fragility_json.hpp"
@@ -111,6 +113,12 @@ void bind_runs(py::module_& m) {
             std::optional<core::Record> v;
             if (!vertical_mps2.is_none())
                 v = make_record(vertical_mps2, dt_s, label, "python", "v");
+            // On the horizontal's samples: a shorter vertical would be read as zero after its
+            // end (sample_at), which for arrays is a mistake, not a resampling.
+            if (v && v->size() != h.size())
+                throw InputError(SourceLocation{"", 0, "vertical_mps2"},
+                                 fmt::format("{} samples; expected the {} of accel_mps2 (the same "
+                                             "time steps)", v->size(), h.size()));
             dynamics::SimulationResult res;
             {
                 py::gil_scoped_release unlocked;

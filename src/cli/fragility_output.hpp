@@ -1,11 +1,10 @@
 #pragma once
-/// What `fragility` and `merge` share: the run's stamp and writing its outputs.
+/// What `fragility` and `merge` share: a shard's run descriptor and writing the outputs.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "assess/case.hpp"
-#include "cli/documents.hpp"
 #include "fragility/fragility.hpp"
 #include "report/json.hpp"
 

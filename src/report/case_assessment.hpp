@@ -1,6 +1,6 @@
 #pragma once
 /// One case assessed, without rendering: what `assess` renders and what the Python module
-/// returns as result.json (it links this without the templates).
+/// returns as result.json.
 #include <filesystem>
 #include <optional>
 #include <string>

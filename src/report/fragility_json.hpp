@@ -1,6 +1,6 @@
 #pragma once
-/// fragility.json and the "fragility" object of result.json (no rendering: the Python module
-/// links this without the templates).
+/// fragility.json and the "fragility" object of result.json, apart from the fragility report's
+/// rendering (the Python module returns the JSON only).
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

@@ -242,6 +242,18 @@ def test_an_array_that_is_not_one_dimensional_is_refused():
         freestand.simulate(BLOCK, np.zeros((10, 2)), 0.01, mu=0.3)
 
 
+def test_samples_that_are_not_numbers_are_refused_naming_the_array():
+    with pytest.raises(freestand.InputError, match="accel_mps2: expected a one-dimensional"):
+        freestand.simulate(BLOCK, np.array(["a", "b"]), 0.01, mu=0.3)
+
+
+def test_a_vertical_of_another_length_is_refused():
+    with pytest.raises(freestand.InputError, match="vertical_mps2: 5 samples; expected the 10"):
+        freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, vertical_mps2=np.zeros(5))
+    run = freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, vertical_mps2=np.zeros(10))
+    assert run["slide_max_m"] == 0.0
+
+
 def test_non_finite_samples_are_refused():
     samples = np.zeros(100)
     samples[50] = math.nan
