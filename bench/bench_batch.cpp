@@ -32,7 +32,7 @@ struct Timed {
 Timed timed_batch(const batch::BatchList& list, unsigned threads) {
     const auto t0 = Clock::now();
     Timed t;
-    t.run = batch::run_batch(list, threads, "bench");
+    t.run = batch::run_batch(list, assess::RunSettings(static_cast<int>(threads)), "bench");
     t.files = batch::batch_files(t.run);
     t.seconds = seconds_since(t0);
     return t;
@@ -43,7 +43,7 @@ void per_case(const batch::BatchList& list) {
     std::printf("   %-22s %8s  %s\n", "case", "1 thr s", "verdict");
     for (std::size_t i = 0; i < list.entries.size(); ++i) {
         const auto t0 = Clock::now();
-        const std::vector<batch::BatchRow> rows = batch::run_rows(list, {i}, 1, "bench");
+        const std::vector<batch::BatchRow> rows = batch::run_rows(list, {i}, assess::RunSettings(1), "bench");
         const report::SummaryRow& r = rows.at(0).row;
         std::printf("   %-22s %8.2f  %s\n", r.name.c_str(), seconds_since(t0),
                     r.outcome ? r.outcome->verdict_kind.c_str() : r.error.c_str());

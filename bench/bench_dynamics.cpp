@@ -25,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/integrators.hpp"
@@ -214,7 +215,7 @@ void pair_rows(const core::Record& rec, const char* label, double pga_g,
 int main(int argc, char** argv) {
     // An argument names one section to run alone: "flexible" (the flexible-body rows).
     const std::string_view only = argc > 1 ? argv[1] : "";
-    auto rec = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
+    auto rec = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
     rec.accel_mps2.resize(static_cast<std::size_t>(20.0 / rec.dt_s) + 1);
     // Slide: tan(alpha) = 0.25 > mu. Rock and slide-rock: tan(alpha) = 0.5; mu = 0.525 lies
     // between tan(alpha) and mu_crit at the peaks, so the block slide-rocks for ~0.3 s.

@@ -86,7 +86,7 @@ void throughput() {
         cfg.samples = sc.samples;
         fragility::Runner runner(c, cfg);
         const auto t_pool = Clock::now();
-        runner.prepare(2);
+        runner.prepare(assess::RunSettings(2));
         const double pool_s = seconds_since(t_pool);
         const auto indices = all_indices(runner);
         double s[2] = {0.0, 0.0};
@@ -122,7 +122,7 @@ void issue_run(const assess::Case& c) {
     const auto t0 = Clock::now();
     const double c0 = cpu_s();
     fragility::Runner runner(c, cfg);
-    runner.prepare(2);
+    runner.prepare(assess::RunSettings(2));
     const double t_pool = seconds_since(t0);
     const double c1 = cpu_s();
     const auto t1 = Clock::now();
@@ -183,7 +183,7 @@ void exact_sliding() {
         cfg.seed = 3;
         cfg.record_files = {record};
         fragility::Runner runner(c, cfg);
-        runner.prepare(2);
+        runner.prepare(assess::RunSettings(2));
         const auto t0 = Clock::now();
         const fragility::Result r = fragility::aggregate(
             fragility::make_meta(c, cfg), fragility::run_samples(runner, all_indices(runner), 2));
@@ -204,7 +204,7 @@ void interval_width() {
     cfg.pga_g = {0.5, 0.6};
     cfg.samples = 400;
     fragility::Runner runner(c, cfg);
-    runner.prepare(2);
+    runner.prepare(assess::RunSettings(2));
     const auto samples = fragility::run_samples(runner, all_indices(runner), 2);
     std::printf("   %6s %26s %26s\n", "N", "0.5 g k/n [95%] width", "0.6 g k/n [95%] width");
     for (int n : {25, 50, 100, 200, 400}) {

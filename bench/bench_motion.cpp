@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
 
@@ -50,7 +51,7 @@ void timed(const char* what, int repeats, F make) {
 int main(int argc, char** argv) {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
     const motion::TargetSet ts = motion::rg160_targets(0.3);
-    const std::string data = FREESTAND_TEST_DATA;
+    const std::string data = freestand::test::data_dir();
     std::printf(
         "RG 1.60, PGA 0.3 g, 20 s at dt 0.005 s (synthetic); seeds at their own length\n\n");
     timed("synthetic h1", repeats, [&] {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "spectra/response.hpp"
 #include "spectra/spectrum.hpp"
@@ -68,7 +69,7 @@ double max_rel_error(const spectra::ResponseSpectra& a, const spectra::ResponseS
 
 int main(int argc, char** argv) {
     const std::string path =
-        argc > 1 ? argv[1] : std::string(FREESTAND_TEST_DATA) + "/RSN1546_CHICHI_TCU122-N.AT2";
+        argc > 1 ? argv[1] : std::string(freestand::test::data_dir()) + "/RSN1546_CHICHI_TCU122-N.AT2";
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 9;
     const core::Record rec = core::read_at2(path);
     const std::vector<double> f = spectra::log_frequencies(0.1, 100.0, 100);

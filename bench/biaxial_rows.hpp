@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "assess/case.hpp"
 #include "assess/histories.hpp"
 #include "assess/level.hpp"
@@ -74,7 +75,7 @@ inline std::function<double(std::size_t&)> planar_run(const dynamics::BlockModel
 
 // The El Centro pair: one row per configuration.
 inline void biaxial_record_rows(const core::Record& x140) {
-    auto y = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    auto y = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     y.accel_mps2.resize(x140.accel_mps2.size());
     double peak = 0.0;
     for (double a : x140.accel_mps2) peak = std::max(peak, std::abs(a));
@@ -116,7 +117,7 @@ inline void biaxial_record_rows(const core::Record& x140) {
 // biaxial runs at the case's lower friction bound, and the biaxial error against rel_tol 1e-12.
 inline void biaxial_case_rows() {
     const assess::Case c = assess::read_case(source_dir() / "cases" / "glovebox-single.toml");
-    assess::HistoryBank bank(c, 1);
+    assess::HistoryBank bank(c, assess::RunSettings(1));
     const auto& sets = bank.sets();
     const assess::DirectionBounds bounds = assess::direction_bounds(c.component, assess::Direction::x);
     const auto planar = assess::block_model(c.component, bounds.sliding, assess::Direction::x);

@@ -5,6 +5,8 @@
 #include <ctime>
 #include <filesystem>
 
+#include "support/paths.hpp"
+
 namespace freestand::bench {
 
 using Clock = std::chrono::steady_clock;
@@ -19,9 +21,7 @@ inline double thread_cpu_s() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-/// The project's root (FREESTAND_TEST_DATA is its tests/data).
-inline std::filesystem::path source_dir() {
-    return std::filesystem::path(FREESTAND_TEST_DATA).parent_path().parent_path();
-}
+/// The project's root.
+inline std::filesystem::path source_dir() { return freestand::test::source_dir(); }
 
 }  // namespace freestand::bench

@@ -4,7 +4,7 @@
 # `--pdf`; chromium, chromium-driver, python3-selenium, python3-pil and poppler-utils run the
 # browser and PDF checks of tests/browser/.
 set -euo pipefail
-packages=(g++ cmake make pkg-config ccache git
+packages=(g++ cmake make ninja-build pkg-config ccache git
   libeigen3-dev libfftw3-dev libboost-dev libboost-program-options-dev libfmt-dev
   catch2 libtomlplusplus-dev libmstch-dev nlohmann-json3-dev
   clang-14 libclang-rt-14-dev

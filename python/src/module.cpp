@@ -7,6 +7,7 @@
 #include "cli/build_info.hpp"
 #include "cli/flag_names.hpp"
 #include "core/errors.hpp"
+#include "core/version.hpp"
 
 namespace py = pybind11;
 
@@ -61,7 +62,7 @@ PYBIND11_MODULE(_freestand, m) {
             PyErr_SetString(errors.base.ptr(), e.what());
         }
     });
-    m.attr("version") = FREESTAND_VERSION;
+    m.attr("version") = freestand::core::version();
     m.attr("commit") = freestand::cli::build_commit;
     freestand::python::bind_records(m);
     freestand::python::bind_documents(m);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "assess/verdict.hpp"
+#include "core/parallel.hpp"
 #include "dynamics/biaxial.hpp"
 
 namespace freestand::assess {
@@ -37,12 +38,15 @@ std::optional<std::string> not_applicable(const Case& c, const LevelResult& l,
 
 // Peak |u| of every history run biaxially at the sliding bound.
 Stats biaxial_peaks(const dynamics::BiaxialModel& model,
-                    const std::vector<dynamics::BiaxialExcitation>& ex, double g_mps2) {
+                    const std::vector<dynamics::BiaxialExcitation>& ex, double g_mps2,
+                    int threads) {
     dynamics::Options opt = dynamics::biaxial_options();
     opt.record_series = false;
     opt.g_mps2 = g_mps2;
-    std::vector<double> peaks;
-    for (const auto& e : ex) peaks.push_back(dynamics::simulate_biaxial(model, e, opt).summary.slide_max_m);
+    std::vector<double> peaks(ex.size());
+    core::parallel_for(ex.size(), threads, [&](std::size_t k) {
+        peaks[k] = dynamics::simulate_biaxial(model, ex[k], opt).summary.slide_max_m;
+    });
     return stats_of(peaks);
 }
 
@@ -74,7 +78,7 @@ void apply_biaxial(const Case& c, const LevelDemand& demand, std::vector<LevelRe
             b.reason = *why;
             l->model_reason += "; biaxial sliding does not apply: " + *why;
         } else {
-            if (!peaks) peaks = biaxial_peaks(model, ex, c.site.g_mps2);
+            if (!peaks) peaks = biaxial_peaks(model, ex, c.site.g_mps2, bank.run().threads);
             b.ran = true;
             b.slide_m = *peaks;
             b.reason = "the block slides without rocking at the sliding bound: both horizontal "

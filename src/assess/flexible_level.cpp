@@ -51,23 +51,26 @@ void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, Hi
                              bool rocking_mode) {
     const Direction d = level.direction;
     const dynamics::FlexibleModel probe = flexible_model(c.component, level.bounds.rocking, d);
-    std::vector<dynamics::FlexibleSummary> runs;
-    const HistoryRunner run = [&](const dynamics::BlockModel& rigid,
+    // Slot 2k + bound of history k's run at a bound (the rocking bound's only when they differ).
+    std::vector<dynamics::FlexibleSummary> runs(2 * bank.sets().size());
+    std::vector<char> ran(runs.size(), 0);
+    const HistoryRunner run = [&](std::size_t k, int bound, const dynamics::BlockModel& rigid,
                                   const dynamics::Excitation& ex, const dynamics::Options& opt) {
         dynamics::FlexibleModel m = probe;
         m.rigid = rigid;
-        runs.push_back(dynamics::simulate_flexible(m, ex, opt).summary);
-        return runs.back().base;
+        const std::size_t slot = 2 * k + static_cast<std::size_t>(bound);
+        runs[slot] = dynamics::simulate_flexible(m, ex, opt).summary;
+        ran[slot] = 1;
+        return runs[slot].base;
     };
     FlexibleSimulation out;
     out.sim = simulate_level(c, level.bounds, d, pga_g, bank, rocking_mode, run);
-    // One run per history, or two (sliding bound, rocking bound) when the bounds differ.
-    const std::size_t per = out.sim.bounds_differ ? 2 : 1;
     std::vector<double> modal, accel;
-    for (std::size_t k = 0; k + per <= runs.size(); k += per) {
+    for (std::size_t k = 0; k + 2 <= runs.size(); k += 2) {
         double q = 0.0, a = 0.0;
         bool up = false;
-        for (std::size_t j = k; j < k + per; ++j) {
+        for (std::size_t j = k; j < k + 2; ++j) {
+            if (!ran[j]) continue;
             q = std::max(q, runs[j].modal_max_m);
             a = std::max(a, runs[j].modal_accel_max_g);
             up = up || runs[j].uplifted;

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <future>
-#include <thread>
 
+#include "assess/history_cache.hpp"
 #include "core/errors.hpp"
+#include "core/parallel.hpp"
 #include "core/random.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
@@ -101,12 +101,17 @@ void reject_failing(const Case& c, const std::vector<HistorySet>& sets) {
     }
 }
 
-HistorySet generate_one(const Case& c, const motion::TargetSet& targets, std::size_t k) {
+// The generation request of set k: its seed from the case seed, and its seed records.
+motion::GenerateOptions generate_options(const Case& c, std::size_t k) {
     motion::GenerateOptions go;
     go.seed = HistoryBank::history_seed(c.options.seed, static_cast<int>(k));
     for (std::size_t j = 0; j < 3 && !c.options.seed_records.empty(); ++j) {
         go.seed_records.push_back(core::read_record(c.options.seed_records[3 * k + j]));
     }
+    return go;
+}
+
+HistorySet generate_one(const motion::TargetSet& targets, const motion::GenerateOptions& go) {
     const motion::GeneratedSet g = motion::generate_set(targets, go);
     HistorySet s;
     s.h1 = g.components.at(0).record;
@@ -119,9 +124,36 @@ HistorySet generate_one(const Case& c, const motion::TargetSet& targets, std::si
     return s;
 }
 
+// What one set yields: the set, and whether the cache held it.
+struct Obtained {
+    HistorySet set;
+    bool from_cache = false;
+};
+
+Obtained obtain(const Case& c, const motion::TargetSet& targets, std::size_t k,
+                const core::ContentStore* cache) {
+    const motion::GenerateOptions go = generate_options(c, k);
+    Obtained out;
+    std::string key;
+    if (cache != nullptr) {
+        key = history_key(targets, go, c.options.seed, k);
+        if (const auto bytes = cache->get(key)) {
+            if (auto set = decode_history(*bytes)) {
+                out.set = std::move(*set);
+                out.from_cache = true;
+                return out;
+            }
+        }
+    }
+    out.set = generate_one(targets, go);
+    // A set that cannot be stored is only regenerated next time (the store keeps the reason).
+    if (cache != nullptr) cache->put(key, encode_history(out.set));
+    return out;
+}
+
 }  // namespace
 
-HistoryBank::HistoryBank(const Case& c, int threads) : case_(&c), threads_(threads) {}
+HistoryBank::HistoryBank(const Case& c, RunSettings run) : case_(&c), run_(std::move(run)) {}
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
     // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.
@@ -139,33 +171,42 @@ const std::vector<HistorySet>& HistoryBank::sets() {
                                      3 * n, n, opt.seed_records.size()));
     }
     const motion::TargetSet targets = unit_targets(case_->site);
-    // The sets are independent (own seeds); generating them on all cores keeps the result
-    // identical, since each lands in its own slot (the motion stage serialises FFTW planning).
+    // The sets are independent (own seeds): each lands in its own slot whatever the thread
+    // that made it (the motion stage serialises FFTW planning).
+    std::vector<Obtained> got(n);
+    core::parallel_for(
+        n, run_.threads, [&](std::size_t k) { got[k] = obtain(*case_, targets, k, run_.cache); },
+        run_.progress ? [&](std::size_t done, std::size_t total) {
+            run_.progress("history sets", done, total);
+        } : core::ProgressCallback{});
     sets_.resize(n);
-    const std::size_t cores =
-        threads_ > 0 ? static_cast<std::size_t>(threads_) : std::thread::hardware_concurrency();
-    const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(n, cores));
-    std::vector<std::future<void>> jobs;
-    for (std::size_t w = 0; w < workers; ++w) {
-        jobs.push_back(std::async(std::launch::async, [&, w] {
-            for (std::size_t k = w; k < n; k += workers)
-                sets_[k] = generate_one(*case_, targets, k);
-        }));
+    cache_hits_ = generated_sets_ = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        sets_[k] = std::move(got[k].set);
+        (got[k].from_cache ? cache_hits_ : generated_sets_) += 1;
     }
-    for (auto& job : jobs) job.get();  // rethrows the first failure
+    if (run_.cache != nullptr && generated_sets_ > 0) run_.cache->prune();
     reject_failing(*case_, sets_);
-    for (const HistorySet& s : sets_) {
-        const core::GroundMotion gx = core::measure(s.h1);
-        const core::GroundMotion gy = core::measure(s.h2);
-        // The high-pass is linear, so the displacement at 1 g scales with the level.
-        const double corner_hz = case_->site.energy_highpass_hz;
-        unit_hp_disp_x_m_.push_back(sliding::highpass_peak_displacement_m(s.h1, corner_hz));
-        unit_hp_disp_y_m_.push_back(sliding::highpass_peak_displacement_m(s.h2, corner_hz));
-        unit_pgv_x_mps_.push_back(gx.pgv_mps);
-        unit_pgv_y_mps_.push_back(gy.pgv_mps);
-    }
+    measure_sets();
     generated_ = true;
     return sets_;
+}
+
+// The energy method's DeltaD and the PGV of each set at 1 g (both linear in the level).
+void HistoryBank::measure_sets() {
+    const std::size_t n = sets_.size();
+    unit_hp_disp_x_m_.assign(n, 0.0);
+    unit_hp_disp_y_m_.assign(n, 0.0);
+    unit_pgv_x_mps_.assign(n, 0.0);
+    unit_pgv_y_mps_.assign(n, 0.0);
+    const double corner_hz = case_->site.energy_highpass_hz;
+    core::parallel_for(n, run_.threads, [&](std::size_t k) {
+        const HistorySet& s = sets_[k];
+        unit_hp_disp_x_m_[k] = sliding::highpass_peak_displacement_m(s.h1, corner_hz);
+        unit_hp_disp_y_m_[k] = sliding::highpass_peak_displacement_m(s.h2, corner_hz);
+        unit_pgv_x_mps_[k] = core::measure(s.h1).pgv_mps;
+        unit_pgv_y_mps_[k] = core::measure(s.h2).pgv_mps;
+    });
 }
 
 core::Record HistoryBank::scaled(const core::Record& unit, double pga_g) {

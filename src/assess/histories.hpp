@@ -2,12 +2,14 @@
 /// Spectrum-compatible histories of a case, generated once on first use and shared by every
 /// level, direction and material trial. RG 1.60 with a vertical ratio is linear in the PGA, so
 /// the sets are matched at 1 g and scaled: a scaled record matches the scaled target with the
-/// same ratios (response spectra are linear in the input).
+/// same ratios (response spectra are linear in the input). Sets are generated on every core
+/// and read from the history cache when it holds them (assess/history_cache.hpp).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "assess/case.hpp"
+#include "assess/run_settings.hpp"
 #include "core/record.hpp"
 #include "motion/motion.hpp"
 
@@ -26,9 +28,13 @@ struct HistorySet {
 
 class HistoryBank {
   public:
-    /// Nothing is generated until sets() is first called, then on `threads` threads (0: all
-    /// cores); the sets do not depend on the thread count.
-    explicit HistoryBank(const Case& c, int threads = 0);
+    /// Nothing is generated until sets() is first called, then on run.threads threads, each
+    /// set read from run.cache when there and written to it when generated; the sets do not
+    /// depend on either.
+    explicit HistoryBank(const Case& c, RunSettings run = {});
+
+    /// The run's settings: the simulations of the levels use its threads too.
+    const RunSettings& run() const { return run_; }
 
     /// The options.histories_per_level sets at 1 g, generating them on first call. Throws
     /// InputError when options.seed_records is not three records (h1, h2, v) per history.
@@ -47,10 +53,18 @@ class HistoryBank {
     /// unrelated streams).
     static std::uint64_t history_seed(std::uint64_t case_seed, int k);
 
+    /// Sets read from the cache, and sets generated, by sets().
+    std::size_t cache_hits() const { return cache_hits_; }
+    std::size_t generated_sets() const { return generated_sets_; }
+
   private:
+    void measure_sets();
+
     const Case* case_;
-    int threads_ = 0;
+    RunSettings run_;
     bool generated_ = false;
+    std::size_t cache_hits_ = 0;
+    std::size_t generated_sets_ = 0;
     std::vector<HistorySet> sets_;
     std::vector<double> unit_hp_disp_x_m_;
     std::vector<double> unit_hp_disp_y_m_;

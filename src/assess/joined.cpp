@@ -9,6 +9,7 @@
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 #include "core/contract.hpp"
+#include "core/parallel.hpp"
 #include "dynamics/pair.hpp"
 
 namespace freestand::assess {
@@ -39,18 +40,28 @@ TunnelDirection tunnel_direction(const Case& c, Direction d, double pga_g, Histo
     std::vector<double> relative, common;
     double worst = -1.0;
     const auto& sets = bank.sets();
-    for (std::size_t k = 0; k < sets.size(); ++k) {
+    // Per history: the pair with opposite friction bounds both ways, and with equal ones.
+    struct Runs {
+        double peak = 0.0, common = 0.0;
+        bool overturned = false;
+    };
+    std::vector<Runs> runs(sets.size());
+    core::parallel_for(sets.size(), bank.run().threads, [&](std::size_t k) {
         const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
         const auto a = dynamics::simulate_pair({m[0].lower, m[1].upper}, ex, pair, opt);
         const auto b = dynamics::simulate_pair({m[0].upper, m[1].lower}, ex, pair, opt);
         const auto same = dynamics::simulate_pair({m[0].lower, m[1].lower}, ex, pair, opt);
-        const bool overturned = a.overturned || b.overturned || same.overturned;
-        const double peak = std::max(a.relative_max_m, b.relative_max_m);
+        runs[k] = {std::max(a.relative_max_m, b.relative_max_m), same.relative_max_m,
+                   a.overturned || b.overturned || same.overturned};
+    });
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+        const bool overturned = runs[k].overturned;
+        const double peak = runs[k].peak;
         if (overturned) {
             ++out.overturned;
         } else {
             relative.push_back(peak);
-            common.push_back(same.relative_max_m);
+            common.push_back(runs[k].common);
         }
         const double score = overturned ? 1e9 : peak;
         if (score > worst) {
@@ -138,12 +149,12 @@ TunnelLevel tunnel_level(const Case& c, double pga_g, HistoryBank& bank) {
     return t;
 }
 
-AssessmentResult assess_joined(const Case& c) {
+AssessmentResult assess_joined(const Case& c, const RunSettings& run) {
     FREESTAND_EXPECT(c.units.size() == 2 && c.tunnel, "two units and a tunnel");
     auto joined = std::make_shared<JoinedResult>();
     joined->tunnel = *c.tunnel;
-    for (std::size_t i = 0; i < 2; ++i) joined->units[i] = assess(unit_case(c, i));
-    HistoryBank bank(c);
+    for (std::size_t i = 0; i < 2; ++i) joined->units[i] = assess(unit_case(c, i), run);
+    HistoryBank bank(c, run);
     for (double pga : c.site.pga_g) joined->levels.push_back(tunnel_level(c, pga, bank));
     std::vector<std::string> failing;
     for (std::size_t i = 0; i < joined->levels.size(); ++i) {

@@ -64,7 +64,7 @@ TunnelLevel tunnel_level(const Case& c, double pga_g, HistoryBank& bank);
 /// Assesses a two-unit case (c.units, c.tunnel): each unit as a one-component case with the
 /// same site and options, then the tunnel check at every level; the headline is the worst of
 /// the units and the tunnel.
-AssessmentResult assess_joined(const Case& c);
+AssessmentResult assess_joined(const Case& c, const RunSettings& run = {});
 
 /// The case of unit i alone: the same site, options and uncertainty.
 Case unit_case(const Case& c, std::size_t i);

@@ -10,6 +10,7 @@
 #include "assess/verdict.hpp"
 #include "core/contract.hpp"
 #include "core/measures.hpp"
+#include "core/parallel.hpp"
 #include "core/statistics.hpp"
 #include "core/units.hpp"
 #include "rocking/checks.hpp"
@@ -366,15 +367,30 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
     const auto& sets = bank.sets();
     sim.histories = static_cast<int>(sets.size());
     sim.mean_governs = sim.histories >= min_histories_for_mean;
+    const auto run_one = [&](std::size_t k, int bound, const dynamics::BlockModel& m,
+                             const dynamics::Excitation& ex) {
+        return run ? run(k, bound, m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
+    };
+    // Each history at both bounds on its own thread; gathered below in history order.
+    std::vector<std::pair<dynamics::Summary, dynamics::Summary>> runs(sets.size());
+    const RunSettings& settings = bank.run();
+    core::parallel_for(
+        sets.size(), settings.threads,
+        [&](std::size_t k) {
+            const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
+            runs[k].first = run_one(k, 0, slide_model, ex);
+            runs[k].second = sim.bounds_differ ? run_one(k, 1, rock_model, ex) : runs[k].first;
+        },
+        settings.progress ? [&](std::size_t done, std::size_t total) {
+            settings.progress(fmt::format("simulations at {:g} g, {}", pga_g,
+                                          d == Direction::x ? "x" : "y"),
+                              done, total);
+        } : core::ProgressCallback{});
     std::vector<double> slide, residual, rock_over_alpha, rock_rad, amplification;
     double worst = -1.0;
-    const auto run_one = [&](const dynamics::BlockModel& m, const dynamics::Excitation& ex) {
-        return run ? run(m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
-    };
     for (std::size_t k = 0; k < sets.size(); ++k) {
-        const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
-        const dynamics::Summary s_slide = run_one(slide_model, ex);
-        const dynamics::Summary s_rock = sim.bounds_differ ? run_one(rock_model, ex) : s_slide;
+        const dynamics::Summary& s_slide = runs[k].first;
+        const dynamics::Summary& s_rock = runs[k].second;
         slide.push_back(s_slide.slide_max_m);
         residual.push_back(s_slide.slide_residual_m);
         amplification.push_back(s_rock.amplification);

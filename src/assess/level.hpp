@@ -79,10 +79,12 @@ dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g
 /// Mean, 84th percentile and maximum of the values (all 0 when empty).
 Stats stats_of(const std::vector<double>& values);
 
-/// One history's run at one bound (the sliding bound's first, then the rocking bound's when
-/// they differ): the summary the statistics read.
+/// History k's run at one bound (0: the sliding bound; 1: the rocking bound, run only when the
+/// bounds differ): the summary the statistics read. Histories run on several threads at once,
+/// so a runner keeps anything else it records in the slot of (k, bound).
 using HistoryRunner = std::function<dynamics::Summary(
-    const dynamics::BlockModel&, const dynamics::Excitation&, const dynamics::Options&)>;
+    std::size_t k, int bound, const dynamics::BlockModel&, const dynamics::Excitation&,
+    const dynamics::Options&)>;
 
 /// Simulates every history at both bounds (once when they coincide) and gathers the
 /// statistics of docs/methods.md s.6 step 5; rocking_mode picks the governing history's measure.

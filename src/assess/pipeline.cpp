@@ -273,11 +273,11 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
 
 }  // namespace
 
-AssessmentResult assess(const Case& c) {
-    if (!c.units.empty()) return assess_joined(c);
+AssessmentResult assess(const Case& c, const RunSettings& run) {
+    if (!c.units.empty()) return assess_joined(c, run);
     AssessmentResult res;
     res.input = c;
-    HistoryBank bank(res.input);
+    HistoryBank bank(res.input, run);
     std::vector<LevelDemand> demands;
     for (double pga : c.site.pga_g) demands.push_back(level_demand(c.site, pga));
     res.levels = evaluate_all(res.input, demands, bank);
@@ -331,8 +331,8 @@ AssessmentResult assess(const Case& c) {
     return res;
 }
 
-Upgrade search_materials(const Case& c) {
-    HistoryBank bank(c);
+Upgrade search_materials(const Case& c, const RunSettings& run) {
+    HistoryBank bank(c, run);
     std::vector<LevelDemand> demands;
     for (double pga : c.site.pga_g) demands.push_back(level_demand(c.site, pga));
     return search_materials(c, demands, bank).upgrade;

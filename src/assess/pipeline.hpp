@@ -7,17 +7,19 @@
 
 #include "assess/case.hpp"
 #include "assess/result.hpp"
+#include "assess/run_settings.hpp"
 
 namespace freestand::assess {
 
-/// Runs the whole assessment of a case. Deterministic: the same case gives the same result.
-/// Throws InputError for bad seed records, NumericalError if a stage fails to converge.
-AssessmentResult assess(const Case& c);
+/// Runs the whole assessment of a case. Deterministic: the same case gives the same result,
+/// whatever run's threads and cache. Throws InputError for bad seed records, NumericalError if
+/// a stage fails to converge.
+AssessmentResult assess(const Case& c, const RunSettings& run = {});
 
 /// The base-material search of docs/methods.md s.6 step 7 on its own: every material of the table
 /// assessed as assess() assesses a case naming it (used by assess() when the case's own base
 /// fails, and by tests for every case).
-Upgrade search_materials(const Case& c);
+Upgrade search_materials(const Case& c, const RunSettings& run = {});
 
 /// Returns the case with its PGA levels replaced (the command line's --pga). Levels must be in
 /// (0, 3] g, strictly increasing, with a vertical PGA below 1 g, and as many as the case's

@@ -7,7 +7,7 @@
 
 #include "batch/list_detail.hpp"
 #include "core/file_io.hpp"
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
 #include "report/summary.hpp"
 
 namespace freestand::batch {
@@ -118,7 +118,7 @@ BatchList read_batch_list(const fs::path& list) {
     const std::string text = core::read_input_file(list);
     BatchList out = ext == ".csv" ? parse_csv_list(text, list.string())
                                   : parse_toml_list(text, list.string());
-    out.sha256 = report::sha256_hex(text);
+    out.sha256 = core::sha256_hex(text);
     return out;
 }
 

@@ -3,15 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
-#include <thread>
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/parallel.hpp"
 #include "core/printable.hpp"
+#include "core/sha256.hpp"
+#include "core/version.hpp"
 #include "report/run.hpp"
-#include "report/sha256.hpp"
 
 namespace freestand::batch {
 
@@ -28,7 +28,7 @@ void fail_row(report::SummaryRow& row, const BatchEntry& e, const BatchList& lis
 }
 
 BatchRow run_entry(const BatchEntry& e, const BatchList& list, const std::string& commit,
-                  int fragility_threads) {
+                  const assess::RunSettings& settings) {
     BatchRow out;
     report::SummaryRow& row = out.row;
     row.name = e.name;
@@ -36,9 +36,9 @@ BatchRow run_entry(const BatchEntry& e, const BatchList& list, const std::string
     row.overrides = assess::describe(e.overrides);
     try {
         const std::string bytes = core::read_input_file(e.case_file);
-        row.case_sha256 = report::sha256_hex(bytes);
+        row.case_sha256 = core::sha256_hex(bytes);
         report::CaseRun run =
-            report::run_case(bytes, e.case_file, e.overrides, commit, fragility_threads);
+            report::run_case(bytes, e.case_file, e.overrides, commit, settings);
         // Both before either is kept: a row is assessed with its files or failed without.
         std::vector<core::OutputFile> files = report::report_files(run.rendered);
         report::SummaryOutcome outcome = report::summary_outcome(run.result);
@@ -68,28 +68,27 @@ std::size_t BatchRun::failed() const {
 }
 
 report::SummaryStamp batch_stamp(const BatchList& list, const std::string& commit) {
-    return {FREESTAND_VERSION, commit, list.source, list.sha256};
+    return {core::version(), commit, list.source, list.sha256};
 }
 
 std::vector<BatchRow> run_rows(const BatchList& list, const std::vector<std::size_t>& indices,
-                               unsigned threads, const std::string& commit) {
+                               const assess::RunSettings& run, const std::string& commit) {
     const std::size_t n = indices.size();
     std::vector<BatchRow> rows(n);
-    std::atomic<std::size_t> next{0};
+    const auto threads = static_cast<std::size_t>(core::thread_count(run.threads));
     const std::size_t workers = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(n, 1));
-    // A case's own fragility analysis shares the threads left over, so workers do not each
-    // take every core; its result does not depend on the count.
-    const int fragility_threads = static_cast<int>(std::max<std::size_t>(1, threads / workers));
-    // Each worker takes the next unassessed entry; results land at the entry's index, so the
-    // order of completion never shows in the outputs.
-    const auto work = [&] {
-        for (std::size_t i = next++; i < n; i = next++)
-            rows[i] = run_entry(list.entries.at(indices[i]), list, commit, fragility_threads);
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
+    // One component per worker; a case's own histories and simulations share the threads left
+    // over, so workers do not each take every core. No result depends on the counts. The
+    // progress reported is the components', not each case's steps.
+    assess::RunSettings inner = run;
+    inner.threads = static_cast<int>(std::max<std::size_t>(1, threads / workers));
+    inner.progress = nullptr;
+    core::parallel_for(
+        n, static_cast<int>(workers),
+        [&](std::size_t i) { rows[i] = run_entry(list.entries.at(indices[i]), list, commit, inner); },
+        [&](std::size_t done, std::size_t total) {
+            if (run.progress) run.progress("components", done, total);
+        });
     return rows;
 }
 
@@ -103,10 +102,11 @@ BatchRun assemble(const report::SummaryStamp& stamp, std::vector<BatchRow> rows)
     return run;
 }
 
-BatchRun run_batch(const BatchList& list, unsigned threads, const std::string& commit) {
+BatchRun run_batch(const BatchList& list, const assess::RunSettings& run,
+                   const std::string& commit) {
     std::vector<std::size_t> all(list.entries.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    return assemble(batch_stamp(list, commit), run_rows(list, all, threads, commit));
+    return assemble(batch_stamp(list, commit), run_rows(list, all, run, commit));
 }
 
 std::vector<core::OutputFile> batch_files(const BatchRun& run) {

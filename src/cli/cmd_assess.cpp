@@ -8,6 +8,7 @@
 #include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/run_options.hpp"
 #include "core/publish.hpp"
 #include "report/pdf.hpp"
 #include "report/run.hpp"
@@ -15,7 +16,8 @@
 namespace freestand::cli {
 namespace {
 
-const char* const usage = "CASE.toml [--out DIR] [--pga 0.1,0.2] [--pdf]";
+const char* const usage =
+    "CASE.toml [--out DIR] [--pga 0.1,0.2] [--pdf] [--threads T] [--cache DIR | --no-cache]";
 
 int run(const std::vector<std::string>& args) {
     po::options_description desc("options");
@@ -26,8 +28,10 @@ int run(const std::vector<std::string>& args) {
         "pdf", po::bool_switch(),
         "also write report.pdf: the HTML report paged for print (A4, page N of M), made by "
         "WeasyPrint (scripts/setup.sh installs it)");
+    add_run_options(desc);
     const auto vm = parse_options("assess", usage, desc, args, {"case"});
     if (!vm) return 0;
+    const RunContext run(*vm);
     const std::filesystem::path case_file = (*vm)["case"].as<std::string>();
     std::optional<std::vector<double>> pga;
     if (vm->count("pga")) pga = parse_double_list((*vm)["pga"].as<std::string>(), "--pga");
@@ -38,9 +42,10 @@ int run(const std::vector<std::string>& args) {
     std::optional<std::filesystem::path> converter;
     if ((*vm)["pdf"].as<bool>()) converter = report::find_pdf_converter();
     const auto start = std::chrono::steady_clock::now();
-    const report::CaseRun r = report::run_case(case_file, pga, build_commit);
+    const report::CaseRun r = report::run_case(case_file, pga, build_commit, run.settings());
     const double assess_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.finish("assess");
     std::vector<core::OutputFile> files = report::report_files(r.rendered);
     double pdf_s = 0;
     if (converter) {

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <iostream>
 #include <optional>
-#include <thread>
 
 #include "batch/run.hpp"
 #include "batch/shard.hpp"
@@ -13,14 +12,16 @@
 #include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/run_options.hpp"
 #include "cli/shards.hpp"
 #include "core/errors.hpp"
+#include "core/parallel.hpp"
 
 namespace freestand::cli {
 namespace {
 
 const char* const usage =
-    "LIST [--out DIR] [--threads T] [--json] [--shard K/N]\n\n"
+    "LIST [--out DIR] [--threads T] [--cache DIR | --no-cache] [--json] [--shard K/N]\n\n"
     "LIST is a folder (every *.toml case in it, sorted by name, not sub-folders) or a list\n"
     "file: CSV (.csv, RFC 4180) with a header row naming the columns, or TOML (.toml) with one\n"
     "[[case]] table per component. Columns / keys: file (required; relative to the list's\n"
@@ -38,11 +39,13 @@ const char* const usage =
     "byte for byte (give every shard the same LIST path and build)";
 
 // Shard k of n: its components' rows and report files as JSON lines for `freestand merge`.
-int run_shard(const batch::BatchList& list, std::array<int, 2> share, unsigned threads,
+int run_shard(const batch::BatchList& list, std::array<int, 2> share, const RunContext& run,
               const std::filesystem::path& out) {
     const std::vector<std::size_t> mine =
         batch::shard_indices(list.entries.size(), share[0], share[1]);
-    const std::vector<batch::BatchRow> rows = batch::run_rows(list, mine, threads, build_commit);
+    const std::vector<batch::BatchRow> rows =
+        batch::run_rows(list, mine, run.settings(), build_commit);
+    run.finish("batch");
     std::vector<nlohmann::ordered_json> records;
     std::size_t failed = 0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -68,20 +71,17 @@ int run(const std::vector<std::string>& args) {
         "out", po::value<std::string>()->default_value("out/batch"),
         "output folder (summary files and one report folder per component; with --shard, the "
         "folder of the shard file)")(
-        "threads", po::value<std::string>(),
-        "worker threads, each assessing one component at a time (default: every core); the "
-        "outputs are the same bytes whatever the count")(
         "json", po::bool_switch(), "print the summary as JSON on stdout (also written as "
                                    "summary.json)")(
         "shard", po::value<std::string>(),
         "K/N: assess only this share of the components and write DIR/shard-K-of-N.jsonl for "
         "`freestand merge`");
+    // Each worker thread assesses one component at a time; a case's own work shares the threads
+    // left over.
+    add_run_options(desc);
     const auto vm = parse_options("batch", usage, desc, args, {"list"});
     if (!vm) return 0;
-    const unsigned threads = vm->count("threads")
-                                 ? static_cast<unsigned>(
-                                       parse_whole((*vm)["threads"].as<std::string>(), "--threads", 1, 1024))
-                                 : std::max(1u, std::thread::hardware_concurrency());
+    const RunContext run(*vm);
     const bool json = (*vm)["json"].as<bool>();
     std::optional<std::array<int, 2>> share;
     if (vm->count("shard")) share = parse_shard((*vm)["shard"].as<std::string>(), "--shard");
@@ -90,17 +90,19 @@ int run(const std::vector<std::string>& args) {
                          "not to a --shard run");
     const std::filesystem::path out = (*vm)["out"].as<std::string>();
     const batch::BatchList list = batch::read_batch_list((*vm)["list"].as<std::string>());
-    if (share) return run_shard(list, *share, threads, out);
+    if (share) return run_shard(list, *share, run, out);
     core::check_publish_target(out);
     const auto start = std::chrono::steady_clock::now();
-    const batch::BatchRun r = batch::run_batch(list, threads, build_commit);
+    const batch::BatchRun r = batch::run_batch(list, run.settings(), build_commit);
     const double run_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.finish("batch");
+    const auto threads = static_cast<std::size_t>(core::thread_count(run.settings().threads));
     // Timing goes to stdout only, never into the outputs (byte-identical per input).
     return write_batch_outputs(
         r, out, json,
         fmt::format(", in {:.2f} s on {} thread(s)", run_s,
-                    std::min<std::size_t>(threads, r.summary.rows.size())));
+                    std::min<std::size_t>(threads, std::max<std::size_t>(1, r.summary.rows.size()))));
 }
 
 const CommandRegistrar reg{

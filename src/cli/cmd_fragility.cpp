@@ -11,7 +11,7 @@
 #include "cli/fragility_output.hpp"
 #include "cli/mpi_split.hpp"
 #include "cli/options.hpp"
-#include "cli/progress.hpp"
+#include "cli/run_options.hpp"
 #include "cli/shards.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
@@ -24,7 +24,7 @@ namespace {
 
 const char* const usage =
     "CASE.toml [--pga 0.1:1.0:0.1] [--samples 100] [--records FILE...] [--pool 20] [--seed S] "
-    "[--threads T] [--out DIR] [--json] [--shard K/N] [--pdf]";
+    "[--threads T] [--cache DIR | --no-cache] [--out DIR] [--json] [--shard K/N] [--pdf]";
 
 int run(const std::vector<std::string>& args) {
     po::options_description desc = fragility_options();
@@ -50,7 +50,7 @@ int run(const std::vector<std::string>& args) {
     const std::string bytes = core::read_input_file(case_file);
     const assess::Case c = assess::parse_case(bytes, case_file.string());
     const fragility::Config cfg = fragility_config(*vm, c);
-    const int threads = fragility_threads(*vm);
+    const RunContext run(*vm);
     const std::filesystem::path out =
         vm->count("out") ? std::filesystem::path((*vm)["out"].as<std::string>())
                          : std::filesystem::path("out") / (case_file.stem().string() + "-fragility");
@@ -70,20 +70,21 @@ int run(const std::vector<std::string>& args) {
         if (static_cast<int>(g % static_cast<std::size_t>(share[1])) == share[0] - 1)
             mine.push_back(g);
 
-    runner.prepare(threads);
-    Progress bar("samples");
+    runner.prepare(run.settings());
     std::vector<fragility::SampleResult> samples;
     try {
-        samples = fragility::run_samples(runner, mine, threads, [&](std::size_t done) {
-            if (mpi.rank() == 0) bar.update(done, mine.size());
-        });
+        samples = fragility::run_samples(runner, mine, run.settings().threads,
+                                         [&](std::size_t done, std::size_t total) {
+                                             if (mpi.rank() == 0 && run.settings().progress)
+                                                 run.settings().progress("samples", done, total);
+                                         });
     } catch (const Error& e) {
         if (mpi.size() == 1) throw;
         std::cerr << "freestand fragility: error on MPI rank " << mpi.rank() << ": "
                   << core::printable(e.what()) << "\n";
         mpi.abort(static_cast<int>(e.code()));
     }
-    bar.finish();
+    run.finish("fragility");
 
     if (vm->count("shard")) {
         std::vector<nlohmann::ordered_json> records;

@@ -102,12 +102,10 @@ json match_document(const motion::TargetSet& targets, const motion::GeneratedSet
 
 // --- fragility --------------------------------------------------------------------------------
 
-/// --pga, --samples, --records, --pool, --seed, --threads.
+/// --pga, --samples, --records, --pool, --seed and the run options (cli/run_options.hpp).
 po::options_description fragility_options();
 /// The sampling configuration; the seed defaults to the case's.
 fragility::Config fragility_config(const po::variables_map& vm, const assess::Case& c);
-/// --threads (0: every core).
-int fragility_threads(const po::variables_map& vm);
 /// The stamp of a fragility run: the case's bytes, the seed, the case's other inputs and the
 /// records of a user suite, each hashed, and the build's commit.
 report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,

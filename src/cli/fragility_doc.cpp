@@ -2,8 +2,9 @@
 #include "cli/documents.hpp"
 
 #include "cli/build_info.hpp"
+#include "cli/run_options.hpp"
 #include "core/file_io.hpp"
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
 
 namespace freestand::cli {
 
@@ -18,8 +19,8 @@ po::options_description fragility_options() {
         "applied along x and y, no vertical); default: generated sets for the case's target")(
         "pool", po::value<std::string>()->default_value("20"),
         "generated three-component history sets the samples draw from")(
-        "seed", po::value<std::string>(), "run seed (default: the case's [options] seed)")(
-        "threads", po::value<std::string>()->default_value("0"), "worker threads (0: all cores)");
+        "seed", po::value<std::string>(), "run seed (default: the case's [options] seed)");
+    add_run_options(desc);
     return desc;
 }
 
@@ -36,17 +37,13 @@ fragility::Config fragility_config(const po::variables_map& vm, const assess::Ca
     return cfg;
 }
 
-int fragility_threads(const po::variables_map& vm) {
-    return static_cast<int>(parse_whole(vm["threads"].as<std::string>(), "--threads", 0, 1024));
-}
-
 report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
                               const assess::Case& c, const fragility::Config& config) {
     report::Stamp stamp =
         report::make_stamp(case_bytes, case_file, config.seed, build_commit);
     stamp.inputs = report::stamped_inputs(c);
     for (const std::string& f : config.record_files)
-        stamp.inputs.push_back({f, report::sha256_hex(core::read_input_file(f))});
+        stamp.inputs.push_back({f, core::sha256_hex(core::read_input_file(f))});
     return stamp;
 }
 
@@ -55,8 +52,11 @@ FragilityRun fragility_result(const std::string& case_bytes,
                               const po::variables_map& vm) {
     const assess::Case c = assess::parse_case(case_bytes, case_file.string());
     const fragility::Config cfg = fragility_config(vm, c);
-    return {fragility::run_all(c, cfg, fragility_threads(vm)),
-            fragility_stamp(case_bytes, case_file.string(), c, cfg)};
+    const RunContext run(vm);
+    FragilityRun out{fragility::run_all(c, cfg, run.settings()),
+                     fragility_stamp(case_bytes, case_file.string(), c, cfg)};
+    run.finish("fragility");
+    return out;
 }
 
 }  // namespace freestand::cli

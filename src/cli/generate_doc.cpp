@@ -9,6 +9,7 @@
 #include "report/history_json.hpp"
 #include "report/references.hpp"
 #include "spectra/design.hpp"
+#include "core/version.hpp"
 
 namespace freestand::cli {
 namespace {
@@ -215,7 +216,7 @@ json match_document(const motion::TargetSet& targets, const motion::GeneratedSet
         {"wall_s", "the only field that varies between identical runs (null with --no-timing)"}};
     j["methods"] = "docs/methods.md s.8";
     j["references"] = references_json();
-    j["freestand_version"] = FREESTAND_VERSION;
+    j["freestand_version"] = core::version();
     return j;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/flag_names.hpp"
 #include "core/errors.hpp"
 #include "core/printable.hpp"
+#include "core/version.hpp"
 
 namespace freestand::cli {
 
@@ -26,7 +27,7 @@ CommandRegistrar::CommandRegistrar(Command command) {
 namespace {
 
 void print_help() {
-    std::cout << "freestand " FREESTAND_VERSION
+    std::cout << "freestand " << core::version() <<
                  " - must free-standing equipment be anchored to survive the design earthquake?\n\n"
                  "usage: freestand COMMAND [options]   (freestand COMMAND --help for its options)\n\n"
                  "commands:\n";

@@ -1,11 +1,9 @@
-#include <Eigen/Core>
 #include <boost/version.hpp>
 #include <fftw3.h>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 #include "cli/build_info.hpp"
+#include "core/version.hpp"
 
 namespace freestand::cli {
 
@@ -24,17 +22,18 @@ std::string compiler() {
 }  // namespace
 
 std::string version_text() {
-    // Header-only libraries report the headers compiled in; FFTW, the one C library, reports
-    // the shared library loaded at run time; mstch has no version in its header, so CMake's
-    // find_package passes the installed package's (src/cli/CMakeLists.txt).
-    std::string text = fmt::format("freestand {}\ncommit {}\n", FREESTAND_VERSION, build_commit);
-    text += fmt::format("Eigen {}.{}.{}\n", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
+    // FFTW, the one C library, reports the shared library loaded at run time; Boost and fmt
+    // the headers compiled in. Eigen, toml++ and nlohmann-json are header-only packages whose
+    // headers are large to compile for a version number, and mstch's header has none: CMake
+    // passes the versions their find_package read from the installed packages
+    // (src/cli/CMakeLists.txt), which are the headers this build compiled.
+    std::string text = fmt::format("freestand {}\ncommit {}\n", core::version(), build_commit);
+    text += fmt::format("Eigen {}\n", FREESTAND_EIGEN_VERSION);
     text += fmt::format("FFTW {}\n", fftw_version);
     text += fmt::format("Boost {}.{}.{}\n", BOOST_VERSION / 100000, BOOST_VERSION / 100 % 1000, BOOST_VERSION % 100);
     text += fmt::format("fmt {}.{}.{}\n", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100);
-    text += fmt::format("toml++ {}.{}.{}\n", TOML_LIB_MAJOR, TOML_LIB_MINOR, TOML_LIB_PATCH);
-    text += fmt::format("nlohmann-json {}.{}.{}\n", NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR,
-                        NLOHMANN_JSON_VERSION_PATCH);
+    text += fmt::format("toml++ {}\n", FREESTAND_TOMLPLUSPLUS_VERSION);
+    text += fmt::format("nlohmann-json {}\n", FREESTAND_NLOHMANN_JSON_VERSION);
     text += fmt::format("mstch {}\n", FREESTAND_MSTCH_VERSION);
     text += fmt::format("compiler {}\n", compiler());
     return text;

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Dense>
+#include <array>
 #include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -37,6 +37,18 @@ struct Levels {
     std::vector<double> k, n;
 };
 
+// The probit parameters (a0, a1); two unknowns, so the solves below are written out rather
+// than taken from a linear-algebra library.
+using Params = std::array<double, 2>;
+
+bool finite(const Params& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
+
+// Solves [[s00, s01], [s01, s11]] x = b by Cramer's rule; non-finite when singular.
+Params solve_symmetric_2x2(double s00, double s01, double s11, const Params& b) {
+    const double det = s00 * s11 - s01 * s01;
+    return {(s11 * b[0] - s01 * b[1]) / det, (s00 * b[1] - s01 * b[0]) / det};
+}
+
 double log_likelihood(const Levels& l, double a0, double a1) {
     double sum = 0.0;
     for (std::size_t j = 0; j < l.x.size(); ++j) {
@@ -48,32 +60,37 @@ double log_likelihood(const Levels& l, double a0, double a1) {
 
 // Fisher scoring for the probit model P = Phi(a0 + a1 ln a): gradient from the Mills ratios,
 // expected information n phi^2 / (Phi (1 - Phi)), step halved while the likelihood falls.
-std::optional<Eigen::Vector2d> maximise(const Levels& l, Eigen::Vector2d start) {
-    Eigen::Vector2d p = start;
-    double current = log_likelihood(l, p(0), p(1));
+std::optional<Params> maximise(const Levels& l, Params start) {
+    Params p = start;
+    double current = log_likelihood(l, p[0], p[1]);
     for (int it = 0; it < kMaxIterations; ++it) {
-        Eigen::Vector2d g = Eigen::Vector2d::Zero();
-        Eigen::Matrix2d info = Eigen::Matrix2d::Zero();
+        Params g{0.0, 0.0};
+        double i00 = 0.0, i01 = 0.0, i11 = 0.0;  // the information matrix, symmetric
         for (std::size_t j = 0; j < l.x.size(); ++j) {
-            const double z = p(0) + p(1) * l.x[j];
+            const double x = l.x[j];
+            const double z = p[0] + p[1] * x;
             const double dz = l.k[j] * mills(z) - (l.n[j] - l.k[j]) * mills(-z);
             const double w = l.n[j] * mills(z) * mills(-z);  // n phi^2 / (Phi (1 - Phi))
-            const Eigen::Vector2d v(1.0, l.x[j]);
-            g += dz * v;
-            info += w * v * v.transpose();
+            g[0] += dz;
+            g[1] += dz * x;
+            i00 += w;
+            i01 += w * x;
+            i11 += w * x * x;
         }
-        Eigen::Vector2d step = info.ldlt().solve(g);
-        if (!step.allFinite()) return std::nullopt;
-        double next = log_likelihood(l, p(0) + step(0), p(1) + step(1));
+        Params step = solve_symmetric_2x2(i00, i01, i11, g);
+        if (!finite(step)) return std::nullopt;
+        double next = log_likelihood(l, p[0] + step[0], p[1] + step[1]);
         for (int h = 0; h < 40 && !(next >= current); ++h) {
-            step *= 0.5;
-            next = log_likelihood(l, p(0) + step(0), p(1) + step(1));
+            step[0] *= 0.5;
+            step[1] *= 0.5;
+            next = log_likelihood(l, p[0] + step[0], p[1] + step[1]);
         }
-        p += step;
-        if (!p.allFinite()) return std::nullopt;
+        p[0] += step[0];
+        p[1] += step[1];
+        if (!finite(p)) return std::nullopt;
         const bool done = std::abs(next - current) <= kTolerance * (1.0 + std::abs(next));
         current = next;
-        if (done || 1.0 / p(1) < kMinBeta * 0.5) break;
+        if (done || 1.0 / p[1] < kMinBeta * 0.5) break;
     }
     return p;
 }
@@ -140,38 +157,40 @@ EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>&
         out.note = separation_note(l, *m);
         return out;
     }
-    // Start from least squares on the empirical probits (continuity-corrected).
-    Eigen::MatrixXd a(static_cast<Eigen::Index>(l.x.size()), 2);
-    Eigen::VectorXd z(static_cast<Eigen::Index>(l.x.size()));
+    // Start from least squares on the empirical probits (continuity-corrected): the straight
+    // line z = a0 + a1 x through the points, by its normal equations.
+    double sx = 0.0, sxx = 0.0, sz = 0.0, sxz = 0.0;
     for (std::size_t j = 0; j < l.x.size(); ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        a(jj, 0) = 1.0;
-        a(jj, 1) = l.x[j];
-        z(jj) = core::normal_quantile((l.k[j] + 0.5) / (l.n[j] + 1.0));
+        const double z = core::normal_quantile((l.k[j] + 0.5) / (l.n[j] + 1.0));
+        sx += l.x[j];
+        sxx += l.x[j] * l.x[j];
+        sz += z;
+        sxz += l.x[j] * z;
     }
-    Eigen::Vector2d start(-l.x.front(), 1.0);
-    const Eigen::VectorXd ls = a.colPivHouseholderQr().solve(z);
-    if (ls.allFinite() && ls(1) > 0.0) start = Eigen::Vector2d(ls(0), ls(1));
+    Params start{-l.x.front(), 1.0};
+    const Params ls =
+        solve_symmetric_2x2(static_cast<double>(l.x.size()), sx, sxx, Params{sz, sxz});
+    if (finite(ls) && ls[1] > 0.0) start = ls;
     const auto p = maximise(l, start);
-    if (!p || !((*p)(1) > 0.0)) {
+    if (!p || !((*p)[1] > 0.0)) {
         out.note = p ? "failures do not increase with the PGA: no increasing lognormal fits"
                      : "the likelihood has no finite maximum";
         return out;
     }
-    const double beta = 1.0 / (*p)(1);
+    const double beta = 1.0 / (*p)[1];
     if (beta < kMinBeta) {
         out.note = "the fit tends to a step (beta -> 0): more samples or levels between are needed";
         return out;
     }
     Fit f;
     f.beta = beta;
-    f.theta_m_g = std::exp(-(*p)(0) * beta);
+    f.theta_m_g = std::exp(-(*p)[0] * beta);
     f.pga_1pct_g = f.theta_m_g * std::exp(beta * core::normal_quantile(0.01));
     f.pga_5pct_g = f.theta_m_g * std::exp(beta * core::normal_quantile(0.05));
     f.pga_50pct_g = f.theta_m_g;
-    f.log_likelihood = log_likelihood(l, (*p)(0), (*p)(1));
+    f.log_likelihood = log_likelihood(l, (*p)[0], (*p)[1]);
     for (std::size_t j = 0; j < l.x.size(); ++j) {
-        const double pj = core::normal_cdf((*p)(0) + (*p)(1) * l.x[j]);
+        const double pj = core::normal_cdf((*p)[0] + (*p)[1] * l.x[j]);
         const double var = l.n[j] * pj * (1.0 - pj);
         if (var > 0.0) f.chi2 += std::pow(l.k[j] - l.n[j] * pj, 2) / var;
     }

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "assess/case.hpp"
+#include "assess/run_settings.hpp"
+#include "core/parallel.hpp"
 #include "core/record.hpp"
 
 namespace freestand::fragility {
@@ -121,8 +123,8 @@ class Runner {
     Runner& operator=(const Runner&) = delete;
 
     std::size_t total() const;  ///< levels x samples; global index = level * samples + sample
-    /// Generates the history pool on `threads` threads (0: all cores) or reads the records.
-    void prepare(int threads);
+    /// Generates the history pool (on run's threads, through its cache) or reads the records.
+    void prepare(const assess::RunSettings& run);
     /// One sample by its global index (prepare() first).
     SampleResult run(std::size_t global_index) const;
 
@@ -132,13 +134,13 @@ class Runner {
 };
 
 /// Runs the given global indices on `threads` threads (0: all cores); results in index order.
-/// progress(done) is called from the calling thread about every 0.2 s and at the end.
+/// progress(done, total) is called from the calling thread about every 0.2 s and at the end.
 std::vector<SampleResult> run_samples(const Runner& runner,
                                       const std::vector<std::size_t>& indices, int threads,
-                                      const std::function<void(std::size_t done)>& progress = {});
+                                      const core::ProgressCallback& progress = {});
 
-/// The whole run on one machine: prepare, every sample, aggregate.
-Result run_all(const assess::Case& c, const Config& config, int threads,
-               const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+/// The whole run on one machine: prepare, every sample, aggregate (run.progress reports the
+/// steps "history sets" and "samples").
+Result run_all(const assess::Case& c, const Config& config, const assess::RunSettings& run = {});
 
 }  // namespace freestand::fragility

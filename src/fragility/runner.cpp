@@ -1,14 +1,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
-#include <mutex>
 #include <cmath>
 #include <filesystem>
 #include <random>
-#include <thread>
 
 #include "assess/histories.hpp"
 #include "assess/level.hpp"
@@ -150,12 +145,12 @@ std::size_t Runner::total() const {
     return impl_->config.pga_g.size() * static_cast<std::size_t>(impl_->config.samples);
 }
 
-void Runner::prepare(int threads) {
+void Runner::prepare(const assess::RunSettings& run) {
     Impl& m = *impl_;
     if (m.config.record_files.empty()) {
         assess::Case pool_case = m.c;
         pool_case.options.histories_per_level = m.config.pool;
-        assess::HistoryBank bank(pool_case, threads);
+        assess::HistoryBank bank(pool_case, run);
         m.sets = bank.sets();
     } else {
         for (const std::string& f : m.config.record_files) {
@@ -229,63 +224,21 @@ SampleResult Runner::run(std::size_t global_index) const {
 }
 
 std::vector<SampleResult> run_samples(const Runner& runner, const std::vector<std::size_t>& indices,
-                                      int threads,
-                                      const std::function<void(std::size_t)>& progress) {
+                                      int threads, const core::ProgressCallback& progress) {
     std::vector<SampleResult> out(indices.size());
-    const std::size_t cores =
-        threads > 0 ? static_cast<std::size_t>(threads) : std::thread::hardware_concurrency();
-    const std::size_t workers = std::max<std::size_t>(1, std::min(indices.size(), cores));
-    std::atomic<std::size_t> next{0};
-    std::size_t done = 0;
-    std::exception_ptr failure;
-    std::mutex lock;
-    std::condition_variable changed;
-    auto work = [&] {
-        for (std::size_t i = next++; i < indices.size(); i = next++) {
-            std::exception_ptr error;
-            try {
-                out[i] = runner.run(indices[i]);
-            } catch (...) {
-                error = std::current_exception();
-            }
-            const std::lock_guard<std::mutex> guard(lock);
-            ++done;
-            if (error && !failure) failure = error;
-            if (failure) next = indices.size();  // the others stop at their next sample
-            changed.notify_one();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
-    {
-        using Clock = std::chrono::steady_clock;
-        auto last = Clock::now();
-        std::unique_lock<std::mutex> guard(lock);
-        while (done < indices.size() && !failure) {
-            changed.wait_for(guard, std::chrono::milliseconds(200));
-            if (!progress || Clock::now() - last < std::chrono::milliseconds(200)) continue;
-            last = Clock::now();
-            const std::size_t now = done;
-            guard.unlock();
-            progress(now);
-            guard.lock();
-        }
-    }
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
-    if (progress) progress(indices.size());
+    core::parallel_for(
+        indices.size(), threads, [&](std::size_t i) { out[i] = runner.run(indices[i]); },
+        progress);
     return out;
 }
 
-Result run_all(const assess::Case& c, const Config& config, int threads,
-               const std::function<void(std::size_t, std::size_t)>& progress) {
+Result run_all(const assess::Case& c, const Config& config, const assess::RunSettings& run) {
     Runner runner(c, config);
-    runner.prepare(threads);
+    runner.prepare(run);
     std::vector<std::size_t> all(runner.total());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    const std::size_t total = all.size();
-    auto samples = run_samples(runner, all, threads, [&](std::size_t done) {
-        if (progress) progress(done, total);
+    auto samples = run_samples(runner, all, run.threads, [&](std::size_t done, std::size_t total) {
+        if (run.progress) run.progress("samples", done, total);
     });
     return aggregate(make_meta(c, config), std::move(samples));
 }

@@ -10,19 +10,19 @@ namespace freestand::report {
 
 CaseAssessment assess_case(const assess::Case& c, const std::string& case_bytes,
                            const std::filesystem::path& case_file, const std::string& commit,
-                           int fragility_threads) {
+                           const assess::RunSettings& settings) {
     CaseAssessment run;
     if (!c.units.empty() && c.options.fragility.enabled)
         throw InputError(SourceLocation{case_file.string(), 0, "options.fragility"},
                          "not available for two [[unit]] tables (the fragility analysis takes "
                          "one component)");
-    run.result = assess::assess(c);
+    run.result = assess::assess(c, settings);
     if (c.options.fragility.enabled) {
         fragility::Config config;
         config.pga_g = c.options.fragility.pga_g;
         config.samples = c.options.fragility.samples;
         config.seed = c.options.seed;
-        run.fragility = fragility::run_all(c, config, fragility_threads);
+        run.fragility = fragility::run_all(c, config, settings);
     }
     run.stamp = make_stamp(case_bytes, case_file.string(), c.options.seed, commit);
     run.stamp.inputs = stamped_inputs(c);
@@ -31,11 +31,11 @@ CaseAssessment assess_case(const assess::Case& c, const std::string& case_bytes,
 
 CaseAssessment assess_case_file(const std::filesystem::path& case_file,
                                 const std::optional<std::vector<double>>& pga_g,
-                                const std::string& commit) {
+                                const std::string& commit, const assess::RunSettings& run) {
     const std::string bytes = core::read_input_file(case_file);
     assess::Case c = assess::parse_case(bytes, case_file.string());
     if (pga_g) c = assess::with_pga_levels(std::move(c), *pga_g);
-    return assess_case(c, bytes, case_file, commit, 0);
+    return assess_case(c, bytes, case_file, commit, run);
 }
 
 std::string result_json_text(const assess::AssessmentResult& r, const Stamp& stamp,

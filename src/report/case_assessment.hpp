@@ -8,6 +8,7 @@
 
 #include "assess/case.hpp"
 #include "assess/result.hpp"
+#include "assess/run_settings.hpp"
 #include "fragility/fragility.hpp"
 #include "report/json.hpp"
 
@@ -20,17 +21,17 @@ struct CaseAssessment {
 };
 
 /// Assesses the parsed case c (case_bytes are hashed into the stamp, case_file names it), and
-/// runs its fragility analysis when it asks for one on fragility_threads (0: every core; the
-/// result does not depend on it). Errors propagate (InputError, NumericalError).
+/// runs its fragility analysis when it asks for one, on run's threads and through its cache
+/// (the result depends on neither). Errors propagate (InputError, NumericalError).
 CaseAssessment assess_case(const assess::Case& c, const std::string& case_bytes,
                            const std::filesystem::path& case_file, const std::string& commit,
-                           int fragility_threads);
+                           const assess::RunSettings& run = {});
 
 /// Reads and assesses the case file, its PGA levels replaced by pga_g when given (IoError,
 /// InputError, NumericalError).
 CaseAssessment assess_case_file(const std::filesystem::path& case_file,
                                 const std::optional<std::vector<double>>& pga_g,
-                                const std::string& commit);
+                                const std::string& commit, const assess::RunSettings& run = {});
 
 /// result.json: the assessment with its stamp and, with a fragility result, its "fragility"
 /// object; 2-space indented with a trailing newline.

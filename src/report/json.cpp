@@ -11,7 +11,8 @@
 #include "core/file_io.hpp"
 #include "report/history_json.hpp"
 #include "report/references.hpp"
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
+#include "core/version.hpp"
 
 namespace freestand::report {
 
@@ -289,7 +290,7 @@ std::vector<StampedInput> stamped_inputs(const Case& c) {
     std::vector<StampedInput> out;
     const std::filesystem::path dir = std::filesystem::path(c.file).parent_path();
     auto add = [&](const std::string& given, const std::filesystem::path& path) {
-        out.push_back({given, sha256_hex(core::read_text_file(path))});
+        out.push_back({given, core::sha256_hex(core::read_text_file(path))});
     };
     if (c.site.targets) {
         const UserTargets& u = *c.site.targets;
@@ -335,7 +336,7 @@ Stamp stamp_from_json(const nlohmann::json& j) {
 
 Stamp make_stamp(const std::string& case_bytes, const std::string& case_file, std::uint64_t seed,
                  const std::string& commit) {
-    return Stamp{FREESTAND_VERSION, commit, sha256_hex(case_bytes), case_file, seed, {}};
+    return Stamp{core::version(), commit, core::sha256_hex(case_bytes), case_file, seed, {}};
 }
 
 ordered_json to_json(const AssessmentResult& r, const Stamp& stamp) {

@@ -17,7 +17,7 @@ struct StampedInput {
 };
 
 struct Stamp {
-    std::string tool_version;  ///< FREESTAND_VERSION
+    std::string tool_version;  ///< core::version()
     /// The CLI's build_commit: 12 hex digits, "-dirty" appended when the build's tree had
     /// uncommitted changes; "unknown" outside git.
     std::string commit;

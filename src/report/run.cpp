@@ -25,19 +25,20 @@ CaseRun render_case(CaseAssessment a) {
 }  // namespace
 
 CaseRun run_case(const std::filesystem::path& case_file,
-                 const std::optional<std::vector<double>>& pga_g, const std::string& commit) {
-    return render_case(assess_case_file(case_file, pga_g, commit));
+                 const std::optional<std::vector<double>>& pga_g, const std::string& commit,
+                 const assess::RunSettings& run) {
+    return render_case(assess_case_file(case_file, pga_g, commit, run));
 }
 
 CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
                  const assess::CaseOverrides& overrides, const std::string& commit,
-                 int fragility_threads) {
+                 const assess::RunSettings& run) {
     const assess::Case c = assess::parse_case(case_bytes, case_file.string(), overrides);
     if (!c.units.empty())
         throw InputError(SourceLocation{case_file.string(), 0, "unit"},
                          "a batch runs one-component cases; assess two [[unit]] tables with "
                          "`freestand assess`");
-    return render_case(assess_case(c, case_bytes, case_file, commit, fragility_threads));
+    return render_case(assess_case(c, case_bytes, case_file, commit, run));
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {

@@ -18,20 +18,20 @@ struct CaseRun {
 };
 
 /// Reads the case file (its bytes are hashed into the stamp), optionally replaces its PGA levels,
-/// assesses, runs the fragility analysis when the case asks for it (on all cores; the result does
-/// not depend on the thread count) and renders. commit is the build's commit for the stamp. Errors propagate
-/// (IoError, InputError, NumericalError).
+/// assesses, runs the fragility analysis when the case asks for it and renders, on run's
+/// threads and through its cache (the result depends on neither). commit is the build's commit
+/// for the stamp. Errors propagate (IoError, InputError, NumericalError).
 CaseRun run_case(const std::filesystem::path& case_file,
-                 const std::optional<std::vector<double>>& pga_g, const std::string& commit);
+                 const std::optional<std::vector<double>>& pga_g, const std::string& commit,
+                 const assess::RunSettings& run = {});
 
 /// The same on case text already read (case_bytes, hashed into the stamp; case_file names it
 /// in messages and resolves its relative paths) with overrides written into it
-/// (assess::parse_case): a batch's run of one component. The fragility analysis, when the case
-/// asks for it, runs on fragility_threads (0: every core), so that a batch's workers do not each
-/// take every core. Errors propagate as above.
+/// (assess::parse_case): a batch's run of one component, on run's threads (a batch's workers
+/// share the cores out). Errors propagate as above.
 CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& case_file,
                  const assess::CaseOverrides& overrides, const std::string& commit,
-                 int fragility_threads);
+                 const assess::RunSettings& run);
 
 /// The one-line verdict the commands print, all from the headline's one governing level:
 /// "<name>: <verdict> (governing PGA 0.400 g, direction x[ with <material>], margin 1.15 | no

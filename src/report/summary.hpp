@@ -43,7 +43,7 @@ struct SummaryRow {
 
 /// The stamp of a batch: the tool, the build, the list (the cases are hashed per row).
 struct SummaryStamp {
-    std::string tool_version;  ///< FREESTAND_VERSION
+    std::string tool_version;  ///< core::version()
     std::string commit;        ///< the build's commit, as the reports' stamp
     std::string list;          ///< the list file or folder, as given
     std::string list_sha256;   ///< of the list file's bytes; "" for a folder

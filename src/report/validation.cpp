@@ -10,8 +10,9 @@
 #include "report/template_render.hpp"
 #include "report/references.hpp"
 #include "report/render.hpp"
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
 #include "validate/thesis.hpp"
+#include "core/version.hpp"
 
 namespace freestand::report {
 
@@ -148,9 +149,9 @@ mstch::map context(const validate::Validation& v, const Stamp& stamp) {
 }  // namespace
 
 Stamp validation_stamp(const validate::Validation& v, const std::string& commit) {
-    Stamp s{FREESTAND_VERSION, commit, "", "", 0, {}};
+    Stamp s{core::version(), commit, "", "", 0, {}};
     for (const std::filesystem::path& p : v.case_files)
-        s.inputs.push_back({p.string(), sha256_hex(core::read_text_file(p))});
+        s.inputs.push_back({p.string(), core::sha256_hex(core::read_text_file(p))});
     return s;
 }
 

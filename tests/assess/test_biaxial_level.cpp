@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "support/paths.hpp"
 #include "assess/biaxial_level.hpp"
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
@@ -17,7 +18,7 @@ using namespace freestand::assess;
 namespace {
 
 Case shipped(const char* name, const std::vector<double>& pga, int histories) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / name);
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / name);
     c.options.histories_per_level = histories;
     return with_pga_levels(c, pga);
 }

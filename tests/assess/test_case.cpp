@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <string>
 
+#include "support/paths.hpp"
 #include "assess/case.hpp"
 #include "core/errors.hpp"
 
@@ -44,14 +45,14 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
                              "block-ts2", "block-ts3"}) {
         INFO(name);
         const Case c =
-            read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (std::string(name) + ".toml"));
+            read_case(fs::path(freestand::test::source_dir()) / "cases" / (std::string(name) + ".toml"));
         CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
         CHECK(c.options.histories_per_level == 7);  // docs/methods.md s.6 step 5: the mean governs
     }
 }
 
 TEST_CASE("glove box inertia derived from p reproduces p", "[assess][case]") {
-    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    const Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     const block::Block b = c.component.block(Direction::x);
     // p = 1.97 rad/s is the published value the inertia was derived from (issue 6).
     CHECK(b.p_radps(block::Edge::right) == Approx(1.97).epsilon(1e-12));
@@ -65,7 +66,7 @@ TEST_CASE("glove box inertia derived from p reproduces p", "[assess][case]") {
 }
 
 TEST_CASE("the case's own assumptions are kept for the report, first", "[assess][case]") {
-    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair.toml");
+    const Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-pair.toml");
     REQUIRE(c.assumptions.size() >= 4);
     CHECK(c.assumptions.front().rfind("Case: boxes side by side along x", 0) == 0);
     CHECK(
@@ -74,7 +75,7 @@ TEST_CASE("the case's own assumptions are kept for the report, first", "[assess]
 }
 
 TEST_CASE("a uniform block from its box and a material from the table", "[assess][case]") {
-    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "block-ts1.toml");
+    const Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "block-ts1.toml");
     CHECK(c.component.uniform_block);
     CHECK(c.component.cg_height_m == Approx(0.6));
     CHECK(c.component.x.b_left_m == Approx(0.15));

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "support/paths.hpp"
 #include "assess/case.hpp"
 #include "core/errors.hpp"
 
@@ -47,7 +48,7 @@ TEST_CASE("joined case: two units and a tunnel", "[assess][case][joined]") {
 }
 
 TEST_CASE("joined case: the shipped unbraced pair parses", "[assess][case][joined]") {
-    const Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" /
+    const Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" /
                              "glovebox-pair-unbraced.toml");
     REQUIRE(c.units.size() == 2);
     CHECK(c.units[0].mass_kg == 466.0);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "support/paths.hpp"
 #include "assess/flexible_level.hpp"
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
@@ -17,7 +18,7 @@ using namespace freestand::assess;
 
 namespace {
 Case glovebox(const std::vector<double>& pga, int histories) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.options.histories_per_level = histories;
     return with_pga_levels(c, pga);
 }
@@ -90,7 +91,7 @@ TEST_CASE("glove box at 0.2 g: the ASCE 4 estimate by hand at the lower friction
 }
 
 TEST_CASE("PGA override is validated", "[assess][pipeline]") {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     try {
         with_pga_levels(c, {0.0});
         FAIL("no error");
@@ -102,7 +103,7 @@ TEST_CASE("PGA override is validated", "[assess][pipeline]") {
 
 TEST_CASE("seed records must come in threes per history", "[assess][pipeline]") {
     Case c = glovebox({0.2}, 1);
-    c.options.seed_records = {fs::path(FREESTAND_TEST_DATA) / "RSN175_IMPVALL.H_H-E12140.AT2"};
+    c.options.seed_records = {fs::path(freestand::test::data_dir()) / "RSN175_IMPVALL.H_H-E12140.AT2"};
     try {
         assess::assess(c);
         FAIL("no error");
@@ -145,7 +146,7 @@ TEST_CASE("without histories and without a table the energy estimate says why it
 }
 
 TEST_CASE("a --pga override cannot drop the per-level table", "[assess][pipeline][energy]") {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.site.energy_table_displacement_m = std::vector<double>{0.02, 0.04, 0.06, 0.08};
     try {
         with_pga_levels(c, {0.2});
@@ -201,7 +202,7 @@ TEST_CASE("documented values are assessed or refused at their key, never by an i
 }
 
 TEST_CASE("a level whose vertical PGA reaches 1 g is refused at pga_g", "[assess][pipeline]") {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     try {
         with_pga_levels(c, {0.5, 1.5});
         FAIL("no error");
@@ -228,7 +229,7 @@ pga_g = [0.3]
 [options]
 histories_per_level = 1
 )",
-                              (fs::path(FREESTAND_SOURCE_DIR) / "cases" / "needle.toml").string());
+                              (fs::path(freestand::test::source_dir()) / "cases" / "needle.toml").string());
     const AssessmentResult r = assess::assess(c);
     const LevelResult& x = r.levels.at(0);
     CHECK(x.initiation.mode != Mode::rest);
@@ -254,7 +255,7 @@ TEST_CASE("histories that cannot meet the realism ranges are rejected, never use
     }
     SECTION("seed records: the error names options.seed_records and the reason") {
         Case c = glovebox({0.2}, 1);
-        const fs::path data(FREESTAND_TEST_DATA);
+        const fs::path data(freestand::test::data_dir());
         c.options.seed_records = {data / "RSN175_IMPVALL.H_H-E12140.AT2",
                                   data / "RSN175_IMPVALL.H_H-E12230.AT2",
                                   data / "RSN1546_CHICHI_TCU122-N.AT2"};
@@ -293,7 +294,7 @@ TEST_CASE("the reported extreme footprint (glove box, p_radps kept) is assessed"
     // Issue 16 defect 6 as reported: glovebox-single.toml with cg_to_edge_x_m = [100, 1e-9] and
     // its p_radps kept threw "damping: value 2.5733644010246386 is out of range; expected
     // (0, 1)" at 0.1 g (the case without p_radps above never reached that check).
-    const fs::path file = fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml";
+    const fs::path file = fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml";
     std::string text = core::read_text_file(file);
     const std::string edges = "cg_to_edge_x_m = [0.526, 0.526]";
     REQUIRE(text.find(edges) != std::string::npos);
@@ -312,7 +313,7 @@ TEST_CASE("the reported extreme footprint (glove box, p_radps kept) is assessed"
 
 namespace {
 Case steel_pads(const std::vector<double>& pga, int histories) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-steel-pads.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-steel-pads.toml");
     c.options.histories_per_level = histories;
     return with_pga_levels(c, pga);
 }

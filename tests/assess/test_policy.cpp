@@ -7,6 +7,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "support/paths.hpp"
 #include "assess/joined.hpp"
 #include "assess/materials.hpp"
 #include "assess/pipeline.hpp"
@@ -21,7 +22,7 @@ namespace {
 
 std::vector<fs::path> shipped_cases() {
     std::vector<fs::path> out;
-    for (const auto& e : fs::directory_iterator(fs::path(FREESTAND_SOURCE_DIR) / "cases")) {
+    for (const auto& e : fs::directory_iterator(fs::path(freestand::test::source_dir()) / "cases")) {
         if (e.path().extension() == ".toml") out.push_back(e.path());
     }
     std::sort(out.begin(), out.end());
@@ -67,7 +68,7 @@ const std::vector<std::string> kShippedCases{"block-ts1",          "block-ts2",
                                              "glovebox-steel-pads"};
 
 void check_material_trials(const std::string& name) {
-    const fs::path file = fs::path(FREESTAND_SOURCE_DIR) / "cases" / (name + ".toml");
+    const fs::path file = fs::path(freestand::test::source_dir()) / "cases" / (name + ".toml");
     // Trial and direct assessment must agree for any number of histories: 3 keep it quick.
     Case c = read_case(file);
     c.options.histories_per_level = 3;
@@ -113,7 +114,7 @@ FREESTAND_MATERIAL_TRIAL_TEST("glovebox-steel-pads")
 TEST_CASE("every material trial equals a direct assessment: each unit of glovebox-pair-unbraced",
           "[assess][policy][materials][joined]") {
     const Case pair =
-        read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair-unbraced.toml");
+        read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-pair-unbraced.toml");
     REQUIRE(pair.units.size() == 2);
     for (std::size_t i = 0; i < 2; ++i) {
         Case c = unit_case(pair, i);
@@ -131,7 +132,7 @@ TEST_CASE("every material trial equals a direct assessment: each unit of glovebo
 namespace {
 
 void check_auto_equals_always(const std::string& name) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / (name + ".toml"));
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / (name + ".toml"));
     c.options.simulate = SimulatePolicy::automatic;
     const AssessmentResult automatic = assess::assess(c);
     c.options.simulate = SimulatePolicy::always;
@@ -150,7 +151,7 @@ void check_auto_equals_always(const std::string& name) {
 
 TEST_CASE("simulate = \"auto\" and \"always\" give the same verdict: glovebox-pair-unbraced",
           "[assess][policy][simulate][joined]") {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-pair-unbraced.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-pair-unbraced.toml");
     c.options.simulate = SimulatePolicy::automatic;
     const AssessmentResult automatic = assess::assess(c);
     c.options.simulate = SimulatePolicy::always;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/paths.hpp"
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
 #include "core/errors.hpp"
@@ -15,7 +16,7 @@ using namespace freestand::assess;
 
 namespace {
 
-const fs::path spectra_dir = fs::path(FREESTAND_SOURCE_DIR) / "spectra";
+const fs::path spectra_dir = fs::path(freestand::test::source_dir()) / "spectra";
 // Case label inside the spectra folder so the relative file names resolve there.
 const std::string label = (spectra_dir / "case.toml").string();
 
@@ -54,7 +55,7 @@ fs::path rewritten(const std::string& name, const fs::path& from, F factor) {
 }
 
 Case glovebox(const std::string& site_extra) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.options.histories_per_level = 1;
     c = with_pga_levels(c, {0.2});
     if (site_extra.empty()) return c;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/paths.hpp"
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
 #include "core/errors.hpp"
@@ -15,7 +16,7 @@ using namespace freestand::assess;
 
 namespace {
 
-const fs::path spectra_dir = fs::path(FREESTAND_SOURCE_DIR) / "spectra";
+const fs::path spectra_dir = fs::path(freestand::test::source_dir()) / "spectra";
 const std::string label = (spectra_dir / "case.toml").string();
 
 const std::string component = R"([component]
@@ -54,7 +55,7 @@ fs::path scaled_file(const std::string& name, const fs::path& from, double facto
 
 // The glove box at 0.2 g with the [site] target lines of site_extra (after target_h_file).
 Case glovebox(const std::string& site_extra) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / "glovebox-single.toml");
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.options.histories_per_level = 1;
     c = with_pga_levels(c, {0.2});
     const Case files = parse_case(component + site_extra, label);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "support/paths.hpp"
 #include "batch/helpers.hpp"
 #include "batch/list.hpp"
 #include "batch/run.hpp"
@@ -106,7 +107,7 @@ histories_per_level = 2
                   "histories_per_level = 2\nseed = 9");
     test::write_text(dir / "edited" / "slide.toml", slide);
 
-    const BatchRun run = run_batch(read_batch_list(dir / "list.toml"), 2, "test");
+    const BatchRun run = run_batch(read_batch_list(dir / "list.toml"), assess::RunSettings(2), "test");
     REQUIRE(run.all_assessed());
     const report::CaseRun rest_file =
         report::run_case(dir / "edited" / "rest.toml", std::nullopt, "test");
@@ -131,8 +132,8 @@ TEST_CASE("the thread count does not change a byte", "[batch][threads][determini
                      "cases/missing.toml,gone,,\ncases/rest.toml,r2,0.06,\n"
                      "cases/slide.toml,s2,,4\ncases/rest.toml,r3,,\n");
     const BatchList list = read_batch_list(dir / "list.csv");
-    const std::vector<core::OutputFile> one = batch_files(run_batch(list, 1, "test"));
-    const std::vector<core::OutputFile> three = batch_files(run_batch(list, 3, "test"));
+    const std::vector<core::OutputFile> one = batch_files(run_batch(list, assess::RunSettings(1), "test"));
+    const std::vector<core::OutputFile> three = batch_files(run_batch(list, assess::RunSettings(3), "test"));
     REQUIRE(one.size() == three.size());
     for (std::size_t i = 0; i < one.size(); ++i) {
         INFO(one[i].name);
@@ -207,7 +208,7 @@ TEST_CASE("batch --json prints the summary that summary.json holds; the default 
           "[batch][cli]") {
     const fs::path dir = test::batch_dir("json");
     test::write_text(dir / "cases" / "rest.toml", test::resting_case("Rest"));
-    const std::string cmd = "cd " + quoted(dir) + " && '" + FREESTAND_EXE +
+    const std::string cmd = "cd " + quoted(dir) + " && '" + freestand::test::exe() +
                             "' batch cases --json >" + quoted(dir / "stdout.txt") + " 2>" +
                             quoted(dir / "stderr.txt");
     REQUIRE(std::system(cmd.c_str()) == 0);
@@ -245,7 +246,8 @@ TEST_CASE("batch CLI errors: a bad list or output folder stops before anything r
     test::write_text(dir / "list.txt", "x");
     const auto txt = test::run_cli("batch " + quoted(dir / "list.txt") + out);
     CHECK(txt.exit_code == 2);
-    for (const char* t : {"0", "x", "1.5", "2000"}) {
+    // --threads 0 means every core, as for assess and fragility.
+    for (const char* t : {"x", "1.5", "2000"}) {
         const auto r = test::run_cli("batch " + quoted(dir / "cases") + out + " --threads " + t);
         CHECK(r.exit_code == 2);
         CHECK_THAT(r.err, Contains("--threads: expected"));

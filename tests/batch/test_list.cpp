@@ -5,7 +5,7 @@
 #include "batch/helpers.hpp"
 #include "batch/list.hpp"
 #include "core/errors.hpp"
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
 
 using namespace freestand;
 using namespace freestand::batch;
@@ -98,7 +98,7 @@ TEST_CASE("a CSV list with overrides, columns in any order, empty cells keeping 
     CHECK(b.overrides.empty());
     CHECK(list.entries[2].case_file == dir / "abs.toml");
     CHECK(list.entries[2].overrides.pga_g == std::vector<double>{0.4});
-    CHECK(list.sha256 == report::sha256_hex(text));
+    CHECK(list.sha256 == core::sha256_hex(text));
     CHECK(list.source == (dir / "list.csv").string());
     // Only the file column is required.
     const BatchList minimal = parse_csv_list("file\na.toml\n", "list.csv");

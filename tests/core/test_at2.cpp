@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
@@ -21,7 +22,7 @@ const std::string header =
 }  // namespace
 
 TEST_CASE("AT2 reader reads the shipped El Centro #12 record", "[core][at2]") {
-    const auto rec = core::read_at2(fs::path(FREESTAND_TEST_DATA) / "RSN175_IMPVALL.H_H-E12140.AT2");
+    const auto rec = core::read_at2(fs::path(freestand::test::data_dir()) / "RSN175_IMPVALL.H_H-E12140.AT2");
     CHECK(rec.size() == 7814);
     CHECK(rec.dt_s == Approx(0.005));
     // First value in the file: .3654112E-03 g.

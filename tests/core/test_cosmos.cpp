@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/readers.hpp"
@@ -17,7 +18,7 @@ using Catch::Contains;
 
 namespace {
 
-const fs::path fixture = fs::path(FREESTAND_TEST_DATA) / "cosmos_small.V2";
+const fs::path fixture = fs::path(freestand::test::data_dir()) / "cosmos_small.V2";
 
 /// The fixture with `from` replaced (exactly once) by `to`, written to a temporary file.
 fs::path variant(const std::string& name, const std::string& from, const std::string& to) {
@@ -153,8 +154,9 @@ TEST_CASE("COSMOS V2 reader refuses overlong lines instead of overflowing the st
           "[core][cosmos][hardening]") {
     // Issue 16: a 50,000-blank data line and a 300,000-character units field crashed the
     // reader (std::regex recurses per character). Both are now an error naming the line.
-    const fs::path blanks = variant("long_blanks", "      20 acceleration pts",
-                                    std::string(50000, ' ') + "\n      20 acceleration pts");
+    std::string long_line(50000, ' ');
+    long_line.append("\n      20 acceleration pts");
+    const fs::path blanks = variant("long_blanks", "      20 acceleration pts", long_line);
     try {
         core::read_record(blanks);
         FAIL("no error");

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <random>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
@@ -224,7 +225,7 @@ TEST_CASE("CSV reader requires dt for one column and checks it", "[core][csv]") 
 }
 
 TEST_CASE("read_record picks the reader from the extension", "[core][records]") {
-    const fs::path data(FREESTAND_TEST_DATA);
+    const fs::path data(freestand::test::data_dir());
     // NPTS= 7810 in the file header (shared/records/README.md says 7814; the file is right).
     CHECK(core::read_record(data / "RSN175_IMPVALL.H_H-E12230.AT2").size() == 7810);
     CHECK(core::read_record(data / "cosmos_small.V2").size() == 20);

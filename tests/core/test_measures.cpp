@@ -2,6 +2,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
@@ -123,7 +124,7 @@ TEST_CASE("Measures reject an invalid record and bad duration fractions", "[core
 
 TEST_CASE("Measures of the shipped records agree with independent sums", "[core][measures]") {
     for (const char* file : {"RSN175_IMPVALL.H_H-E12140.AT2", "RSN1546_CHICHI_TCU122-N.AT2"}) {
-        const auto rec = core::read_at2(fs::path(FREESTAND_TEST_DATA) / file);
+        const auto rec = core::read_at2(fs::path(freestand::test::data_dir()) / file);
         const auto gm = core::measure(rec);
         // Independent: closed-form trapezoid sums in long double, no running integrals shared
         // with the library. v_N = dt (sum a - (a_0 + a_N)/2), I_a likewise on a^2, and

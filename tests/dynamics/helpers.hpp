@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "dynamics/simulate.hpp"
 
@@ -27,7 +28,7 @@ inline dynamics::Options opts(dynamics::Integrator i = dynamics::Integrator::eve
 }
 
 inline core::Record elcentro() {
-    return core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
+    return core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
 }
 
 /// Record scaled to a peak ground acceleration (g).

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/readers.hpp"
 #include "dynamics/biaxial.hpp"
@@ -101,8 +102,8 @@ TEST_CASE("biaxial: a slip that follows a turning load is taken slaved at the de
     // El Centro #12, 140 as x (0.5 g) and 230 as y, mu 0.2: the approach to each start and stop
     // under a turning load is stiff (the direction relaxes in |v| / |a_g|): taken with the full
     // equation, 11658 steps; slaved below tau_s |a_g|, 4798, within 7e-8 of rel_tol 1e-12.
-    auto x = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
-    auto y = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    auto x = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
+    auto y = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     const std::size_t n = static_cast<std::size_t>(20.0 / x.dt_s) + 1;
     x.accel_mps2.resize(n);
     y.accel_mps2.resize(n);
@@ -196,7 +197,7 @@ TEST_CASE("biaxial: a rotating load below mu_s g does not move the block", "[bia
 
 TEST_CASE("biaxial: central difference converges to the event-driven answer", "[biaxial]") {
     const core::Record x = test::elcentro();
-    const core::Record y = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    const core::Record y = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     dynamics::BiaxialExcitation e = dynamics::biaxial_excitation_from_records(x, y, 3.0);
     const auto n = static_cast<std::size_t>(std::lround(20.0 / e.dt_s)) + 1;
     e.x_mps2.resize(n);
@@ -297,8 +298,8 @@ TEST_CASE("biaxial: a slow slip under El Centro x and y is settled quasi-statica
     // |a_g| hovered at mu_k G took 3.6e7 Dormand-Prince steps (9 s) at the default tolerance
     // and threw "step below 1e-14 s" at rel_tol 1e-12, before slow slips (< 1e-6 m/s) stopped
     // or followed -a_g. Now both tolerances finish in tens of thousands of steps and agree.
-    auto x = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
-    auto y = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    auto x = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
+    auto y = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     const std::size_t n = static_cast<std::size_t>(20.0 / x.dt_s) + 1;
     x.accel_mps2.resize(n);
     y.accel_mps2.resize(n);

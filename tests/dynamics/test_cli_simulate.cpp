@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 #include "support/special_files.hpp"
 
@@ -93,7 +94,7 @@ TEST_CASE("simulate --out naming the --motion file is refused and the input kept
     const auto dir = std::filesystem::temp_directory_path() / "freestand_sim_own_input";
     std::filesystem::create_directories(dir);
     const auto motion = dir / "motion.AT2";
-    std::filesystem::copy_file(std::filesystem::path(FREESTAND_SOURCE_DIR) /
+    std::filesystem::copy_file(std::filesystem::path(freestand::test::source_dir()) /
                                    "tests/data/RSN175_IMPVALL.H_H-E12140.AT2",
                                motion, std::filesystem::copy_options::overwrite_existing);
     const std::string before = freestand::test::slurp(motion);

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "support/paths.hpp"
 #include "helpers.hpp"
 
 using namespace freestand;
@@ -127,8 +128,8 @@ TEST_CASE("event-driven impacts inside a step are found: count unchanged at a ti
     // and come back within one 5 ms step. 418 impacts: the earlier Dormand-Prince version of
     // this integrator at rel_tol 1e-13 (an independent reference; at its default tolerance,
     // reading only the step ends, it found 379, and the Taylor steps read at their ends 366).
-    const auto h = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
-    const auto v = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    const auto h = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
+    const auto v = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     const auto e = dynamics::excitation_from_record(h, 2.5, &v, 2.5);
     const auto model = dynamics::make_block_model(block::Block::uniform(0.15, 0.45, 38.0), 0.72,
                                                   std::nullopt, 0.98);
@@ -183,7 +184,7 @@ TEST_CASE("event-driven answer unchanged when contact steps are capped below the
     // Measured on 90 cases (3 records, 2 blocks, 3 PGAs, 5 frictions): the same impacts, mode
     // changes and overturns, peaks within 1e-8 (3e-5 only after > 100 impacts).
     const auto elcentro = test::elcentro();
-    const auto chichi = core::read_at2(FREESTAND_TEST_DATA "/RSN1546_CHICHI_TCU122-N.AT2");
+    const auto chichi = core::read_at2(freestand::test::data_dir() + "/RSN1546_CHICHI_TCU122-N.AT2");
     struct Case { const core::Record* rec; double half_width_m, pga_g, mu; };
     for (const Case c : {Case{&elcentro, 0.3, 0.9, 0.6},
                          Case{&elcentro, 0.3, 0.9, 0.525}, Case{&elcentro, 0.15, 0.9, 0.45},

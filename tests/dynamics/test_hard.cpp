@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "helpers.hpp"
 
@@ -195,7 +196,7 @@ TEST_CASE("a rock onset that only grazes g tan(alpha) settles and time goes on",
     // r 0.810838) to a rock onset whose excursion was below the impact search's resolution: the
     // onset, an impact at the same instant and the settling repeated at one t until 100000
     // events threw "events accumulate". The window 9.0-9.4 s starts at rest, as in the run.
-    std::ifstream in(FREESTAND_TEST_DATA "/grazing_rock_onset.csv");
+    std::ifstream in(freestand::test::data_dir() + "/grazing_rock_onset.csv");
     REQUIRE(in);
     dynamics::Excitation e;
     e.label = "grazing rock onset";

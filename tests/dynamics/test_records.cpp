@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "support/paths.hpp"
 #include "helpers.hpp"
 
 using namespace freestand;
@@ -14,7 +15,7 @@ TEST_CASE("shipped records: event-driven and central difference agree", "[dynami
     const auto blk = block::Block::uniform(0.15, 0.6, 38.0);  // tan(alpha) = 0.25
     for (const char* name : {"RSN175_IMPVALL.H_H-E12140.AT2", "RSN175_IMPVALL.H_H-E12230.AT2",
                              "RSN1546_CHICHI_TCU122-N.AT2"}) {
-        const auto rec = core::read_at2(std::string(FREESTAND_TEST_DATA) + "/" + name);
+        const auto rec = core::read_at2(std::string(freestand::test::data_dir()) + "/" + name);
         struct Case { double pga_g, mu; };
         for (const Case c : {Case{0.5, 0.15}, Case{0.3, 0.8}}) {
             INFO(name << " pga " << c.pga_g << " mu " << c.mu);

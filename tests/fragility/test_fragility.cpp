@@ -70,7 +70,7 @@ TEST_CASE("a pure-sliding block under a sine: P(slide > allowable) is the exact 
     cfg.seed = 7;
     cfg.record_files = {s.record};
     fragility::Runner runner(s.c, cfg);
-    runner.prepare(2);
+    runner.prepare(assess::RunSettings(2));
     std::vector<std::size_t> all(runner.total());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     const fragility::Result r =
@@ -102,7 +102,7 @@ TEST_CASE("samples depend on (seed, level, sample) only: any threads, any subset
     cfg.seed = 11;
     cfg.record_files = {s.record};
     fragility::Runner runner(s.c, cfg);
-    runner.prepare(1);
+    runner.prepare(assess::RunSettings(1));
     std::vector<std::size_t> all(runner.total());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     const auto one = fragility::run_samples(runner, all, 1);
@@ -130,7 +130,7 @@ TEST_CASE("samples depend on (seed, level, sample) only: any threads, any subset
     // Another seed draws other properties.
     cfg.seed = 12;
     fragility::Runner other(s.c, cfg);
-    other.prepare(1);
+    other.prepare(assess::RunSettings(1));
     CHECK(other.run(0).mu_s != a.samples[0].mu_s);
     // Missing or repeated samples are refused.
     auto missing = one;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -58,9 +59,11 @@ restitution = { dist = "lognormal", median = 0.85, beta = 0.1 }
             out << t << "," << std::sin(2.0 * M_PI * f_hz * t) * std::min(1.0, t) << "\n";
         }
     }
-    std::string args(const std::string& out, const std::string& more = "") const {
-        return "fragility '" + case_file + "' --pga 0.2:0.6:0.2 --samples 12 --records '" +
-               rec_a + "' '" + rec_b + "' --out '" + (dir / out).string() + "' " + more;
+    std::string args(const std::string& out, const std::string& more = "",
+                     int samples = 12) const {
+        return "fragility '" + case_file + "' --pga 0.2:0.6:0.2 --samples " +
+               std::to_string(samples) + " --records '" + rec_a + "' '" + rec_b + "' --out '" +
+               (dir / out).string() + "' " + more;
     }
 };
 
@@ -206,7 +209,8 @@ TEST_CASE("fragility options are checked before any sample runs", "[fragility][c
     CHECK(missing.err.find("nope.csv") != std::string::npos);
 }
 
-TEST_CASE("on a terminal, fragility draws a progress bar on stderr and stdout is unchanged",
+TEST_CASE("on a terminal, a fragility run longer than a second draws a progress bar on stderr "
+          "and stdout is unchanged",
           "[fragility][cli][progress]") {
     // util-linux `script` gives the command a pseudo-terminal; without it the test cannot run.
     if (std::system("command -v script >/dev/null 2>&1") != 0) {
@@ -216,18 +220,29 @@ TEST_CASE("on a terminal, fragility draws a progress bar on stderr and stdout is
     const Scene s("tty");
     const fs::path pty_text = s.dir / "pty.txt";
     const fs::path json_out = s.dir / "stdout.json";
-    const std::string inner = std::string("'") + FREESTAND_EXE + "' " + s.args("tty", "--json") +
-                              " >'" + json_out.string() + "'";
+    // 9000 samples on one thread: several seconds, so the bar shows (a run under a second
+    // draws none).
+    const std::string inner = std::string("'") + freestand::test::exe() + "' " +
+                              s.args("tty", "--json --threads 1", 3000) + " >'" +
+                              json_out.string() + "'";
     std::string quoted;  // inner, single-quoted for sh -c inside script -c
     for (char ch : inner) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    const std::string cmd = "cd '" + std::string(FREESTAND_SOURCE_DIR) + "' && script -qec '" +
+    const std::string cmd = "cd '" + std::string(freestand::test::source_dir()) + "' && script -qec '" +
                             quoted + "' /dev/null >'" + pty_text.string() + "' 2>&1";
     REQUIRE(std::system(cmd.c_str()) == 0);
     const std::string bar = slurp(pty_text);
     INFO(bar);
-    CHECK(bar.find("36/36 samples") != std::string::npos);
+    CHECK(bar.find("9000/9000 samples") != std::string::npos);
     CHECK(bar.find("/s,") != std::string::npos);
     CHECK(bar.find("left") != std::string::npos);
     // The JSON on stdout is the file's bytes: the bar never mixes into it.
     CHECK(slurp(json_out) == slurp(s.dir / "tty" / "fragility.json"));
+    // 36 samples take far less than a second: no bar at all.
+    const std::string quick = std::string("'") + freestand::test::exe() + "' " +
+                              s.args("quick", "--json") + " >'" + json_out.string() + "'";
+    std::string quick_quoted;
+    for (char ch : quick) quick_quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    REQUIRE(std::system(("script -qec '" + quick_quoted + "' /dev/null >'" + pty_text.string() +
+                         "' 2>&1").c_str()) == 0);
+    CHECK(slurp(pty_text).find("samples") == std::string::npos);
 }

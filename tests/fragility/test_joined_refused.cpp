@@ -17,7 +17,7 @@ TEST_CASE("fragility refuses two joined units", "[fragility][joined][errors]") {
         "pair.toml");
     fragility::Config config;
     config.pga_g = {0.3};
-    CHECK_THROWS_MATCHES(fragility::run_all(c, config, 1), InputError,
+    CHECK_THROWS_MATCHES(fragility::run_all(c, config, assess::RunSettings(1)), InputError,
                          Catch::Matchers::Message("pair.toml: unit: the fragility analysis takes "
                                                   "one component, not two [[unit]] tables"));
 }

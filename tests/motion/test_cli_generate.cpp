@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "support/run_cli.hpp"
 
@@ -137,7 +138,7 @@ TEST_CASE("generate refuses an output that is an input of the run before writing
     std::ofstream(dir / ".freestand-run") << "Written by freestand.\nh1.csv\nh2.csv\n";
     std::ofstream(dir / "h1.csv") << "previous run\n";
     freestand::core::write_csv_g(
-        freestand::core::read_at2(fs::path(FREESTAND_TEST_DATA) / "RSN175_IMPVALL.H_H-E12230.AT2"),
+        freestand::core::read_at2(fs::path(freestand::test::data_dir()) / "RSN175_IMPVALL.H_H-E12230.AT2"),
         dir / "h2.csv");
     const std::string h2_before = slurp(dir / "h2.csv");
     const auto r = run_cli("generate --target rg1.60 --pga 0.3 --seed-record "

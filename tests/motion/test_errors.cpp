@@ -1,6 +1,7 @@
 // Every user-reachable error path of the motion stage: type and message.
 #include <catch2/catch.hpp>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
@@ -65,7 +66,7 @@ TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[m
     CHECK_THROWS_WITH(motion::generate_set(targets(), o), Contains("given twice"));
     o.components = {"h1", "h2"};
     o.seed_records = {
-        core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2")};
+        core::read_at2(std::string(freestand::test::data_dir()) + "/RSN175_IMPVALL.H_H-E12140.AT2")};
     CHECK_THROWS_MATCHES(
         motion::generate_set(targets(), o), InputError,
         Catch::Message(
@@ -100,7 +101,7 @@ TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[m
 TEST_CASE("the acceptance report names every failed criterion", "[motion][acceptance]") {
     const motion::Target t = motion::rg160_targets(0.3).horizontal;
     core::Record r =
-        core::read_at2(std::string(FREESTAND_TEST_DATA) + "/RSN175_IMPVALL.H_H-E12140.AT2");
+        core::read_at2(std::string(freestand::test::data_dir()) + "/RSN175_IMPVALL.H_H-E12140.AT2");
     // Unmatched, unscaled (PGA about 0.14 g against 0.3 g): far below the target.
     motion::Acceptance a = motion::check_acceptance(r, t);
     CHECK_FALSE(a.passed);

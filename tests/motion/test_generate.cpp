@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
 #include "own_check.hpp"
@@ -17,7 +18,7 @@ const char* const kSeeds[] = {"RSN175_IMPVALL.H_H-E12140.AT2", "RSN175_IMPVALL.H
                               "RSN1546_CHICHI_TCU122-N.AT2"};
 
 core::Record seed(const std::string& file) {
-    return core::read_at2(std::string(FREESTAND_TEST_DATA) + "/" + file);
+    return core::read_at2(std::string(freestand::test::data_dir()) + "/" + file);
 }
 
 std::vector<double> grid() { return spectra::log_frequencies(0.01, 200.0, 100); }

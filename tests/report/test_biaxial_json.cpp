@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "support/paths.hpp"
 #include "assess/pipeline.hpp"
 #include "report/json.hpp"
 
@@ -14,7 +15,7 @@ using namespace freestand::assess;
 namespace {
 
 nlohmann::ordered_json levels_json(const char* name, double pga_g) {
-    Case c = read_case(fs::path(FREESTAND_SOURCE_DIR) / "cases" / name);
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / name);
     c.options.histories_per_level = 1;
     // Without the flexible-body inputs no flag is raised: the biaxial model alone decides.
     c.component.fixed_base_frequency_hz.reset();

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "report/references.hpp"
 #include "report/render.hpp"
 #include "support/run_cli.hpp"
@@ -20,7 +21,7 @@ using namespace freestand;
 
 namespace {
 
-const fs::path source_dir{FREESTAND_SOURCE_DIR};
+const fs::path source_dir{freestand::test::source_dir()};
 
 // Section ids of docs/methods.md ("1", "5a", ...) from its "## N. Title" headings, and the
 // numbered steps of each section (top-level "K. " list items).

@@ -59,7 +59,7 @@ TEST_CASE("joined report: a batch row and a fragility section are refused for tw
                              "[tunnel]\nheight_m = 1.0\nallowable_relative_m = 0.001\n[site]\n"
                              "pga_g = [0.3]\n";
     CHECK_THROWS_MATCHES(
-        report::run_case(pair, "pair.toml", assess::CaseOverrides{}, "x", 1), InputError,
+        report::run_case(pair, "pair.toml", assess::CaseOverrides{}, "x", assess::RunSettings(1)), InputError,
         Catch::Matchers::Message("pair.toml: unit: a batch runs one-component cases; assess two "
                                  "[[unit]] tables with `freestand assess`"));
     const auto file = std::filesystem::temp_directory_path() / "freestand_joined_fragility.toml";

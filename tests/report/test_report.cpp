@@ -8,6 +8,7 @@
 #include <regex>
 #include <thread>
 
+#include "support/paths.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 #include "report/json.hpp"
@@ -16,7 +17,7 @@
 #include "report/regress.hpp"
 #include "report/render.hpp"
 #include "report/run.hpp"
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
 #include "report/svg.hpp"
 #include "support/run_cli.hpp"
 #include "support/special_files.hpp"
@@ -165,10 +166,10 @@ seed = 3
 }  // namespace
 
 TEST_CASE("SHA-256 matches the FIPS 180-4 test vectors", "[report][sha256]") {
-    CHECK(sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-    CHECK(sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    CHECK(core::sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    CHECK(core::sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
     // Two-block message (56 bytes forces a second padding block).
-    CHECK(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
+    CHECK(core::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
           "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 }
 
@@ -257,7 +258,7 @@ TEST_CASE("numbers are formatted with fixed precision and the stamp is present",
     CHECK(level.at("slide_asce_m") == 0.0123456);
     CHECK(level.at("slide_energy_m") == 0.02);
     CHECK(j.at("levels").at(0).at("slide_energy_m").is_null());
-    CHECK(j.at("stamp").at("input_sha256") == sha256_hex("case bytes"));
+    CHECK(j.at("stamp").at("input_sha256") == core::sha256_hex("case bytes"));
     CHECK(j.at("stamp").at("commit") == "abc123");
     CHECK(j.at("stamp").at("seed") == 7);
     for (const char* key :
@@ -503,7 +504,7 @@ TEST_CASE("assess CLI: the default output folder is out/<case stem>/ of the work
     const fs::path dir = temp_dir("default_out");
     small_case(dir, "small");
     // run_cli works in the source tree; this run must work in its own folder.
-    const std::string cmd = "cd '" + dir.string() + "' && '" + FREESTAND_EXE +
+    const std::string cmd = "cd '" + dir.string() + "' && '" + freestand::test::exe() +
                             "' assess small.toml >'" + (dir / "stdout.txt").string() + "' 2>&1";
     REQUIRE(std::system(cmd.c_str()) == 0);
     CHECK(fs::exists(dir / "out" / "small" / "report.md"));
@@ -636,9 +637,9 @@ TEST_CASE("the stamp hashes every input file, not only the case", "[report][cli]
     const auto& inputs = j.at("stamp").at("inputs");
     REQUIRE(inputs.size() >= 1);
     for (const auto& i : inputs) {
-        const fs::path file = fs::path(FREESTAND_SOURCE_DIR) / "cases" / i.at("file").get<std::string>();
+        const fs::path file = fs::path(freestand::test::source_dir()) / "cases" / i.at("file").get<std::string>();
         INFO(file);
-        CHECK(i.at("sha256") == sha256_hex(test::slurp(file)));
+        CHECK(i.at("sha256") == core::sha256_hex(test::slurp(file)));
     }
     fs::remove_all(dir);
 }

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/paths.hpp"
 #include "block/block.hpp"
 #include "core/readers.hpp"
 #include "rocking/equivalent_linear.hpp"
@@ -64,8 +65,8 @@ TEST_CASE("ASCE f_es on an RG 1.60 10% target is the lowest crossing", "[sliding
 
 TEST_CASE("SA_VH computed from two records combines the larger and 0.4 x the smaller",
           "[sliding][records]") {
-    const core::Record h1 = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12140.AT2");
-    const core::Record h2 = core::read_at2(FREESTAND_TEST_DATA "/RSN175_IMPVALL.H_H-E12230.AT2");
+    const core::Record h1 = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
+    const core::Record h2 = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     const std::vector<double> f{0.5, 1.0, 2.0, 5.0, 10.0};
     const spectra::Spectrum v = sliding::vector_horizontal_from_records({h1, h2}, 0.10, f);
     const auto a = spectra::psa_g(h1, 0.10, f);

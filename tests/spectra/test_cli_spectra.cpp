@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
 #include "spectra/design.hpp"
@@ -40,7 +41,7 @@ TEST_CASE("spectrum --json prints one object with the record measures and PSA pe
         CHECK(j.contains(key));
     CHECK(j["record"] == "RSN175_IMPVALL.H_H-E12140");
     CHECK(j["dt_s"].get<double>() == Approx(0.005));
-    const auto rec = core::read_at2(fs::path(FREESTAND_SOURCE_DIR) / el_centro);
+    const auto rec = core::read_at2(fs::path(freestand::test::source_dir()) / el_centro);
     CHECK(j["pga_g"].get<double>() == Approx(core::measure(rec).pga_g).epsilon(1e-12));
     CHECK(j["frequencies_hz"].size() == 301);
     REQUIRE(j["psa_g"].contains("0.05"));

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
@@ -131,7 +132,7 @@ const char* const shipped_records[] = {"RSN175_IMPVALL.H_H-E12140.AT2",
                                        "RSN1546_CHICHI_TCU122-N.AT2"};
 
 core::Record shipped(const char* name) {
-    return core::read_at2(fs::path(FREESTAND_TEST_DATA) / name);
+    return core::read_at2(fs::path(freestand::test::data_dir()) / name);
 }
 
 /// Second method: classical RK4 on the same piecewise-linear input, with steps <= T/400, peak

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/file_io.hpp"
 #include "spectra/design.hpp"
 #include "spectra/spectrum.hpp"
@@ -62,7 +63,7 @@ std::map<std::string, Maker> expected_files() {
 
 TEST_CASE("every shipped target file equals the library spectrum, 0.1-100 Hz at 100 per decade",
           "[spectra][shipped]") {
-    const fs::path dir = fs::path(FREESTAND_SOURCE_DIR) / "spectra";
+    const fs::path dir = fs::path(freestand::test::source_dir()) / "spectra";
     const auto expected = expected_files();
     std::size_t csv_files = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "support/paths.hpp"
+
 namespace freestand::test {
 
 struct CliResult {
@@ -34,8 +36,8 @@ inline CliResult run_cli(const std::string& args, const std::string& prefix = ""
     std::filesystem::create_directories(dir);
     const auto out = dir / "out.txt";
     const auto err = dir / "err.txt";
-    const std::string cmd = std::string("cd '") + FREESTAND_SOURCE_DIR + "' && " + prefix + "'" + FREESTAND_EXE +
-                            "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const std::string cmd = "cd '" + source_dir() + "' && " + prefix + "'" + exe() + "' " + args +
+                            " >'" + out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(cmd.c_str());
     CliResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -89,7 +90,7 @@ TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][
     fs::create_directories(dir / "cases");
     for (const char* c : {"glovebox-single.toml", "glovebox-steel-pads.toml", "glovebox-pair.toml",
                           "glovebox-pair-unbraced.toml"})
-        fs::copy_file(fs::path(FREESTAND_SOURCE_DIR) / "cases" / c, dir / "cases" / c);
+        fs::copy_file(fs::path(freestand::test::source_dir()) / "cases" / c, dir / "cases" / c);
     const std::string args =
         fmt::format("'{}' --cases '{}'", (dir / "reports").string(), (dir / "cases").string());
     // Three runs (each computes the validation): write the goldens, detect a drift in one row

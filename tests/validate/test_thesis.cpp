@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "support/paths.hpp"
 #include "validate/thesis.hpp"
 
 namespace fs = std::filesystem;
@@ -16,7 +17,7 @@ using namespace freestand::validate;
 
 namespace {
 
-const fs::path data_dir = fs::path(FREESTAND_TEST_DATA) / "thesis";
+const fs::path data_dir = fs::path(freestand::test::data_dir()) / "thesis";
 
 std::vector<std::string> split_tabs(const std::string& line) {
     std::vector<std::string> out;
@@ -110,7 +111,7 @@ TEST_CASE("fact lookups: value, missing key, observation without value", "[valid
 
 // Hidden: registered by tests/CMakeLists.txt only where the shared thesis folder is present.
 TEST_CASE("the excerpt is the shared thesis's own text", "[.shared]") {
-    const fs::path file = fs::path(FREESTAND_SHARED_DIR) / "thesis" / thesis_text_file;
+    const fs::path file = fs::path(freestand::test::shared_dir()) / "thesis" / thesis_text_file;
     REQUIRE(fs::exists(file));
     const auto thesis = thesis_lines(file);
     for (const auto& [number, text] : excerpt()) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "validate/validate.hpp"
 
@@ -16,7 +17,7 @@ using namespace freestand::validate;
 namespace {
 
 const Validation& shipped() {
-    static const Validation v = run(fs::path(FREESTAND_SOURCE_DIR) / "cases");
+    static const Validation v = run(fs::path(freestand::test::source_dir()) / "cases");
     return v;
 }
 
@@ -121,7 +122,7 @@ TEST_CASE("validation without the shipped cases is an I/O error naming the file"
                           ("freestand_validate_no_cases_" + std::to_string(::getpid()));
     fs::create_directories(none);
     CHECK_FALSE(has_cases(none));
-    CHECK(has_cases(fs::path(FREESTAND_SOURCE_DIR) / "cases"));
+    CHECK(has_cases(fs::path(freestand::test::source_dir()) / "cases"));
     CHECK_THROWS_AS(run(none), freestand::IoError);
     CHECK_THROWS_WITH(run(none), Catch::Contains("glovebox-single.toml: cannot open file for "
                                                  "reading"));

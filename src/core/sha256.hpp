@@ -5,9 +5,9 @@
 #include <string>
 #include <string_view>
 
-namespace freestand::report {
+namespace freestand::core {
 
 /// Lower-case hex digest, 64 characters.
 std::string sha256_hex(std::string_view bytes);
 
-}  // namespace freestand::report
+}  // namespace freestand::core

@@ -1,11 +1,11 @@
-#include "report/sha256.hpp"
+#include "core/sha256.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
 #include <cstdint>
 
-namespace freestand::report {
+namespace freestand::core {
 
 namespace {
 
@@ -66,4 +66,4 @@ std::string sha256_hex(std::string_view bytes) {
     return out;
 }
 
-}  // namespace freestand::report
+}  // namespace freestand::core
