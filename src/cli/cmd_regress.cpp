@@ -8,6 +8,7 @@
 #include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/run_options.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "report/regress.hpp"
@@ -19,7 +20,8 @@ namespace freestand::cli {
 namespace {
 
 namespace fs = std::filesystem;
-const char* const usage = "[REPORTS_DIR] [--cases DIR] [--update] [--rtol 1e-6]";
+const char* const usage =
+    "[REPORTS_DIR] [--cases DIR] [--update] [--rtol 1e-6] [--threads T] [--cache DIR | --no-cache]";
 constexpr std::size_t max_listed = 20;
 
 std::vector<fs::path> case_files(const fs::path& dir) {
@@ -103,15 +105,18 @@ int run(const std::vector<std::string>& args) {
         "update", po::bool_switch(),
         "rewrite the goldens (report.md, report.html, result.json, figures; and validation/)")(
         "rtol", po::value<std::string>()->default_value("1e-6"), "relative tolerance for numbers");
+    add_run_options(desc);
     const auto vm = parse_options("regress", usage, desc, args, {"reports"});
     if (!vm) return 0;
+    const RunContext context(*vm);
     const double rtol = parse_double((*vm)["rtol"].as<std::string>(), "--rtol");
     if (rtol < 0.0) throw UsageError(fmt::format("--rtol: expected a number >= 0; got {}", rtol));
     const fs::path reports = (*vm)["reports"].as<std::string>();
     const bool update = (*vm)["update"].as<bool>();
     bool all_ok = true;
     for (const fs::path& case_file : case_files((*vm)["cases"].as<std::string>())) {
-        const report::CaseRun run = report::run_case(case_file, std::nullopt, build_commit);
+        const report::CaseRun run =
+            report::run_case(case_file, std::nullopt, build_commit, context.settings());
         const fs::path dir = reports / case_file.stem();
         if (update) {
             report::write_report(dir, run.rendered);
@@ -122,6 +127,7 @@ int run(const std::vector<std::string>& args) {
         }
     }
     all_ok = regress_validation(reports, (*vm)["cases"].as<std::string>(), update, rtol) && all_ok;
+    context.finish("regress");
     return all_ok ? 0 : static_cast<int>(ExitCode::failure);
 }
 
