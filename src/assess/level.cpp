@@ -350,6 +350,31 @@ bool same_contact(const ContactBound& a, const ContactBound& b) {
            a.housner == b.housner;
 }
 
+// A history's summaries at the sliding bound and at the rocking bound.
+using BoundRuns = std::pair<dynamics::Summary, dynamics::Summary>;
+
+// Every history of the bank through `one` (history k and its excitation in direction d at
+// pga_g) on the run's threads, in history order whatever thread ran which.
+std::vector<BoundRuns> run_histories(
+    HistoryBank& bank, Direction d, double pga_g,
+    const std::function<BoundRuns(std::size_t, const dynamics::Excitation&)>& one) {
+    const auto& sets = bank.sets();
+    const RunSettings& settings = bank.run();
+    std::vector<BoundRuns> runs(sets.size());
+    core::ProgressCallback progress;
+    if (settings.progress) {
+        const std::string step =
+            fmt::format("simulations at {:g} g, {}", pga_g, d == Direction::x ? "x" : "y");
+        progress = [&settings, step](std::size_t done, std::size_t total) {
+            settings.progress(step, done, total);
+        };
+    }
+    core::parallel_for(
+        sets.size(), settings.threads,
+        [&](std::size_t k) { runs[k] = one(k, excitation(sets[k], d, pga_g)); }, progress);
+    return runs;
+}
+
 }  // namespace
 
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
@@ -371,21 +396,13 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
                              const dynamics::Excitation& ex) {
         return run ? run(k, bound, m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
     };
-    // Each history at both bounds on its own thread; gathered below in history order.
-    std::vector<std::pair<dynamics::Summary, dynamics::Summary>> runs(sets.size());
-    const RunSettings& settings = bank.run();
-    core::parallel_for(
-        sets.size(), settings.threads,
-        [&](std::size_t k) {
-            const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
-            runs[k].first = run_one(k, 0, slide_model, ex);
-            runs[k].second = sim.bounds_differ ? run_one(k, 1, rock_model, ex) : runs[k].first;
-        },
-        settings.progress ? [&](std::size_t done, std::size_t total) {
-            settings.progress(fmt::format("simulations at {:g} g, {}", pga_g,
-                                          d == Direction::x ? "x" : "y"),
-                              done, total);
-        } : core::ProgressCallback{});
+    const std::vector<BoundRuns> runs = run_histories(
+        bank, d, pga_g, [&](std::size_t k, const dynamics::Excitation& ex) {
+            BoundRuns r;
+            r.first = run_one(k, 0, slide_model, ex);
+            r.second = sim.bounds_differ ? run_one(k, 1, rock_model, ex) : r.first;
+            return r;
+        });
     std::vector<double> slide, residual, rock_over_alpha, rock_rad, amplification;
     double worst = -1.0;
     for (std::size_t k = 0; k < sets.size(); ++k) {
