@@ -25,6 +25,7 @@ std::string history_key(const motion::TargetSet& targets, const motion::Generate
     w.text("freestand history set");
     w.u64(format_version);
     w.text(motion::generator_version);
+    motion::append_build_fingerprint(w);
     motion::append_fingerprint(w, targets);
     motion::append_fingerprint(w, options);
     w.u64(case_seed);

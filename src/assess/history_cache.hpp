@@ -12,8 +12,9 @@
 
 namespace freestand::assess {
 
-/// SHA-256 (hex) of everything set k of a case depends on: the generator's version, the
-/// targets, the generation options (seed and seed records included), the case seed and k.
+/// SHA-256 (hex) of everything set k of a case depends on: the generator's version, the build
+/// and the run-time libraries (another compiler may round differently), the targets, the
+/// generation options (seed and seed records included), the case seed and k.
 std::string history_key(const motion::TargetSet& targets, const motion::GenerateOptions& options,
                         std::uint64_t case_seed, std::size_t k);
 

@@ -28,7 +28,7 @@ class MpiSplit {
   private:
     int rank_ = 0;
     int size_ = 1;
-    bool owner_ = false;
+    [[maybe_unused]] bool owner_ = false;  // MPI was initialised here (read with MPI only)
 };
 
 }  // namespace freestand::cli

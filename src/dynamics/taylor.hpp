@@ -442,7 +442,11 @@ bool rock_step_degree(int degree, const Geometry& g, const ContactStart& x0, dou
                       const Tolerance& tol, ContactSeries& S, bool& lower_ok,
                       std::integer_sequence<int, Ds...>) {
     bool met = false;
-    ((degree == Ds + rock_degree_min ? (met = rock_step_fixed<Ds + rock_degree_min>(g, x0, h, tol, S, lower_ok), true) : false) || ...);
+    // The fold stops at the degree asked for; its value is only that stop.
+    static_cast<void>(((degree == Ds + rock_degree_min
+                            ? (met = rock_step_fixed<Ds + rock_degree_min>(g, x0, h, tol, S, lower_ok), true)
+                            : false) ||
+                       ...));
     return met;
 }
 

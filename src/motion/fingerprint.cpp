@@ -1,5 +1,10 @@
 #include "motion/fingerprint.hpp"
 
+#include <fftw3.h>
+#include <gnu/libc-version.h>
+
+#include "core/version.hpp"
+
 namespace freestand::motion {
 
 namespace {
@@ -83,6 +88,12 @@ void append_fingerprint(core::ByteWriter& w, const TargetSet& targets) {
     write_target(w, targets.vertical);
     w.flag(targets.horizontal_2.has_value());
     if (targets.horizontal_2) write_target(w, *targets.horizontal_2);
+}
+
+void append_build_fingerprint(core::ByteWriter& w) {
+    w.text(core::build_identity());
+    w.text(fftw_version);
+    w.text(gnu_get_libc_version());
 }
 
 void append_fingerprint(core::ByteWriter& w, const GenerateOptions& o) {

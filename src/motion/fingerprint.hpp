@@ -14,6 +14,9 @@ inline constexpr const char* generator_version = "1";
 
 /// Appends every field of the targets and the options that the generated set depends on.
 void append_fingerprint(core::ByteWriter& w, const TargetSet& targets);
+/// Appends what else the set's bits depend on: the build (core::build_identity()) and the
+/// libraries loaded at run time (FFTW, the C library's maths).
+void append_build_fingerprint(core::ByteWriter& w);
 void append_fingerprint(core::ByteWriter& w, const GenerateOptions& options);
 
 /// A record's fields, exactly; read_record is its inverse.

@@ -1,5 +1,7 @@
 // Debug-only invariant checks (core/contract.hpp): a violated contract aborts, naming itself.
+#ifndef FREESTAND_CHECK_CONTRACTS  // the contracts build defines it for every file
 #define FREESTAND_CHECK_CONTRACTS
+#endif
 #include "core/contract.hpp"
 
 #include <catch2/catch.hpp>

@@ -68,7 +68,12 @@ TEST_CASE("an impact conserves the angular momentum about the struck edge and ne
     int raised_by_holding_qd = 0, rebounds = 0;
     for (int i = 0; i < 200; ++i) {
         const int s = i % 2 == 0 ? 1 : -1;
-        const ImpactCase c = strike(g, s, om(rng), q(rng), qd(rng));
+        // One draw per statement: argument order is unspecified, the states must not depend on
+        // the compiler.
+        const double om0 = om(rng);
+        const double q0 = q(rng);
+        const double qd0 = qd(rng);
+        const ImpactCase c = strike(g, s, om0, q0, qd0);
         const double xc = s > 0 ? -g.b[0] : g.b[1];
         const double H0 = angular_momentum_about(g, c.before, xc);
         INFO("case " << i);
@@ -79,8 +84,12 @@ TEST_CASE("an impact conserves the angular momentum about the struck edge and ne
             CHECK(angular_momentum_about(g, c.after, xc) ==
                   Approx(H0).epsilon(kBalanceRel).margin(1e-12));
         }
+        // The mode keeps its velocity to 1e-5 (modal_free's deviation from 1) of the impact's
+        // velocity scale, the struck edge's speed; a small modal velocity is held to that
+        // absolute margin, not to 1e-5 of itself.
+        const double edge_speed_mps = om0 * std::max(g.rigid.R[0], g.rigid.R[1]);
         CHECK(modal_axis_velocity(g, c.after) ==
-              Approx(modal_axis_velocity(g, c.before)).epsilon(1e-5).margin(1e-9));
+              Approx(modal_axis_velocity(g, c.before)).epsilon(1e-5).margin(1e-5 * edge_speed_mps));
         const double e0 = kinetic_energy(g, c.before);
         CHECK(kinetic_energy(g, c.after) <= e0 * (1.0 + kBalanceRel));
         // The rule it replaces, theta' times Housner's restitution with q' held, raises the
@@ -219,8 +228,14 @@ TEST_CASE("the flexible body's structured solve matches the full system", "[dyna
     for (int i = 0; i < 100; ++i) {
         for (const FlexMode& m : modes) {
             const bool flat = m.mode == Mode::rest || m.mode == Mode::slide;
-            Pose p = contact_pose(g, m.s, 0.01, rate(rng), flat ? 0.0 : th(rng),
-                                  flat ? 0.0 : rate(rng), q(rng), rate(rng));
+            // Drawn one statement each: the order of a call's arguments is unspecified, and
+            // the same states must be drawn whatever the compiler.
+            const double v = rate(rng);
+            const double theta = flat ? 0.0 : th(rng);
+            const double omega = flat ? 0.0 : rate(rng);
+            const double q0 = q(rng);
+            const double qd0 = rate(rng);
+            Pose p = contact_pose(g, m.s, 0.01, v, theta, omega, q0, qd0);
             if (m.mode == Mode::flight) {
                 p.Y = 0.05;
                 p.Yd = rate(rng);
