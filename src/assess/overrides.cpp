@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "assess/materials.hpp"
+#include "assess/toml_reader.hpp"
 
 namespace freestand::assess {
 

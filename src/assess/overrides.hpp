@@ -2,8 +2,6 @@
 /// Values given to a case from outside its file (a batch list's columns, issue 14). They are
 /// written into the case's TOML document before it is read, so an overridden case reads exactly
 /// as a case file carrying those values: the same checks, defaults and echoed assumptions.
-#include <toml++/toml.h>
-
 #include <functional>
 #include <optional>
 #include <string>
@@ -45,9 +43,6 @@ inline const std::vector<std::string>& override_keys() {
 /// table of another length) is checked when the case is read.
 void check_overrides(const CaseOverrides& o,
                      const std::function<SourceLocation(const std::string& key)>& where);
-
-/// Writes the overrides into a parsed case document, creating [site] or [options] when absent.
-void apply_overrides(toml::table& root, const CaseOverrides& o);
 
 /// "pga_g = [0.1, 0.2]; seed = 4", in key order; "" when none.
 std::string describe(const CaseOverrides& o);

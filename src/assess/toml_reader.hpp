@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "assess/overrides.hpp"
 #include "core/errors.hpp"
 
 namespace freestand::assess {
@@ -71,5 +72,10 @@ class TableReader {
 
 /// "[lo, hi]" / "(lo, hi]" etc., for messages.
 std::string describe(Range range);
+
+/// Writes a batch list's overrides (assess/overrides.hpp) into a parsed case document, creating
+/// [site] or [options] when absent; declared here, with the TOML reader, so that the overrides'
+/// own header needs no toml++.
+void apply_overrides(toml::table& root, const CaseOverrides& o);
 
 }  // namespace freestand::assess

@@ -1,5 +1,6 @@
 #include "batch/shard.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <optional>

@@ -4,7 +4,7 @@
 /// (names and bytes), so `freestand merge` rebuilds the single run's folder byte for byte
 /// without assessing anything. Doubles are written in shortest round-trip form: the merged
 /// summary rounds the very numbers the single run rounds.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

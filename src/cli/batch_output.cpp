@@ -1,5 +1,6 @@
 #include "cli/batch_output.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <iostream>

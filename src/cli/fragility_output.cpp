@@ -1,5 +1,6 @@
 #include "cli/fragility_output.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <iostream>

@@ -1,7 +1,7 @@
 #pragma once
 /// What `fragility` and `merge` share: a shard's run descriptor and writing the outputs.
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 
 #include "assess/case.hpp"

@@ -1,6 +1,7 @@
 #include "cli/mpi_split.hpp"
 
 #ifdef FREESTAND_MPI
+#include <nlohmann/json.hpp>
 #include <mpi.h>
 
 #include <sstream>

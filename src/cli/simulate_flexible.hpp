@@ -1,7 +1,7 @@
 #pragma once
 /// `freestand simulate --flexible f=HZ[,zeta=Z][,mass=FRACTION][,height=M]`: the reduced-order
 /// flexible body (docs/methods.md s.10), its JSON, text and series CSV.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include "cli/documents.hpp"

@@ -2,7 +2,7 @@
 /// `freestand simulate` with a second unit (--block2, --mu2, --tunnel-height): two rigid planar
 /// blocks under the same base motion and their relative displacement at the tunnel's height
 /// (docs/methods.md s.10), printed as text or JSON (relative_max_m).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "cli/documents.hpp"
 #include "cli/options.hpp"

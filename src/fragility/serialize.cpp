@@ -1,5 +1,7 @@
 #include "fragility/serialize.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace freestand::fragility {
 
 using nlohmann::ordered_json;

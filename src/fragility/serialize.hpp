@@ -2,7 +2,7 @@
 /// Lossless JSON of a fragility run's inputs and samples, the lines of a shard file
 /// (`--shard K/N` writes them, `freestand merge` reads them back). Doubles are written in
 /// shortest round-trip form, so a merged run aggregates bit-identical numbers.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "fragility/fragility.hpp"
 

@@ -1,5 +1,7 @@
 #include "report/case_assessment.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "assess/overrides.hpp"
 #include "assess/pipeline.hpp"
 #include "core/errors.hpp"

@@ -1,5 +1,6 @@
 #include "report/fragility_json.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 /// fragility.json and the "fragility" object of result.json, apart from the fragility report's
 /// rendering (the Python module returns the JSON only).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

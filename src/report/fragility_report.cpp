@@ -2,6 +2,7 @@
 
 #include "report/fragility_json.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 /// report.html with the fragility curves as SVG; and the same section inside an assessment's
 /// report when the case asks for it ([options] fragility = true).
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

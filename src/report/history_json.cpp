@@ -1,5 +1,7 @@
 #include "report/history_json.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "report/json.hpp"
 
 namespace freestand::report {

@@ -1,7 +1,7 @@
 #pragma once
 /// One history's ground-motion measures and realism checks as JSON, the same block in
 /// `generate`'s match.json and in `assess`'s result.json (issue 13 s.1).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "motion/motion.hpp"
 

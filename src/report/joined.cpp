@@ -1,5 +1,6 @@
 #include "report/joined.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include "assess/joined.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 /// result.json: every number of the assessment, with the stamp under "stamp" (issue 6).
 #include <cstdint>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

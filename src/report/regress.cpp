@@ -1,5 +1,6 @@
 #include "report/regress.hpp"
 
+#include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// Golden comparison of result.json files (issue 6 `freestand regress`; STYLE.md: goldens
 /// compared numerically with an epsilon, refreshed by one command).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

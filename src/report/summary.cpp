@@ -1,5 +1,6 @@
 #include "report/summary.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

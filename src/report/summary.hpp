@@ -2,7 +2,7 @@
 /// A batch's summary (issue 14): one row per component in list order, rendered as
 /// summary.md, self-contained summary.html (templates/summary.{md,html}.mustache, compiled in),
 /// summary.csv (RFC 4180) and summary.json. The summary only reads what each row carries.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>

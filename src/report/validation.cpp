@@ -1,5 +1,6 @@
 #include "report/validation.hpp"
 
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <mstch/mstch.hpp>

@@ -3,7 +3,7 @@
 /// and result.json (templates/validation.{md,html}.mustache, compiled in), and the plain-text
 /// table `freestand validate` prints. Reports only read the validation.
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include "report/json.hpp"
