@@ -30,6 +30,10 @@ struct FlexGeometry {
     bool exact_slide = false;
     std::array<double, 2> b{};  ///< [0] left, [1] right half-widths
     double inv_width = 0.0;     ///< 1 / (b_L + b_R)
+    /// Second moment of the rigid remainder about each edge, I_r + M_r (b^2 + h_r^2), and
+    /// about O, I_r + M_r h_r^2, kg m^2.
+    std::array<double, 2> Ir_edge{};
+    double Ir_base = 0.0;
     /// The restitution was measured (BlockModel::restitution): an impact multiplies theta' by
     /// it; otherwise angular momentum about the striking edge is conserved.
     bool measured_restitution = false;
@@ -43,6 +47,9 @@ FlexGeometry make_flex_geometry(const FlexibleModel& m);
 /// half-sine pulse of duration T, per unit of the pulse's velocity change, x = omega T: 1 for
 /// x -> 0 (a slow mode does not follow the pulse), ~ (pi / x)^2 for x >> pi (a fast one does).
 double impact_modal_share(double x);
+
+/// Body-frame abscissa of edge s's contact point: b_R (s = +1) or -b_L (s = -1).
+inline double edge_x(const FlexGeometry& g, int s) { return s > 0 ? g.b[1] : -g.b[0]; }
 
 /// Mode of the base with its edge s (rock, slide-rock) and slip direction sigma.
 struct FlexMode {
@@ -77,7 +84,41 @@ struct FlexAccel {
 /// mode's contact forces and constraints: M a - D lambda = f, C a = gamma (a the four pose
 /// accelerations, lambda the contact forces), solved through the 4 x 4 mass matrix M and the
 /// at most 3 x 3 system C M^-1 D lambda = gamma - C M^-1 f; rocking by projection on the
-/// pivot's null space (two unknowns).
+/// pivot's null space (two unknowns). Any mode and pose: the reference the specialised
+/// equations below are tested against.
+FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
+
+/// What the equations of motion read of a pose: cos(phi), sin(phi), phi', q and q' (the base
+/// point's position and velocity do not enter them).
+struct Attitude {
+    double cphi = 1.0, sphi = 0.0, phid = 0.0, q = 0.0, qd = 0.0;
+};
+inline Attitude attitude(const Pose& p) { return {p.cphi, p.sphi, p.phid, p.q, p.qd}; }
+
+/// Accelerations on edge s in the contact point P's coordinates: P's slip u'' (0 rocking),
+/// phi'', q'', and the reactions F, N at P.
+struct EdgeAccel {
+    double udd = 0, phidd = 0, qdd = 0, F = 0, N = 0;
+};
+/// Rock about edge s (P fixed): Lagrange's equations of (phi, q) about P, a 2 x 2 system in
+/// closed form (flexible_modes.cpp).
+EdgeAccel flex_rock_accel(const FlexGeometry& g, int s, const Attitude& p, Base base);
+/// Slide-rock on edge s in direction sigma: the rocking solution plus P's slip u'', which
+/// shifts phi'', q'', F and N linearly; u'' makes F = -sigma mu_k N. Throws NumericalError
+/// when the contact force is indeterminate (u'' has no coefficient: Painleve's paradox).
+EdgeAccel flex_slide_rock_accel(const FlexGeometry& g, int s, int sigma, const Attitude& p,
+                                Base base);
+/// The pose accelerations of an edge mode's solution (O = P - R (b_x, 0)).
+FlexAccel flex_accel_of(const FlexGeometry& g, int s, const Attitude& p, const EdgeAccel& e);
+/// Flat slide in direction sigma (phi = phi' = 0, N = M G, F = -sigma mu_k N): X'' = u'',
+/// q'' and the edge forces N_L, N_R in closed form.
+FlexAccel flex_slide_accel(const FlexGeometry& g, int sigma, double q, double qd, Base base);
+/// Flight: the CG falls freely (X'', Y'' from the linear momentum) and (phi, q) obey the 2 x 2
+/// system of the body about its CG, in closed form.
+FlexAccel flex_flight_accel(const FlexGeometry& g, const Attitude& p, Base base);
+
+/// The accelerations of mode m at pose p by the mode's own equations above (rest_accel at rest;
+/// the flat modes read q and q' only).
 FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
 
 /// Rest (base held flat, docs/methods.md s.2 generalised): the modal equation and the base
@@ -195,7 +236,7 @@ public:
 
 private:
     const FlexGeometry& g_;
-    double sigma_;
+    int sigma_;
     double u0_, q0_, qd0_, p0_, ax0_, ax1_, G0_, G1_;
 };
 
@@ -212,7 +253,7 @@ inline FlexState flight_state(const Pose& p) {
 }
 inline FlexState edge_state(const EdgeState& e) { return {e.u, e.v, e.th, e.om, e.q, e.qd, 0, 0}; }
 
-/// The state's time derivative in mode m (rest excluded) and the accelerations it came from.
+/// The state's time derivative in mode m and the accelerations it came from (flexible_modes.cpp).
 void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base base,
               FlexState& dx, FlexAccel& a);
 
