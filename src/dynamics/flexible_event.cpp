@@ -347,7 +347,7 @@ private:
             double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
             if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
             const bool clipped = h < h_next_;
-            const double err = dp_.step(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            const double err = dp_step(f, t, x0, h);
             if (!(err <= 1.0)) {
                 rec_.rejected();
                 h_next_ = h * std::min(1.0, Stepper::factor(err));
@@ -379,6 +379,20 @@ private:
             handle(first, t_ev);
             return t_ev;
         }
+    }
+
+    // A Dormand-Prince step on the components the mode moves: rocking holds the slip (u, u' = 0),
+    // every contact mode the last two (flight's q, q').
+    template <class F>
+    double dp_step(const F& f, double t, const FlexState& x0, double h) {
+        switch (m_.mode) {
+            case Mode::rock: return dp_.step<2, 6>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            case Mode::flight: return dp_.step<0, 8>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            case Mode::rest:
+            case Mode::slide:
+            case Mode::slide_rock: break;
+        }
+        return dp_.step<0, 6>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
     }
 
     // The first event inside the accepted step [t, t1]: a sign change of its function from
