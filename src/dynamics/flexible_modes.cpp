@@ -26,13 +26,13 @@ struct AboutPoint {
     double RS0 = 0.0, RS1 = 0.0, D = 0.0;
 };
 
-AboutPoint about_point(const FlexGeometry& g, double bx, double Ip, const Attitude& p) {
+inline AboutPoint about_point(const FlexGeometry& g, double bx, double Ip, const Attitude& p) {
     const double qb = p.q - bx;
     const double S0 = g.ms * p.q - g.M * bx, S1 = g.Mh;
     return {qb, p.cphi * S0 - p.sphi * S1, p.sphi * S0 + p.cphi * S1, Ip + g.ms * qb * qb};
 }
 
-AboutPoint about_edge(const FlexGeometry& g, int s, const Attitude& p) {
+inline AboutPoint about_edge(const FlexGeometry& g, int s, const Attitude& p) {
     return about_point(g, edge_x(g, s), g.Ir_edge[static_cast<std::size_t>(Geometry::index(s))],
                        p);
 }
@@ -40,8 +40,8 @@ AboutPoint about_edge(const FlexGeometry& g, int s, const Attitude& p) {
 // Rate of the body's momentum relative to P (sum m a less M a_P):
 //   B = phi'' J R S - phi'^2 R S + m_s (q'' R e1 + 2 phi' q' J R e1),
 // J the quarter turn, R e1 = (cos phi, sin phi).
-std::array<double, 2> momentum_rate(const FlexGeometry& g, const Attitude& p,
-                                    const AboutPoint& e, double phidd, double qdd) {
+inline std::array<double, 2> momentum_rate(const FlexGeometry& g, const Attitude& p,
+                                           const AboutPoint& e, double phidd, double qdd) {
     const double w2 = p.phid * p.phid, cor = 2.0 * p.phid * p.qd;
     return {-phidd * e.RS1 - w2 * e.RS0 + g.ms * (qdd * p.cphi - cor * p.sphi),
             phidd * e.RS0 - w2 * e.RS1 + g.ms * (qdd * p.sphi + cor * p.cphi)};
@@ -54,7 +54,8 @@ std::array<double, 2> momentum_rate(const FlexGeometry& g, const Attitude& p,
 //   Q_q = m_s (R e1 . g_v + (q - b_x) phi'^2) - k q - c q',
 // so phi'' = (Q_phi + h_s Q_q) / D and q'' = Q_q / m_s + h_s phi''; the reactions at P,
 // (F, N) = M (u'' + xg'', G) + B (u'' = 0 here).
-EdgeAccel pivot_fixed(const FlexGeometry& g, const Attitude& p, const AboutPoint& e, Base base) {
+inline EdgeAccel pivot_fixed(const FlexGeometry& g, const Attitude& p, const AboutPoint& e,
+                             Base base) {
     const double w = p.phid;
     const double Qphi = e.RS1 * base.ax - e.RS0 * base.G - 2.0 * g.ms * e.qb * p.qd * w;
     const double Qq = g.ms * (e.qb * w * w - base.ax * p.cphi - base.G * p.sphi) - g.k * p.q -
@@ -68,18 +69,12 @@ EdgeAccel pivot_fixed(const FlexGeometry& g, const Attitude& p, const AboutPoint
     return a;
 }
 
-Attitude attitude_at(double phi, double phid, double q, double qd) {
+inline Attitude attitude_at(double phi, double phid, double q, double qd) {
     return {std::cos(phi), std::sin(phi), phid, q, qd};
 }
 
-}  // namespace
-
-EdgeAccel flex_rock_accel(const FlexGeometry& g, int s, const Attitude& p, Base base) {
-    return pivot_fixed(g, p, about_edge(g, s, p), base);
-}
-
-EdgeAccel flex_slide_rock_accel(const FlexGeometry& g, int s, int sigma, const Attitude& p,
-                                Base base) {
+inline EdgeAccel slide_rock(const FlexGeometry& g, int s, int sigma, const Attitude& p,
+                            Base base) {
     const AboutPoint e = about_edge(g, s, p);
     EdgeAccel a = pivot_fixed(g, p, e, base);
     // P's slip u'' puts the frame's inertia force -u'' per kg into the field: K (phi'', q'')
@@ -101,7 +96,11 @@ EdgeAccel flex_slide_rock_accel(const FlexGeometry& g, int s, int sigma, const A
     return a;
 }
 
-FlexAccel flex_accel_of(const FlexGeometry& g, int s, const Attitude& p, const EdgeAccel& e) {
+inline EdgeAccel rock(const FlexGeometry& g, int s, const Attitude& p, Base base) {
+    return pivot_fixed(g, p, about_edge(g, s, p), base);
+}
+
+inline FlexAccel pose_accel(const FlexGeometry& g, int s, const Attitude& p, const EdgeAccel& e) {
     // O = P - R (b_x, 0): O'' = P'' - phi'' J R (b_x, 0) + phi'^2 R (b_x, 0).
     const double bx = edge_x(g, s), w2 = p.phid * p.phid;
     FlexAccel a;
@@ -112,6 +111,22 @@ FlexAccel flex_accel_of(const FlexGeometry& g, int s, const Attitude& p, const E
     a.F = e.F;
     a.N = e.N;
     return a;
+}
+
+}  // namespace
+
+// The named entry points of the helpers above, which flex_rhs, run six times a step, inlines.
+EdgeAccel flex_rock_accel(const FlexGeometry& g, int s, const Attitude& p, Base base) {
+    return rock(g, s, p, base);
+}
+
+EdgeAccel flex_slide_rock_accel(const FlexGeometry& g, int s, int sigma, const Attitude& p,
+                                Base base) {
+    return slide_rock(g, s, sigma, p, base);
+}
+
+FlexAccel flex_accel_of(const FlexGeometry& g, int s, const Attitude& p, const EdgeAccel& e) {
+    return pose_accel(g, s, p, e);
 }
 
 FlexAccel flex_slide_accel(const FlexGeometry& g, int sigma, double q, double qd, Base base) {
@@ -189,9 +204,9 @@ void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base
     // On edge s: phi = -s theta, phi' = -s theta'.
     const double sd = static_cast<double>(m.s);
     const Attitude p = attitude_at(-sd * x[2], -sd * x[3], x[4], x[5]);
-    const EdgeAccel e = m.mode == Mode::rock ? flex_rock_accel(g, m.s, p, base)
-                                             : flex_slide_rock_accel(g, m.s, m.sigma, p, base);
-    a = flex_accel_of(g, m.s, p, e);
+    const EdgeAccel e = m.mode == Mode::rock ? rock(g, m.s, p, base)
+                                             : slide_rock(g, m.s, m.sigma, p, base);
+    a = pose_accel(g, m.s, p, e);
     dx = {x[1], e.udd, x[3], -sd * e.phidd, x[5], e.qdd, 0.0, 0.0};
 }
 
