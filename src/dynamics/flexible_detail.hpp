@@ -58,6 +58,33 @@ struct FlexMode {
     int sigma = 1;
 };
 
+/// cos(x) and sin(x). For |x| <= 0.5 (the tilts of a standing body) their Taylor polynomials
+/// to x^14 and x^15 (truncation below 1e-18 relative; within 0.7 ulp of the exact values after
+/// rounding, tests/dynamics/test_flexible_equations.cpp), std::cos and std::sin beyond: libm's
+/// sincos, with its rounding-mode guard, costs as much as the equations of motion it feeds.
+struct CosSin {
+    double c = 1.0, s = 0.0;
+};
+inline CosSin cos_sin(double x) {
+    if (!(std::abs(x) <= 0.5)) return {std::cos(x), std::sin(x)};
+    constexpr auto inv_factorial = [](int n) {
+        double f = 1.0;
+        for (int i = 2; i <= n; ++i) f *= i;  // exact to 18!
+        return 1.0 / f;
+    };
+    constexpr double c2 = inv_factorial(2), c3 = inv_factorial(3), c4 = inv_factorial(4),
+                     c5 = inv_factorial(5), c6 = inv_factorial(6), c7 = inv_factorial(7),
+                     c8 = inv_factorial(8), c9 = inv_factorial(9), c10 = inv_factorial(10),
+                     c11 = inv_factorial(11), c12 = inv_factorial(12), c13 = inv_factorial(13),
+                     c14 = inv_factorial(14), c15 = inv_factorial(15);
+    const double z = x * x;
+    const double s =
+        x + x * z * (-c3 + z * (c5 + z * (-c7 + z * (c9 + z * (-c11 + z * (c13 - z * c15))))));
+    const double c =
+        1.0 + z * (-c2 + z * (c4 + z * (-c6 + z * (c8 + z * (-c10 + z * (c12 - z * c14))))));
+    return {c, s};
+}
+
 /// Pose of the body relative to the moving base frame: O's position (X, Y), rotation phi
 /// (counter-clockwise), modal coordinate q, and their rates; cphi and sphi are cos(phi) and
 /// sin(phi), set with phi (contact_pose, pose_of, with_phi) so the equations need not repeat
@@ -69,8 +96,9 @@ struct Pose {
 /// The pose's phi and its cosine and sine.
 inline void with_phi(Pose& p, double phi) {
     p.phi = phi;
-    p.cphi = std::cos(phi);
-    p.sphi = std::sin(phi);
+    const CosSin t = cos_sin(phi);
+    p.cphi = t.c;
+    p.sphi = t.s;
 }
 
 /// Accelerations of the pose and the base reactions (F horizontal, N vertical, on the body);

@@ -313,7 +313,7 @@ private:
     }
 
     double lowest_corner_y(const FlexState& x) const {
-        const double sp = std::sin(x[4]);
+        const double sp = cos_sin(x[4]).s;
         return std::min(x[2] + sp * g_.b[1], x[2] - sp * g_.b[0]);
     }
 

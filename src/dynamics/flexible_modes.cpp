@@ -70,7 +70,8 @@ inline EdgeAccel pivot_fixed(const FlexGeometry& g, const Attitude& p, const Abo
 }
 
 inline Attitude attitude_at(double phi, double phid, double q, double qd) {
-    return {std::cos(phi), std::sin(phi), phid, q, qd};
+    const CosSin t = cos_sin(phi);
+    return {t.c, t.s, phid, q, qd};
 }
 
 inline EdgeAccel slide_rock(const FlexGeometry& g, int s, int sigma, const Attitude& p,
