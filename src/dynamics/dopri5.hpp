@@ -60,17 +60,19 @@ public:
 
     /// The continuous extension of the last step at theta = (t - t0) / h in [0, 1].
     State dense(double theta) const {
-        const double th1 = 1.0 - theta;
         State y;
-        for (std::size_t i = 0; i < N; ++i) {
-            const double diff = x1_[i] - x0_[i];
-            const double bspl = h_ * k_[0][i] - diff;
-            const double r4 = diff - h_ * k_[6][i] - bspl;
-            const double r5 = h_ * (d1 * k_[0][i] + d3 * k_[2][i] + d4 * k_[3][i] +
-                                    d5 * k_[4][i] + d6 * k_[5][i] + d7 * k_[6][i]);
-            y[i] = x0_[i] + theta * (diff + th1 * (bspl + theta * (r4 + th1 * r5)));
-        }
+        for (std::size_t i = 0; i < N; ++i) y[i] = dense_component(theta, i);
         return y;
+    }
+    /// Its component i alone (a root search on one component).
+    double dense_component(double theta, std::size_t i) const {
+        const double th1 = 1.0 - theta;
+        const double diff = x1_[i] - x0_[i];
+        const double bspl = h_ * k_[0][i] - diff;
+        const double r4 = diff - h_ * k_[6][i] - bspl;
+        const double r5 = h_ * (d1 * k_[0][i] + d3 * k_[2][i] + d4 * k_[3][i] + d5 * k_[4][i] +
+                                d6 * k_[5][i] + d7 * k_[6][i]);
+        return x0_[i] + theta * (diff + th1 * (bspl + theta * (r4 + th1 * r5)));
     }
 
     /// The step factor the error asks for next (0.9 err^(-1/5), between 0.2 and 5).

@@ -34,6 +34,15 @@ struct Segment {
 
 enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unload_right, land };
 
+// The accepted step [t, t + h]'s continuous extension at a time inside it: the state, or one
+// component (the root searches on theta' and q').
+struct StepExtension {
+    const Stepper& dp;
+    double t, h;
+    FlexState operator()(double tq) const { return dp.dense((tq - t) / h); }
+    double at(double tq, std::size_t i) const { return dp.dense_component((tq - t) / h, i); }
+};
+
 class FlexEngine {
 public:
     FlexEngine(const FlexGeometry& g, const Options& o, double dt_s, FlexRecorder& rec)
@@ -360,7 +369,7 @@ private:
             const double t1 = (h == tb_ - t) ? tb_ : t + h;
             const FlexState x1 = dp_.x1();
             const FlexAccel a1 = a_last_;  // f(x1, t1), the last stage
-            auto dense = [&](double te) { return dp_.dense((te - t) / h); };
+            const StepExtension dense{dp_, t, h};
             double t_ev = t1;
             const Ev first = first_event(dense, x0, x1, a1, t, t1, t_ev);
             const FlexState xe = first == Ev::none ? x1 : dense(t_ev);
@@ -398,8 +407,7 @@ private:
     // The first event inside the accepted step [t, t1]: a sign change of its function from
     // positive (or from 0 while rising: the state an event just set) to negative; an impact
     // also where theta dips below 0 and rises again inside the step.
-    template <class Dense>
-    Ev first_event(const Dense& dense, const FlexState& x0, const FlexState& x1,
+    Ev first_event(const StepExtension& dense, const FlexState& x0, const FlexState& x1,
                    const FlexAccel& a1, double t, double t1, double& t_ev) const {
         Ev first = Ev::none;
         t_ev = t1;
@@ -422,9 +430,9 @@ private:
                     if (fa > 0.0) te = toms748_root(fe, ta, t1, fa, f1);
                 }
             } else if (e == Ev::impact && x0[2] > 0.0 && x0[3] < 0.0 && x1[3] > 0.0) {
-                auto rate = [&](double tq) { return dense(tq)[3]; };
+                auto rate = [&](double tq) { return dense.at(tq, 3); };
                 const double tm = toms748_root(rate, t, t1, x0[3], x1[3]);
-                const double th_m = dense(tm)[2];
+                const double th_m = dense.at(tm, 2);
                 if (th_m < 0.0) {
                     hit = true;
                     te = toms748_root(fe, t, tm, x0[2], th_m);
@@ -439,16 +447,15 @@ private:
     }
 
     // Peaks of theta and |q| inside a step: where theta' or q' changes sign.
-    template <class Dense>
-    void observe_peaks(const Dense& dense, const FlexState& x0, const FlexState& xe, double t,
-                       double te) {
+    void observe_peaks(const StepExtension& dense, const FlexState& x0, const FlexState& xe,
+                       double t, double te) {
         const bool fl = is_flight(m_.mode);
         const std::size_t iq = fl ? 7 : 5;
         for (std::size_t i : {std::size_t{3}, iq}) {
             if (fl && i == 3) continue;
             const double f0 = x0[i], f1 = xe[i];
             if (f0 == 0.0 || (f0 > 0.0) == (f1 > 0.0) || !(te > t)) continue;
-            auto f = [&](double tq) { return dense(tq)[i]; };
+            auto f = [&](double tq) { return dense.at(tq, i); };
             rec_.observe(m_, dense(toms748_root(f, t, te, f0, f1)));
         }
         rec_.observe(m_, xe);
