@@ -34,13 +34,20 @@ struct Segment {
 
 enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unload_right, land };
 
-// The accepted step [t, t + h]'s continuous extension at a time inside it: the state, or one
-// component (the root searches on theta' and q').
+// The accepted step [t, t + h]'s continuous extension at a time inside it: the state, one
+// component (the root searches on theta' and q'), or a view that evaluates the components
+// read of it (the events' root searches).
 struct StepExtension {
     const Stepper& dp;
     double t, h;
     FlexState operator()(double tq) const { return dp.dense((tq - t) / h); }
     double at(double tq, std::size_t i) const { return dp.dense_component((tq - t) / h, i); }
+    struct View {
+        const StepExtension& ext;
+        double tq;
+        double operator[](std::size_t i) const { return ext.at(tq, i); }
+    };
+    View view(double tq) const { return {*this, tq}; }
 };
 
 class FlexEngine {
@@ -298,8 +305,10 @@ private:
         return te;
     }
 
-    // Event functions of the mode, positive while it holds; a the accelerations at x.
-    double event_value(Ev e, const FlexState& x, const FlexAccel& a) const {
+    // Event functions of the mode, positive while it holds; a the accelerations at x (a state,
+    // or a view of the continuous extension that evaluates only the components read).
+    template <class State>
+    double event_value(Ev e, const State& x, const FlexAccel& a) const {
         switch (e) {
             case Ev::impact: return x[2];
             case Ev::overturn: return half_pi - (is_flight(m_.mode) ? std::abs(x[4]) : x[2]);
@@ -316,12 +325,15 @@ private:
     static bool needs_forces(Ev e) {
         return e == Ev::lift || e == Ev::friction || e == Ev::unload_left || e == Ev::unload_right;
     }
-    double event_at(Ev e, const FlexState& x, double t) const {
-        if (!needs_forces(e)) return event_value(e, x, {});
-        return event_value(e, x, flex_accel(g_, m_, pose_of(g_, m_, x), seg_.at(t)));
+    // The event function at tq inside the accepted step.
+    double event_at(Ev e, const StepExtension& dense, double tq) const {
+        if (!needs_forces(e)) return event_value(e, dense.view(tq), {});
+        const FlexState x = dense(tq);
+        return event_value(e, x, flex_accel(g_, m_, pose_of(g_, m_, x), seg_.at(tq)));
     }
 
-    double lowest_corner_y(const FlexState& x) const {
+    template <class State>
+    double lowest_corner_y(const State& x) const {
         const double sp = cos_sin(x[4]).s;
         return std::min(x[2] + sp * g_.b[1], x[2] - sp * g_.b[0]);
     }
@@ -414,7 +426,7 @@ private:
         for (Ev e : events()) {
             if (e == Ev::none) continue;
             const double f1 = event_value(e, x1, a1);
-            auto fe = [&](double tq) { return event_at(e, dense(tq), tq); };
+            auto fe = [&](double tq) { return event_at(e, dense, tq); };
             bool hit = false;
             double te = t;
             if (f1 < 0.0) {
