@@ -19,6 +19,12 @@ OscillatorStep::OscillatorStep(const Oscillator& osc, double tau_s) : tau(tau_s)
     two_zw_ = 2.0 * z * w;
     wd_ = w * std::sqrt(1.0 - z * z);
     sig_ = z * w;
+    if (tau == 0.0) {  // exp, cos and sin of 0, exact (a slide segment's start)
+        e_ = 1.0;
+        c_ = 1.0;
+        s_ = 0.0;
+        return;
+    }
     e_ = std::exp(-sig_ * tau);
     c_ = std::cos(wd_ * tau);
     s_ = std::sin(wd_ * tau) / wd_;
