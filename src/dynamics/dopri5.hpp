@@ -55,6 +55,7 @@ public:
         return err;
     }
 
+    const State& x0() const { return x0_; }
     const State& x1() const { return x1_; }
     const State& k7() const { return k_[6]; }
 

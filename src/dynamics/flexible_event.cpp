@@ -356,9 +356,8 @@ private:
         for (;;) {
             if (m_.mode == Mode::rest) return t;
             if (!(t < tb_)) return tb_;
-            const FlexState x0 = x_;
             if (!fsal_) {
-                f(x0, k1_, t);
+                f(x_, k1_, t);
                 a0_ = a_last_;
                 fsal_ = true;
             }
@@ -368,7 +367,7 @@ private:
             double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
             if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
             const bool clipped = h < h_next_;
-            const double err = dp_step(f, t, x0, h);
+            const double err = dp_step(f, t, x_, h);
             if (!(err <= 1.0)) {
                 rec_.rejected();
                 h_next_ = h * std::min(1.0, Stepper::factor(err));
@@ -379,15 +378,15 @@ private:
                               : h * Stepper::factor(err);
             rec_.step();
             const double t1 = (h == tb_ - t) ? tb_ : t + h;
-            const FlexState x1 = dp_.x1();
-            const FlexAccel a1 = a_last_;  // f(x1, t1), the last stage
+            const FlexState& x0 = dp_.x0();
+            const FlexState& x1 = dp_.x1();
+            const FlexAccel& a1 = a_last_;  // f(x1, t1), the last stage
             const StepExtension dense{dp_, t, h};
             double t_ev = t1;
             const Ev first = first_event(dense, x0, x1, a1, t, t1, t_ev);
-            const FlexState xe = first == Ev::none ? x1 : dense(t_ev);
-            observe_peaks(dense, x0, xe, t, t_ev);
+            x_ = first == Ev::none ? x1 : dense(t_ev);
+            observe_peaks(dense, x0, x_, t, t_ev);
             rec_.time_in(m_.mode, t_ev - t);
-            x_ = xe;
             if (first == Ev::none) {
                 k1_ = dp_.k7();
                 a0_ = a1;
