@@ -26,8 +26,9 @@ OscillatorStep::OscillatorStep(const Oscillator& osc, double tau_s) : tau(tau_s)
         return;
     }
     e_ = std::exp(-sig_ * tau);
-    c_ = std::cos(wd_ * tau);
-    s_ = std::sin(wd_ * tau) / wd_;
+    const CosSin t = cos_sin(wd_ * tau);
+    c_ = t.c;
+    s_ = t.s / wd_;
 }
 
 void OscillatorStep::apply(double& q, double& qd, double a0, double a1) const {
