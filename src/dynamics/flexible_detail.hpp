@@ -2,6 +2,7 @@
 /// Internal: equations of motion of the flexible body (flexible.hpp) in each contact mode, its
 /// impact and landing rules and the bookkeeping its two integrators (flexible_event.cpp,
 /// flexible_cd.cpp) share.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -290,15 +291,28 @@ class FlexRecorder {
 public:
     FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out)
         : g_(g), o_(o), out_(out) {}
-    /// Peaks of slip, uplift and |q| at the state x in mode m.
-    void observe(const FlexMode& m, const FlexState& x);
+    /// Peaks of slip, uplift and |q| at the state x in mode m (inline: once per step and
+    /// sample).
+    void observe(const FlexMode& m, const FlexState& x) {
+        Summary& s = out_.summary.base;
+        modal_peak(modal_of(m.mode, x));
+        s.slide_max_m = std::max(s.slide_max_m, std::abs(x[0]));
+        if (is_flight(m.mode) || x[2] <= 0.0) return;
+        s.rock_max_rad = std::max(s.rock_max_rad, x[2]);
+        const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(m.s))];
+        s.rock_max_over_alpha = std::max(s.rock_max_over_alpha, x[2] / alpha);
+    }
     /// A peak of |q| found between the integrator's points.
     void modal_peak(double q) {
         out_.summary.modal_max_m = std::max(out_.summary.modal_max_m, std::abs(q));
     }
     double modal_max() const { return out_.summary.modal_max_m; }
     /// Output sample at time t: the modal mass's absolute acceleration (peak) and the series.
-    void sample(double t, const FlexMode& m, const FlexState& x, double modal_abs_accel_mps2);
+    void sample(double t, const FlexMode& m, const FlexState& x, double modal_abs_accel_mps2) {
+        observe(m, x);
+        accel_peak_ = std::max(accel_peak_, std::abs(modal_abs_accel_mps2));
+        if (o_.record_series) record(t, m, x);
+    }
     void transition(Mode from, Mode to);
     void time_in(Mode m, double dt_s) {
         out_.summary.base.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s;
@@ -314,6 +328,8 @@ public:
                 double wall_s);
 
 private:
+    void record(double t, const FlexMode& m, const FlexState& x);
+
     const FlexGeometry& g_;
     const Options& o_;
     FlexibleResult& out_;

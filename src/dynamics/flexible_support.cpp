@@ -70,21 +70,7 @@ Pose pose_of(const FlexGeometry& g, const FlexMode& m, const FlexState& x) {
     return contact_pose(g, m.s, x[0], x[1], x[2], x[3], x[4], x[5]);
 }
 
-void FlexRecorder::observe(const FlexMode& m, const FlexState& x) {
-    Summary& s = out_.summary.base;
-    modal_peak(modal_of(m.mode, x));
-    s.slide_max_m = std::max(s.slide_max_m, std::abs(x[0]));
-    if (is_flight(m.mode) || x[2] <= 0.0) return;
-    s.rock_max_rad = std::max(s.rock_max_rad, x[2]);
-    const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(m.s))];
-    s.rock_max_over_alpha = std::max(s.rock_max_over_alpha, x[2] / alpha);
-}
-
-void FlexRecorder::sample(double t, const FlexMode& m, const FlexState& x,
-                          double modal_abs_accel_mps2) {
-    observe(m, x);
-    accel_peak_ = std::max(accel_peak_, std::abs(modal_abs_accel_mps2));
-    if (!o_.record_series) return;
+void FlexRecorder::record(double t, const FlexMode& m, const FlexState& x) {
     FlexibleSample s;
     s.time_s = t;
     s.mode = m.mode;
