@@ -2,7 +2,7 @@
 // mode is the linear oscillator, advanced exactly over each linear input segment (Nigam &
 // Jennings 1969); the rest inequalities are checked at the segment's end and a failure is
 // located on the exact solution. Slide, rock, slide-rock and flight: Dormand-Prince 5(4) with
-// error control (dopri5.hpp, as the biaxial slide) on the mode's equations (flex_accel), steps
+// error control (dopri5.hpp, as the biaxial slide) on the mode's equations (flex_rhs), steps
 // ending at every input sample; events (impact, lift-off, friction exceeded, slip stop, an edge
 // unloading, landing, theta = pi/2) are sign changes over a step, located by TOMS 748 on the
 // continuous extension.
@@ -12,6 +12,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/contract.hpp"
 #include "core/errors.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/dopri5.hpp"
@@ -405,6 +406,9 @@ private:
     // every contact mode the last two (flight's q, q').
     template <class F>
     double dp_step(const F& f, double t, const FlexState& x0, double h) {
+        FREESTAND_EXPECT(is_flight(m_.mode) || (x0[6] == 0.0 && x0[7] == 0.0),
+                         "a contact mode's state ends in two zeros");
+        FREESTAND_EXPECT(m_.mode != Mode::rock || x0[1] == 0.0, "rocking holds the slip");
         switch (m_.mode) {
             case Mode::rock: return dp_.step<2, 6>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
             case Mode::flight: return dp_.step<0, 8>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
