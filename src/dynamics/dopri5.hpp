@@ -20,28 +20,33 @@ public:
     /// Tries the step [t, t + h] from x0 with k1 = f(x0, t): fills x1 and k7 = f(x1, t + h)
     /// (first-same-as-last: the next step's k1) and returns the error of the embedded order-4
     /// solution as max_i |e_i| / (abs_tol + rel_tol max(|x0_i|, |x1_i|)); <= 1 accepts.
-    template <class F>
+    /// Components outside [Lo, Hi) must be constants of the motion (f gives them derivative 0):
+    /// they are carried, not stepped, which gives the same x1 and error (and the continuous
+    /// extension, which reads their zero k_j).
+    template <std::size_t Lo = 0, std::size_t Hi = N, class F>
     double step(const F& f, double t, const State& x0, const State& k1, double h, double rel_tol,
                 double abs_tol) {
+        static_assert(Lo < Hi && Hi <= N);
         x0_ = x0;
         k_[0] = k1;
         h_ = h;
         State y;
-        stage(y, {a21});
+        if constexpr (Lo > 0 || Hi < N) y = x0;
+        stage<Lo, Hi>(y, {a21});
         f(y, k_[1], t + c2 * h);
-        stage(y, {a31, a32});
+        stage<Lo, Hi>(y, {a31, a32});
         f(y, k_[2], t + c3 * h);
-        stage(y, {a41, a42, a43});
+        stage<Lo, Hi>(y, {a41, a42, a43});
         f(y, k_[3], t + c4 * h);
-        stage(y, {a51, a52, a53, a54});
+        stage<Lo, Hi>(y, {a51, a52, a53, a54});
         f(y, k_[4], t + c5 * h);
-        stage(y, {a61, a62, a63, a64, a65});
+        stage<Lo, Hi>(y, {a61, a62, a63, a64, a65});
         f(y, k_[5], t + h);
-        stage(y, {b1, 0.0, b3, b4, b5, b6});
+        stage<Lo, Hi>(y, {b1, 0.0, b3, b4, b5, b6});
         x1_ = y;
         f(x1_, k_[6], t + h);
         double err = 0.0;
-        for (std::size_t i = 0; i < N; ++i) {
+        for (std::size_t i = Lo; i < Hi; ++i) {
             const double e = h * (e1 * k_[0][i] + e3 * k_[2][i] + e4 * k_[3][i] +
                                   e5 * k_[4][i] + e6 * k_[5][i] + e7 * k_[6][i]);
             const double sk = abs_tol + rel_tol * std::max(std::abs(x0[i]), std::abs(x1_[i]));
@@ -50,22 +55,25 @@ public:
         return err;
     }
 
+    const State& x0() const { return x0_; }
     const State& x1() const { return x1_; }
     const State& k7() const { return k_[6]; }
 
     /// The continuous extension of the last step at theta = (t - t0) / h in [0, 1].
     State dense(double theta) const {
-        const double th1 = 1.0 - theta;
         State y;
-        for (std::size_t i = 0; i < N; ++i) {
-            const double diff = x1_[i] - x0_[i];
-            const double bspl = h_ * k_[0][i] - diff;
-            const double r4 = diff - h_ * k_[6][i] - bspl;
-            const double r5 = h_ * (d1 * k_[0][i] + d3 * k_[2][i] + d4 * k_[3][i] +
-                                    d5 * k_[4][i] + d6 * k_[5][i] + d7 * k_[6][i]);
-            y[i] = x0_[i] + theta * (diff + th1 * (bspl + theta * (r4 + th1 * r5)));
-        }
+        for (std::size_t i = 0; i < N; ++i) y[i] = dense_component(theta, i);
         return y;
+    }
+    /// Its component i alone (a root search on one component).
+    double dense_component(double theta, std::size_t i) const {
+        const double th1 = 1.0 - theta;
+        const double diff = x1_[i] - x0_[i];
+        const double bspl = h_ * k_[0][i] - diff;
+        const double r4 = diff - h_ * k_[6][i] - bspl;
+        const double r5 = h_ * (d1 * k_[0][i] + d3 * k_[2][i] + d4 * k_[3][i] + d5 * k_[4][i] +
+                                d6 * k_[5][i] + d7 * k_[6][i]);
+        return x0_[i] + theta * (diff + th1 * (bspl + theta * (r4 + th1 * r5)));
     }
 
     /// The step factor the error asks for next (0.9 err^(-1/5), between 0.2 and 5).
@@ -76,9 +84,10 @@ public:
     }
 
 private:
-    // y = x0 + h sum_j a_j k_j over the given coefficients.
+    // y = x0 + h sum_j a_j k_j over the given coefficients, on the stepped components.
+    template <std::size_t Lo, std::size_t Hi>
     void stage(State& y, std::initializer_list<double> a) const {
-        for (std::size_t i = 0; i < N; ++i) {
+        for (std::size_t i = Lo; i < Hi; ++i) {
             double s = 0.0;
             std::size_t j = 0;
             for (double aj : a) s += aj * k_[j++][i];

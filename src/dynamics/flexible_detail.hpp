@@ -2,6 +2,7 @@
 /// Internal: equations of motion of the flexible body (flexible.hpp) in each contact mode, its
 /// impact and landing rules and the bookkeeping its two integrators (flexible_event.cpp,
 /// flexible_cd.cpp) share.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -30,6 +31,10 @@ struct FlexGeometry {
     bool exact_slide = false;
     std::array<double, 2> b{};  ///< [0] left, [1] right half-widths
     double inv_width = 0.0;     ///< 1 / (b_L + b_R)
+    /// Second moment of the rigid remainder about each edge, I_r + M_r (b^2 + h_r^2), and
+    /// about O, I_r + M_r h_r^2, kg m^2.
+    std::array<double, 2> Ir_edge{};
+    double Ir_base = 0.0;
     /// The restitution was measured (BlockModel::restitution): an impact multiplies theta' by
     /// it; otherwise angular momentum about the striking edge is conserved.
     bool measured_restitution = false;
@@ -44,12 +49,42 @@ FlexGeometry make_flex_geometry(const FlexibleModel& m);
 /// x -> 0 (a slow mode does not follow the pulse), ~ (pi / x)^2 for x >> pi (a fast one does).
 double impact_modal_share(double x);
 
+/// Body-frame abscissa of edge s's contact point: b_R (s = +1) or -b_L (s = -1).
+inline double edge_x(const FlexGeometry& g, int s) { return s > 0 ? g.b[1] : -g.b[0]; }
+
 /// Mode of the base with its edge s (rock, slide-rock) and slip direction sigma.
 struct FlexMode {
     Mode mode = Mode::rest;
     int s = 1;
     int sigma = 1;
 };
+
+/// cos(x) and sin(x). For |x| <= 0.5 (the tilts of a standing body) their Taylor polynomials
+/// to x^14 and x^15 (truncation below 1e-18 relative; within 0.7 ulp of the exact values after
+/// rounding, tests/dynamics/test_flexible_equations.cpp), std::cos and std::sin beyond: libm's
+/// sincos, with its rounding-mode guard, costs as much as the equations of motion it feeds.
+struct CosSin {
+    double c = 1.0, s = 0.0;
+};
+inline CosSin cos_sin(double x) {
+    if (!(std::abs(x) <= 0.5)) return {std::cos(x), std::sin(x)};
+    constexpr auto inv_factorial = [](int n) {
+        double f = 1.0;
+        for (int i = 2; i <= n; ++i) f *= i;  // exact to 18!
+        return 1.0 / f;
+    };
+    constexpr double c2 = inv_factorial(2), c3 = inv_factorial(3), c4 = inv_factorial(4),
+                     c5 = inv_factorial(5), c6 = inv_factorial(6), c7 = inv_factorial(7),
+                     c8 = inv_factorial(8), c9 = inv_factorial(9), c10 = inv_factorial(10),
+                     c11 = inv_factorial(11), c12 = inv_factorial(12), c13 = inv_factorial(13),
+                     c14 = inv_factorial(14), c15 = inv_factorial(15);
+    const double z = x * x;
+    const double s =
+        x + x * z * (-c3 + z * (c5 + z * (-c7 + z * (c9 + z * (-c11 + z * (c13 - z * c15))))));
+    const double c =
+        1.0 + z * (-c2 + z * (c4 + z * (-c6 + z * (c8 + z * (-c10 + z * (c12 - z * c14))))));
+    return {c, s};
+}
 
 /// Pose of the body relative to the moving base frame: O's position (X, Y), rotation phi
 /// (counter-clockwise), modal coordinate q, and their rates; cphi and sphi are cos(phi) and
@@ -62,8 +97,9 @@ struct Pose {
 /// The pose's phi and its cosine and sine.
 inline void with_phi(Pose& p, double phi) {
     p.phi = phi;
-    p.cphi = std::cos(phi);
-    p.sphi = std::sin(phi);
+    const CosSin t = cos_sin(phi);
+    p.cphi = t.c;
+    p.sphi = t.s;
 }
 
 /// Accelerations of the pose and the base reactions (F horizontal, N vertical, on the body);
@@ -77,7 +113,41 @@ struct FlexAccel {
 /// mode's contact forces and constraints: M a - D lambda = f, C a = gamma (a the four pose
 /// accelerations, lambda the contact forces), solved through the 4 x 4 mass matrix M and the
 /// at most 3 x 3 system C M^-1 D lambda = gamma - C M^-1 f; rocking by projection on the
-/// pivot's null space (two unknowns).
+/// pivot's null space (two unknowns). Any mode and pose: the reference the specialised
+/// equations below are tested against.
+FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
+
+/// What the equations of motion read of a pose: cos(phi), sin(phi), phi', q and q' (the base
+/// point's position and velocity do not enter them).
+struct Attitude {
+    double cphi = 1.0, sphi = 0.0, phid = 0.0, q = 0.0, qd = 0.0;
+};
+inline Attitude attitude(const Pose& p) { return {p.cphi, p.sphi, p.phid, p.q, p.qd}; }
+
+/// Accelerations on edge s in the contact point P's coordinates: P's slip u'' (0 rocking),
+/// phi'', q'', and the reactions F, N at P.
+struct EdgeAccel {
+    double udd = 0, phidd = 0, qdd = 0, F = 0, N = 0;
+};
+/// Rock about edge s (P fixed): Lagrange's equations of (phi, q) about P, a 2 x 2 system in
+/// closed form (flexible_modes.cpp).
+EdgeAccel flex_rock_accel(const FlexGeometry& g, int s, const Attitude& p, Base base);
+/// Slide-rock on edge s in direction sigma: the rocking solution plus P's slip u'', which
+/// shifts phi'', q'', F and N linearly; u'' makes F = -sigma mu_k N. Throws NumericalError
+/// when the contact force is indeterminate (u'' has no coefficient: Painleve's paradox).
+EdgeAccel flex_slide_rock_accel(const FlexGeometry& g, int s, int sigma, const Attitude& p,
+                                Base base);
+/// The pose accelerations of an edge mode's solution (O = P - R (b_x, 0)).
+FlexAccel flex_accel_of(const FlexGeometry& g, int s, const Attitude& p, const EdgeAccel& e);
+/// Flat slide in direction sigma (phi = phi' = 0, N = M G, F = -sigma mu_k N): X'' = u'',
+/// q'' and the edge forces N_L, N_R in closed form.
+FlexAccel flex_slide_accel(const FlexGeometry& g, int sigma, double q, double qd, Base base);
+/// Flight: the CG falls freely (X'', Y'' from the linear momentum) and (phi, q) obey the 2 x 2
+/// system of the body about its CG, in closed form.
+FlexAccel flex_flight_accel(const FlexGeometry& g, const Attitude& p, Base base);
+
+/// The accelerations of mode m at pose p by the mode's own equations above (rest_accel at rest;
+/// the flat modes read q and q' only).
 FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base);
 
 /// Rest (base held flat, docs/methods.md s.2 generalised): the modal equation and the base
@@ -195,7 +265,7 @@ public:
 
 private:
     const FlexGeometry& g_;
-    double sigma_;
+    int sigma_;
     double u0_, q0_, qd0_, p0_, ax0_, ax1_, G0_, G1_;
 };
 
@@ -212,7 +282,7 @@ inline FlexState flight_state(const Pose& p) {
 }
 inline FlexState edge_state(const EdgeState& e) { return {e.u, e.v, e.th, e.om, e.q, e.qd, 0, 0}; }
 
-/// The state's time derivative in mode m (rest excluded) and the accelerations it came from.
+/// The state's time derivative in mode m and the accelerations it came from (flexible_modes.cpp).
 void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base base,
               FlexState& dx, FlexAccel& a);
 
@@ -221,15 +291,28 @@ class FlexRecorder {
 public:
     FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out)
         : g_(g), o_(o), out_(out) {}
-    /// Peaks of slip, uplift and |q| at the state x in mode m.
-    void observe(const FlexMode& m, const FlexState& x);
+    /// Peaks of slip, uplift and |q| at the state x in mode m (inline: once per step and
+    /// sample).
+    void observe(const FlexMode& m, const FlexState& x) {
+        Summary& s = out_.summary.base;
+        modal_peak(modal_of(m.mode, x));
+        s.slide_max_m = std::max(s.slide_max_m, std::abs(x[0]));
+        if (is_flight(m.mode) || x[2] <= 0.0) return;
+        s.rock_max_rad = std::max(s.rock_max_rad, x[2]);
+        const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(m.s))];
+        s.rock_max_over_alpha = std::max(s.rock_max_over_alpha, x[2] / alpha);
+    }
     /// A peak of |q| found between the integrator's points.
     void modal_peak(double q) {
         out_.summary.modal_max_m = std::max(out_.summary.modal_max_m, std::abs(q));
     }
     double modal_max() const { return out_.summary.modal_max_m; }
     /// Output sample at time t: the modal mass's absolute acceleration (peak) and the series.
-    void sample(double t, const FlexMode& m, const FlexState& x, double modal_abs_accel_mps2);
+    void sample(double t, const FlexMode& m, const FlexState& x, double modal_abs_accel_mps2) {
+        observe(m, x);
+        accel_peak_ = std::max(accel_peak_, std::abs(modal_abs_accel_mps2));
+        if (o_.record_series) record(t, m, x);
+    }
     void transition(Mode from, Mode to);
     void time_in(Mode m, double dt_s) {
         out_.summary.base.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s;
@@ -245,6 +328,8 @@ public:
                 double wall_s);
 
 private:
+    void record(double t, const FlexMode& m, const FlexState& x);
+
     const FlexGeometry& g_;
     const Options& o_;
     FlexibleResult& out_;

@@ -2,7 +2,7 @@
 // mode is the linear oscillator, advanced exactly over each linear input segment (Nigam &
 // Jennings 1969); the rest inequalities are checked at the segment's end and a failure is
 // located on the exact solution. Slide, rock, slide-rock and flight: Dormand-Prince 5(4) with
-// error control (dopri5.hpp, as the biaxial slide) on the mode's equations (flex_accel), steps
+// error control (dopri5.hpp, as the biaxial slide) on the mode's equations (flex_rhs), steps
 // ending at every input sample; events (impact, lift-off, friction exceeded, slip stop, an edge
 // unloading, landing, theta = pi/2) are sign changes over a step, located by TOMS 748 on the
 // continuous extension.
@@ -12,6 +12,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/contract.hpp"
 #include "core/errors.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/dopri5.hpp"
@@ -33,6 +34,22 @@ struct Segment {
 };
 
 enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unload_right, land };
+
+// The accepted step [t, t + h]'s continuous extension at a time inside it: the state, one
+// component (the root searches on theta' and q'), or a view that evaluates the components
+// read of it (the events' root searches).
+struct StepExtension {
+    const Stepper& dp;
+    double t, h;
+    FlexState operator()(double tq) const { return dp.dense((tq - t) / h); }
+    double at(double tq, std::size_t i) const { return dp.dense_component((tq - t) / h, i); }
+    struct View {
+        const StepExtension& ext;
+        double tq;
+        double operator[](std::size_t i) const { return ext.at(tq, i); }
+    };
+    View view(double tq) const { return {*this, tq}; }
+};
 
 class FlexEngine {
 public:
@@ -289,8 +306,10 @@ private:
         return te;
     }
 
-    // Event functions of the mode, positive while it holds; a the accelerations at x.
-    double event_value(Ev e, const FlexState& x, const FlexAccel& a) const {
+    // Event functions of the mode, positive while it holds; a the accelerations at x (a state,
+    // or a view of the continuous extension that evaluates only the components read).
+    template <class State>
+    double event_value(Ev e, const State& x, const FlexAccel& a) const {
         switch (e) {
             case Ev::impact: return x[2];
             case Ev::overturn: return half_pi - (is_flight(m_.mode) ? std::abs(x[4]) : x[2]);
@@ -307,13 +326,16 @@ private:
     static bool needs_forces(Ev e) {
         return e == Ev::lift || e == Ev::friction || e == Ev::unload_left || e == Ev::unload_right;
     }
-    double event_at(Ev e, const FlexState& x, double t) const {
-        if (!needs_forces(e)) return event_value(e, x, {});
-        return event_value(e, x, flex_accel(g_, m_, pose_of(g_, m_, x), seg_.at(t)));
+    // The event function at tq inside the accepted step.
+    double event_at(Ev e, const StepExtension& dense, double tq) const {
+        if (!needs_forces(e)) return event_value(e, dense.view(tq), {});
+        const FlexState x = dense(tq);
+        return event_value(e, x, flex_accel(g_, m_, pose_of(g_, m_, x), seg_.at(tq)));
     }
 
-    double lowest_corner_y(const FlexState& x) const {
-        const double sp = std::sin(x[4]);
+    template <class State>
+    double lowest_corner_y(const State& x) const {
+        const double sp = cos_sin(x[4]).s;
         return std::min(x[2] + sp * g_.b[1], x[2] - sp * g_.b[0]);
     }
 
@@ -335,9 +357,8 @@ private:
         for (;;) {
             if (m_.mode == Mode::rest) return t;
             if (!(t < tb_)) return tb_;
-            const FlexState x0 = x_;
             if (!fsal_) {
-                f(x0, k1_, t);
+                f(x_, k1_, t);
                 a0_ = a_last_;
                 fsal_ = true;
             }
@@ -347,7 +368,7 @@ private:
             double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
             if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
             const bool clipped = h < h_next_;
-            const double err = dp_.step(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            const double err = dp_step(f, t, x_, h);
             if (!(err <= 1.0)) {
                 rec_.rejected();
                 h_next_ = h * std::min(1.0, Stepper::factor(err));
@@ -358,15 +379,15 @@ private:
                               : h * Stepper::factor(err);
             rec_.step();
             const double t1 = (h == tb_ - t) ? tb_ : t + h;
-            const FlexState x1 = dp_.x1();
-            const FlexAccel a1 = a_last_;  // f(x1, t1), the last stage
-            auto dense = [&](double te) { return dp_.dense((te - t) / h); };
+            const FlexState& x0 = dp_.x0();
+            const FlexState& x1 = dp_.x1();
+            const FlexAccel& a1 = a_last_;  // f(x1, t1), the last stage
+            const StepExtension dense{dp_, t, h};
             double t_ev = t1;
             const Ev first = first_event(dense, x0, x1, a1, t, t1, t_ev);
-            const FlexState xe = first == Ev::none ? x1 : dense(t_ev);
-            observe_peaks(dense, x0, xe, t, t_ev);
+            x_ = first == Ev::none ? x1 : dense(t_ev);
+            observe_peaks(dense, x0, x_, t, t_ev);
             rec_.time_in(m_.mode, t_ev - t);
-            x_ = xe;
             if (first == Ev::none) {
                 k1_ = dp_.k7();
                 a0_ = a1;
@@ -381,18 +402,34 @@ private:
         }
     }
 
+    // A Dormand-Prince step on the components the mode moves: rocking holds the slip (u, u' = 0),
+    // every contact mode the last two (flight's q, q').
+    template <class F>
+    double dp_step(const F& f, double t, const FlexState& x0, double h) {
+        FREESTAND_EXPECT(is_flight(m_.mode) || (x0[6] == 0.0 && x0[7] == 0.0),
+                         "a contact mode's state ends in two zeros");
+        FREESTAND_EXPECT(m_.mode != Mode::rock || x0[1] == 0.0, "rocking holds the slip");
+        switch (m_.mode) {
+            case Mode::rock: return dp_.step<2, 6>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            case Mode::flight: return dp_.step<0, 8>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+            case Mode::rest:
+            case Mode::slide:
+            case Mode::slide_rock: break;
+        }
+        return dp_.step<0, 6>(f, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+    }
+
     // The first event inside the accepted step [t, t1]: a sign change of its function from
     // positive (or from 0 while rising: the state an event just set) to negative; an impact
     // also where theta dips below 0 and rises again inside the step.
-    template <class Dense>
-    Ev first_event(const Dense& dense, const FlexState& x0, const FlexState& x1,
+    Ev first_event(const StepExtension& dense, const FlexState& x0, const FlexState& x1,
                    const FlexAccel& a1, double t, double t1, double& t_ev) const {
         Ev first = Ev::none;
         t_ev = t1;
         for (Ev e : events()) {
             if (e == Ev::none) continue;
             const double f1 = event_value(e, x1, a1);
-            auto fe = [&](double tq) { return event_at(e, dense(tq), tq); };
+            auto fe = [&](double tq) { return event_at(e, dense, tq); };
             bool hit = false;
             double te = t;
             if (f1 < 0.0) {
@@ -408,9 +445,9 @@ private:
                     if (fa > 0.0) te = toms748_root(fe, ta, t1, fa, f1);
                 }
             } else if (e == Ev::impact && x0[2] > 0.0 && x0[3] < 0.0 && x1[3] > 0.0) {
-                auto rate = [&](double tq) { return dense(tq)[3]; };
+                auto rate = [&](double tq) { return dense.at(tq, 3); };
                 const double tm = toms748_root(rate, t, t1, x0[3], x1[3]);
-                const double th_m = dense(tm)[2];
+                const double th_m = dense.at(tm, 2);
                 if (th_m < 0.0) {
                     hit = true;
                     te = toms748_root(fe, t, tm, x0[2], th_m);
@@ -425,16 +462,15 @@ private:
     }
 
     // Peaks of theta and |q| inside a step: where theta' or q' changes sign.
-    template <class Dense>
-    void observe_peaks(const Dense& dense, const FlexState& x0, const FlexState& xe, double t,
-                       double te) {
+    void observe_peaks(const StepExtension& dense, const FlexState& x0, const FlexState& xe,
+                       double t, double te) {
         const bool fl = is_flight(m_.mode);
         const std::size_t iq = fl ? 7 : 5;
         for (std::size_t i : {std::size_t{3}, iq}) {
             if (fl && i == 3) continue;
             const double f0 = x0[i], f1 = xe[i];
             if (f0 == 0.0 || (f0 > 0.0) == (f1 > 0.0) || !(te > t)) continue;
-            auto f = [&](double tq) { return dense(tq)[i]; };
+            auto f = [&](double tq) { return dense.at(tq, i); };
             rec_.observe(m_, dense(toms748_root(f, t, te, f0, f1)));
         }
         rec_.observe(m_, xe);

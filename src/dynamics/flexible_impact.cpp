@@ -23,8 +23,6 @@ double attachment_axis_velocity(const FlexGeometry& g, const Pose& p) {
     return (p.Xd - p.phid * rs1) * cp + (p.Yd + p.phid * rs0) * sp;
 }
 
-double edge_x(const FlexGeometry& g, int s) { return s > 0 ? g.b[1] : -g.b[0]; }
-
 // theta' about edge s at uplift th (pose from slip u, v) conserving the angular momentum H
 // about the edge's base-plane point xc, q' by modal_rate_after from `before`. H is linear in
 // theta' (q' is affine in it): two evaluations give it.

@@ -1,4 +1,6 @@
-// Equations of motion of the flexible body (flexible.hpp, docs/methods.md s.10).
+// Equations of motion of the flexible body (flexible.hpp, docs/methods.md s.10) in their general
+// form, the contact pose and the classification of the contact modes; each mode's own equations,
+// which the integrators use, are in flexible_modes.cpp.
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -222,12 +224,15 @@ FlexGeometry make_flex_geometry(const FlexibleModel& m) {
     g.exact_slide = g.sliding.zeta < 1.0;
     g.b = {blk.b_left_m, blk.b_right_m};
     g.inv_width = 1.0 / (g.b[0] + g.b[1]);
+    g.Ir_base = g.Ir + g.Mr * g.hr * g.hr;
+    for (std::size_t i = 0; i < 2; ++i) g.Ir_edge[i] = g.Ir_base + g.Mr * g.b[i] * g.b[i];
     g.measured_restitution = m.rigid.restitution.has_value();
     g.modal_free = impact_modal_share(g.omega * m.impact_duration_s);
     return g;
 }
 
-FlexAccel flex_accel(const FlexGeometry& g, const FlexMode& m, const Pose& p, Base base) {
+FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pose& p,
+                             Base base) {
     const double cp = p.cphi, sp = p.sphi, w = p.phid, w2 = w * w;
     const Vec2 e1 = {cp, sp};
     const Vec2 rr = rot(cp, sp, {0.0, g.hr});       // O to the rigid remainder's CG

@@ -1,5 +1,5 @@
 // What the two flexible-body integrators share (flexible_detail.hpp): the exact oscillator of
-// the rest phase, the state's derivative, the summary bookkeeping.
+// the rest phase, the exact flat slide, the summary bookkeeping.
 #include <algorithm>
 #include <cmath>
 
@@ -19,9 +19,16 @@ OscillatorStep::OscillatorStep(const Oscillator& osc, double tau_s) : tau(tau_s)
     two_zw_ = 2.0 * z * w;
     wd_ = w * std::sqrt(1.0 - z * z);
     sig_ = z * w;
+    if (tau == 0.0) {  // exp, cos and sin of 0, exact (a slide segment's start)
+        e_ = 1.0;
+        c_ = 1.0;
+        s_ = 0.0;
+        return;
+    }
     e_ = std::exp(-sig_ * tau);
-    c_ = std::cos(wd_ * tau);
-    s_ = std::sin(wd_ * tau) / wd_;
+    const CosSin t = cos_sin(wd_ * tau);
+    c_ = t.c;
+    s_ = t.s / wd_;
 }
 
 void OscillatorStep::apply(double& q, double& qd, double a0, double a1) const {
@@ -35,12 +42,12 @@ void OscillatorStep::apply(double& q, double& qd, double a0, double a1) const {
 
 SlideSegment::SlideSegment(const FlexGeometry& g, int sigma, const std::array<double, 8>& x,
                            Base b0, double ax1, double G1)
-    : g_(g), sigma_(static_cast<double>(sigma)), u0_(x[0]), q0_(x[4]), qd0_(x[5]),
+    : g_(g), sigma_(sigma), u0_(x[0]), q0_(x[4]), qd0_(x[5]),
       p0_(g.M * x[1] + g.ms * x[5]), ax0_(b0.ax), ax1_(ax1), G0_(b0.G), G1_(G1) {}
 
 SlideSegment::Point SlideSegment::at(double tau) const {
     const FlexGeometry& g = g_;
-    const double smu = sigma_ * g.rigid.mu_k, kappa = g.M / g.Mr;
+    const double smu = static_cast<double>(sigma_) * g.rigid.mu_k, kappa = g.M / g.Mr;
     Point p;
     p.q = q0_;
     p.qd = qd0_;
@@ -50,18 +57,7 @@ SlideSegment::Point SlideSegment::at(double tau) const {
     p.v = (P - g.ms * p.qd) / g.M;
     p.u = u0_ + (p0_ * tau - g.M * (ax0_ * t2 + ax1_ * t3) - smu * g.M * (G0_ * t2 + G1_ * t3) -
                  g.ms * (p.q - q0_)) / g.M;
-    const double ax = ax0_ + ax1_ * tau, G = G0_ + G1_ * tau;
-    const double spring = g.k * p.q + g.c * p.qd;
-    FlexAccel& a = p.a;
-    a.N = g.M * G;
-    a.F = -smu * a.N;
-    a.Xdd = -ax + (spring + a.F) / g.Mr;
-    a.qdd = -spring / g.ms - ax - a.Xdd;
-    // Moment about O of the remainder at (0, h_r) and the modal mass at (q, h_s) under their
-    // accelerations and the base frame's gravity (0, -G) and inertia (-xg'', 0).
-    const double mo = -g.Mr * g.hr * (a.Xdd + ax) + g.ms * (p.q * G - g.hs * (a.Xdd + a.qdd + ax));
-    a.NR = (a.N * g.b[0] + mo) * g.inv_width;
-    a.NL = (a.N * g.b[1] - mo) * g.inv_width;
+    p.a = flex_slide_accel(g, sigma_, p.q, p.qd, {ax0_ + ax1_ * tau, G0_ + G1_ * tau});
     return p;
 }
 
@@ -74,34 +70,7 @@ Pose pose_of(const FlexGeometry& g, const FlexMode& m, const FlexState& x) {
     return contact_pose(g, m.s, x[0], x[1], x[2], x[3], x[4], x[5]);
 }
 
-void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base base,
-              FlexState& dx, FlexAccel& a) {
-    const Pose p = pose_of(g, m, x);
-    a = flex_accel(g, m, p, base);
-    if (is_flight(m.mode)) {
-        dx = {x[1], a.Xdd, x[3], a.Ydd, x[5], a.phidd, x[7], a.qdd};
-        return;
-    }
-    const double slip = m.mode == Mode::rock ? 0.0 : contact_slip_accel(g, m.s, p, a);
-    const double thdd = m.mode == Mode::slide ? 0.0 : -static_cast<double>(m.s) * a.phidd;
-    dx = {x[1], slip, x[3], thdd, x[5], a.qdd, 0.0, 0.0};
-}
-
-void FlexRecorder::observe(const FlexMode& m, const FlexState& x) {
-    Summary& s = out_.summary.base;
-    modal_peak(modal_of(m.mode, x));
-    s.slide_max_m = std::max(s.slide_max_m, std::abs(x[0]));
-    if (is_flight(m.mode) || x[2] <= 0.0) return;
-    s.rock_max_rad = std::max(s.rock_max_rad, x[2]);
-    const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(m.s))];
-    s.rock_max_over_alpha = std::max(s.rock_max_over_alpha, x[2] / alpha);
-}
-
-void FlexRecorder::sample(double t, const FlexMode& m, const FlexState& x,
-                          double modal_abs_accel_mps2) {
-    observe(m, x);
-    accel_peak_ = std::max(accel_peak_, std::abs(modal_abs_accel_mps2));
-    if (!o_.record_series) return;
+void FlexRecorder::record(double t, const FlexMode& m, const FlexState& x) {
     FlexibleSample s;
     s.time_s = t;
     s.mode = m.mode;

@@ -254,6 +254,117 @@ TEST_CASE("the flexible body's structured solve matches the full system", "[dyna
     }
 }
 
+TEST_CASE("cos_sin is within an ulp of libm's cosine and sine", "[dynamics][flexible]") {
+    // Taylor polynomials to |x| = 0.5, libm itself beyond (flexible_detail.hpp).
+    const auto within_ulp = [](double a, double ref) {
+        return a == ref || a == std::nextafter(ref, 2.0) || a == std::nextafter(ref, -2.0);
+    };
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> x(-0.5, 0.5);
+    int off_c = 0, off_s = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const double v = i % 4 == 0 ? 1e-3 * x(rng) : x(rng);
+        const CosSin r = cos_sin(v);
+        INFO("x = " << v);
+        REQUIRE(within_ulp(r.c, std::cos(v)));
+        REQUIRE(within_ulp(r.s, std::sin(v)));
+        off_c += r.c != std::cos(v);
+        off_s += r.s != std::sin(v);
+    }
+    // libm is (nearly) correctly rounded, the polynomials within 0.7 ulp: they round the
+    // other way at a few percent of the points.
+    CHECK(off_c < 200000 / 20);
+    CHECK(off_s < 200000 / 20);
+    CHECK(cos_sin(0.0).c == 1.0);
+    CHECK(cos_sin(0.0).s == 0.0);
+    for (double v : {0.5, -0.5}) {
+        CHECK(within_ulp(cos_sin(v).c, std::cos(v)));
+        CHECK(within_ulp(cos_sin(v).s, std::sin(v)));
+    }
+    for (double v : {0.5000001, -0.7, 1.5707963267948966, 3.0, -40.0}) {
+        CHECK(cos_sin(v).c == std::cos(v));
+        CHECK(cos_sin(v).s == std::sin(v));
+    }
+}
+
+TEST_CASE("each mode's own equations agree with the general formulation",
+          "[dynamics][flexible]") {
+    // flex_accel and flex_rhs solve each mode in its own coordinates (flexible_modes.cpp);
+    // flex_accel_general assembles the 4 x 4 mass matrix with the contact constraints. Both are
+    // exact: they differ by round-off. A symmetric and an asymmetric body (CG nearer the right
+    // edge, its mode high and heavy), several tilts, rates and base accelerations.
+    const auto asym = dynamics::make_block_model(
+        block::Block::general(0.35, 0.2, 0.7, 450.0, 60.0), 0.7);
+    dynamics::FlexibleMode heavy;
+    heavy.frequency_hz = 3.0;
+    heavy.mass_fraction = 0.5;
+    heavy.height_m = 0.9;
+    const FlexGeometry geometries[] = {make_flex_geometry(model(7.5)),
+                                       make_flex_geometry(dynamics::make_flexible_model(asym, heavy))};
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> th(0.0, 1.5), rate(-3.0, 3.0), q(-0.05, 0.05),
+        ax(-10.0, 10.0), G(-5.0, 20.0);
+    using dynamics::Mode;
+    const FlexMode modes[] = {{Mode::rest, 1, 1},        {Mode::slide, 1, 1},
+                              {Mode::slide, -1, -1},     {Mode::rock, 1, 1},
+                              {Mode::rock, -1, 1},       {Mode::slide_rock, 1, -1},
+                              {Mode::slide_rock, 1, 1},  {Mode::slide_rock, -1, 1},
+                              {Mode::slide_rock, -1, -1}, {Mode::flight, 1, 1}};
+    // Relative to the largest term of each quantity (m/s^2, rad/s^2 and N of these states);
+    // Approx's own relative epsilon (1e-5 by default) is switched off.
+    constexpr double kRel = 1e-12, kAccelScale = 100.0;
+    const auto exact = [](double v) { return Approx(v).epsilon(0.0); };
+    for (const FlexGeometry& g : geometries) {
+        for (int i = 0; i < 200; ++i) {
+            for (const FlexMode& m : modes) {
+                const bool flat = m.mode == Mode::rest || m.mode == Mode::slide;
+                const double tilt = flat ? 0.0 : th(rng), tilt_rate = flat ? 0.0 : rate(rng);
+                const double slip_rate = m.mode == Mode::rock || m.mode == Mode::rest ? 0.0
+                                                                                     : rate(rng);
+                FlexState x = {0.01, slip_rate, tilt, tilt_rate, q(rng), rate(rng), 0.0, 0.0};
+                Pose p = contact_pose(g, m.s, x[0], x[1], x[2], x[3], x[4], x[5]);
+                if (m.mode == Mode::flight) {
+                    p.Y = 0.05;
+                    p.Yd = rate(rng);
+                    with_phi(p, rate(rng));
+                    x = flight_state(p);
+                }
+                const Base base{ax(rng), G(rng)};
+                const FlexAccel a = flex_accel(g, m, p, base);
+                const FlexAccel r = flex_accel_general(g, m, p, base);
+                INFO("mode " << dynamics::mode_name(m.mode) << " s " << m.s << " sigma "
+                             << m.sigma << ", case " << i);
+                const double force_scale = g.M * kAccelScale;
+                CHECK(a.Xdd == exact(r.Xdd).margin(kRel * kAccelScale));
+                CHECK(a.Ydd == exact(r.Ydd).margin(kRel * kAccelScale));
+                CHECK(a.phidd == exact(r.phidd).margin(kRel * kAccelScale));
+                CHECK(a.qdd == exact(r.qdd).margin(kRel * kAccelScale));
+                CHECK(a.F == exact(r.F).margin(kRel * force_scale));
+                CHECK(a.N == exact(r.N).margin(kRel * force_scale));
+                CHECK(a.NL == exact(r.NL).margin(kRel * force_scale));
+                CHECK(a.NR == exact(r.NR).margin(kRel * force_scale));
+                // The state's derivative: the contact point's slip from the general pose
+                // accelerations, theta'' = -s phi''.
+                FlexState dx;
+                FlexAccel ar;
+                flex_rhs(g, m, x, base, dx, ar);
+                CHECK(ar.qdd == a.qdd);
+                if (m.mode == Mode::flight) {
+                    CHECK(dx[1] == exact(r.Xdd).margin(kRel * kAccelScale));
+                    CHECK(dx[3] == exact(r.Ydd).margin(kRel * kAccelScale));
+                    CHECK(dx[5] == exact(r.phidd).margin(kRel * kAccelScale));
+                    continue;
+                }
+                const double slip = contact_slip_accel(g, m.s, p, r);
+                CHECK(dx[1] == exact(m.mode == Mode::rock ? 0.0 : slip)
+                                   .margin(kRel * kAccelScale));
+                CHECK(dx[3] == exact(-m.s * r.phidd).margin(kRel * kAccelScale));
+                CHECK(dx[5] == exact(r.qdd).margin(kRel * kAccelScale));
+            }
+        }
+    }
+}
+
 TEST_CASE("the exact flat slide solves the slide's equations", "[dynamics][flexible]") {
     const FlexGeometry g = make_flex_geometry(model(7.5));
     REQUIRE(g.exact_slide);
