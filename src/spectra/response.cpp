@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <new>
+#include <utility>
 
 #include "core/contract.hpp"
 #include "core/errors.hpp"
@@ -170,14 +171,20 @@ struct Pass {
 
 template <class V, std::size_t W>
 [[gnu::always_inline]] inline void broadcast(V& out, double x) {
-    for (std::size_t l = 0; l < W; ++l) out[l] = x;
+    if constexpr (W == 2)
+        out = V{x, x};
+    else
+        out = V{x, x, x, x};
 }
 
 /// Peak bookkeeping of one vector after a new sub-point value un at sub-point index `at`.
 template <class V, Watch M>
 [[gnu::always_inline]] inline void watch(const V& un, const V& at, V& peak, V& peak_signed,
                                          V& peak_index) {
-    const V m = un < 0.0 ? -un : un;
+    // |un| as un < 0 ? -un : un, written as the maximum of -un and un (one instruction fewer):
+    // the same value for every un, signed zeros and NaN included.
+    const V neg = -un;
+    const V m = neg > un ? neg : un;
     if constexpr (M == Watch::first_peak) {
         const auto larger = m > peak;
         peak_signed = larger ? un : peak_signed;
@@ -186,20 +193,21 @@ template <class V, Watch M>
     peak = peak > m ? peak : m;
 }
 
-/// Steps [first, end) of the P vectors; c and d hold the u and end-of-sample v coefficients of
-/// n = 1, r points at the packed u coefficients otherwise.
-template <class V, std::size_t W, std::size_t P, Watch M>
+/// Steps [first, end) of the P vectors, each step in N sub-steps (N = 0: s.n, not known at
+/// compile time); c and d hold the u (of N = 1) and end-of-sample v coefficients, s.cu the
+/// packed u coefficients of every sub-point.
+template <class V, std::size_t W, std::size_t P, std::size_t N, Watch M>
 [[gnu::always_inline]] inline void steps(const Pass& s, std::size_t first, std::size_t end,
                                          const V (&c)[4][P], const V (&d)[4][P], V (&u)[P],
                                          V (&v)[P], V (&peak)[P], V (&peak_signed)[P],
                                          V (&peak_index)[P]) {
     const double* a = s.a;
-    if (s.n == 1) {
-        // T >= 20 dt: the common case, free of the sub-point loop so everything stays in
-        // registers.
+    V a0, a1, at{};
+    broadcast<V, W>(a1, a[first - 1]);
+    if constexpr (N == 1) {
+        // T >= 20 dt: the common case, everything in registers.
         for (std::size_t i = first; i < end; ++i) {
-            V a0, a1, at{};
-            broadcast<V, W>(a0, a[i - 1]);
+            a0 = a1;
             broadcast<V, W>(a1, a[i]);
             if constexpr (M == Watch::first_peak) broadcast<V, W>(at, static_cast<double>(i));
             for (std::size_t q = 0; q < P; ++q) {
@@ -211,22 +219,23 @@ template <class V, std::size_t W, std::size_t P, Watch M>
         }
         return;
     }
-    const std::size_t n = s.n;
+    const std::size_t n = N == 0 ? s.n : N;
+    const double* cu = s.cu + s.p0 * W;
+    const std::size_t stride = s.stride * W;
     for (std::size_t i = first; i < end; ++i) {
-        V a0, a1, at{};
-        broadcast<V, W>(a0, a[i - 1]);
+        a0 = a1;
         broadcast<V, W>(a1, a[i]);
         V un[P]{};
         for (std::size_t k = 0; k < n; ++k) {
-            // Coefficient j of vector q at r + (j stride + q) W.
-            const double* r = s.cu + (k * 4 * s.stride + s.p0) * W;
+            // Coefficient j of sub-point k, vector q at r + j stride + q W.
+            const double* r = cu + k * 4 * stride;
             if constexpr (M == Watch::first_peak)
                 broadcast<V, W>(at, static_cast<double>((i - 1) * n + k + 1));
             for (std::size_t q = 0; q < P; ++q) {
                 const V& r0 = *reinterpret_cast<const V*>(r + q * W);
-                const V& r1 = *reinterpret_cast<const V*>(r + (s.stride + q) * W);
-                const V& r2 = *reinterpret_cast<const V*>(r + (2 * s.stride + q) * W);
-                const V& r3 = *reinterpret_cast<const V*>(r + (3 * s.stride + q) * W);
+                const V& r1 = *reinterpret_cast<const V*>(r + stride + q * W);
+                const V& r2 = *reinterpret_cast<const V*>(r + 2 * stride + q * W);
+                const V& r3 = *reinterpret_cast<const V*>(r + 3 * stride + q * W);
                 un[q] = (r0 * u[q] + r1 * v[q]) + (r2 * a0 + r3 * a1);
                 watch<V, M>(un[q], at, peak[q], peak_signed[q], peak_index[q]);
             }
@@ -250,7 +259,7 @@ template <class V, std::size_t W, std::size_t P>
         for (std::size_t l = 0; l < W; ++l) to[q * W + l] = from[q][l];
 }
 
-template <class V, std::size_t W, std::size_t P, Watch M>
+template <class V, std::size_t W, std::size_t P, std::size_t N, Watch M>
 [[gnu::always_inline]] inline void advance(const Pass& s) {
     V c[4][P], d[4][P];
     for (std::size_t j = 0; j < 4; ++j)
@@ -267,8 +276,8 @@ template <class V, std::size_t W, std::size_t P, Watch M>
             store<V, W, P>(s.block_u + offset, u);
             store<V, W, P>(s.block_v + offset, v);
             for (std::size_t q = 0; q < P; ++q) broadcast<V, W>(peak[q], 0.0);
-            steps<V, W, P, M>(s, first, std::min(s.end, first + kBlockSteps), c, d, u, v, peak,
-                              peak_signed, peak_index);
+            steps<V, W, P, N, M>(s, first, std::min(s.end, first + kBlockSteps), c, d, u, v,
+                                 peak, peak_signed, peak_index);
             store<V, W, P>(s.block_max + offset, peak);
             offset += P * W;
         }
@@ -278,7 +287,7 @@ template <class V, std::size_t W, std::size_t P, Watch M>
             load<V, W, P>(peak_signed, s.peak_signed);
             load<V, W, P>(peak_index, s.peak_index);
         }
-        steps<V, W, P, M>(s, s.first, s.end, c, d, u, v, peak, peak_signed, peak_index);
+        steps<V, W, P, N, M>(s, s.first, s.end, c, d, u, v, peak, peak_signed, peak_index);
         store<V, W, P>(s.peak, peak);
         if constexpr (M == Watch::first_peak) {
             store<V, W, P>(s.peak_signed, peak_signed);
@@ -291,15 +300,30 @@ template <class V, std::size_t W, std::size_t P, Watch M>
 
 using Kernel = void (*)(const Pass&);
 
-template <std::size_t P, Watch M>
+// Sub-step counts up to this have loops of their own, unrolled (no loop overhead per sub-point);
+// 1-5 cover 0.1-50 Hz at dt = 0.005 s.
+constexpr std::size_t kUnrolled = 5;
+using Unrolled = std::make_index_sequence<kUnrolled + 1>;  // N = 0 (any count), 1 .. kUnrolled
+
+template <std::size_t P, std::size_t N, Watch M>
 void advance_sse2(const Pass& s) {
-    advance<V2, 2, P, M>(s);
+    advance<V2, 2, P, N, M>(s);
+}
+
+template <std::size_t P, Watch M, std::size_t... N>
+constexpr std::array<Kernel, kUnrolled + 1> sse2_kernels(std::index_sequence<N...>) {
+    return {advance_sse2<P, N, M>...};
 }
 
 #ifdef FREESTAND_RESPONSE_AVX
-template <std::size_t P, Watch M>
+template <std::size_t P, std::size_t N, Watch M>
 __attribute__((target("avx"))) void advance_avx(const Pass& s) {
-    advance<V4, 4, P, M>(s);
+    advance<V4, 4, P, N, M>(s);
+}
+
+template <std::size_t P, Watch M, std::size_t... N>
+constexpr std::array<Kernel, kUnrolled + 1> avx_kernels(std::index_sequence<N...>) {
+    return {advance_avx<P, N, M>...};
 }
 #endif
 
@@ -312,17 +336,32 @@ bool cpu_has_avx() {
 #endif
 }
 
-template <Watch M>
-Kernel kernel_for(std::size_t width, std::size_t vectors) {
-    static constexpr std::array<Kernel, kMaxVectors> sse2{
-        advance_sse2<1, M>, advance_sse2<2, M>, advance_sse2<3, M>, advance_sse2<4, M>};
+/// The loop for P vectors of `width` lanes and n sub-steps per step, watching M.
+template <std::size_t P, Watch M>
+Kernel kernel_for(std::size_t width, std::size_t n) {
+    const std::size_t unrolled = n <= kUnrolled ? n : 0;
 #ifdef FREESTAND_RESPONSE_AVX
-    static constexpr std::array<Kernel, kMaxVectors> avx{
-        advance_avx<1, M>, advance_avx<2, M>, advance_avx<3, M>, advance_avx<4, M>};
-    if (width == 4) return avx[vectors - 1];
+    static constexpr std::array<Kernel, kUnrolled + 1> avx = avx_kernels<P, M>(Unrolled{});
+    if (width == 4) return avx[unrolled];
 #endif
     FREESTAND_EXPECT(width == 2, "vectors of 2 lanes, or of 4 with AVX");
-    return sse2[vectors - 1];
+    static constexpr std::array<Kernel, kUnrolled + 1> sse2 = sse2_kernels<P, M>(Unrolled{});
+    return sse2[unrolled];
+}
+
+template <Watch M>
+Kernel kernel_for(std::size_t width, std::size_t vectors, std::size_t n) {
+    switch (vectors) {
+        case 1:
+            return kernel_for<1, M>(width, n);
+        case 2:
+            return kernel_for<2, M>(width, n);
+        case 3:
+            return kernel_for<3, M>(width, n);
+        default:
+            FREESTAND_EXPECT(vectors == kMaxVectors, "1 to kMaxVectors vectors");
+            return kernel_for<4, M>(width, n);
+    }
 }
 
 /// The group's coefficients packed for vectors of `width` lanes.
@@ -454,7 +493,7 @@ struct OscillatorSet::Prepared {
             s.u = u.data();
             s.v = v.data();
             s.peak = peak.data();
-            kernel_for<Watch::peak>(width, g.vectors)(s);
+            kernel_for<Watch::peak>(width, g.vectors, g.n)(s);
             for (std::size_t lane = 0; lane < g.member.size(); ++lane)
                 out[g.member[lane]] = peak[lane];
         }
@@ -481,7 +520,7 @@ struct OscillatorSet::Prepared {
             s.block_max = block_max.data();
             s.block_u = block_u.data();
             s.block_v = block_v.data();
-            kernel_for<Watch::blocks>(width, g.vectors)(s);
+            kernel_for<Watch::blocks>(width, g.vectors, g.n)(s);
             // Each lane's peak is in the first block whose maximum equals the overall one.
             std::array<std::size_t, kMaxVectors * 4> in_block{};
             for (std::size_t lane = 0; lane < g.member.size(); ++lane) {
@@ -528,7 +567,7 @@ struct OscillatorSet::Prepared {
         s.peak = peak.data();
         s.peak_signed = peak_signed.data();
         s.peak_index = peak_index.data();
-        kernel_for<Watch::first_peak>(width, 1)(s);
+        kernel_for<1, Watch::first_peak>(width, g.n)(s);
         LaneArray out{};
         std::copy_n(peak_signed.begin(), width, out.begin());
         std::copy_n(peak_index.begin(), width, out.begin() + static_cast<std::ptrdiff_t>(width));
