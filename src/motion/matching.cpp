@@ -93,6 +93,28 @@ std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
     return out;
 }
 
+// A remembered closed-form response of one oscillator to one wavelet: at the oscillator's peak
+// time t_s, and the wavelet's start state (which does not depend on t_s).
+struct Response {
+    bool known = false;
+    double t_s = 0.0;
+    double y = 0.0;
+    bool start_known = false;
+    WaveletStart start;
+};
+
+// A wavelet column of the linearised system while its oscillator's peak time t_s stays put:
+// the wavelet, its samples, its end-velocity and end-displacement rows, and its responses at
+// each oscillator's peak time.
+struct Column {
+    bool placed = false;
+    double t_s = 0.0;
+    Wavelet wave;
+    SampledWavelet sampled;
+    double end_v = 0.0, end_d = 0.0;
+    std::vector<Response> response;  // per oscillator
+};
+
 struct Matcher {
     const Target& target;
     MatchOptions opt;
@@ -103,26 +125,39 @@ struct Matcher {
     std::vector<double> upper;   // in-loop upper ratio: opt.upper inside the 1.3-cap band
     double zpa_mps2 = 0.0;
     double pga_low = 0.0, pga_high = 0.0, pga_aim = 0.0;  // in-loop PGA / ZPA band
+    std::vector<double> gain;    // interpolation_gain of each wavelet frequency
     EndWeights ends;
     BaselineCorrector baseline;
+    spectra::OscillatorSet oscillators;  // at f, kDamping, rec.dt_s
     std::array<Wavelet, 2> pulses;
     std::array<SampledWavelet, 2> pulse_samples;
     std::array<double, 2> pulse_v{}, pulse_d{};
+    std::vector<Column> columns;                // one per matching frequency
+    std::array<std::vector<Response>, 2> pulse_responses;  // [pulse][oscillator]
 
     Matcher(const Target& t, const MatchOptions& o, core::Record& r)
-        : target(t), opt(o), rec(r), ends(end_weights(r.size(), r.dt_s)), baseline(r.size(), r.dt_s) {
-        f = spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(rec.dt_s),
-                                     opt.match_per_decade);
+        : target(t),
+          opt(o),
+          rec(r),
+          f(spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(r.dt_s),
+                                     o.match_per_decade)),
+          ends(end_weights(r.size(), r.dt_s)),
+          baseline(r.size(), r.dt_s),
+          oscillators(kDamping, f, r.dt_s) {
         for (double fi : f) {
             const double cycles = fi > criteria::cap_high_hz ? opt.rigid_wavelet_cycles_per_sample
                                                              : kMaxWaveletCyclesPerSample;
             f_wave.push_back(std::min(fi, cycles / rec.dt_s));
+            gain.push_back(interpolation_gain(f_wave.back(), rec.dt_s));
             q.push_back(target.psa_5pct.psa_at(fi) * units::g_mps2);
             // No cap outside 0.2-25 Hz: holding a tight band there only makes competing peaks of
             // the long-period oscillators alternate.
             const bool capped = fi >= criteria::cap_low_hz && fi <= criteria::cap_high_hz;
             upper.push_back(capped ? opt.upper : kUncappedUpper);
         }
+        columns.resize(f.size());
+        for (Column& col : columns) col.response.resize(f.size());
+        for (auto& row : pulse_responses) row.resize(f.size());
         pulses = BaselineCorrector::pulses(rec.duration_s());
         for (std::size_t k = 0; k < 2; ++k) {
             pulse_samples[k] = sample_wavelet(pulses[k], rec.dt_s, rec.size());
@@ -144,7 +179,7 @@ struct Matcher {
     };
 
     Peaks peaks() const {
-        const auto p = spectra::peak_responses(rec, kDamping, f);
+        const auto p = oscillators.peak_responses(rec);
         Peaks out;
         for (std::size_t i = 0; i < f.size(); ++i) {
             const double w = units::hz_to_radps(f[i]);
@@ -173,6 +208,36 @@ struct Matcher {
         return false;
     }
 
+    // The wavelet of column j placed for the peak at t_s, with its samples and end rows; its
+    // responses are kept only while it stays where it is.
+    void place(std::size_t j, double t_s) {
+        Column& col = columns[j];
+        if (col.placed && col.t_s == t_s) return;
+        col.placed = true;
+        col.t_s = t_s;
+        col.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
+        sample_wavelet(col.wave, rec.dt_s, rec.size(), col.sampled);
+        col.end_v = dot_support(col.sampled, ends.velocity);
+        col.end_d = dot_support(col.sampled, ends.displacement);
+        for (Response& r : col.response) r = Response{};
+    }
+
+    // Pseudo-acceleration of oscillator i at t_s due to wavelet w, remembered in `memo`: the
+    // closed form costs two to four Faddeeva evaluations, and most peak times stay put from
+    // one pass to the next.
+    double response(Response& memo, const Wavelet& w, std::size_t i, double t_s) const {
+        if (!memo.known || memo.t_s != t_s) {
+            if (!memo.start_known && w.start_s() < 0.0) {
+                memo.start = wavelet_start(w, f[i], kDamping);
+                memo.start_known = true;
+            }
+            memo.y = wavelet_response(w, f[i], kDamping, t_s, memo.start);
+            memo.t_s = t_s;
+            memo.known = true;
+        }
+        return memo.y;
+    }
+
     // One linearised correction: rows in units of the target (spectral rows: change of the
     // ratio; peak rows: change of |a| / ZPA; two rows keeping the final velocity and displacement
     // at zero with two pulse columns, so the wavelets add no drift for the baseline step to
@@ -181,27 +246,19 @@ struct Matcher {
         const std::size_t m = f.size();
         const std::size_t cols = m + 2;
         const std::size_t rows = m + 2 + pk.accel_rows.size();
-        std::vector<Wavelet> waves;
-        std::vector<SampledWavelet> sampled;
-        waves.reserve(m);
-        sampled.reserve(m);
-        for (std::size_t j = 0; j < m; ++j) {
-            waves.push_back(Wavelet::for_oscillator(f_wave[j], f[j], kDamping, pk.t[j]));
-            sampled.push_back(sample_wavelet(waves.back(), rec.dt_s, rec.size()));
-        }
+        for (std::size_t j = 0; j < m; ++j) place(j, pk.t[j]);
         Eigen::MatrixXd c(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
         Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows));
         const auto mv = static_cast<Eigen::Index>(m);
         for (std::size_t i = 0; i < m; ++i) {
             const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = 0; j < m; ++j)
-                c(ii, static_cast<Eigen::Index>(j)) = interpolation_gain(f_wave[j], rec.dt_s) *
-                                                      wavelet_response(waves[j], f[i], kDamping,
-                                                                       pk.t[i]) /
-                                                      q[i];
+                c(ii, static_cast<Eigen::Index>(j)) =
+                    gain[j] * response(columns[j].response[i], columns[j].wave, i, pk.t[i]) /
+                    q[i];
             for (std::size_t k = 0; k < 2; ++k)
                 c(ii, mv + static_cast<Eigen::Index>(k)) =
-                    wavelet_response(pulses[k], f[i], kDamping, pk.t[i]) / q[i];
+                    response(pulse_responses[k][i], pulses[k], i, pk.t[i]) / q[i];
             const double ratio = pk.r[i] / q[i];
             const bool inside = ratio >= opt.lower && ratio <= upper[i];
             const double want = inside ? pk.r[i] : opt.aim * q[i];
@@ -219,9 +276,8 @@ struct Matcher {
         const double d_unit = kBaselineDisplacement_m_per_g * zpa_mps2 / units::g_mps2;
         const double v_unit = d_unit / rec.duration_s();
         for (std::size_t j = 0; j < m; ++j) {
-            c(mv, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.velocity) / v_unit;
-            c(mv + 1, static_cast<Eigen::Index>(j)) =
-                dot_support(sampled[j], ends.displacement) / d_unit;
+            c(mv, static_cast<Eigen::Index>(j)) = columns[j].end_v / v_unit;
+            c(mv + 1, static_cast<Eigen::Index>(j)) = columns[j].end_d / d_unit;
         }
         for (std::size_t k = 0; k < 2; ++k) {
             c(mv, mv + static_cast<Eigen::Index>(k)) = pulse_v[k] / v_unit;
@@ -233,7 +289,8 @@ struct Matcher {
             const std::size_t sample = pk.accel_rows[k];
             const auto row = static_cast<Eigen::Index>(m + 2 + k);
             for (std::size_t j = 0; j < m; ++j)
-                c(row, static_cast<Eigen::Index>(j)) = value_at(sampled[j], sample) / zpa_mps2;
+                c(row, static_cast<Eigen::Index>(j)) =
+                    value_at(columns[j].sampled, sample) / zpa_mps2;
             for (std::size_t k2 = 0; k2 < 2; ++k2)
                 c(row, mv + static_cast<Eigen::Index>(k2)) =
                     value_at(pulse_samples[k2], sample) / zpa_mps2;
@@ -242,7 +299,8 @@ struct Matcher {
         }
         const Eigen::VectorXd b = solve_regularised(c, rhs);
         for (std::size_t j = 0; j < m; ++j)
-            add_wavelet(sampled[j], relaxation * b(static_cast<Eigen::Index>(j)), rec.accel_mps2);
+            add_wavelet(columns[j].sampled, relaxation * b(static_cast<Eigen::Index>(j)),
+                        rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
             add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)),
                         rec.accel_mps2);

@@ -44,6 +44,19 @@ struct Wavelet {
 /// the whole wavelet minus the free vibration its part before t = 0 leaves.
 double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s);
 
+/// y and dy/dt at t = 0 of the oscillator (f_hz, damping) driven by the whole wavelet: the free
+/// vibration its part before t = 0 leaves, which wavelet_response removes. It depends on the
+/// wavelet and the oscillator only, not on t_s.
+struct WaveletStart {
+    double y = 0.0;
+    double ydot = 0.0;
+};
+WaveletStart wavelet_start(const Wavelet& w, double f_hz, double damping);
+/// wavelet_response with wavelet_start(w, f_hz, damping) given (the same bits), for several t_s
+/// of one wavelet and oscillator; `start` is read only if the wavelet starts before t = 0.
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s,
+                        const WaveletStart& start);
+
 /// The wavelet sampled at i * dt_s over its support inside a record of `samples` samples:
 /// values[k] = w((first + k) dt). Computed by exact rotation / Gaussian-ratio recurrences
 /// (relative drift ~1e-13 over 10^4 samples) instead of a cos and an exp per sample.
@@ -52,6 +65,8 @@ struct SampledWavelet {
     std::vector<double> values;
 };
 SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples);
+/// The same into `out`, reusing its storage.
+void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out);
 
 /// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);
