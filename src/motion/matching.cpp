@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -127,7 +128,7 @@ struct Matcher {
     double pga_low = 0.0, pga_high = 0.0, pga_aim = 0.0;  // in-loop PGA / ZPA band
     std::vector<double> gain;    // interpolation_gain of each wavelet frequency
     EndWeights ends;
-    BaselineCorrector baseline;
+    std::shared_ptr<const BaselineCorrector> baseline;
     spectra::OscillatorSet oscillators;  // at f, kDamping, rec.dt_s
     std::array<Wavelet, 2> pulses;
     std::array<SampledWavelet, 2> pulse_samples;
@@ -142,7 +143,7 @@ struct Matcher {
           f(spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(r.dt_s),
                                      o.match_per_decade)),
           ends(end_weights(r.size(), r.dt_s)),
-          baseline(r.size(), r.dt_s),
+          baseline(BaselineCorrector::shared(r.size(), r.dt_s)),
           oscillators(kDamping, f, r.dt_s) {
         for (double fi : f) {
             const double cycles = fi > criteria::cap_high_hz ? opt.rigid_wavelet_cycles_per_sample
@@ -304,7 +305,7 @@ struct Matcher {
         for (std::size_t k = 0; k < 2; ++k)
             add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)),
                         rec.accel_mps2);
-        baseline.minimise_displacement(rec.accel_mps2);
+        baseline->minimise_displacement(rec.accel_mps2);
     }
 
     // Columns scaled to unit norm, then min |C x - r|^2 + lambda^2 |x|^2.
@@ -335,7 +336,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
     Matcher m(target, options, res.record);
     // Start at rest: a raw synthetic record drifts by metres, and removing that after the first
     // pass would undo the long-period part of the match.
-    m.baseline.minimise_displacement(res.record.accel_mps2);
+    m.baseline->minimise_displacement(res.record.accel_mps2);
     int raises = 0;
     // The iterate closest to the band, kept in case the limit is reached.
     std::vector<double> best = res.record.accel_mps2;
@@ -348,7 +349,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
             best = res.record.accel_mps2;
         }
         if (pk.worst <= 0.0) {
-            m.baseline.correct(res.record.accel_mps2);
+            m.baseline->correct(res.record.accel_mps2);
             res.acceptance = check_acceptance(res.record, target);
             res.iterations = it - 1;
             res.converged = true;
@@ -366,7 +367,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
         if (pk.worst <= kNearBand && it - last_check >= kCheckEvery) {
             last_check = it;
             core::Record candidate = res.record;
-            m.baseline.correct(candidate.accel_mps2);
+            m.baseline->correct(candidate.accel_mps2);
             Acceptance a = check_acceptance(candidate, target);
             if (a.passed) {
                 res.record = std::move(candidate);
@@ -378,7 +379,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
         m.pass(pk, options.relaxation);
     }
     res.record.accel_mps2 = best;
-    m.baseline.correct(res.record.accel_mps2);
+    m.baseline->correct(res.record.accel_mps2);
     res.iterations = options.max_iterations;
     res.acceptance = check_acceptance(res.record, target);
     return res;

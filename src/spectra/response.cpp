@@ -507,19 +507,20 @@ struct OscillatorSet::Prepared {
         signed_m.assign(frequency_hz.size(), 0.0);
         index.assign(frequency_hz.size(), 0.0);
         const std::size_t blocks = (a.size() - 1 + kBlockSteps - 1) / kBlockSteps;
-        std::vector<double> block_max, block_u, block_v;
+        // Written by the loops before they are read; sized for the widest group.
+        const std::size_t size = blocks * kMaxVectors * width;
+        const std::unique_ptr<double[]> block_max(new double[size]);
+        const std::unique_ptr<double[]> block_u(new double[size]);
+        const std::unique_ptr<double[]> block_v(new double[size]);
         for (const Group& g : groups) {
             const std::size_t lanes = g.vectors * width;
-            block_max.resize(blocks * lanes);
-            block_u.resize(blocks * lanes);
-            block_v.resize(blocks * lanes);
             LaneArray u{}, v{};
             Pass s = pass_over(g, a);
             s.u = u.data();
             s.v = v.data();
-            s.block_max = block_max.data();
-            s.block_u = block_u.data();
-            s.block_v = block_v.data();
+            s.block_max = block_max.get();
+            s.block_u = block_u.get();
+            s.block_v = block_v.get();
             kernel_for<Watch::blocks>(width, g.vectors, g.n)(s);
             // Each lane's peak is in the first block whose maximum equals the overall one.
             std::array<std::size_t, kMaxVectors * 4> in_block{};
@@ -538,7 +539,7 @@ struct OscillatorSet::Prepared {
                 for (std::size_t other = p * width; other < lane; ++other)
                     done = done || in_block[other] == b;
                 if (done) continue;
-                const LaneArray tracked = rerun(g, a, p, b, block_u, block_v);
+                const LaneArray tracked = rerun(g, a, p, b, block_u.get(), block_v.get());
                 for (std::size_t l = lane; l < std::min(g.member.size(), (p + 1) * width); ++l) {
                     if (in_block[l] != b) continue;
                     signed_m[g.member[l]] = tracked[l - p * width];
@@ -551,13 +552,11 @@ struct OscillatorSet::Prepared {
     /// Vector p of the group over block b from its logged starting state, with the peak's
     /// signed value (lanes [0, width)) and index (lanes [width, 2 width)) tracked from zero.
     LaneArray rerun(const Group& g, const std::vector<double>& a, std::size_t p, std::size_t b,
-                    const std::vector<double>& block_u, const std::vector<double>& block_v) const {
+                    const double* block_u, const double* block_v) const {
         const std::size_t lanes = g.vectors * width;
         LaneArray u{}, v{}, peak{}, peak_signed{}, peak_index{};
-        std::copy_n(block_u.begin() + static_cast<std::ptrdiff_t>(b * lanes + p * width), width,
-                    u.begin());
-        std::copy_n(block_v.begin() + static_cast<std::ptrdiff_t>(b * lanes + p * width), width,
-                    v.begin());
+        std::copy_n(block_u + b * lanes + p * width, width, u.begin());
+        std::copy_n(block_v + b * lanes + p * width, width, v.begin());
         Pass s = pass_over(g, a);
         s.p0 = p;
         s.first = 1 + b * kBlockSteps;
