@@ -16,6 +16,7 @@
 #include "core/units.hpp"
 #include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
+#include "motion/internal.hpp"
 #include "motion/motion.hpp"
 #include "motion/wavelet.hpp"
 #include "spectra/response.hpp"
@@ -368,7 +369,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
             last_check = it;
             core::Record candidate = res.record;
             m.baseline->correct(candidate.accel_mps2);
-            Acceptance a = check_acceptance(candidate, target);
+            Acceptance a = check_acceptance_or_reject(candidate, target);
             if (a.passed) {
                 res.record = std::move(candidate);
                 res.acceptance = std::move(a);
