@@ -218,9 +218,10 @@ struct Matcher {
         col.placed = true;
         col.t_s = t_s;
         col.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
-        sample_wavelet(col.wave, rec.dt_s, rec.size(), col.sampled);
-        col.end_v = dot_support(col.sampled, ends.velocity);
-        col.end_d = dot_support(col.sampled, ends.displacement);
+        const auto [end_v, end_d] = sample_wavelet(col.wave, rec.dt_s, rec.size(), col.sampled,
+                                                   ends.velocity, ends.displacement);
+        col.end_v = end_v;
+        col.end_d = end_d;
         for (Response& r : col.response) r = Response{};
     }
 

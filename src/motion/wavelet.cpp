@@ -141,11 +141,16 @@ SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples
     return out;
 }
 
-void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out) {
+namespace {
+
+// sample_wavelet, with the weighted sums when weights_a and weights_b are given.
+std::array<double, 2> sample_into(const Wavelet& w, double dt_s, std::size_t samples,
+                                  SampledWavelet& out, const double* weights_a,
+                                  const double* weights_b) {
     out.first = 0;
     if (samples == 0 || w.end_s() < 0.0 || w.start_s() > static_cast<double>(samples - 1) * dt_s) {
         out.values.clear();
-        return;
+        return {0.0, 0.0};
     }
     const double last = static_cast<double>(samples - 1);
     const auto i0 = static_cast<std::size_t>(std::clamp(std::ceil(w.start_s() / dt_s), 0.0, last));
@@ -161,12 +166,40 @@ void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledW
     double gauss = std::exp(-x0 * x0 / g2);
     double ratio = std::exp(-(2.0 * x0 * dt_s + dt_s * dt_s) / g2);
     const double ratio_step = std::exp(-2.0 * dt_s * dt_s / g2);
-    for (double& v : out.values) {
-        v = phase.real() * gauss;
+    std::array<double, 2> sums{0.0, 0.0};
+    if (weights_a == nullptr) {
+        for (double& v : out.values) {
+            v = phase.real() * gauss;
+            phase *= step;
+            gauss *= ratio;
+            ratio *= ratio_step;
+        }
+        return sums;
+    }
+    const double* wa = weights_a + i0;
+    const double* wb = weights_b + i0;
+    for (std::size_t k = 0; k < out.values.size(); ++k) {
+        const double v = phase.real() * gauss;
+        out.values[k] = v;
+        sums[0] += wa[k] * v;
+        sums[1] += wb[k] * v;
         phase *= step;
         gauss *= ratio;
         ratio *= ratio_step;
     }
+    return sums;
+}
+
+}  // namespace
+
+void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out) {
+    sample_into(w, dt_s, samples, out, nullptr, nullptr);
+}
+
+std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples,
+                                     SampledWavelet& out, const std::vector<double>& weights_a,
+                                     const std::vector<double>& weights_b) {
+    return sample_into(w, dt_s, samples, out, weights_a.data(), weights_b.data());
 }
 
 void add_wavelet(const SampledWavelet& w, double amplitude, std::vector<double>& accel) {

@@ -1,6 +1,7 @@
 #pragma once
 /// The improved tapered cosine wavelet of Al Atik & Abrahamson (2010, Earthquake Spectra 26(3)
 /// 601-617, eqs. 14, 16, 17) and the exact response of a damped oscillator to it.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -67,6 +68,12 @@ struct SampledWavelet {
 SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples);
 /// The same into `out`, reusing its storage.
 void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out);
+/// The same, also returning sum_k weights_a[first + k] values[k] and the same of weights_b
+/// (each `samples` long), summed in order of k as a loop over `out` would: the same bits,
+/// without a second pass over the samples.
+std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples,
+                                     SampledWavelet& out, const std::vector<double>& weights_a,
+                                     const std::vector<double>& weights_b);
 
 /// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);

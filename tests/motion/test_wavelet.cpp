@@ -136,6 +136,30 @@ TEST_CASE("wavelet responses keep their bits: conjugate tails and a start state 
     CHECK(compared > 500);
 }
 
+TEST_CASE("sampling a wavelet with its weighted sums gives the samples and the dot products",
+          "[motion][wavelet]") {
+    const std::size_t samples = 4001;
+    const EndWeights ends = end_weights(samples, 0.005);
+    for (const Wavelet& w : {Wavelet::at(0.1, 0.05, 3.0), Wavelet::at(2.0, 0.05, 10.0),
+                             Wavelet::at(30.0, 0.05, 19.99), Wavelet::at(5.0, 0.05, 40.0),
+                             Wavelet::pulse(6.7, 1.6)}) {
+        const SampledWavelet plain = sample_wavelet(w, 0.005, samples);
+        SampledWavelet reused = sample_wavelet(Wavelet::at(0.2, 0.05, 1.0), 0.005, samples);
+        const auto [v, d] =
+            sample_wavelet(w, 0.005, samples, reused, ends.velocity, ends.displacement);
+        double v_ref = 0.0, d_ref = 0.0;
+        for (std::size_t k = 0; k < plain.values.size(); ++k) {
+            v_ref += ends.velocity[plain.first + k] * plain.values[k];
+            d_ref += ends.displacement[plain.first + k] * plain.values[k];
+        }
+        INFO("wavelet at " << w.centre_s << " s");
+        CHECK(reused.first == plain.first);
+        CHECK(reused.values == plain.values);
+        CHECK(v == v_ref);
+        CHECK(d == d_ref);
+    }
+}
+
 TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual",
           "[motion][wavelet]") {
     for (double f : {0.5, 2.0, 10.0}) {
