@@ -162,32 +162,37 @@ std::array<double, 2> sample_into(const Wavelet& w, double dt_s, std::size_t sam
     const double x0 = static_cast<double>(i0) * dt_s - w.centre_s;
     const double g2 = w.gamma_s * w.gamma_s;
     const std::complex<double> step = std::polar(1.0, w.omega_d_radps * dt_s);
-    std::complex<double> phase = std::polar(1.0, w.omega_d_radps * x0);
+    const std::complex<double> phase = std::polar(1.0, w.omega_d_radps * x0);
     double gauss = std::exp(-x0 * x0 / g2);
     double ratio = std::exp(-(2.0 * x0 * dt_s + dt_s * dt_s) / g2);
     const double ratio_step = std::exp(-2.0 * dt_s * dt_s / g2);
-    std::array<double, 2> sums{0.0, 0.0};
+    // phase *= step with (re, im) in one vector: (re, im) sr + (im, re) (-si, si) performs the
+    // complex multiply's operations, re sr - im si and im sr + re si (x + (-y) is x - y and
+    // addition commutes), so the samples keep their bits.
+    using Pair = double __attribute__((vector_size(16)));
+    const Pair sr{step.real(), step.real()}, si{-step.imag(), step.imag()};
+    Pair rot{phase.real(), phase.imag()};
     if (weights_a == nullptr) {
         for (double& v : out.values) {
-            v = phase.real() * gauss;
-            phase *= step;
+            v = rot[0] * gauss;
+            rot = rot * sr + Pair{rot[1], rot[0]} * si;
             gauss *= ratio;
             ratio *= ratio_step;
         }
-        return sums;
+        return {0.0, 0.0};
     }
     const double* wa = weights_a + i0;
     const double* wb = weights_b + i0;
+    Pair sum{0.0, 0.0};  // the two weighted sums, each in order of k
     for (std::size_t k = 0; k < out.values.size(); ++k) {
-        const double v = phase.real() * gauss;
+        const double v = rot[0] * gauss;
         out.values[k] = v;
-        sums[0] += wa[k] * v;
-        sums[1] += wb[k] * v;
-        phase *= step;
+        sum += Pair{wa[k], wb[k]} * v;
+        rot = rot * sr + Pair{rot[1], rot[0]} * si;
         gauss *= ratio;
         ratio *= ratio_step;
     }
-    return sums;
+    return {sum[0], sum[1]};
 }
 
 }  // namespace
