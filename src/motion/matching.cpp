@@ -95,26 +95,32 @@ std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
     return out;
 }
 
-// A remembered closed-form response of one oscillator to one wavelet: at the oscillator's peak
-// time t_s, and the wavelet's start state (which does not depend on t_s).
+// A remembered closed-form response of one oscillator to one placed wavelet, at the last two
+// peak times of the oscillator (competing peaks make a peak time move back and forth), and the
+// wavelet's start state (which does not depend on the peak time).
 struct Response {
-    bool known = false;
-    double t_s = 0.0;
-    double y = 0.0;
+    std::array<bool, 2> known{};  // [0]: the latest
+    std::array<double, 2> t_s{}, y{};
     bool start_known = false;
     WaveletStart start;
 };
 
-// A wavelet column of the linearised system while its oscillator's peak time t_s stays put:
-// the wavelet, its samples, its end-velocity and end-displacement rows, and its responses at
-// each oscillator's peak time.
-struct Column {
+// A wavelet of the linearised system placed for its oscillator's peak at t_s: the wavelet, its
+// samples, its end-velocity and end-displacement rows, and its responses at each oscillator's
+// peak time.
+struct Placement {
     bool placed = false;
     double t_s = 0.0;
     Wavelet wave;
     SampledWavelet sampled;
     double end_v = 0.0, end_d = 0.0;
     std::vector<Response> response;  // per oscillator
+};
+
+// A wavelet column: its current placement and the one before, kept while the oscillator's peak
+// may move back.
+struct Column {
+    Placement now, before;
 };
 
 struct Matcher {
@@ -158,7 +164,6 @@ struct Matcher {
             upper.push_back(capped ? opt.upper : kUncappedUpper);
         }
         columns.resize(f.size());
-        for (Column& col : columns) col.response.resize(f.size());
         for (auto& row : pulse_responses) row.resize(f.size());
         pulses = BaselineCorrector::pulses(rec.duration_s());
         for (std::size_t k = 0; k < 2; ++k) {
@@ -210,35 +215,41 @@ struct Matcher {
         return false;
     }
 
-    // The wavelet of column j placed for the peak at t_s, with its samples and end rows; its
-    // responses are kept only while it stays where it is.
+    // The wavelet of column j placed for the peak at t_s, with its samples and end rows, or the
+    // column's previous placement if that was at t_s.
     void place(std::size_t j, double t_s) {
         Column& col = columns[j];
-        if (col.placed && col.t_s == t_s) return;
-        col.placed = true;
-        col.t_s = t_s;
-        col.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
-        const auto [end_v, end_d] = sample_wavelet(col.wave, rec.dt_s, rec.size(), col.sampled,
+        if (col.now.placed && col.now.t_s == t_s) return;
+        std::swap(col.now, col.before);
+        Placement& p = col.now;
+        if (p.placed && p.t_s == t_s) return;
+        p.placed = true;
+        p.t_s = t_s;
+        p.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
+        const auto [end_v, end_d] = sample_wavelet(p.wave, rec.dt_s, rec.size(), p.sampled,
                                                    ends.velocity, ends.displacement);
-        col.end_v = end_v;
-        col.end_d = end_d;
-        for (Response& r : col.response) r = Response{};
+        p.end_v = end_v;
+        p.end_d = end_d;
+        p.response.assign(f.size(), Response{});
     }
 
     // Pseudo-acceleration of oscillator i at t_s due to wavelet w, remembered in `memo`: the
     // closed form costs two to four Faddeeva evaluations, and most peak times stay put from
     // one pass to the next.
     double response(Response& memo, const Wavelet& w, std::size_t i, double t_s) const {
-        if (!memo.known || memo.t_s != t_s) {
-            if (!memo.start_known && w.start_s() < 0.0) {
-                memo.start = wavelet_start(w, f[i], kDamping);
-                memo.start_known = true;
-            }
-            memo.y = wavelet_response(w, f[i], kDamping, t_s, memo.start);
-            memo.t_s = t_s;
-            memo.known = true;
+        for (std::size_t k = 0; k < 2; ++k)
+            if (memo.known[k] && memo.t_s[k] == t_s) return memo.y[k];
+        if (!memo.start_known && w.start_s() < 0.0) {
+            memo.start = wavelet_start(w, f[i], kDamping);
+            memo.start_known = true;
         }
-        return memo.y;
+        memo.known[1] = memo.known[0];
+        memo.t_s[1] = memo.t_s[0];
+        memo.y[1] = memo.y[0];
+        memo.known[0] = true;
+        memo.t_s[0] = t_s;
+        memo.y[0] = wavelet_response(w, f[i], kDamping, t_s, memo.start);
+        return memo.y[0];
     }
 
     // One linearised correction: rows in units of the target (spectral rows: change of the
@@ -257,7 +268,7 @@ struct Matcher {
             const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = 0; j < m; ++j)
                 c(ii, static_cast<Eigen::Index>(j)) =
-                    gain[j] * response(columns[j].response[i], columns[j].wave, i, pk.t[i]) /
+                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i, pk.t[i]) /
                     q[i];
             for (std::size_t k = 0; k < 2; ++k)
                 c(ii, mv + static_cast<Eigen::Index>(k)) =
@@ -279,8 +290,8 @@ struct Matcher {
         const double d_unit = kBaselineDisplacement_m_per_g * zpa_mps2 / units::g_mps2;
         const double v_unit = d_unit / rec.duration_s();
         for (std::size_t j = 0; j < m; ++j) {
-            c(mv, static_cast<Eigen::Index>(j)) = columns[j].end_v / v_unit;
-            c(mv + 1, static_cast<Eigen::Index>(j)) = columns[j].end_d / d_unit;
+            c(mv, static_cast<Eigen::Index>(j)) = columns[j].now.end_v / v_unit;
+            c(mv + 1, static_cast<Eigen::Index>(j)) = columns[j].now.end_d / d_unit;
         }
         for (std::size_t k = 0; k < 2; ++k) {
             c(mv, mv + static_cast<Eigen::Index>(k)) = pulse_v[k] / v_unit;
@@ -293,7 +304,7 @@ struct Matcher {
             const auto row = static_cast<Eigen::Index>(m + 2 + k);
             for (std::size_t j = 0; j < m; ++j)
                 c(row, static_cast<Eigen::Index>(j)) =
-                    value_at(columns[j].sampled, sample) / zpa_mps2;
+                    value_at(columns[j].now.sampled, sample) / zpa_mps2;
             for (std::size_t k2 = 0; k2 < 2; ++k2)
                 c(row, mv + static_cast<Eigen::Index>(k2)) =
                     value_at(pulse_samples[k2], sample) / zpa_mps2;
@@ -302,7 +313,7 @@ struct Matcher {
         }
         const Eigen::VectorXd b = solve_regularised(c, rhs);
         for (std::size_t j = 0; j < m; ++j)
-            add_wavelet(columns[j].sampled, relaxation * b(static_cast<Eigen::Index>(j)),
+            add_wavelet(columns[j].now.sampled, relaxation * b(static_cast<Eigen::Index>(j)),
                         rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
             add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)),
