@@ -141,6 +141,7 @@ struct Matcher {
     std::array<SampledWavelet, 2> pulse_samples;
     std::array<double, 2> pulse_v{}, pulse_d{};
     std::vector<Column> columns;                // one per matching frequency
+    std::vector<OscillatorAt> observed;         // each oscillator at its peak time
     std::array<std::vector<Response>, 2> pulse_responses;  // [pulse][oscillator]
 
     Matcher(const Target& t, const MatchOptions& o, core::Record& r)
@@ -164,6 +165,7 @@ struct Matcher {
             upper.push_back(capped ? opt.upper : kUncappedUpper);
         }
         columns.resize(f.size());
+        observed.resize(f.size());
         for (auto& row : pulse_responses) row.resize(f.size());
         pulses = BaselineCorrector::pulses(rec.duration_s());
         for (std::size_t k = 0; k < 2; ++k) {
@@ -233,10 +235,13 @@ struct Matcher {
         p.response.assign(f.size(), Response{});
     }
 
-    // Pseudo-acceleration of oscillator i at t_s due to wavelet w, remembered in `memo`: the
+    // Pseudo-acceleration of oscillator i at its peak time due to wavelet w, remembered in
+    // `memo`: the
     // closed form costs two to four Faddeeva evaluations, and most peak times stay put from
     // one pass to the next.
-    double response(Response& memo, const Wavelet& w, std::size_t i, double t_s) const {
+    double response(Response& memo, const Wavelet& w, std::size_t i) const {
+        const OscillatorAt& o = observed[i];
+        const double t_s = o.t_s;
         for (std::size_t k = 0; k < 2; ++k)
             if (memo.known[k] && memo.t_s[k] == t_s) return memo.y[k];
         if (!memo.start_known && w.start_s() < 0.0) {
@@ -248,7 +253,7 @@ struct Matcher {
         memo.y[1] = memo.y[0];
         memo.known[0] = true;
         memo.t_s[0] = t_s;
-        memo.y[0] = wavelet_response(w, f[i], kDamping, t_s, memo.start);
+        memo.y[0] = wavelet_response(w, o, memo.start);
         return memo.y[0];
     }
 
@@ -260,7 +265,11 @@ struct Matcher {
         const std::size_t m = f.size();
         const std::size_t cols = m + 2;
         const std::size_t rows = m + 2 + pk.accel_rows.size();
-        for (std::size_t j = 0; j < m; ++j) place(j, pk.t[j]);
+        for (std::size_t j = 0; j < m; ++j) {
+            place(j, pk.t[j]);
+            if (observed[j].t_s != pk.t[j] || observed[j].f_hz == 0.0)
+                observed[j] = oscillator_at(f[j], kDamping, pk.t[j]);
+        }
         Eigen::MatrixXd c(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
         Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows));
         const auto mv = static_cast<Eigen::Index>(m);
@@ -268,11 +277,11 @@ struct Matcher {
             const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = 0; j < m; ++j)
                 c(ii, static_cast<Eigen::Index>(j)) =
-                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i, pk.t[i]) /
+                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i) /
                     q[i];
             for (std::size_t k = 0; k < 2; ++k)
                 c(ii, mv + static_cast<Eigen::Index>(k)) =
-                    response(pulse_responses[k][i], pulses[k], i, pk.t[i]) / q[i];
+                    response(pulse_responses[k][i], pulses[k], i) / q[i];
             const double ratio = pk.r[i] / q[i];
             const bool inside = ratio >= opt.lower && ratio <= upper[i];
             const double want = inside ? pk.r[i] : opt.aim * q[i];

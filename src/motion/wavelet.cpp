@@ -114,19 +114,31 @@ WaveletStart wavelet_start(const Wavelet& w, double f_hz, double damping) {
     return {s0.y, s0.ydot};
 }
 
-double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s,
-                        const WaveletStart& start) {
+OscillatorAt oscillator_at(double f_hz, double damping, double t_s) {
     const double omega = units::hz_to_radps(f_hz);
-    const double full = full_state(w, omega, damping, t_s).y;
-    if (w.start_s() >= 0.0 || t_s < 0.0) return full;
+    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
+    return {f_hz, damping, t_s, std::exp(-damping * omega * t_s), std::cos(omega_d * t_s),
+            std::sin(omega_d * t_s)};
+}
+
+double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletStart& start) {
+    const double omega = units::hz_to_radps(o.f_hz);
+    const double full = full_state(w, omega, o.damping, o.t_s).y;
+    if (w.start_s() >= 0.0 || o.t_s < 0.0) return full;
     // The record starts at rest at t = 0: remove the free vibration left at t = 0 by the part of
     // the wavelet before it (y and dy/dt at 0 of the full response are exactly that part's).
-    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
-    const double decay = std::exp(-damping * omega * t_s);
+    const double omega_d = omega * std::sqrt(1.0 - o.damping * o.damping);
     const double free =
-        decay * (start.y * std::cos(omega_d * t_s) +
-                 (start.ydot + damping * omega * start.y) / omega_d * std::sin(omega_d * t_s));
+        o.decay * (start.y * o.cos_wd_t +
+                   (start.ydot + o.damping * omega * start.y) / omega_d * o.sin_wd_t);
     return full - free;
+}
+
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s,
+                        const WaveletStart& start) {
+    if (w.start_s() >= 0.0 || t_s < 0.0)
+        return full_state(w, units::hz_to_radps(f_hz), damping, t_s).y;
+    return wavelet_response(w, oscillator_at(f_hz, damping, t_s), start);
 }
 
 double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s) {

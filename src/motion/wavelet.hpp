@@ -58,6 +58,22 @@ WaveletStart wavelet_start(const Wavelet& w, double f_hz, double damping);
 double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s,
                         const WaveletStart& start);
 
+/// The oscillator (f_hz, damping) at t_s with the factors of the free vibration that
+/// wavelet_response removes, exp(-zeta omega t), cos(omega_d t) and sin(omega_d t): the same
+/// for every wavelet.
+struct OscillatorAt {
+    double f_hz = 0.0;
+    double damping = 0.0;
+    double t_s = 0.0;
+    double decay = 1.0;
+    double cos_wd_t = 1.0;
+    double sin_wd_t = 0.0;
+};
+OscillatorAt oscillator_at(double f_hz, double damping, double t_s);
+/// wavelet_response(w, o.f_hz, o.damping, o.t_s, start), the same bits, for many wavelets at
+/// one oscillator and time.
+double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletStart& start);
+
 /// The wavelet sampled at i * dt_s over its support inside a record of `samples` samples:
 /// values[k] = w((first + k) dt). Computed by exact rotation / Gaussian-ratio recurrences
 /// (relative drift ~1e-13 over 10^4 samples) instead of a cos and an exp per sample.

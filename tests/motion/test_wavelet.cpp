@@ -108,7 +108,7 @@ double wavelet_response_ref(const Wavelet& w, double f_hz, double damping, doubl
 
 }  // namespace
 
-TEST_CASE("wavelet responses keep their bits: conjugate tails and a start state given once",
+TEST_CASE("wavelet responses keep their bits: conjugate tails, start state and oscillator given once",
           "[motion][wavelet]") {
     REQUIRE(units::hz_to_radps(1.7) == 2.0 * std::numbers::pi * 1.7);
     std::vector<Wavelet> waves;
@@ -130,6 +130,7 @@ TEST_CASE("wavelet responses keep their bits: conjugate tails and a start state 
                                    << " Hz, t " << t << " s");
                 CHECK(wavelet_response(w, fo, 0.05, t) == ref);
                 CHECK(wavelet_response(w, fo, 0.05, t, start) == ref);
+                CHECK(wavelet_response(w, oscillator_at(fo, 0.05, t), start) == ref);
                 compared += ref != 0.0 ? 1 : 0;
             }
         }
