@@ -78,8 +78,9 @@ double interpolation_gain(double f_hz, double dt_s) {
     return x < 1e-8 ? 1.0 : std::pow(std::sin(x) / x, 2);
 }
 
-// Samples of the local maxima of |a|, largest first.
-std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
+// Samples of the `count` largest local maxima of |a|, largest first (ties by sample: the order
+// is total, so these are the first `count` of the whole sorted list).
+std::vector<std::size_t> peaks_by_size(const std::vector<double>& a, std::size_t count) {
     std::vector<std::pair<double, std::size_t>> found;
     for (std::size_t i = 0; i < a.size(); ++i) {
         const double v = std::abs(a[i]);
@@ -87,11 +88,12 @@ std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
         const bool right = i + 1 == a.size() || v > std::abs(a[i + 1]);
         if (left && right && v > 0.0) found.push_back({v, i});
     }
-    std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+    const auto kept = found.begin() + static_cast<std::ptrdiff_t>(std::min(count, found.size()));
+    std::partial_sort(found.begin(), kept, found.end(), [](const auto& x, const auto& y) {
         return x.first != y.first ? x.first > y.first : x.second < y.second;
     });
     std::vector<std::size_t> out;
-    for (const auto& p : found) out.push_back(p.second);
+    for (auto p = found.begin(); p != kept; ++p) out.push_back(p->second);
     return out;
 }
 
@@ -198,7 +200,7 @@ struct Matcher {
             const double ratio = out.r.back() / q[i];
             out.worst = std::max(out.worst, std::max(opt.lower - ratio, ratio - upper[i]));
         }
-        const std::vector<std::size_t> by_size = peaks_by_size(rec.accel_mps2);
+        const std::vector<std::size_t> by_size = peaks_by_size(rec.accel_mps2, kPeakRows);
         if (by_size.empty()) return out;
         const double pga_ratio = std::abs(rec.accel_mps2[by_size.front()]) / zpa_mps2;
         out.worst = std::max(out.worst, std::max(pga_low - pga_ratio, pga_ratio - pga_high));
