@@ -10,10 +10,10 @@
 #include <cstdlib>
 #include <string>
 
-#include "timing.hpp"
-#include "support/paths.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
+#include "support/paths.hpp"
+#include "timing.hpp"
 
 using namespace freestand;
 using Clock = std::chrono::steady_clock;
@@ -121,9 +121,10 @@ int main(int argc, char** argv) {
         show("AD/V^2", adv2);
         show("D/A", da);
         show("D5-75", d575);
-        std::printf("generation, seeds 1-10 (CPU): %.1f ms per set, %.2f ms per component-second "
-                    "(REQPY: %.1f)\n\n",
-                    1e3 * cpu / 10.0, 1e3 * cpu / history_s, 1e3 * kReqpy_s_per_component_s);
+        std::printf(
+            "generation, seeds 1-10 (CPU): %.1f ms per set, %.2f ms per component-second "
+            "(REQPY: %.1f)\n\n",
+            1e3 * cpu / 10.0, 1e3 * cpu / history_s, 1e3 * kReqpy_s_per_component_s);
     }
     // Matching a recorded seed, REQPY's own task: the 39 s El Centro 140 to RG 1.60.
     {
@@ -134,10 +135,11 @@ int main(int argc, char** argv) {
         const double cpu0 = bench::thread_cpu_s();
         for (int k = 0; k < repeats; ++k) (void)motion::generate_set(ts, o);
         const double cpu = (bench::thread_cpu_s() - cpu0) / repeats;
-        std::printf("matching seed E12140 (%.1f s) (CPU): %.1f ms, %.2f ms per component-second "
-                    "(REQPY: %.1f)\n\n",
-                    seed.duration_s(), 1e3 * cpu, 1e3 * cpu / seed.duration_s(),
-                    1e3 * kReqpy_s_per_component_s);
+        std::printf(
+            "matching seed E12140 (%.1f s) (CPU): %.1f ms, %.2f ms per component-second "
+            "(REQPY: %.1f)\n\n",
+            seed.duration_s(), 1e3 * cpu, 1e3 * cpu / seed.duration_s(),
+            1e3 * kReqpy_s_per_component_s);
     }
     // Cost of the acceptance report alone (spectra at 271 points x 2 dampings, PSD, measures).
     const auto rec = motion::generate_set(ts,

@@ -175,8 +175,7 @@ std::string srp_failures(const Acceptance& a) {
 
 // The criteria of srp_failures by what they need: the record's measures, its 5% spectrum, its PSD.
 bool measures_fail(const Acceptance& a) {
-    return a.dt_s > criteria::max_dt_s + 1e-12 ||
-           a.duration_s < criteria::min_duration_s - 1e-9 ||
+    return a.dt_s > criteria::max_dt_s + 1e-12 || a.duration_s < criteria::min_duration_s - 1e-9 ||
            std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps ||
            std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m;
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// Real FFTs of one length through FFTW, planned with FFTW_ESTIMATE (deterministic plans) once
-/// per length and direction for the whole process, on first use (FFTW's planner is not thread-safe, so planning is
-/// serialised by a mutex; the plans are executed on each object's own arrays).
+/// per length and direction for the whole process, on first use (FFTW's planner is not thread-safe,
+/// so planning is serialised by a mutex; the plans are executed on each object's own arrays).
 #include <complex>
 #include <cstddef>
 #include <vector>

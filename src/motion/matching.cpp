@@ -135,15 +135,15 @@ struct Matcher {
     std::vector<double> upper;   // in-loop upper ratio: opt.upper inside the 1.3-cap band
     double zpa_mps2 = 0.0;
     double pga_low = 0.0, pga_high = 0.0, pga_aim = 0.0;  // in-loop PGA / ZPA band
-    std::vector<double> gain;    // interpolation_gain of each wavelet frequency
+    std::vector<double> gain;  // interpolation_gain of each wavelet frequency
     EndWeights ends;
     std::shared_ptr<const BaselineCorrector> baseline;
     spectra::OscillatorSet oscillators;  // at f, kDamping, rec.dt_s
     std::array<Wavelet, 2> pulses;
     std::array<SampledWavelet, 2> pulse_samples;
     std::array<double, 2> pulse_v{}, pulse_d{};
-    std::vector<Column> columns;                // one per matching frequency
-    std::vector<OscillatorAt> observed;         // each oscillator at its peak time
+    std::vector<Column> columns;                           // one per matching frequency
+    std::vector<OscillatorAt> observed;                    // each oscillator at its peak time
     std::array<std::vector<Response>, 2> pulse_responses;  // [pulse][oscillator]
 
     Matcher(const Target& t, const MatchOptions& o, core::Record& r)
@@ -279,8 +279,7 @@ struct Matcher {
             const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = 0; j < m; ++j)
                 c(ii, static_cast<Eigen::Index>(j)) =
-                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i) /
-                    q[i];
+                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i) / q[i];
             for (std::size_t k = 0; k < 2; ++k)
                 c(ii, mv + static_cast<Eigen::Index>(k)) =
                     response(pulse_responses[k][i], pulses[k], i) / q[i];

@@ -117,8 +117,14 @@ WaveletStart wavelet_start(const Wavelet& w, double f_hz, double damping) {
 OscillatorAt oscillator_at(double f_hz, double damping, double t_s) {
     const double omega = units::hz_to_radps(f_hz);
     const double omega_d = omega * std::sqrt(1.0 - damping * damping);
-    return {f_hz, damping, t_s, std::exp(-damping * omega * t_s), std::cos(omega_d * t_s),
-            std::sin(omega_d * t_s)};
+    OscillatorAt o;
+    o.f_hz = f_hz;
+    o.damping = damping;
+    o.t_s = t_s;
+    o.decay = std::exp(-damping * omega * t_s);
+    o.cos_wd_t = std::cos(omega_d * t_s);
+    o.sin_wd_t = std::sin(omega_d * t_s);
+    return o;
 }
 
 double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletStart& start) {
@@ -129,8 +135,8 @@ double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletSt
     // the wavelet before it (y and dy/dt at 0 of the full response are exactly that part's).
     const double omega_d = omega * std::sqrt(1.0 - o.damping * o.damping);
     const double free =
-        o.decay * (start.y * o.cos_wd_t +
-                   (start.ydot + o.damping * omega * start.y) / omega_d * o.sin_wd_t);
+        o.decay *
+        (start.y * o.cos_wd_t + (start.ydot + o.damping * omega * start.y) / omega_d * o.sin_wd_t);
     return full - free;
 }
 

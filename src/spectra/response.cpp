@@ -276,8 +276,8 @@ template <class V, std::size_t W, std::size_t P, std::size_t N, Watch M>
             store<V, W, P>(s.block_u + offset, u);
             store<V, W, P>(s.block_v + offset, v);
             for (std::size_t q = 0; q < P; ++q) broadcast<V, W>(peak[q], 0.0);
-            steps<V, W, P, N, M>(s, first, std::min(s.end, first + kBlockSteps), c, d, u, v,
-                                 peak, peak_signed, peak_index);
+            steps<V, W, P, N, M>(s, first, std::min(s.end, first + kBlockSteps), c, d, u, v, peak,
+                                 peak_signed, peak_index);
             store<V, W, P>(s.block_max + offset, peak);
             offset += P * W;
         }

@@ -123,7 +123,8 @@ TEST_CASE("a shared corrector corrects as a fresh one, bit for bit, from several
     std::vector<std::vector<double>> out(4, raw);
     std::vector<std::thread> threads;
     for (auto& a : out)
-        threads.emplace_back([&a] { motion::BaselineCorrector::shared(kSamples, kDt_s)->correct(a); });
+        threads.emplace_back(
+            [&a] { motion::BaselineCorrector::shared(kSamples, kDt_s)->correct(a); });
     for (auto& t : threads) t.join();
     std::vector<double> again = raw;
     shared->correct(again);

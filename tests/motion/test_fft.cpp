@@ -51,8 +51,7 @@ Fresh fresh_transforms(const std::vector<double>& x) {
 
 }  // namespace
 
-TEST_CASE("shared FFT plans used from several threads give a fresh plan's bits",
-          "[motion][fft]") {
+TEST_CASE("shared FFT plans used from several threads give a fresh plan's bits", "[motion][fft]") {
     // 4050 = fft_size(4001) (a 20 s record at 5 ms) and 40000 (the PSD's 0.005 Hz bins); 1000
     // and 4050 again from other threads at the same time.
     const std::vector<std::size_t> lengths{4050, 40000, 1000, 4050, 40000, 1000};

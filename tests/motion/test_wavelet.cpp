@@ -101,15 +101,17 @@ double wavelet_response_ref(const Wavelet& w, double f_hz, double damping, doubl
     const auto [y0, ydot0] = full_state_ref(w, omega, damping, 0.0);
     const double omega_d = omega * std::sqrt(1.0 - damping * damping);
     const double decay = std::exp(-damping * omega * t_s);
-    const double free = decay * (y0 * std::cos(omega_d * t_s) +
-                                 (ydot0 + damping * omega * y0) / omega_d * std::sin(omega_d * t_s));
+    const double free =
+        decay * (y0 * std::cos(omega_d * t_s) +
+                 (ydot0 + damping * omega * y0) / omega_d * std::sin(omega_d * t_s));
     return full - free;
 }
 
 }  // namespace
 
-TEST_CASE("wavelet responses keep their bits: conjugate tails, start state and oscillator given once",
-          "[motion][wavelet]") {
+TEST_CASE(
+    "wavelet responses keep their bits: conjugate tails, start state and oscillator given once",
+    "[motion][wavelet]") {
     REQUIRE(units::hz_to_radps(1.7) == 2.0 * std::numbers::pi * 1.7);
     std::vector<Wavelet> waves;
     for (double fw : {0.1, 0.3, 2.0, 12.0, 40.0})
@@ -141,9 +143,9 @@ TEST_CASE("sampling a wavelet with its weighted sums gives the samples and the d
           "[motion][wavelet]") {
     const std::size_t samples = 4001;
     const EndWeights ends = end_weights(samples, 0.005);
-    for (const Wavelet& w : {Wavelet::at(0.1, 0.05, 3.0), Wavelet::at(2.0, 0.05, 10.0),
-                             Wavelet::at(30.0, 0.05, 19.99), Wavelet::at(5.0, 0.05, 40.0),
-                             Wavelet::pulse(6.7, 1.6)}) {
+    for (const Wavelet& w :
+         {Wavelet::at(0.1, 0.05, 3.0), Wavelet::at(2.0, 0.05, 10.0), Wavelet::at(30.0, 0.05, 19.99),
+          Wavelet::at(5.0, 0.05, 40.0), Wavelet::pulse(6.7, 1.6)}) {
         const SampledWavelet plain = sample_wavelet(w, 0.005, samples);
         SampledWavelet reused = sample_wavelet(Wavelet::at(0.2, 0.05, 1.0), 0.005, samples);
         const auto [v, d] =

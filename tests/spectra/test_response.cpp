@@ -7,12 +7,12 @@
 #include <thread>
 #include <vector>
 
-#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
 #include "spectra/response.hpp"
+#include "support/paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace freestand;
