@@ -13,34 +13,53 @@ namespace {
 
 enum class Direction { forward, inverse };
 
-/// The r2c or c2r plan of length n, made on first use and kept for the process: planning (even
+/// The r2c and c2r plans by length, made on first use and kept for the process: planning (even
 /// FFTW_ESTIMATE's, which hashes every sub-problem) costs as much as tens of transforms of the
 /// length, and a generated set used to plan ten times. Planning is serialised (FFTW's planner is
 /// not thread-safe); executing one plan on different arrays from several threads at once is safe
 /// with the new-array execute functions, given arrays of the planning arrays' alignment
 /// (fftw_alloc_*).
-fftw_plan plan_for(std::size_t n, Direction direction) {
-    static std::mutex mutex;
-    static std::map<std::pair<std::size_t, Direction>, fftw_plan> plans;
-    const std::lock_guard<std::mutex> lock(mutex);
-    const auto key = std::make_pair(n, direction);
-    const auto it = plans.find(key);
-    if (it != plans.end()) return it->second;
-    double* real = fftw_alloc_real(n);
-    fftw_complex* c = fftw_alloc_complex(n / 2 + 1);
-    if (real == nullptr || c == nullptr) {
+class PlanCache {
+  public:
+    ~PlanCache() {
+        for (const auto& [key, plan] : plans_) fftw_destroy_plan(plan);
+    }
+
+    fftw_plan plan(std::size_t n, Direction direction) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const auto key = std::make_pair(n, direction);
+        const auto it = plans_.find(key);
+        if (it != plans_.end()) return it->second;
+        const fftw_plan made = make(n, direction);
+        plans_.emplace(key, made);
+        return made;
+    }
+
+  private:
+    std::mutex mutex_;
+    std::map<std::pair<std::size_t, Direction>, fftw_plan> plans_;
+
+    static fftw_plan make(std::size_t n, Direction direction) {
+        double* real = fftw_alloc_real(n);
+        fftw_complex* c = fftw_alloc_complex(n / 2 + 1);
+        if (real == nullptr || c == nullptr) {
+            fftw_free(real);
+            fftw_free(c);
+            throw std::bad_alloc();
+        }
+        const int len = static_cast<int>(n);
+        const fftw_plan plan = direction == Direction::forward
+                                   ? fftw_plan_dft_r2c_1d(len, real, c, FFTW_ESTIMATE)
+                                   : fftw_plan_dft_c2r_1d(len, c, real, FFTW_ESTIMATE);
         fftw_free(real);
         fftw_free(c);
-        throw std::bad_alloc();
+        return plan;
     }
-    const int len = static_cast<int>(n);
-    const fftw_plan plan = direction == Direction::forward
-                               ? fftw_plan_dft_r2c_1d(len, real, c, FFTW_ESTIMATE)
-                               : fftw_plan_dft_c2r_1d(len, c, real, FFTW_ESTIMATE);
-    fftw_free(real);
-    fftw_free(c);
-    plans.emplace(key, plan);
-    return plan;
+};
+
+fftw_plan plan_for(std::size_t n, Direction direction) {
+    static PlanCache cache;
+    return cache.plan(n, direction);
 }
 
 }  // namespace
