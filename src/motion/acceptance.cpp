@@ -143,38 +143,11 @@ std::string realism_failures(Acceptance& a, const Target& target) {
 
 }  // namespace
 
-Acceptance check_acceptance(const core::Record& record, const Target& target) {
-    core::validate(record);
-    Acceptance a;
-    a.dt_s = record.dt_s;
-    a.duration_s = record.duration_s();
-    const core::GroundMotion gm = core::measure(record);
-    a.pga_g = gm.pga_g;
-    a.pgv_mps = gm.pgv_mps;
-    a.pgd_m = gm.pgd_m;
-    a.d5_75_s = gm.d5_75_s;
-    a.d5_95_s = gm.d5_95_s;
-    a.final_velocity_mps = gm.final_velocity_mps;
-    a.final_displacement_m = gm.final_displacement_m;
-    a.arias_mps = gm.arias_mps;
+namespace {
 
-    const std::vector<double> f = criteria::check_frequencies(record.dt_s);
-    a.check_points = f.size();
-    const RatioStats r5 = ratio_stats(f, spectra::psa_g(record, 0.05, f), target.psa_5pct);
-    a.min_ratio = r5.min;
-    a.max_ratio = r5.max;
-    a.mean_ratio = r5.mean;
-    a.max_adjacent_below = r5.longest_below;
-    a.max_ratio_cap_band = r5.max_cap_band;
-    if (target.psa_10pct) {
-        const RatioStats r10 = ratio_stats(f, spectra::psa_g(record, 0.10, f), *target.psa_10pct);
-        a.ratio_10pct_min = r10.min;
-        a.ratio_10pct_max = r10.max;
-    }
-    if (target.rg160_psd_pga_g && gm.d5_75_s > 0.0)
-        a.psd_min_ratio = psd_min_ratio(record, gm.d5_75_s, *target.rg160_psd_pga_g);
-
-    std::string& why = a.reason;
+// The SRP 3.7.1 reasons a record fails for, in the report's order.
+std::string srp_failures(const Acceptance& a) {
+    std::string why;
     if (a.dt_s > criteria::max_dt_s + 1e-12)
         add_reason(why, fmt::format("dt {} s > {} s", a.dt_s, criteria::max_dt_s));
     if (a.duration_s < criteria::min_duration_s - 1e-9)
@@ -197,12 +170,90 @@ Acceptance check_acceptance(const core::Record& record, const Target& target) {
         add_reason(why, fmt::format("final velocity {:.3g} m/s", a.final_velocity_mps));
     if (std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m)
         add_reason(why, fmt::format("final displacement {:.3g} m", a.final_displacement_m));
-    a.srp_passed = why.empty();
+    return why;
+}
+
+// The criteria of srp_failures by what they need: the record's measures, its 5% spectrum, its PSD.
+bool measures_fail(const Acceptance& a) {
+    return a.dt_s > criteria::max_dt_s + 1e-12 || a.duration_s < criteria::min_duration_s - 1e-9 ||
+           std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps ||
+           std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m;
+}
+
+bool spectrum_fails(const Acceptance& a) {
+    return a.min_ratio < criteria::floor_ratio ||
+           a.max_adjacent_below > criteria::max_adjacent_below ||
+           a.max_ratio_cap_band > criteria::cap_ratio;
+}
+
+bool psd_fails(const Acceptance& a) {
+    return a.psd_min_ratio && *a.psd_min_ratio < criteria::psd_floor_rg160;
+}
+
+// What a caller that reads only `passed` gets for a record that fails.
+Acceptance rejected() {
+    Acceptance a;
+    a.passed = false;
+    a.srp_passed = false;
+    a.reason = "rejected at the first failed criterion";
+    return a;
+}
+
+// The acceptance report. With stop_early, the criteria are tried in order of cost (the record's
+// own measures, the 5% spectrum, the PSD) and a failed one returns rejected() at once; a record
+// that passes gets the full report either way, from the same computations.
+Acceptance evaluate(const core::Record& record, const Target& target, bool stop_early) {
+    core::validate(record);
+    Acceptance a;
+    a.dt_s = record.dt_s;
+    a.duration_s = record.duration_s();
+    const core::GroundMotion gm = core::measure(record);
+    a.pga_g = gm.pga_g;
+    a.pgv_mps = gm.pgv_mps;
+    a.pgd_m = gm.pgd_m;
+    a.d5_75_s = gm.d5_75_s;
+    a.d5_95_s = gm.d5_95_s;
+    a.final_velocity_mps = gm.final_velocity_mps;
+    a.final_displacement_m = gm.final_displacement_m;
+    a.arias_mps = gm.arias_mps;
+    if (stop_early && (measures_fail(a) || !realism_failures(a, target).empty())) return rejected();
+
+    const std::vector<double> f = criteria::check_frequencies(record.dt_s);
+    a.check_points = f.size();
+    const RatioStats r5 = ratio_stats(f, spectra::psa_g(record, 0.05, f), target.psa_5pct);
+    a.min_ratio = r5.min;
+    a.max_ratio = r5.max;
+    a.mean_ratio = r5.mean;
+    a.max_adjacent_below = r5.longest_below;
+    a.max_ratio_cap_band = r5.max_cap_band;
+    if (stop_early && spectrum_fails(a)) return rejected();
+    if (target.rg160_psd_pga_g && gm.d5_75_s > 0.0)
+        a.psd_min_ratio = psd_min_ratio(record, gm.d5_75_s, *target.rg160_psd_pga_g);
+    if (stop_early && psd_fails(a)) return rejected();
+    // Reported, not a criterion.
+    if (target.psa_10pct) {
+        const RatioStats r10 = ratio_stats(f, spectra::psa_g(record, 0.10, f), *target.psa_10pct);
+        a.ratio_10pct_min = r10.min;
+        a.ratio_10pct_max = r10.max;
+    }
+
+    a.reason = srp_failures(a);
+    a.srp_passed = a.reason.empty();
     const std::string realism = realism_failures(a, target);
     a.realism_passed = realism.empty();
-    if (!a.realism_passed) add_reason(why, realism);
+    if (!a.realism_passed) add_reason(a.reason, realism);
     a.passed = a.srp_passed && a.realism_passed;
     return a;
+}
+
+}  // namespace
+
+Acceptance check_acceptance(const core::Record& record, const Target& target) {
+    return evaluate(record, target, false);
+}
+
+Acceptance check_acceptance_or_reject(const core::Record& record, const Target& target) {
+    return evaluate(record, target, true);
 }
 
 }  // namespace freestand::motion

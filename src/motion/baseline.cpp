@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "core/measures.hpp"
 #include "core/units.hpp"
@@ -14,6 +15,7 @@ namespace {
 // with their slope at both ends, content below ~(k + 2) / (2T) Hz (0.125 Hz at k = 3 in 20 s),
 // i.e. mostly under the 0.1 Hz bottom of the acceptance band.
 constexpr int kTrendShapes = 3;
+constexpr std::size_t kShapes = 2 + kTrendShapes;  // with the two pulses
 // Displacement is fitted on a grid this fine (it is smooth at these periods).
 constexpr double kFitStep_s = 0.05;
 // Reweighting passes toward the peak: w_i <- w_i (1 + kGain (|d_i| / max |d|)^kPower).
@@ -83,13 +85,35 @@ BaselineCorrector::BaselineCorrector(std::size_t samples, double dt_s)
     }
 }
 
+std::shared_ptr<const BaselineCorrector> BaselineCorrector::shared(std::size_t samples,
+                                                                   double dt_s) {
+    constexpr std::size_t kKept = 4;
+    static std::mutex mutex;
+    static std::vector<std::shared_ptr<const BaselineCorrector>> kept;  // most recent last
+    const auto find = [&]() -> std::shared_ptr<const BaselineCorrector> {
+        for (const auto& c : kept)
+            if (c->samples_ == samples && c->dt_s_ == dt_s) return c;
+        return nullptr;
+    };
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (auto c = find()) return c;
+    }
+    auto made = std::make_shared<const BaselineCorrector>(samples, dt_s);
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (auto c = find()) return c;  // another thread built it meanwhile
+    if (kept.size() == kKept) kept.erase(kept.begin());
+    kept.push_back(made);
+    return made;
+}
+
 std::array<Wavelet, 2> BaselineCorrector::pulses(double duration_s) {
     const double gamma_s = std::min(duration_s / 12.0, 2.0);
     return {Wavelet::pulse(duration_s / 3.0, gamma_s), Wavelet::pulse(2.0 * duration_s / 3.0, gamma_s)};
 }
 
 void BaselineCorrector::minimise_displacement(std::vector<double>& accel_mps2) const {
-    const std::vector<double> d = on_grid(core::displacement_m(accel_mps2, dt_s_), stride_);
+    const std::vector<double> d = displacement_on_grid(accel_mps2);
     const auto nb = static_cast<Eigen::Index>(shape_a_.size());
     const auto nbu = shape_a_.size();
     // KKT system of min sum_i w_i (d_i + sum_k c_k D_ki)^2 s.t. the two end conditions:
@@ -118,6 +142,7 @@ void BaselineCorrector::minimise_displacement(std::vector<double>& accel_mps2) c
         rhs(nb) = -end_v;
         rhs(nb + 1) = -end_d;
         c = kkt.fullPivLu().solve(rhs);
+        if (pass == kReweights) break;  // the weights of a next pass would not be used
         double peak = 0.0;
         std::vector<double> corrected = d;
         for (std::size_t q = 0; q < d.size(); ++q) {
@@ -129,10 +154,31 @@ void BaselineCorrector::minimise_displacement(std::vector<double>& accel_mps2) c
         for (std::size_t q = 0; q < d.size(); ++q)
             weight[q] *= 1.0 + kGain * std::pow(std::abs(corrected[q]) / peak, kPower);
     }
-    for (std::size_t k = 0; k < nbu; ++k) {
-        const double ck = c(static_cast<Eigen::Index>(k));
-        for (std::size_t i = 0; i < samples_; ++i) accel_mps2[i] += ck * shape_a_[k][i];
+    // Shape by shape for each sample (the additions in the order of the shapes, as ever).
+    std::array<double, kShapes> ck{};
+    for (std::size_t k = 0; k < nbu; ++k) ck[k] = c(static_cast<Eigen::Index>(k));
+    for (std::size_t i = 0; i < samples_; ++i) {
+        double a = accel_mps2[i];
+        for (std::size_t k = 0; k < kShapes; ++k) a += ck[k] * shape_a_[k][i];
+        accel_mps2[i] = a;
     }
+}
+
+std::vector<double> BaselineCorrector::displacement_on_grid(
+    const std::vector<double>& accel_mps2) const {
+    // core::displacement_m's two cumulative trapezoids, one sample at a time, keeping every
+    // stride-th displacement (the same operations: the same bits).
+    std::vector<double> out;
+    out.reserve(samples_ / stride_ + 1);
+    double v = 0.0, d = 0.0;
+    out.push_back(d);
+    for (std::size_t i = 1; i < samples_; ++i) {
+        const double v_next = v + 0.5 * dt_s_ * (accel_mps2[i - 1] + accel_mps2[i]);
+        d = d + 0.5 * dt_s_ * (v + v_next);
+        v = v_next;
+        if (i % stride_ == 0) out.push_back(d);
+    }
+    return out;
 }
 
 void BaselineCorrector::taper_ends(std::vector<double>& accel_mps2) const {

@@ -8,6 +8,7 @@
 /// small as possible while the end conditions hold exactly.
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "motion/criteria.hpp"
@@ -19,6 +20,10 @@ class BaselineCorrector {
   public:
     /// For records of `samples` samples at dt_s (>= 3 samples).
     BaselineCorrector(std::size_t samples, double dt_s);
+
+    /// The same, built once and shared while in use (it is immutable): generation builds one
+    /// for every synthesis and every match, all of one length. The last few lengths are kept.
+    static std::shared_ptr<const BaselineCorrector> shared(std::size_t samples, double dt_s);
 
     /// Adds sum c_k s_k(t) to accel_mps2, s_k the correction shapes (two Gaussian acceleration
     /// pulses at T/3 and 2T/3 and the displacement shapes sin^2(pi t/T) sin(k pi t/T),
@@ -51,6 +56,8 @@ class BaselineCorrector {
     std::vector<std::vector<double>> shape_d_;  // their displacement on the fit grid
     std::vector<double> shape_end_v_, shape_end_d_;
 
+    /// The displacement of core::displacement_m at every stride-th sample.
+    std::vector<double> displacement_on_grid(const std::vector<double>& accel_mps2) const;
     void taper_ends(std::vector<double>& accel_mps2) const;
     void zero_ends_exactly(std::vector<double>& accel_mps2) const;
 };

@@ -10,9 +10,12 @@ namespace {
 constexpr int kTerms = 36;  // Weideman's N
 constexpr double kAsymptoticRadius = 8.0;
 
+using Pair = double __attribute__((vector_size(16)));
+
 struct Coefficients {
     double L = 0.0;                  // scale of the Moebius map
     std::array<double, kTerms> a{};  // a_1..a_N of eq. 3.11
+    std::array<Pair, kTerms> a_re;   // (a_n, -0): adds a_n to a real part, nothing to an imaginary
 };
 
 // a_n are the Fourier coefficients of f(t) = exp(-t^2) (L^2 + t^2) on the mapped grid
@@ -39,6 +42,7 @@ Coefficients make_coefficients() {
                            static_cast<double>(j) / static_cast<double>(m2));
         c.a[static_cast<std::size_t>(n - 1)] = re / static_cast<double>(m2);
     }
+    for (std::size_t n = 0; n < c.a.size(); ++n) c.a_re[n] = Pair{c.a[n], -0.0};
     return c;
 }
 
@@ -66,10 +70,19 @@ std::complex<double> faddeeva_upper(std::complex<double> z) {
     const Coefficients& c = coefficients();
     const std::complex<double> lmiz = c.L - i * z;
     const std::complex<double> Z = (c.L + i * z) / lmiz;
-    // Horner on p(Z) = sum_{n=1}^{N} a_n Z^(n-1).
-    std::complex<double> p = c.a[kTerms - 1];
-    for (int n = kTerms - 2; n >= 0; --n) p = p * Z + c.a[static_cast<std::size_t>(n)];
-    return 2.0 * p / (lmiz * lmiz) + (1.0 / std::sqrt(std::numbers::pi)) / lmiz;
+    // Horner on p(Z) = sum_{n=1}^{N} a_n Z^(n-1), p <- p Z + a_n, with p = (re, im) in one
+    // vector: (re, im) Zr + (im, re) (-Zi, Zi) + (a_n, -0) performs the operations of the
+    // complex multiply-add, re Zr - im Zi + a_n and im Zr + re Zi (x + (-y) is x - y, addition
+    // commutes, and adding -0 leaves every value as it is), so the bits are the same.
+    const Pair zr{Z.real(), Z.real()}, zi{-Z.imag(), Z.imag()};
+    Pair p{c.a[kTerms - 1], 0.0};
+#pragma GCC unroll 35
+    for (int n = kTerms - 2; n >= 0; --n) {
+        const Pair swapped{p[1], p[0]};
+        p = (p * zr + swapped * zi) + c.a_re[static_cast<std::size_t>(n)];
+    }
+    const std::complex<double> series(p[0], p[1]);
+    return 2.0 * series / (lmiz * lmiz) + (1.0 / std::sqrt(std::numbers::pi)) / lmiz;
 }
 
 }  // namespace freestand::motion

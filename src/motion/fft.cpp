@@ -3,32 +3,78 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <map>
 #include <mutex>
 #include <new>
+#include <utility>
 
 namespace freestand::motion {
 namespace {
-std::mutex& planner_mutex() {
-    static std::mutex m;
-    return m;
+
+enum class Direction { forward, inverse };
+
+/// The r2c and c2r plans by length, made on first use and kept for the process: planning (even
+/// FFTW_ESTIMATE's, which hashes every sub-problem) costs as much as tens of transforms of the
+/// length, and a generated set used to plan ten times. Planning is serialised (FFTW's planner is
+/// not thread-safe); executing one plan on different arrays from several threads at once is safe
+/// with the new-array execute functions, given arrays of the planning arrays' alignment
+/// (fftw_alloc_*).
+class PlanCache {
+  public:
+    ~PlanCache() {
+        for (const auto& [key, plan] : plans_) fftw_destroy_plan(plan);
+    }
+
+    fftw_plan plan(std::size_t n, Direction direction) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const auto key = std::make_pair(n, direction);
+        const auto it = plans_.find(key);
+        if (it != plans_.end()) return it->second;
+        const fftw_plan made = make(n, direction);
+        plans_.emplace(key, made);
+        return made;
+    }
+
+  private:
+    std::mutex mutex_;
+    std::map<std::pair<std::size_t, Direction>, fftw_plan> plans_;
+
+    static fftw_plan make(std::size_t n, Direction direction) {
+        double* real = fftw_alloc_real(n);
+        fftw_complex* c = fftw_alloc_complex(n / 2 + 1);
+        if (real == nullptr || c == nullptr) {
+            fftw_free(real);
+            fftw_free(c);
+            throw std::bad_alloc();
+        }
+        const int len = static_cast<int>(n);
+        const fftw_plan plan = direction == Direction::forward
+                                   ? fftw_plan_dft_r2c_1d(len, real, c, FFTW_ESTIMATE)
+                                   : fftw_plan_dft_c2r_1d(len, c, real, FFTW_ESTIMATE);
+        fftw_free(real);
+        fftw_free(c);
+        return plan;
+    }
+};
+
+fftw_plan plan_for(std::size_t n, Direction direction) {
+    static PlanCache cache;
+    return cache.plan(n, direction);
 }
+
 }  // namespace
 
 RealFft::RealFft(std::size_t n) : n_(n) {
-    const std::lock_guard<std::mutex> lock(planner_mutex());
     real_ = fftw_alloc_real(n_);
-    auto* c = fftw_alloc_complex(bins());
-    complex_ = c;
-    if (real_ == nullptr || c == nullptr) throw std::bad_alloc();
-    const int len = static_cast<int>(n_);
-    forward_plan_ = fftw_plan_dft_r2c_1d(len, real_, c, FFTW_ESTIMATE);
-    inverse_plan_ = fftw_plan_dft_c2r_1d(len, c, real_, FFTW_ESTIMATE);
+    complex_ = fftw_alloc_complex(bins());
+    if (real_ == nullptr || complex_ == nullptr) {
+        fftw_free(real_);
+        fftw_free(complex_);
+        throw std::bad_alloc();
+    }
 }
 
 RealFft::~RealFft() {
-    const std::lock_guard<std::mutex> lock(planner_mutex());
-    fftw_destroy_plan(static_cast<fftw_plan>(forward_plan_));
-    fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan_));
     fftw_free(real_);
     fftw_free(complex_);
 }
@@ -37,8 +83,9 @@ std::vector<std::complex<double>> RealFft::forward(const std::vector<double>& x)
     const std::size_t m = std::min(x.size(), n_);
     std::copy_n(x.begin(), m, real_);
     std::fill(real_ + m, real_ + n_, 0.0);
-    fftw_execute(static_cast<fftw_plan>(forward_plan_));
-    const auto* c = static_cast<const fftw_complex*>(complex_);
+    if (forward_plan_ == nullptr) forward_plan_ = plan_for(n_, Direction::forward);
+    auto* c = static_cast<fftw_complex*>(complex_);
+    fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), real_, c);
     std::vector<std::complex<double>> out(bins());
     for (std::size_t k = 0; k < out.size(); ++k) out[k] = {c[k][0], c[k][1]};
     return out;
@@ -52,7 +99,8 @@ std::vector<double> RealFft::inverse(const std::vector<std::complex<double>>& sp
         c[k][1] = v.imag();
     }
     // c2r destroys its input; the buffer is refilled on every call.
-    fftw_execute(static_cast<fftw_plan>(inverse_plan_));
+    if (inverse_plan_ == nullptr) inverse_plan_ = plan_for(n_, Direction::inverse);
+    fftw_execute_dft_c2r(static_cast<fftw_plan>(inverse_plan_), c, real_);
     return std::vector<double>(real_, real_ + n_);
 }
 

@@ -1,14 +1,16 @@
 #pragma once
-/// Real FFTs of one length through FFTW, planned once with FFTW_ESTIMATE (deterministic plans;
-/// FFTW's planner is not thread-safe, so planning is serialised by a mutex).
+/// Real FFTs of one length through FFTW, planned with FFTW_ESTIMATE (deterministic plans) once
+/// per length and direction for the whole process, on first use (FFTW's planner is not thread-safe,
+/// so planning is serialised by a mutex; the plans are executed on each object's own arrays).
 #include <complex>
 #include <cstddef>
 #include <vector>
 
 namespace freestand::motion {
 
-/// r2c / c2r pair for one length n, with FFTW-aligned buffers owned by the object.
-/// Unnormalised like FFTW: inverse(forward(x)) = n x. Not copyable; use one per thread.
+/// r2c / c2r pair for one length n, with FFTW-aligned buffers owned by the object and the
+/// length's shared plans. Unnormalised like FFTW: inverse(forward(x)) = n x. Not copyable; use
+/// one per thread (objects of one length in several threads at once are safe).
 class RealFft {
   public:
     explicit RealFft(std::size_t n);
@@ -27,7 +29,7 @@ class RealFft {
     std::size_t n_;
     double* real_ = nullptr;
     void* complex_ = nullptr;  // fftw_complex*
-    void* forward_plan_ = nullptr;
+    void* forward_plan_ = nullptr;  // fftw_plan, shared, taken on first use
     void* inverse_plan_ = nullptr;
 };
 

@@ -10,6 +10,11 @@ namespace freestand::motion {
 /// match_record, ending with the exact baseline step and the full acceptance check.
 MatchResult match_in_place(core::Record record, const Target& target, const MatchOptions& options);
 
+/// check_acceptance for a caller that reads only `passed` unless the record passes: the
+/// criteria in order of cost, returning at the first that fails (then only `passed`, false, is
+/// meaningful). A record that passes gets check_acceptance's report, bit for bit.
+Acceptance check_acceptance_or_reject(const core::Record& record, const Target& target);
+
 /// splitmix64 mixing of (seed, component, attempt) into an independent generator seed.
 std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt);
 

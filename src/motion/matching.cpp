@@ -10,11 +10,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
 #include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
+#include "motion/internal.hpp"
 #include "motion/motion.hpp"
 #include "motion/wavelet.hpp"
 #include "spectra/response.hpp"
@@ -76,8 +78,9 @@ double interpolation_gain(double f_hz, double dt_s) {
     return x < 1e-8 ? 1.0 : std::pow(std::sin(x) / x, 2);
 }
 
-// Samples of the local maxima of |a|, largest first.
-std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
+// Samples of the `count` largest local maxima of |a|, largest first (ties by sample: the order
+// is total, so these are the first `count` of the whole sorted list).
+std::vector<std::size_t> peaks_by_size(const std::vector<double>& a, std::size_t count) {
     std::vector<std::pair<double, std::size_t>> found;
     for (std::size_t i = 0; i < a.size(); ++i) {
         const double v = std::abs(a[i]);
@@ -85,13 +88,42 @@ std::vector<std::size_t> peaks_by_size(const std::vector<double>& a) {
         const bool right = i + 1 == a.size() || v > std::abs(a[i + 1]);
         if (left && right && v > 0.0) found.push_back({v, i});
     }
-    std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+    const auto kept = found.begin() + static_cast<std::ptrdiff_t>(std::min(count, found.size()));
+    std::partial_sort(found.begin(), kept, found.end(), [](const auto& x, const auto& y) {
         return x.first != y.first ? x.first > y.first : x.second < y.second;
     });
     std::vector<std::size_t> out;
-    for (const auto& p : found) out.push_back(p.second);
+    for (auto p = found.begin(); p != kept; ++p) out.push_back(p->second);
     return out;
 }
+
+// A remembered closed-form response of one oscillator to one placed wavelet, at the last two
+// peak times of the oscillator (competing peaks make a peak time move back and forth), and the
+// wavelet's start state (which does not depend on the peak time).
+struct Response {
+    std::array<bool, 2> known{};  // [0]: the latest
+    std::array<double, 2> t_s{}, y{};
+    bool start_known = false;
+    WaveletStart start;
+};
+
+// A wavelet of the linearised system placed for its oscillator's peak at t_s: the wavelet, its
+// samples, its end-velocity and end-displacement rows, and its responses at each oscillator's
+// peak time.
+struct Placement {
+    bool placed = false;
+    double t_s = 0.0;
+    Wavelet wave;
+    SampledWavelet sampled;
+    double end_v = 0.0, end_d = 0.0;
+    std::vector<Response> response;  // per oscillator
+};
+
+// A wavelet column: its current placement and the one before, kept while the oscillator's peak
+// may move back.
+struct Column {
+    Placement now, before;
+};
 
 struct Matcher {
     const Target& target;
@@ -103,26 +135,40 @@ struct Matcher {
     std::vector<double> upper;   // in-loop upper ratio: opt.upper inside the 1.3-cap band
     double zpa_mps2 = 0.0;
     double pga_low = 0.0, pga_high = 0.0, pga_aim = 0.0;  // in-loop PGA / ZPA band
+    std::vector<double> gain;  // interpolation_gain of each wavelet frequency
     EndWeights ends;
-    BaselineCorrector baseline;
+    std::shared_ptr<const BaselineCorrector> baseline;
+    spectra::OscillatorSet oscillators;  // at f, kDamping, rec.dt_s
     std::array<Wavelet, 2> pulses;
     std::array<SampledWavelet, 2> pulse_samples;
     std::array<double, 2> pulse_v{}, pulse_d{};
+    std::vector<Column> columns;                           // one per matching frequency
+    std::vector<OscillatorAt> observed;                    // each oscillator at its peak time
+    std::array<std::vector<Response>, 2> pulse_responses;  // [pulse][oscillator]
 
     Matcher(const Target& t, const MatchOptions& o, core::Record& r)
-        : target(t), opt(o), rec(r), ends(end_weights(r.size(), r.dt_s)), baseline(r.size(), r.dt_s) {
-        f = spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(rec.dt_s),
-                                     opt.match_per_decade);
+        : target(t),
+          opt(o),
+          rec(r),
+          f(spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(r.dt_s),
+                                     o.match_per_decade)),
+          ends(end_weights(r.size(), r.dt_s)),
+          baseline(BaselineCorrector::shared(r.size(), r.dt_s)),
+          oscillators(kDamping, f, r.dt_s) {
         for (double fi : f) {
             const double cycles = fi > criteria::cap_high_hz ? opt.rigid_wavelet_cycles_per_sample
                                                              : kMaxWaveletCyclesPerSample;
             f_wave.push_back(std::min(fi, cycles / rec.dt_s));
+            gain.push_back(interpolation_gain(f_wave.back(), rec.dt_s));
             q.push_back(target.psa_5pct.psa_at(fi) * units::g_mps2);
             // No cap outside 0.2-25 Hz: holding a tight band there only makes competing peaks of
             // the long-period oscillators alternate.
             const bool capped = fi >= criteria::cap_low_hz && fi <= criteria::cap_high_hz;
             upper.push_back(capped ? opt.upper : kUncappedUpper);
         }
+        columns.resize(f.size());
+        observed.resize(f.size());
+        for (auto& row : pulse_responses) row.resize(f.size());
         pulses = BaselineCorrector::pulses(rec.duration_s());
         for (std::size_t k = 0; k < 2; ++k) {
             pulse_samples[k] = sample_wavelet(pulses[k], rec.dt_s, rec.size());
@@ -144,7 +190,7 @@ struct Matcher {
     };
 
     Peaks peaks() const {
-        const auto p = spectra::peak_responses(rec, kDamping, f);
+        const auto p = oscillators.peak_responses(rec);
         Peaks out;
         for (std::size_t i = 0; i < f.size(); ++i) {
             const double w = units::hz_to_radps(f[i]);
@@ -154,7 +200,7 @@ struct Matcher {
             const double ratio = out.r.back() / q[i];
             out.worst = std::max(out.worst, std::max(opt.lower - ratio, ratio - upper[i]));
         }
-        const std::vector<std::size_t> by_size = peaks_by_size(rec.accel_mps2);
+        const std::vector<std::size_t> by_size = peaks_by_size(rec.accel_mps2, kPeakRows);
         if (by_size.empty()) return out;
         const double pga_ratio = std::abs(rec.accel_mps2[by_size.front()]) / zpa_mps2;
         out.worst = std::max(out.worst, std::max(pga_low - pga_ratio, pga_ratio - pga_high));
@@ -173,6 +219,46 @@ struct Matcher {
         return false;
     }
 
+    // The wavelet of column j placed for the peak at t_s, with its samples and end rows, or the
+    // column's previous placement if that was at t_s.
+    void place(std::size_t j, double t_s) {
+        Column& col = columns[j];
+        if (col.now.placed && col.now.t_s == t_s) return;
+        std::swap(col.now, col.before);
+        Placement& p = col.now;
+        if (p.placed && p.t_s == t_s) return;
+        p.placed = true;
+        p.t_s = t_s;
+        p.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
+        const auto [end_v, end_d] = sample_wavelet(p.wave, rec.dt_s, rec.size(), p.sampled,
+                                                   ends.velocity, ends.displacement);
+        p.end_v = end_v;
+        p.end_d = end_d;
+        p.response.assign(f.size(), Response{});
+    }
+
+    // Pseudo-acceleration of oscillator i at its peak time due to wavelet w, remembered in
+    // `memo`: the
+    // closed form costs two to four Faddeeva evaluations, and most peak times stay put from
+    // one pass to the next.
+    double response(Response& memo, const Wavelet& w, std::size_t i) const {
+        const OscillatorAt& o = observed[i];
+        const double t_s = o.t_s;
+        for (std::size_t k = 0; k < 2; ++k)
+            if (memo.known[k] && memo.t_s[k] == t_s) return memo.y[k];
+        if (!memo.start_known && w.start_s() < 0.0) {
+            memo.start = wavelet_start(w, f[i], kDamping);
+            memo.start_known = true;
+        }
+        memo.known[1] = memo.known[0];
+        memo.t_s[1] = memo.t_s[0];
+        memo.y[1] = memo.y[0];
+        memo.known[0] = true;
+        memo.t_s[0] = t_s;
+        memo.y[0] = wavelet_response(w, o, memo.start);
+        return memo.y[0];
+    }
+
     // One linearised correction: rows in units of the target (spectral rows: change of the
     // ratio; peak rows: change of |a| / ZPA; two rows keeping the final velocity and displacement
     // at zero with two pulse columns, so the wavelets add no drift for the baseline step to
@@ -181,13 +267,10 @@ struct Matcher {
         const std::size_t m = f.size();
         const std::size_t cols = m + 2;
         const std::size_t rows = m + 2 + pk.accel_rows.size();
-        std::vector<Wavelet> waves;
-        std::vector<SampledWavelet> sampled;
-        waves.reserve(m);
-        sampled.reserve(m);
         for (std::size_t j = 0; j < m; ++j) {
-            waves.push_back(Wavelet::for_oscillator(f_wave[j], f[j], kDamping, pk.t[j]));
-            sampled.push_back(sample_wavelet(waves.back(), rec.dt_s, rec.size()));
+            place(j, pk.t[j]);
+            if (observed[j].t_s != pk.t[j] || observed[j].f_hz == 0.0)
+                observed[j] = oscillator_at(f[j], kDamping, pk.t[j]);
         }
         Eigen::MatrixXd c(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
         Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows));
@@ -195,13 +278,11 @@ struct Matcher {
         for (std::size_t i = 0; i < m; ++i) {
             const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = 0; j < m; ++j)
-                c(ii, static_cast<Eigen::Index>(j)) = interpolation_gain(f_wave[j], rec.dt_s) *
-                                                      wavelet_response(waves[j], f[i], kDamping,
-                                                                       pk.t[i]) /
-                                                      q[i];
+                c(ii, static_cast<Eigen::Index>(j)) =
+                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i) / q[i];
             for (std::size_t k = 0; k < 2; ++k)
                 c(ii, mv + static_cast<Eigen::Index>(k)) =
-                    wavelet_response(pulses[k], f[i], kDamping, pk.t[i]) / q[i];
+                    response(pulse_responses[k][i], pulses[k], i) / q[i];
             const double ratio = pk.r[i] / q[i];
             const bool inside = ratio >= opt.lower && ratio <= upper[i];
             const double want = inside ? pk.r[i] : opt.aim * q[i];
@@ -219,9 +300,8 @@ struct Matcher {
         const double d_unit = kBaselineDisplacement_m_per_g * zpa_mps2 / units::g_mps2;
         const double v_unit = d_unit / rec.duration_s();
         for (std::size_t j = 0; j < m; ++j) {
-            c(mv, static_cast<Eigen::Index>(j)) = dot_support(sampled[j], ends.velocity) / v_unit;
-            c(mv + 1, static_cast<Eigen::Index>(j)) =
-                dot_support(sampled[j], ends.displacement) / d_unit;
+            c(mv, static_cast<Eigen::Index>(j)) = columns[j].now.end_v / v_unit;
+            c(mv + 1, static_cast<Eigen::Index>(j)) = columns[j].now.end_d / d_unit;
         }
         for (std::size_t k = 0; k < 2; ++k) {
             c(mv, mv + static_cast<Eigen::Index>(k)) = pulse_v[k] / v_unit;
@@ -233,7 +313,8 @@ struct Matcher {
             const std::size_t sample = pk.accel_rows[k];
             const auto row = static_cast<Eigen::Index>(m + 2 + k);
             for (std::size_t j = 0; j < m; ++j)
-                c(row, static_cast<Eigen::Index>(j)) = value_at(sampled[j], sample) / zpa_mps2;
+                c(row, static_cast<Eigen::Index>(j)) =
+                    value_at(columns[j].now.sampled, sample) / zpa_mps2;
             for (std::size_t k2 = 0; k2 < 2; ++k2)
                 c(row, mv + static_cast<Eigen::Index>(k2)) =
                     value_at(pulse_samples[k2], sample) / zpa_mps2;
@@ -242,11 +323,12 @@ struct Matcher {
         }
         const Eigen::VectorXd b = solve_regularised(c, rhs);
         for (std::size_t j = 0; j < m; ++j)
-            add_wavelet(sampled[j], relaxation * b(static_cast<Eigen::Index>(j)), rec.accel_mps2);
+            add_wavelet(columns[j].now.sampled, relaxation * b(static_cast<Eigen::Index>(j)),
+                        rec.accel_mps2);
         for (std::size_t k = 0; k < 2; ++k)
             add_wavelet(pulse_samples[k], relaxation * b(mv + static_cast<Eigen::Index>(k)),
                         rec.accel_mps2);
-        baseline.minimise_displacement(rec.accel_mps2);
+        baseline->minimise_displacement(rec.accel_mps2);
     }
 
     // Columns scaled to unit norm, then min |C x - r|^2 + lambda^2 |x|^2.
@@ -277,7 +359,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
     Matcher m(target, options, res.record);
     // Start at rest: a raw synthetic record drifts by metres, and removing that after the first
     // pass would undo the long-period part of the match.
-    m.baseline.minimise_displacement(res.record.accel_mps2);
+    m.baseline->minimise_displacement(res.record.accel_mps2);
     int raises = 0;
     // The iterate closest to the band, kept in case the limit is reached.
     std::vector<double> best = res.record.accel_mps2;
@@ -290,7 +372,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
             best = res.record.accel_mps2;
         }
         if (pk.worst <= 0.0) {
-            m.baseline.correct(res.record.accel_mps2);
+            m.baseline->correct(res.record.accel_mps2);
             res.acceptance = check_acceptance(res.record, target);
             res.iterations = it - 1;
             res.converged = true;
@@ -308,8 +390,8 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
         if (pk.worst <= kNearBand && it - last_check >= kCheckEvery) {
             last_check = it;
             core::Record candidate = res.record;
-            m.baseline.correct(candidate.accel_mps2);
-            Acceptance a = check_acceptance(candidate, target);
+            m.baseline->correct(candidate.accel_mps2);
+            Acceptance a = check_acceptance_or_reject(candidate, target);
             if (a.passed) {
                 res.record = std::move(candidate);
                 res.acceptance = std::move(a);
@@ -320,7 +402,7 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
         m.pass(pk, options.relaxation);
     }
     res.record.accel_mps2 = best;
-    m.baseline.correct(res.record.accel_mps2);
+    m.baseline->correct(res.record.accel_mps2);
     res.iterations = options.max_iterations;
     res.acceptance = check_acceptance(res.record, target);
     return res;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <random>
 
 #include "core/errors.hpp"
@@ -83,7 +84,7 @@ struct Process {
     std::vector<std::complex<double>> unit;
     std::vector<double> envelope;
     std::vector<double> stationary;  // inverse FFT of amp unit, fft.size() samples
-    BaselineCorrector baseline;
+    std::shared_ptr<const BaselineCorrector> baseline;
 
     Process(std::size_t n, double dt_s)
         : samples(n),
@@ -92,7 +93,7 @@ struct Process {
           amp(fft.bins(), 0.0),
           unit(fft.bins()),
           envelope(n),
-          baseline(n, dt_s) {}
+          baseline(BaselineCorrector::shared(n, dt_s)) {}
 
     // Record = envelope x stationary process, brought to rest with the least displacement.
     void build(core::Record& rec) {
@@ -101,7 +102,7 @@ struct Process {
         stationary = fft.inverse(spec);
         for (std::size_t i = 0; i < samples; ++i)
             rec.accel_mps2[i] = envelope[i] * stationary[i];
-        baseline.minimise_displacement(rec.accel_mps2);
+        baseline->minimise_displacement(rec.accel_mps2);
     }
 
     // Clips |a| > cap in the stationary process (where the envelope is positive) and takes the
@@ -167,9 +168,10 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
         spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(dt_s), kPerDecade);
     std::vector<double> target_psa;
     for (double fi : f) target_psa.push_back(target.psa_5pct.psa_at(fi));
+    const spectra::OscillatorSet oscillators(0.05, f, dt_s);
     for (int pass = 0; pass < kPasses; ++pass) {
         p.build(rec);
-        const std::vector<double> psa = spectra::psa_g(rec, 0.05, f);
+        const std::vector<double> psa = oscillators.psa_g(rec);
         if (pass == 0) {
             fix_level(p, target_psa, psa);
             continue;

@@ -17,20 +17,28 @@ constexpr double kDecayed = 20.0;       // exp(-20) ~ 2e-9
 // I(Omega) = int_{-inf}^{T} exp(-p (T - x)) exp(i Omega x) exp(-x^2 / gamma^2) dx, x = s - centre,
 // p = zeta omega - i omega_d. Completing the square with q = p + i Omega:
 //   I = gamma sqrt(pi) / 2 * exp(-p T + q^2 gamma^2 / 4) erfc(z),  z = q gamma / 2 - T / gamma.
-// With erfc(z) = exp(-z^2) w(i z) the exponent simplifies to i Omega T - T^2 / gamma^2, which
-// stays bounded; for Re z < 0 (late times) erfc(z) = 2 - exp(-z^2) w(-i z) keeps w's argument
-// in the upper half plane.
+// With erfc(z) = exp(-z^2) w(i z) the exponent simplifies to i Omega T - T^2 / gamma^2 (`tail`,
+// below), which stays bounded; for Re z < 0 (late times) erfc(z) = 2 - exp(-z^2) w(-i z) keeps
+// w's argument in the upper half plane.
 std::complex<double> half_integral(double omega_signed, double omega, double zeta, double omega_d,
-                                   double gamma, double T) {
+                                   double gamma, double T, std::complex<double> tail) {
     const std::complex<double> i(0.0, 1.0);
     const std::complex<double> p(zeta * omega, -omega_d);
     const std::complex<double> q = p + i * omega_signed;
     const std::complex<double> z = q * (gamma / 2.0) - T / gamma;
     const double scale = gamma * std::sqrt(std::numbers::pi) / 2.0;
-    const std::complex<double> tail = std::exp(i * omega_signed * T - T * T / (gamma * gamma));
     if (z.real() >= 0.0) return scale * tail * faddeeva_upper(i * z);
     const std::complex<double> full = std::exp(-p * T + q * q * (gamma * gamma / 4.0));
     return scale * (2.0 * full - tail * faddeeva_upper(-i * z));
+}
+
+// exp(i Omega T - T^2 / gamma^2) of half_integral. That of -Omega is its conjugate, bit for bit:
+// the argument's imaginary part is exactly negated and its real part is -T^2 / gamma^2 either
+// way (a zero of either sign at T = 0, where exp gives 1), and cexp(conj z) = conj(cexp z)
+// (C11 Annex G.6.3.1; glibc's sin is odd and cos even to the bit).
+std::complex<double> tail_of(double omega_signed, double gamma, double T) {
+    const std::complex<double> i(0.0, 1.0);
+    return std::exp(i * omega_signed * T - T * T / (gamma * gamma));
 }
 
 }  // namespace
@@ -91,56 +99,130 @@ State full_state(const Wavelet& w, double omega, double damping, double t_s) {
         damping * omega * (T - kSupportGammas * w.gamma_s) > kDecayed)
         return {};
     // cos(Omega x) = Re exp(i Omega x) and Im(A) Re(B) = Im(A B + A conj(B)) / 2.
+    const std::complex<double> tail = tail_of(w.omega_d_radps, w.gamma_s, T);
     const std::complex<double> sum =
-        half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
-        half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
+        half_integral(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T, tail) +
+        half_integral(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T, std::conj(tail));
     const double k = omega * omega / (2.0 * omega_d);
     return {k * sum.imag(), k * (omega_d * sum.real() - damping * omega * sum.imag())};
 }
 
 }  // namespace
 
-double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s) {
+WaveletStart wavelet_start(const Wavelet& w, double f_hz, double damping) {
+    const State s0 = full_state(w, units::hz_to_radps(f_hz), damping, 0.0);
+    return {s0.y, s0.ydot};
+}
+
+OscillatorAt oscillator_at(double f_hz, double damping, double t_s) {
     const double omega = units::hz_to_radps(f_hz);
-    const double full = full_state(w, omega, damping, t_s).y;
-    if (w.start_s() >= 0.0 || t_s < 0.0) return full;
+    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
+    OscillatorAt o;
+    o.f_hz = f_hz;
+    o.damping = damping;
+    o.t_s = t_s;
+    o.decay = std::exp(-damping * omega * t_s);
+    o.cos_wd_t = std::cos(omega_d * t_s);
+    o.sin_wd_t = std::sin(omega_d * t_s);
+    return o;
+}
+
+double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletStart& start) {
+    const double omega = units::hz_to_radps(o.f_hz);
+    const double full = full_state(w, omega, o.damping, o.t_s).y;
+    if (w.start_s() >= 0.0 || o.t_s < 0.0) return full;
     // The record starts at rest at t = 0: remove the free vibration left at t = 0 by the part of
     // the wavelet before it (y and dy/dt at 0 of the full response are exactly that part's).
-    const State s0 = full_state(w, omega, damping, 0.0);
-    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
-    const double decay = std::exp(-damping * omega * t_s);
+    const double omega_d = omega * std::sqrt(1.0 - o.damping * o.damping);
     const double free =
-        decay * (s0.y * std::cos(omega_d * t_s) +
-                 (s0.ydot + damping * omega * s0.y) / omega_d * std::sin(omega_d * t_s));
+        o.decay *
+        (start.y * o.cos_wd_t + (start.ydot + o.damping * omega * start.y) / omega_d * o.sin_wd_t);
     return full - free;
+}
+
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s,
+                        const WaveletStart& start) {
+    if (w.start_s() >= 0.0 || t_s < 0.0)
+        return full_state(w, units::hz_to_radps(f_hz), damping, t_s).y;
+    return wavelet_response(w, oscillator_at(f_hz, damping, t_s), start);
+}
+
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s) {
+    const bool cut = w.start_s() < 0.0 && t_s >= 0.0;
+    return wavelet_response(w, f_hz, damping, t_s,
+                            cut ? wavelet_start(w, f_hz, damping) : WaveletStart{});
 }
 
 SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples) {
     SampledWavelet out;
-    if (samples == 0) return out;
-    const double last_s = static_cast<double>(samples - 1) * dt_s;
-    if (w.end_s() < 0.0 || w.start_s() > last_s) return out;
+    sample_wavelet(w, dt_s, samples, out);
+    return out;
+}
+
+namespace {
+
+// sample_wavelet, with the weighted sums when weights_a and weights_b are given.
+std::array<double, 2> sample_into(const Wavelet& w, double dt_s, std::size_t samples,
+                                  SampledWavelet& out, const double* weights_a,
+                                  const double* weights_b) {
+    out.first = 0;
+    if (samples == 0 || w.end_s() < 0.0 || w.start_s() > static_cast<double>(samples - 1) * dt_s) {
+        out.values.clear();
+        return {0.0, 0.0};
+    }
     const double last = static_cast<double>(samples - 1);
     const auto i0 = static_cast<std::size_t>(std::clamp(std::ceil(w.start_s() / dt_s), 0.0, last));
     const auto i1 = static_cast<std::size_t>(std::clamp(std::floor(w.end_s() / dt_s), 0.0, last));
     out.first = i0;
-    out.values.resize(i1 - i0 + 1);
+    out.values.resize(i1 - i0 + 1);  // every value is written below
     // x_k = (i0 + k) dt - centre; exp(i W x) rotates by exp(i W dt); the Gaussian ratio
     // g_{k+1} / g_k = exp(-(2 x_k dt + dt^2) / gamma^2) itself changes by exp(-2 dt^2 / gamma^2).
     const double x0 = static_cast<double>(i0) * dt_s - w.centre_s;
     const double g2 = w.gamma_s * w.gamma_s;
     const std::complex<double> step = std::polar(1.0, w.omega_d_radps * dt_s);
-    std::complex<double> phase = std::polar(1.0, w.omega_d_radps * x0);
+    const std::complex<double> phase = std::polar(1.0, w.omega_d_radps * x0);
     double gauss = std::exp(-x0 * x0 / g2);
     double ratio = std::exp(-(2.0 * x0 * dt_s + dt_s * dt_s) / g2);
     const double ratio_step = std::exp(-2.0 * dt_s * dt_s / g2);
-    for (double& v : out.values) {
-        v = phase.real() * gauss;
-        phase *= step;
+    // phase *= step with (re, im) in one vector: (re, im) sr + (im, re) (-si, si) performs the
+    // complex multiply's operations, re sr - im si and im sr + re si (x + (-y) is x - y and
+    // addition commutes), so the samples keep their bits.
+    using Pair = double __attribute__((vector_size(16)));
+    const Pair sr{step.real(), step.real()}, si{-step.imag(), step.imag()};
+    Pair rot{phase.real(), phase.imag()};
+    if (weights_a == nullptr) {
+        for (double& v : out.values) {
+            v = rot[0] * gauss;
+            rot = rot * sr + Pair{rot[1], rot[0]} * si;
+            gauss *= ratio;
+            ratio *= ratio_step;
+        }
+        return {0.0, 0.0};
+    }
+    const double* wa = weights_a + i0;
+    const double* wb = weights_b + i0;
+    Pair sum{0.0, 0.0};  // the two weighted sums, each in order of k
+    for (std::size_t k = 0; k < out.values.size(); ++k) {
+        const double v = rot[0] * gauss;
+        out.values[k] = v;
+        sum += Pair{wa[k], wb[k]} * v;
+        rot = rot * sr + Pair{rot[1], rot[0]} * si;
         gauss *= ratio;
         ratio *= ratio_step;
     }
-    return out;
+    return {sum[0], sum[1]};
+}
+
+}  // namespace
+
+void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out) {
+    sample_into(w, dt_s, samples, out, nullptr, nullptr);
+}
+
+std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples,
+                                     SampledWavelet& out, const std::vector<double>& weights_a,
+                                     const std::vector<double>& weights_b) {
+    return sample_into(w, dt_s, samples, out, weights_a.data(), weights_b.data());
 }
 
 void add_wavelet(const SampledWavelet& w, double amplitude, std::vector<double>& accel) {

@@ -1,6 +1,7 @@
 #pragma once
 /// The improved tapered cosine wavelet of Al Atik & Abrahamson (2010, Earthquake Spectra 26(3)
 /// 601-617, eqs. 14, 16, 17) and the exact response of a damped oscillator to it.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -44,6 +45,35 @@ struct Wavelet {
 /// the whole wavelet minus the free vibration its part before t = 0 leaves.
 double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s);
 
+/// y and dy/dt at t = 0 of the oscillator (f_hz, damping) driven by the whole wavelet: the free
+/// vibration its part before t = 0 leaves, which wavelet_response removes. It depends on the
+/// wavelet and the oscillator only, not on t_s.
+struct WaveletStart {
+    double y = 0.0;
+    double ydot = 0.0;
+};
+WaveletStart wavelet_start(const Wavelet& w, double f_hz, double damping);
+/// wavelet_response with wavelet_start(w, f_hz, damping) given (the same bits), for several t_s
+/// of one wavelet and oscillator; `start` is read only if the wavelet starts before t = 0.
+double wavelet_response(const Wavelet& w, double f_hz, double damping, double t_s,
+                        const WaveletStart& start);
+
+/// The oscillator (f_hz, damping) at t_s with the factors of the free vibration that
+/// wavelet_response removes, exp(-zeta omega t), cos(omega_d t) and sin(omega_d t): the same
+/// for every wavelet.
+struct OscillatorAt {
+    double f_hz = 0.0;
+    double damping = 0.0;
+    double t_s = 0.0;
+    double decay = 1.0;
+    double cos_wd_t = 1.0;
+    double sin_wd_t = 0.0;
+};
+OscillatorAt oscillator_at(double f_hz, double damping, double t_s);
+/// wavelet_response(w, o.f_hz, o.damping, o.t_s, start), the same bits, for many wavelets at
+/// one oscillator and time.
+double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletStart& start);
+
 /// The wavelet sampled at i * dt_s over its support inside a record of `samples` samples:
 /// values[k] = w((first + k) dt). Computed by exact rotation / Gaussian-ratio recurrences
 /// (relative drift ~1e-13 over 10^4 samples) instead of a cos and an exp per sample.
@@ -52,6 +82,14 @@ struct SampledWavelet {
     std::vector<double> values;
 };
 SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples);
+/// The same into `out`, reusing its storage.
+void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out);
+/// The same, also returning sum_k weights_a[first + k] values[k] and the same of weights_b
+/// (each `samples` long), summed in order of k as a loop over `out` would: the same bits,
+/// without a second pass over the samples.
+std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples,
+                                     SampledWavelet& out, const std::vector<double>& weights_a,
+                                     const std::vector<double>& weights_b);
 
 /// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);

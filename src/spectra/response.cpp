@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <new>
+#include <utility>
 
 #include "core/contract.hpp"
 #include "core/errors.hpp"
@@ -21,7 +24,6 @@ using Row = std::array<double, 4>;  // coefficients of (u_i, v_i, a_i, a_{i+1})
 /// (Nigam & Jennings 1969), resolved at n equal sub-points of each sample interval. Row k of
 /// sub_u gives u at sub-point k+1; end_v gives v at the end of the interval.
 struct Stepper {
-    double omega_radps = 0.0;
     std::vector<Row> sub_u;
     Row end_v{};
 };
@@ -70,7 +72,6 @@ Stepper make_stepper(double f_hz, double zeta, double dt_s, int min_steps_per_pe
     const double omega = units::hz_to_radps(f_hz);
     const StepMatrices m = step_matrices(omega, zeta, dt_s / static_cast<double>(n));
     Stepper st;
-    st.omega_radps = omega;
     st.sub_u.resize(static_cast<std::size_t>(n));
     // Compose the sub-steps symbolically: the state at sub-point k is a linear map of
     // (u_i, v_i, a_i, a_{i+1}); the load at sub-point k is a_i + (k/n)(a_{i+1} - a_i).
@@ -96,156 +97,347 @@ Stepper make_stepper(double f_hz, double zeta, double dt_s, int min_steps_per_pe
     return st;
 }
 
-/// Two oscillators side by side (GCC/Clang vector extension: one SSE2/NEON register, and the
-/// compiler falls back to scalar code on targets without one).
-using Pair = double __attribute__((vector_size(16)));
+// ---- The oscillators advanced in lockstep ----
+//
+// Oscillators with the same sub-step count are packed W to a vector register (W = 2 with SSE2,
+// 4 with AVX) and up to kMaxVectors registers are advanced together: the recurrences are
+// independent, so one oscillator's latency chain (u -> u_next, three dependent flops per step)
+// overlaps the others'. Every lane performs the scalar recurrence's IEEE operations in the same
+// order (no fused multiply-add: this file is compiled with -ffp-contract=off), so the results do
+// not depend on W, on the grouping or on the CPU.
 
-inline Pair pair_max(Pair x, Pair y) { return x > y ? x : y; }
-inline Pair pair_abs(Pair x) { return x < 0.0 ? -x : x; }
+constexpr std::size_t kMaxVectors = 4;
+// Steps per block when peak times are wanted: the loop keeps only the running maximum (as for
+// PSA) and logs each block's maximum and starting state; the one block holding an oscillator's
+// peak is then run again with the time tracked (a blend per sub-point otherwise).
+constexpr std::size_t kBlockSteps = 32;
 
-/// Peak of one oscillator: max |u|, the signed u there, and the index of the first sub-point
-/// reaching it, counted from the first sample (time = index * dt / n).
-struct Peak {
-    double abs_m = 0.0;
-    double signed_m = 0.0;
-    double index = 0.0;
+using V2 = double __attribute__((vector_size(16), may_alias));
+#if defined(__x86_64__) || defined(__i386__)
+#define FREESTAND_RESPONSE_AVX 1
+using V4 = double __attribute__((vector_size(32), may_alias));
+#endif
+
+/// Doubles on a 64-byte boundary, so that packed coefficients load as aligned vectors.
+struct AlignedFree {
+    void operator()(double* p) const { ::operator delete[](p, std::align_val_t{64}); }
+};
+using AlignedDoubles = std::unique_ptr<double[], AlignedFree>;
+
+AlignedDoubles aligned_doubles(std::size_t count) {
+    return AlignedDoubles(
+        static_cast<double*>(::operator new[](count * sizeof(double), std::align_val_t{64})));
+}
+
+/// Up to W x kMaxVectors oscillators with the same sub-step count n: lane l of vector p is
+/// oscillator member[min(p W + l, size - 1)] (the last one repeats to fill the vectors).
+struct Group {
+    std::size_t n = 1;
+    std::size_t vectors = 1;
+    std::vector<std::size_t> member;
+    AlignedDoubles cu;  // coefficient j of sub-point k, vector p, lane l: ((k 4 + j) P + p) W + l
+    AlignedDoubles cv;  // coefficient j of v at the end of the sample:   (j P + p) W + l
 };
 
-/// Running peak of a pair of oscillators. With Track, also the signed value and the sub-point
-/// index of the first maximum (strict >, as a scalar loop would keep it).
-template <bool Track>
-struct PairPeak {
-    Pair abs_m{}, signed_m{}, index{};
-    void update(Pair un, double at) {
-        const Pair m = pair_abs(un);
-        if constexpr (Track) {
-            const auto larger = m > abs_m;
-            signed_m = larger ? un : signed_m;
-            index = larger ? Pair{at, at} : index;
-        }
-        abs_m = pair_max(abs_m, m);
-    }
+enum class Watch {
+    peak,        // the running maximum of |u|
+    blocks,      // the maximum of |u| in each block, and the state at each block's start
+    first_peak,  // also the signed u and the sub-point index where |u| first reaches its maximum
 };
 
-/// Peaks over the record, from rest, of 2P oscillators with the same number of sub-steps n,
-/// advanced in lockstep. The recurrences are independent, so one oscillator's latency chain
-/// (u -> u_next, three dependent flops per sample) overlaps the others'.
-template <std::size_t P, bool Track>
-void run_batch(const Stepper* const* st, const std::vector<double>& a, Peak* peak) {
-    const std::size_t n = st[0]->sub_u.size();
-    // Coefficients packed per pair: cu[(k * 4 + j) * P + p] holds coefficient j of sub-point k
-    // for oscillators 2p and 2p+1; cv[j * P + p] likewise for v at the end of the sample.
-    std::vector<Pair> cu(n * 4 * P);
-    std::array<Pair, 4 * P> cv{};
-    for (std::size_t p = 0; p < P; ++p) {
-        const Stepper& s0 = *st[2 * p];
-        const Stepper& s1 = *st[2 * p + 1];
-        for (std::size_t k = 0; k < n; ++k)
-            for (std::size_t j = 0; j < 4; ++j)
-                cu[(k * 4 + j) * P + p] = Pair{s0.sub_u[k][j], s1.sub_u[k][j]};
-        for (std::size_t j = 0; j < 4; ++j) cv[j * P + p] = Pair{s0.end_v[j], s1.end_v[j]};
+/// One run of the vectors [p0, p0 + P) of a group over the steps [first, end) of a record
+/// (step i advances from sample i - 1 to sample i). State arrays hold P W lanes.
+struct Pass {
+    const double* cu = nullptr;
+    const double* cv = nullptr;
+    std::size_t n = 1;
+    std::size_t stride = 1;  // the group's vector count
+    std::size_t p0 = 0;
+    const double* a = nullptr;
+    std::size_t first = 1, end = 1;
+    double* u = nullptr;  // in and out
+    double* v = nullptr;
+    double* peak = nullptr;         // running max |u|, in and out (peak, first_peak)
+    double* peak_signed = nullptr;  // first_peak
+    double* peak_index = nullptr;   // first_peak: sub-point index counted from the first sample
+    double* block_max = nullptr;    // blocks: P W per block
+    double* block_u = nullptr;
+    double* block_v = nullptr;
+};
+
+// The loops below are always inlined into one function per vector type and count, so that the
+// AVX instance is compiled with AVX throughout. They take no vector by value (a 256-bit vector
+// argument of a function compiled without AVX would change the calling convention).
+
+template <class V, std::size_t W>
+[[gnu::always_inline]] inline void broadcast(V& out, double x) {
+    if constexpr (W == 2)
+        out = V{x, x};
+    else
+        out = V{x, x, x, x};
+}
+
+/// Peak bookkeeping of one vector after a new sub-point value un at sub-point index `at`.
+template <class V, Watch M>
+[[gnu::always_inline]] inline void watch(const V& un, const V& at, V& peak, V& peak_signed,
+                                         V& peak_index) {
+    // |un| as un < 0 ? -un : un, written as the maximum of -un and un (one instruction fewer):
+    // the same value for every un, signed zeros and NaN included.
+    const V neg = -un;
+    const V m = neg > un ? neg : un;
+    if constexpr (M == Watch::first_peak) {
+        const auto larger = m > peak;
+        peak_signed = larger ? un : peak_signed;
+        peak_index = larger ? at : peak_index;
     }
-    std::array<Pair, P> u{}, v{};
-    std::array<PairPeak<Track>, P> pk{};
-    const std::size_t count = a.size();
-    if (n == 1) {
-        // T >= 20 dt: the common case, free of the sub-point loop so everything stays in registers.
-        std::array<Pair, 4 * P> c1{};
-        for (std::size_t j = 0; j < 4 * P; ++j) c1[j] = cu[j];
-        for (std::size_t i = 1; i < count; ++i) {
-            const Pair a0{a[i - 1], a[i - 1]};
-            const Pair a1{a[i], a[i]};
-            for (std::size_t p = 0; p < P; ++p) {
-                const Pair un =
-                    (c1[p] * u[p] + c1[P + p] * v[p]) + (c1[2 * P + p] * a0 + c1[3 * P + p] * a1);
-                v[p] =
-                    (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
-                u[p] = un;
-                pk[p].update(un, static_cast<double>(i));
+    peak = peak > m ? peak : m;
+}
+
+/// Steps [first, end) of the P vectors, each step in N sub-steps (N = 0: s.n, not known at
+/// compile time); c and d hold the u (of N = 1) and end-of-sample v coefficients, s.cu the
+/// packed u coefficients of every sub-point.
+template <class V, std::size_t W, std::size_t P, std::size_t N, Watch M>
+[[gnu::always_inline]] inline void steps(const Pass& s, std::size_t first, std::size_t end,
+                                         const V (&c)[4][P], const V (&d)[4][P], V (&u)[P],
+                                         V (&v)[P], V (&peak)[P], V (&peak_signed)[P],
+                                         V (&peak_index)[P]) {
+    const double* a = s.a;
+    V a0, a1, at{};
+    broadcast<V, W>(a1, a[first - 1]);
+    if constexpr (N == 1) {
+        // T >= 20 dt: the common case, everything in registers.
+        for (std::size_t i = first; i < end; ++i) {
+            a0 = a1;
+            broadcast<V, W>(a1, a[i]);
+            if constexpr (M == Watch::first_peak) broadcast<V, W>(at, static_cast<double>(i));
+            for (std::size_t q = 0; q < P; ++q) {
+                const V un = (c[0][q] * u[q] + c[1][q] * v[q]) + (c[2][q] * a0 + c[3][q] * a1);
+                v[q] = (d[0][q] * u[q] + d[1][q] * v[q]) + (d[2][q] * a0 + d[3][q] * a1);
+                u[q] = un;
+                watch<V, M>(un, at, peak[q], peak_signed[q], peak_index[q]);
             }
         }
-    } else {
-        const Pair* c = cu.data();
-        for (std::size_t i = 1; i < count; ++i) {
-            const Pair a0{a[i - 1], a[i - 1]};
-            const Pair a1{a[i], a[i]};
-            std::array<Pair, P> un{};
-            for (std::size_t k = 0; k < n; ++k) {
-                const Pair* r = c + k * 4 * P;
-                const double at = static_cast<double>((i - 1) * n + k + 1);
-                for (std::size_t p = 0; p < P; ++p) {
-                    un[p] =
-                        (r[p] * u[p] + r[P + p] * v[p]) + (r[2 * P + p] * a0 + r[3 * P + p] * a1);
-                    pk[p].update(un[p], at);
-                }
-            }
-            for (std::size_t p = 0; p < P; ++p) {
-                v[p] =
-                    (cv[p] * u[p] + cv[P + p] * v[p]) + (cv[2 * P + p] * a0 + cv[3 * P + p] * a1);
-                u[p] = un[p];
+        return;
+    }
+    const std::size_t n = N == 0 ? s.n : N;
+    const double* cu = s.cu + s.p0 * W;
+    const std::size_t stride = s.stride * W;
+    for (std::size_t i = first; i < end; ++i) {
+        a0 = a1;
+        broadcast<V, W>(a1, a[i]);
+        V un[P]{};
+        for (std::size_t k = 0; k < n; ++k) {
+            // Coefficient j of sub-point k, vector q at r + j stride + q W.
+            const double* r = cu + k * 4 * stride;
+            if constexpr (M == Watch::first_peak)
+                broadcast<V, W>(at, static_cast<double>((i - 1) * n + k + 1));
+            for (std::size_t q = 0; q < P; ++q) {
+                const V& r0 = *reinterpret_cast<const V*>(r + q * W);
+                const V& r1 = *reinterpret_cast<const V*>(r + stride + q * W);
+                const V& r2 = *reinterpret_cast<const V*>(r + 2 * stride + q * W);
+                const V& r3 = *reinterpret_cast<const V*>(r + 3 * stride + q * W);
+                un[q] = (r0 * u[q] + r1 * v[q]) + (r2 * a0 + r3 * a1);
+                watch<V, M>(un[q], at, peak[q], peak_signed[q], peak_index[q]);
             }
         }
-    }
-    for (std::size_t p = 0; p < P; ++p) {
-        for (std::size_t lane = 0; lane < 2; ++lane)
-            peak[2 * p + lane] = Peak{pk[p].abs_m[lane], pk[p].signed_m[lane], pk[p].index[lane]};
+        for (std::size_t q = 0; q < P; ++q) {
+            v[q] = (d[0][q] * u[q] + d[1][q] * v[q]) + (d[2][q] * a0 + d[3][q] * a1);
+            u[q] = un[q];
+        }
     }
 }
 
-/// Peaks of every stepper: sorts them by sub-step count and runs batches of up to 8 equal
-/// counts together; a batch with an odd count repeats its last oscillator (result dropped).
-template <bool Track>
-std::vector<Peak> peaks_of(const std::vector<Stepper>& steppers, const std::vector<double>& a) {
+template <class V, std::size_t W, std::size_t P>
+[[gnu::always_inline]] inline void load(V (&out)[P], const double* from) {
+    for (std::size_t q = 0; q < P; ++q)
+        for (std::size_t l = 0; l < W; ++l) out[q][l] = from[q * W + l];
+}
+
+template <class V, std::size_t W, std::size_t P>
+[[gnu::always_inline]] inline void store(double* to, const V (&from)[P]) {
+    for (std::size_t q = 0; q < P; ++q)
+        for (std::size_t l = 0; l < W; ++l) to[q * W + l] = from[q][l];
+}
+
+template <class V, std::size_t W, std::size_t P, std::size_t N, Watch M>
+[[gnu::always_inline]] inline void advance(const Pass& s) {
+    V c[4][P], d[4][P];
+    for (std::size_t j = 0; j < 4; ++j)
+        for (std::size_t q = 0; q < P; ++q) {
+            c[j][q] = *reinterpret_cast<const V*>(s.cu + (j * s.stride + s.p0 + q) * W);
+            d[j][q] = *reinterpret_cast<const V*>(s.cv + (j * s.stride + s.p0 + q) * W);
+        }
+    V u[P]{}, v[P]{}, peak[P]{}, peak_signed[P]{}, peak_index[P]{};
+    load<V, W, P>(u, s.u);
+    load<V, W, P>(v, s.v);
+    if constexpr (M == Watch::blocks) {
+        std::size_t offset = 0;
+        for (std::size_t first = s.first; first < s.end; first += kBlockSteps) {
+            store<V, W, P>(s.block_u + offset, u);
+            store<V, W, P>(s.block_v + offset, v);
+            for (std::size_t q = 0; q < P; ++q) broadcast<V, W>(peak[q], 0.0);
+            steps<V, W, P, N, M>(s, first, std::min(s.end, first + kBlockSteps), c, d, u, v, peak,
+                                 peak_signed, peak_index);
+            store<V, W, P>(s.block_max + offset, peak);
+            offset += P * W;
+        }
+    } else {
+        load<V, W, P>(peak, s.peak);
+        if constexpr (M == Watch::first_peak) {
+            load<V, W, P>(peak_signed, s.peak_signed);
+            load<V, W, P>(peak_index, s.peak_index);
+        }
+        steps<V, W, P, N, M>(s, s.first, s.end, c, d, u, v, peak, peak_signed, peak_index);
+        store<V, W, P>(s.peak, peak);
+        if constexpr (M == Watch::first_peak) {
+            store<V, W, P>(s.peak_signed, peak_signed);
+            store<V, W, P>(s.peak_index, peak_index);
+        }
+    }
+    store<V, W, P>(s.u, u);
+    store<V, W, P>(s.v, v);
+}
+
+using Kernel = void (*)(const Pass&);
+
+// Sub-step counts up to this have loops of their own, unrolled (no loop overhead per sub-point);
+// 1-5 cover 0.1-50 Hz at dt = 0.005 s.
+constexpr std::size_t kUnrolled = 5;
+using Unrolled = std::make_index_sequence<kUnrolled + 1>;  // N = 0 (any count), 1 .. kUnrolled
+
+template <std::size_t P, std::size_t N, Watch M>
+void advance_sse2(const Pass& s) {
+    advance<V2, 2, P, N, M>(s);
+}
+
+template <std::size_t P, Watch M, std::size_t... N>
+constexpr std::array<Kernel, kUnrolled + 1> sse2_kernels(std::index_sequence<N...>) {
+    return {advance_sse2<P, N, M>...};
+}
+
+#ifdef FREESTAND_RESPONSE_AVX
+template <std::size_t P, std::size_t N, Watch M>
+__attribute__((target("avx"))) void advance_avx(const Pass& s) {
+    advance<V4, 4, P, N, M>(s);
+}
+
+template <std::size_t P, Watch M, std::size_t... N>
+constexpr std::array<Kernel, kUnrolled + 1> avx_kernels(std::index_sequence<N...>) {
+    return {advance_avx<P, N, M>...};
+}
+#endif
+
+bool cpu_has_avx() {
+#ifdef FREESTAND_RESPONSE_AVX
+    static const bool has = __builtin_cpu_supports("avx");
+    return has;
+#else
+    return false;
+#endif
+}
+
+/// The loop for P vectors of `width` lanes and n sub-steps per step, watching M.
+template <std::size_t P, Watch M>
+Kernel kernel_for(std::size_t width, std::size_t n) {
+    const std::size_t unrolled = n <= kUnrolled ? n : 0;
+#ifdef FREESTAND_RESPONSE_AVX
+    static constexpr std::array<Kernel, kUnrolled + 1> avx = avx_kernels<P, M>(Unrolled{});
+    if (width == 4) return avx[unrolled];
+#endif
+    FREESTAND_EXPECT(width == 2, "vectors of 2 lanes, or of 4 with AVX");
+    static constexpr std::array<Kernel, kUnrolled + 1> sse2 = sse2_kernels<P, M>(Unrolled{});
+    return sse2[unrolled];
+}
+
+template <Watch M>
+Kernel kernel_for(std::size_t width, std::size_t vectors, std::size_t n) {
+    switch (vectors) {
+        case 1:
+            return kernel_for<1, M>(width, n);
+        case 2:
+            return kernel_for<2, M>(width, n);
+        case 3:
+            return kernel_for<3, M>(width, n);
+        default:
+            FREESTAND_EXPECT(vectors == kMaxVectors, "1 to kMaxVectors vectors");
+            return kernel_for<4, M>(width, n);
+    }
+}
+
+/// The group's coefficients packed for vectors of `width` lanes.
+Group pack(const std::vector<Stepper>& steppers, const std::vector<std::size_t>& member,
+           std::size_t width) {
+    Group g;
+    g.member = member;
+    g.n = steppers[member.front()].sub_u.size();
+    g.vectors = (member.size() + width - 1) / width;
+    const std::size_t lanes = g.vectors * width;
+    g.cu = aligned_doubles(g.n * 4 * lanes);
+    g.cv = aligned_doubles(4 * lanes);
+    for (std::size_t lane = 0; lane < lanes; ++lane) {
+        const Stepper& st = steppers[member[std::min(lane, member.size() - 1)]];
+        for (std::size_t j = 0; j < 4; ++j) {
+            for (std::size_t k = 0; k < g.n; ++k) g.cu[(k * 4 + j) * lanes + lane] = st.sub_u[k][j];
+            g.cv[j * lanes + lane] = st.end_v[j];
+        }
+    }
+    return g;
+}
+
+/// Groups of equal sub-step counts, in order of the count, of up to width x kMaxVectors.
+std::vector<Group> groups_of(const std::vector<Stepper>& steppers, std::size_t width) {
     std::vector<std::size_t> order(steppers.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
         return steppers[x].sub_u.size() < steppers[y].sub_u.size();
     });
-    std::vector<Peak> peaks(steppers.size());
-    constexpr std::size_t batch = 8;
+    const std::size_t most = width * kMaxVectors;
+    std::vector<Group> groups;
     std::size_t i = 0;
     while (i < order.size()) {
-        std::size_t len = 1;
-        while (len < batch && i + len < order.size() &&
-               steppers[order[i + len]].sub_u.size() == steppers[order[i]].sub_u.size())
-            ++len;
-        std::array<const Stepper*, batch> group{};
-        for (std::size_t o = 0; o < batch; ++o)
-            group[o] = &steppers[order[i + std::min(o, len - 1)]];
-        std::array<Peak, batch> out{};
-        switch ((len + 1) / 2) {
-            case 4:
-                run_batch<4, Track>(group.data(), a, out.data());
-                break;
-            case 3:
-                run_batch<3, Track>(group.data(), a, out.data());
-                break;
-            case 2:
-                run_batch<2, Track>(group.data(), a, out.data());
-                break;
-            default:
-                run_batch<1, Track>(group.data(), a, out.data());
-                break;
-        }
-        for (std::size_t o = 0; o < len; ++o) peaks[order[i + o]] = out[o];
-        i += len;
+        std::vector<std::size_t> member{order[i]};
+        while (member.size() < most && i + member.size() < order.size() &&
+               steppers[order[i + member.size()]].sub_u.size() == steppers[order[i]].sub_u.size())
+            member.push_back(order[i + member.size()]);
+        i += member.size();
+        groups.push_back(pack(steppers, member, width));
     }
-    return peaks;
+    return groups;
 }
 
-void check_inputs(const core::Record& record, const std::vector<double>& dampings,
-                  const std::vector<double>& frequency_hz) {
+/// Lane storage of one group's run: kMaxVectors x 4 lanes at most.
+using LaneArray = std::array<double, kMaxVectors * 4>;
+
+Pass pass_over(const Group& g, const std::vector<double>& a) {
+    Pass s;
+    s.cu = g.cu.get();
+    s.cv = g.cv.get();
+    s.n = g.n;
+    s.stride = g.vectors;
+    s.a = a.data();
+    s.first = 1;
+    s.end = a.size();
+    return s;
+}
+
+void check_record(const core::Record& record) {
     core::validate(record);
     if (record.accel_mps2.size() < 2)
         throw InputError(SourceLocation{record.source, 0, "samples"},
                          fmt::format("record \"{}\" has {} sample; expected at least 2 (one time "
                                      "step) for a response",
                                      record.name, record.accel_mps2.size()));
+}
+
+void check_dampings(const std::vector<double>& dampings) {
     if (dampings.empty())
         throw InputError(SourceLocation{"", 0, "damping"},
                          "no damping given; expected at least one");
     for (double z : dampings)
         require_in_range(z, 0.0, 1.0, SourceLocation{"", 0, "damping"}, true, false);
+}
+
+void check_frequencies(const std::vector<double>& frequency_hz) {
     if (frequency_hz.empty())
         throw InputError(SourceLocation{"", 0, "frequency_hz"},
                          "no frequency given; expected at least one");
@@ -263,21 +455,176 @@ void check_inputs(const core::Record& record, const std::vector<double>& damping
     }
 }
 
-/// Validated inputs, then one stepper per (damping, frequency), damping-major.
-std::vector<Stepper> steppers_for(const core::Record& record, const std::vector<double>& dampings,
-                                  const std::vector<double>& frequency_hz,
-                                  int min_steps_per_period) {
-    check_inputs(record, dampings, frequency_hz);
-    FREESTAND_EXPECT(min_steps_per_period >= 0, "0 (one step per sample) or more sub-steps per period");
-    std::vector<Stepper> steppers;
-    steppers.reserve(dampings.size() * frequency_hz.size());
-    for (double zeta : dampings)
-        for (double f : frequency_hz)
-            steppers.push_back(make_stepper(f, zeta, record.dt_s, min_steps_per_period));
-    return steppers;
+void check_inputs(const core::Record& record, const std::vector<double>& dampings,
+                  const std::vector<double>& frequency_hz) {
+    check_record(record);
+    check_dampings(dampings);
+    check_frequencies(frequency_hz);
 }
 
+/// Max of two peaks as the vector loops take it (b replaces a only if larger).
+double larger_of(double a, double b) { return a > b ? a : b; }
+
 }  // namespace
+
+struct OscillatorSet::Prepared {
+    double damping = 0.0;
+    double dt_s = 0.0;
+    std::vector<double> frequency_hz;
+    std::vector<std::size_t> substeps;
+    std::size_t width = 2;  // lanes per vector
+    std::vector<Group> groups;
+
+    void check(const core::Record& record) const {
+        check_record(record);
+        if (record.dt_s != dt_s)
+            throw InputError(SourceLocation{record.source, 0, "dt"},
+                             fmt::format("record \"{}\" is sampled at dt {} s; these oscillators "
+                                         "were set up for dt {} s",
+                                         record.name, record.dt_s, dt_s));
+    }
+
+    /// max |u| of every oscillator over the record.
+    std::vector<double> peaks(const std::vector<double>& a) const {
+        std::vector<double> out(frequency_hz.size());
+        for (const Group& g : groups) {
+            LaneArray u{}, v{}, peak{};
+            Pass s = pass_over(g, a);
+            s.u = u.data();
+            s.v = v.data();
+            s.peak = peak.data();
+            kernel_for<Watch::peak>(width, g.vectors, g.n)(s);
+            for (std::size_t lane = 0; lane < g.member.size(); ++lane)
+                out[g.member[lane]] = peak[lane];
+        }
+        return out;
+    }
+
+    /// The signed u at the first sub-point where |u| reaches its maximum, and that sub-point's
+    /// index (0 and 0 if u stays 0), of every oscillator.
+    void first_peaks(const std::vector<double>& a, std::vector<double>& signed_m,
+                     std::vector<double>& index) const {
+        signed_m.assign(frequency_hz.size(), 0.0);
+        index.assign(frequency_hz.size(), 0.0);
+        const std::size_t blocks = (a.size() - 1 + kBlockSteps - 1) / kBlockSteps;
+        // Written by the loops before they are read; sized for the widest group.
+        const std::size_t size = blocks * kMaxVectors * width;
+        const std::unique_ptr<double[]> block_max(new double[size]);
+        const std::unique_ptr<double[]> block_u(new double[size]);
+        const std::unique_ptr<double[]> block_v(new double[size]);
+        for (const Group& g : groups) {
+            const std::size_t lanes = g.vectors * width;
+            LaneArray u{}, v{};
+            Pass s = pass_over(g, a);
+            s.u = u.data();
+            s.v = v.data();
+            s.block_max = block_max.get();
+            s.block_u = block_u.get();
+            s.block_v = block_v.get();
+            kernel_for<Watch::blocks>(width, g.vectors, g.n)(s);
+            // Each lane's peak is in the first block whose maximum equals the overall one.
+            std::array<std::size_t, kMaxVectors * 4> in_block{};
+            for (std::size_t lane = 0; lane < g.member.size(); ++lane) {
+                double most = 0.0;
+                for (std::size_t b = 0; b < blocks; ++b)
+                    most = larger_of(most, block_max[b * lanes + lane]);
+                std::size_t b = 0;
+                while (b + 1 < blocks && block_max[b * lanes + lane] != most) ++b;
+                in_block[lane] = b;
+            }
+            for (std::size_t lane = 0; lane < g.member.size(); ++lane) {
+                const std::size_t p = lane / width;
+                const std::size_t b = in_block[lane];
+                bool done = false;  // an earlier lane of this vector needed the same block
+                for (std::size_t other = p * width; other < lane; ++other)
+                    done = done || in_block[other] == b;
+                if (done) continue;
+                const LaneArray tracked = rerun(g, a, p, b, block_u.get(), block_v.get());
+                for (std::size_t l = lane; l < std::min(g.member.size(), (p + 1) * width); ++l) {
+                    if (in_block[l] != b) continue;
+                    signed_m[g.member[l]] = tracked[l - p * width];
+                    index[g.member[l]] = tracked[width + l - p * width];
+                }
+            }
+        }
+    }
+
+    /// Vector p of the group over block b from its logged starting state, with the peak's
+    /// signed value (lanes [0, width)) and index (lanes [width, 2 width)) tracked from zero.
+    LaneArray rerun(const Group& g, const std::vector<double>& a, std::size_t p, std::size_t b,
+                    const double* block_u, const double* block_v) const {
+        const std::size_t lanes = g.vectors * width;
+        LaneArray u{}, v{}, peak{}, peak_signed{}, peak_index{};
+        std::copy_n(block_u + b * lanes + p * width, width, u.begin());
+        std::copy_n(block_v + b * lanes + p * width, width, v.begin());
+        Pass s = pass_over(g, a);
+        s.p0 = p;
+        s.first = 1 + b * kBlockSteps;
+        s.end = std::min(a.size(), s.first + kBlockSteps);
+        s.u = u.data();
+        s.v = v.data();
+        s.peak = peak.data();
+        s.peak_signed = peak_signed.data();
+        s.peak_index = peak_index.data();
+        kernel_for<1, Watch::first_peak>(width, g.n)(s);
+        LaneArray out{};
+        std::copy_n(peak_signed.begin(), width, out.begin());
+        std::copy_n(peak_index.begin(), width, out.begin() + static_cast<std::ptrdiff_t>(width));
+        return out;
+    }
+};
+
+OscillatorSet::OscillatorSet(double damping, const std::vector<double>& frequency_hz, double dt_s,
+                             const ResponseOptions& options) {
+    check_dampings({damping});
+    check_frequencies(frequency_hz);
+    require_positive(dt_s, SourceLocation{"", 0, "dt_s"});
+    FREESTAND_EXPECT(options.min_steps_per_period >= 0,
+                     "0 (one step per sample) or more sub-steps per period");
+    auto p = std::make_shared<Prepared>();
+    p->damping = damping;
+    p->dt_s = dt_s;
+    p->frequency_hz = frequency_hz;
+    p->width = options.wide_vectors && cpu_has_avx() ? 4 : 2;
+    std::vector<Stepper> steppers;
+    steppers.reserve(frequency_hz.size());
+    for (double f : frequency_hz) {
+        steppers.push_back(make_stepper(f, damping, dt_s, options.min_steps_per_period));
+        p->substeps.push_back(steppers.back().sub_u.size());
+    }
+    p->groups = groups_of(steppers, p->width);
+    prepared_ = std::move(p);
+}
+
+const std::vector<double>& OscillatorSet::frequency_hz() const { return prepared_->frequency_hz; }
+double OscillatorSet::damping() const { return prepared_->damping; }
+double OscillatorSet::dt_s() const { return prepared_->dt_s; }
+
+std::vector<double> OscillatorSet::sd_m(const core::Record& record) const {
+    prepared_->check(record);
+    return prepared_->peaks(record.accel_mps2);
+}
+
+std::vector<double> OscillatorSet::psa_g(const core::Record& record) const {
+    std::vector<double> out = sd_m(record);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const double w = units::hz_to_radps(prepared_->frequency_hz[i]);
+        out[i] = w * w * out[i] / units::g_mps2;
+    }
+    return out;
+}
+
+std::vector<OscillatorPeak> OscillatorSet::peak_responses(const core::Record& record) const {
+    prepared_->check(record);
+    std::vector<double> signed_m, index;
+    prepared_->first_peaks(record.accel_mps2, signed_m, index);
+    std::vector<OscillatorPeak> out(signed_m.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const double h = record.dt_s / static_cast<double>(prepared_->substeps[i]);
+        out[i] = OscillatorPeak{signed_m[i], index[i] * h};
+    }
+    return out;
+}
 
 Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
     if (damping_index >= dampings.size())
@@ -300,24 +647,22 @@ Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
 ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
                                  const std::vector<double>& frequency_hz,
                                  const ResponseOptions& options) {
-    const std::vector<Stepper> steppers =
-        steppers_for(record, dampings, frequency_hz, options.min_steps_per_period);
+    check_inputs(record, dampings, frequency_hz);
     ResponseSpectra out;
     out.frequency_hz = frequency_hz;
     out.dampings = dampings;
-    const std::size_t nf = frequency_hz.size();
-    out.psa_g.assign(dampings.size(), std::vector<double>(nf));
-    out.sd_m.assign(dampings.size(), std::vector<double>(nf));
-    out.psv_mps.assign(dampings.size(), std::vector<double>(nf));
-    const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
-    for (std::size_t d = 0; d < dampings.size(); ++d) {
-        for (std::size_t i = 0; i < nf; ++i) {
-            const double sd = peaks[d * nf + i].abs_m;
-            const double w = steppers[d * nf + i].omega_radps;
-            out.sd_m[d][i] = sd;
-            out.psv_mps[d][i] = w * sd;
-            out.psa_g[d][i] = w * w * sd / units::g_mps2;
+    for (double zeta : dampings) {
+        const std::vector<double> sd =
+            OscillatorSet(zeta, frequency_hz, record.dt_s, options).sd_m(record);
+        std::vector<double> psv(sd.size()), psa(sd.size());
+        for (std::size_t i = 0; i < sd.size(); ++i) {
+            const double w = units::hz_to_radps(frequency_hz[i]);
+            psv[i] = w * sd[i];
+            psa[i] = w * w * sd[i] / units::g_mps2;
         }
+        out.sd_m.push_back(sd);
+        out.psv_mps.push_back(std::move(psv));
+        out.psa_g.push_back(std::move(psa));
     }
     return out;
 }
@@ -329,28 +674,14 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
 
 std::vector<double> psa_g(const core::Record& record, double damping,
                           const std::vector<double>& frequency_hz) {
-    const std::vector<Stepper> steppers =
-        steppers_for(record, {damping}, frequency_hz, ResponseOptions{}.min_steps_per_period);
-    const std::vector<Peak> peaks = peaks_of<false>(steppers, record.accel_mps2);
-    std::vector<double> out(peaks.size());
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        const double w = steppers[i].omega_radps;
-        out[i] = w * w * peaks[i].abs_m / units::g_mps2;
-    }
-    return out;
+    check_inputs(record, {damping}, frequency_hz);
+    return OscillatorSet(damping, frequency_hz, record.dt_s).psa_g(record);
 }
 
 std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,
                                            const std::vector<double>& frequency_hz) {
-    const std::vector<Stepper> steppers =
-        steppers_for(record, {damping}, frequency_hz, ResponseOptions{}.min_steps_per_period);
-    const std::vector<Peak> peaks = peaks_of<true>(steppers, record.accel_mps2);
-    std::vector<OscillatorPeak> out(peaks.size());
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        const double h = record.dt_s / static_cast<double>(steppers[i].sub_u.size());
-        out[i] = OscillatorPeak{peaks[i].signed_m, peaks[i].index * h};
-    }
-    return out;
+    check_inputs(record, {damping}, frequency_hz);
+    return OscillatorSet(damping, frequency_hz, record.dt_s).peak_responses(record);
 }
 
 }  // namespace freestand::spectra

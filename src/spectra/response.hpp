@@ -1,5 +1,6 @@
 #pragma once
 /// Linear SDOF response spectra by the Nigam-Jennings exact recurrence (docs/methods.md s.8).
+#include <memory>
 #include <vector>
 
 #include "core/record.hpp"
@@ -33,6 +34,10 @@ struct ResponseOptions {
     /// T/20, else peaks between samples are missed). 0 turns sub-stepping off: one step per
     /// sample, exact at the samples but blind between them (for benchmarks and tests only).
     int min_steps_per_period = 20;
+    /// Advance four oscillators per 256-bit AVX register where the CPU has AVX (else two per
+    /// 128-bit one). Each oscillator's arithmetic is the same IEEE operations in the same order
+    /// either way, so the results are the same bits; false is for the tests that check so.
+    bool wide_vectors = true;
 };
 
 /// As above with explicit integration controls (benchmarks, convergence tests).
@@ -55,5 +60,33 @@ std::vector<OscillatorPeak> peak_responses(const core::Record& record, double da
 /// PSA only, one damping: the hot path for matching loops.
 std::vector<double> psa_g(const core::Record& record, double damping,
                           const std::vector<double>& frequency_hz);
+
+/// Oscillators of one damping at fixed frequencies for records sampled at dt_s, set up once
+/// (their exact one-sample maps, packed for the vector loops): for loops that take many spectra
+/// of records of one time step. Each call gives the same bits as the free functions above.
+/// Immutable after construction: one set may serve several threads at once.
+class OscillatorSet {
+  public:
+    /// Throws InputError as response_spectra does for a bad damping or frequency, and for a
+    /// dt_s that is not a finite number > 0.
+    OscillatorSet(double damping, const std::vector<double>& frequency_hz, double dt_s,
+                  const ResponseOptions& options = {});
+
+    const std::vector<double>& frequency_hz() const;
+    double damping() const;
+    double dt_s() const;
+
+    /// The record must be sampled at dt_s (InputError otherwise), as validate() accepts, with at
+    /// least 2 samples. Peak relative displacement |u|, m, at each frequency.
+    std::vector<double> sd_m(const core::Record& record) const;
+    /// PSA = omega^2 SD / g at each frequency, g.
+    std::vector<double> psa_g(const core::Record& record) const;
+    /// Signed peak displacement and its time at each frequency.
+    std::vector<OscillatorPeak> peak_responses(const core::Record& record) const;
+
+  private:
+    struct Prepared;
+    std::shared_ptr<const Prepared> prepared_;
+};
 
 }  // namespace freestand::spectra

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+#include <thread>
+#include <vector>
 
 #include "core/measures.hpp"
 #include "core/units.hpp"
@@ -105,4 +107,27 @@ TEST_CASE("baseline correction: a burst already at rest is left as it is", "[mot
     double change = 0.0;
     for (std::size_t i = 0; i < kSamples; ++i) change = std::max(change, std::abs(corrected[i] - a[i]));
     CHECK(change < 1e-3 * peak_abs(a));
+}
+
+TEST_CASE("a shared corrector corrects as a fresh one, bit for bit, from several threads",
+          "[motion][baseline]") {
+    const std::vector<double> raw = drifting_record();
+    std::vector<double> fresh = raw;
+    motion::BaselineCorrector(kSamples, kDt_s).correct(fresh);
+    const auto shared = motion::BaselineCorrector::shared(kSamples, kDt_s);
+    CHECK(motion::BaselineCorrector::shared(kSamples, kDt_s) == shared);
+    // Other lengths in between: the last few are kept, and one in use stays alive.
+    for (std::size_t n : {std::size_t{1001}, std::size_t{2001}, std::size_t{3001},
+                          std::size_t{4002}, std::size_t{4003}})
+        CHECK(motion::BaselineCorrector::shared(n, kDt_s) != nullptr);
+    std::vector<std::vector<double>> out(4, raw);
+    std::vector<std::thread> threads;
+    for (auto& a : out)
+        threads.emplace_back(
+            [&a] { motion::BaselineCorrector::shared(kSamples, kDt_s)->correct(a); });
+    for (auto& t : threads) t.join();
+    std::vector<double> again = raw;
+    shared->correct(again);
+    CHECK(again == fresh);
+    for (const auto& a : out) CHECK(a == fresh);
 }

@@ -2,10 +2,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <complex>
+#include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/measures.hpp"
 #include "core/random.hpp"
+#include "core/units.hpp"
 #include "motion/criteria.hpp"
 #include "motion/faddeeva.hpp"
 #include "motion/internal.hpp"
@@ -57,6 +61,106 @@ TEST_CASE("closed-form wavelet response equals direct convolution", "[motion][wa
                       Approx(brute_response(w, fo, 0.05, t)).margin(1e-6 * scale));
             }
         }
+}
+
+namespace {
+
+// The closed form as first written: one cexp per half integral for exp(i Omega T - T^2/gamma^2)
+// (wavelet.cpp now takes the -Omega one as the conjugate of the +Omega one) and the start state
+// computed inside. Same operations otherwise, so the bits must agree.
+std::complex<double> half_integral_ref(double omega_signed, double omega, double zeta,
+                                       double omega_d, double gamma, double T) {
+    const std::complex<double> i(0.0, 1.0);
+    const std::complex<double> p(zeta * omega, -omega_d);
+    const std::complex<double> q = p + i * omega_signed;
+    const std::complex<double> z = q * (gamma / 2.0) - T / gamma;
+    const double scale = gamma * std::sqrt(std::numbers::pi) / 2.0;
+    const std::complex<double> tail = std::exp(i * omega_signed * T - T * T / (gamma * gamma));
+    if (z.real() >= 0.0) return scale * tail * faddeeva_upper(i * z);
+    const std::complex<double> full = std::exp(-p * T + q * q * (gamma * gamma / 4.0));
+    return scale * (2.0 * full - tail * faddeeva_upper(-i * z));
+}
+
+std::pair<double, double> full_state_ref(const Wavelet& w, double omega, double damping,
+                                         double t_s) {
+    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
+    const double T = t_s - w.centre_s;
+    if (T < -4.0 * w.gamma_s) return {0.0, 0.0};
+    if (T > 4.0 * w.gamma_s && damping * omega * (T - 4.0 * w.gamma_s) > 20.0) return {0.0, 0.0};
+    const std::complex<double> sum =
+        half_integral_ref(w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T) +
+        half_integral_ref(-w.omega_d_radps, omega, damping, omega_d, w.gamma_s, T);
+    const double k = omega * omega / (2.0 * omega_d);
+    return {k * sum.imag(), k * (omega_d * sum.real() - damping * omega * sum.imag())};
+}
+
+double wavelet_response_ref(const Wavelet& w, double f_hz, double damping, double t_s) {
+    const double omega = 2.0 * std::numbers::pi * f_hz;
+    const double full = full_state_ref(w, omega, damping, t_s).first;
+    if (w.start_s() >= 0.0 || t_s < 0.0) return full;
+    const auto [y0, ydot0] = full_state_ref(w, omega, damping, 0.0);
+    const double omega_d = omega * std::sqrt(1.0 - damping * damping);
+    const double decay = std::exp(-damping * omega * t_s);
+    const double free =
+        decay * (y0 * std::cos(omega_d * t_s) +
+                 (ydot0 + damping * omega * y0) / omega_d * std::sin(omega_d * t_s));
+    return full - free;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "wavelet responses keep their bits: conjugate tails, start state and oscillator given once",
+    "[motion][wavelet]") {
+    REQUIRE(units::hz_to_radps(1.7) == 2.0 * std::numbers::pi * 1.7);
+    std::vector<Wavelet> waves;
+    for (double fw : {0.1, 0.3, 2.0, 12.0, 40.0})
+        for (double t_peak : {0.0, 0.37, 5.0, 19.9}) {
+            waves.push_back(Wavelet::for_oscillator(fw, std::max(fw, 3.0), 0.05, t_peak));
+            waves.push_back(Wavelet::at(fw, 0.05, t_peak));
+        }
+    waves.push_back(Wavelet::pulse(6.0, 1.5));  // omega' = 0: its own conjugate
+    waves.push_back(Wavelet::pulse(0.5, 1.5));
+    std::size_t compared = 0;
+    for (const Wavelet& w : waves)
+        for (double fo : {0.1, 0.73, 3.0, 25.0, 50.0}) {
+            const WaveletStart start = wavelet_start(w, fo, 0.05);
+            // t = centre gives T = 0 exactly; t = 0 the start itself.
+            for (double t : {0.0, 0.005, w.centre_s, w.centre_s + 0.01, 2.5, 7.35, 19.995}) {
+                const double ref = wavelet_response_ref(w, fo, 0.05, t);
+                INFO("wavelet at " << w.centre_s << " s, " << w.frequency_hz << " Hz; f " << fo
+                                   << " Hz, t " << t << " s");
+                CHECK(wavelet_response(w, fo, 0.05, t) == ref);
+                CHECK(wavelet_response(w, fo, 0.05, t, start) == ref);
+                CHECK(wavelet_response(w, oscillator_at(fo, 0.05, t), start) == ref);
+                compared += ref != 0.0 ? 1 : 0;
+            }
+        }
+    CHECK(compared > 500);
+}
+
+TEST_CASE("sampling a wavelet with its weighted sums gives the samples and the dot products",
+          "[motion][wavelet]") {
+    const std::size_t samples = 4001;
+    const EndWeights ends = end_weights(samples, 0.005);
+    for (const Wavelet& w :
+         {Wavelet::at(0.1, 0.05, 3.0), Wavelet::at(2.0, 0.05, 10.0), Wavelet::at(30.0, 0.05, 19.99),
+          Wavelet::at(5.0, 0.05, 40.0), Wavelet::pulse(6.7, 1.6)}) {
+        const SampledWavelet plain = sample_wavelet(w, 0.005, samples);
+        SampledWavelet reused = sample_wavelet(Wavelet::at(0.2, 0.05, 1.0), 0.005, samples);
+        const auto [v, d] =
+            sample_wavelet(w, 0.005, samples, reused, ends.velocity, ends.displacement);
+        double v_ref = 0.0, d_ref = 0.0;
+        for (std::size_t k = 0; k < plain.values.size(); ++k) {
+            v_ref += ends.velocity[plain.first + k] * plain.values[k];
+            d_ref += ends.displacement[plain.first + k] * plain.values[k];
+        }
+        INFO("wavelet at " << w.centre_s << " s");
+        CHECK(reused.first == plain.first);
+        CHECK(reused.values == plain.values);
+        CHECK(v == v_ref);
+        CHECK(d == d_ref);
+    }
 }
 
 TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual",

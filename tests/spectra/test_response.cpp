@@ -4,14 +4,15 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
 #include "spectra/response.hpp"
+#include "support/paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace freestand;
@@ -265,4 +266,129 @@ TEST_CASE("response spectra reject bad dampings, frequencies and records", "[spe
     nan.accel_mps2[3] = std::nan("");
     CHECK_THROWS_WITH(spectra::psa_g(nan, 0.05, {1.0}),
                       Catch::Contains("sample 3 is not a finite number"));
+}
+
+namespace {
+
+/// Frequencies 0.1-100 Hz at 30 per decade: at dt = 0.005 s, 1 to 10 sub-steps per sample and
+/// groups of every size the vector loops form.
+std::vector<double> wide_band() {
+    std::vector<double> f;
+    for (int k = 0; k <= 90; ++k) f.push_back(0.1 * std::pow(10.0, k / 30.0));
+    return f;
+}
+
+/// The record's first `samples` samples.
+core::Record first_part(const core::Record& rec, std::size_t samples) {
+    core::Record out = rec;
+    out.accel_mps2.resize(samples);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("an OscillatorSet gives the free functions' bits at either vector width",
+          "[spectra][response]") {
+    const auto f = wide_band();
+    for (const char* name : shipped_records) {
+        // Lengths with a partial last block of peak logging and with a single step.
+        for (std::size_t samples : {std::size_t{0}, std::size_t{1001}, std::size_t{2}}) {
+            const auto full = shipped(name);
+            const auto rec = samples == 0 ? full : first_part(full, samples);
+            const auto psa = spectra::psa_g(rec, 0.05, f);
+            const auto peaks = spectra::peak_responses(rec, 0.05, f);
+            for (bool wide : {true, false}) {
+                spectra::ResponseOptions o;
+                o.wide_vectors = wide;
+                const spectra::OscillatorSet set(0.05, f, rec.dt_s, o);
+                const auto set_psa = set.psa_g(rec);
+                const auto set_sd = set.sd_m(rec);
+                const auto set_peaks = set.peak_responses(rec);
+                const auto rs = spectra::response_spectra(rec, {0.05}, f, o);
+                INFO(name << ", " << rec.size() << " samples, wide vectors " << wide);
+                for (std::size_t i = 0; i < f.size(); ++i) {
+                    INFO("f " << f[i] << " Hz");
+                    CHECK(set_psa[i] == psa[i]);
+                    CHECK(rs.psa_g[0][i] == psa[i]);
+                    CHECK(set_sd[i] == std::abs(peaks[i].sd_m));
+                    CHECK(set_peaks[i].sd_m == peaks[i].sd_m);
+                    CHECK(set_peaks[i].time_s == peaks[i].time_s);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("peak_responses reports the first sub-point reaching the peak", "[spectra][response]") {
+    // The recurrence up to sample k does not depend on later samples, so the record cut after
+    // the peak's sample has the same SD, bit for bit, and the record cut before it a smaller one.
+    const auto rec = shipped(shipped_records[0]);
+    const std::vector<double> f{0.13, 0.9, 2.7, 8.0, 16.0, 45.0};  // 1, 1, 1, 1, 2 and 5 sub-steps
+    const auto peaks = spectra::peak_responses(rec, 0.05, f);
+    const spectra::OscillatorSet set(0.05, f, rec.dt_s);
+    const auto sd = set.sd_m(rec);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        // The peak lies in the step ending at sample k (a sub-point of step k).
+        const auto k = static_cast<std::size_t>(std::ceil(peaks[i].time_s / rec.dt_s - 1e-9));
+        INFO("f " << f[i] << " Hz, peak at " << peaks[i].time_s << " s, sample " << k);
+        REQUIRE(k >= 1);
+        CHECK(std::abs(peaks[i].sd_m) == sd[i]);
+        CHECK(spectra::OscillatorSet(0.05, {f[i]}, rec.dt_s).sd_m(first_part(rec, k + 1))[0] ==
+              sd[i]);
+        CHECK(spectra::OscillatorSet(0.05, {f[i]}, rec.dt_s).sd_m(first_part(rec, k))[0] < sd[i]);
+    }
+}
+
+TEST_CASE("one OscillatorSet serves several threads at once with the same results",
+          "[spectra][response]") {
+    const auto base = shipped(shipped_records[1]);
+    const spectra::OscillatorSet set(0.05, wide_band(), base.dt_s);
+    std::vector<core::Record> records;
+    for (int k = 1; k <= 4; ++k) {
+        core::Record r = base;
+        for (double& a : r.accel_mps2) a *= 0.5 * k;
+        records.push_back(r);
+    }
+    std::vector<std::vector<double>> serial_psa;
+    std::vector<std::vector<spectra::OscillatorPeak>> serial_peaks;
+    for (const auto& r : records) {
+        serial_psa.push_back(set.psa_g(r));
+        serial_peaks.push_back(set.peak_responses(r));
+    }
+    std::vector<std::vector<double>> psa(records.size());
+    std::vector<std::vector<spectra::OscillatorPeak>> peaks(records.size());
+    std::vector<std::thread> threads;
+    for (std::size_t k = 0; k < records.size(); ++k)
+        threads.emplace_back([&, k] {
+            psa[k] = set.psa_g(records[k]);
+            peaks[k] = set.peak_responses(records[k]);
+        });
+    for (auto& t : threads) t.join();
+    for (std::size_t k = 0; k < records.size(); ++k) {
+        CHECK(psa[k] == serial_psa[k]);
+        for (std::size_t i = 0; i < peaks[k].size(); ++i) {
+            CHECK(peaks[k][i].sd_m == serial_peaks[k][i].sd_m);
+            CHECK(peaks[k][i].time_s == serial_peaks[k][i].time_s);
+        }
+    }
+}
+
+TEST_CASE("an OscillatorSet rejects bad set-up values and a record of another time step",
+          "[spectra][response]") {
+    CHECK_THROWS_WITH(spectra::OscillatorSet(1.0, {1.0}, 0.01),
+                      Catch::Contains("damping: value 1 is out of range; expected [0, 1)"));
+    CHECK_THROWS_WITH(spectra::OscillatorSet(0.05, {}, 0.01),
+                      Catch::Contains("frequency_hz: no frequency given"));
+    CHECK_THROWS_WITH(spectra::OscillatorSet(0.05, {1.0}, 0.0),
+                      Catch::Contains("dt_s: value 0 must be a finite number > 0"));
+    const spectra::OscillatorSet set(0.05, {1.0}, 0.01);
+    CHECK(set.dt_s() == 0.01);
+    CHECK(set.damping() == 0.05);
+    CHECK(set.frequency_hz() == std::vector<double>{1.0});
+    const auto rec = make_record(0.02, 10, step_load);
+    CHECK_THROWS_AS(set.psa_g(rec), InputError);
+    CHECK_THROWS_WITH(set.peak_responses(rec),
+                      Catch::Contains("test: dt: record \"synthetic\" is sampled at dt 0.02 s; "
+                                      "these oscillators were set up for dt 0.01 s"));
+    CHECK_THROWS_WITH(set.sd_m(make_record(0.01, 1, step_load)), Catch::Contains("1 sample"));
 }
