@@ -13,7 +13,8 @@
 #include "report/pdf.hpp"
 #include "report/run.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::assess_command {
 namespace {
 
 const char* const usage =
@@ -68,4 +69,4 @@ const CommandRegistrar reg{
     {"assess", "assess a case file: verdict, report.md, report.html, result.json", &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::assess_command

@@ -17,7 +17,8 @@
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::batch_command {
 namespace {
 
 const char* const usage =
@@ -112,4 +113,4 @@ const CommandRegistrar reg{
      &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::batch_command

@@ -14,7 +14,8 @@
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::cache_command {
 namespace {
 
 const char* const usage =
@@ -95,4 +96,4 @@ const CommandRegistrar reg{
     {"cache", "the history cache: info, clear, or fill it with a case's sets", &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::cache_command

@@ -9,7 +9,8 @@
 #include "rocking/checks.hpp"
 #include "sliding/initiation.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::classify_command {
 namespace {
 
 void print_text(const sliding::PeakInitiation& p, double mu, double a_g, double av_g) {
@@ -45,4 +46,4 @@ const CommandRegistrar reg{{"classify", "initiating mode (rest/slide/rock/slide-
                             &run_classify}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::classify_command

@@ -19,7 +19,8 @@
 #include "fragility/serialize.hpp"
 #include "report/pdf.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::fragility_command {
 namespace {
 
 const char* const usage =
@@ -112,4 +113,4 @@ const CommandRegistrar reg{
      &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::fragility_command

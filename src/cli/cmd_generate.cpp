@@ -12,7 +12,8 @@
 #include "core/publish.hpp"
 #include "motion/motion.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::generate_command {
 namespace {
 
 const char* const usage =
@@ -49,4 +50,4 @@ const CommandRegistrar reg{
     {"generate", "spectrum-compatible acceleration histories (h1, h2, v) + match.json", &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::generate_command

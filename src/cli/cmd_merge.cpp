@@ -13,7 +13,8 @@
 #include "core/errors.hpp"
 #include "fragility/serialize.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::merge_command {
 namespace {
 
 const char* const usage = "DIR_OR_SHARD... --out DIR [--json]";
@@ -68,4 +69,4 @@ int run(const std::vector<std::string>& args) {
 const CommandRegistrar reg{{"merge", "combine --shard K/N outputs into the single run's outputs", &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::merge_command

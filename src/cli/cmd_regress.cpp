@@ -16,7 +16,8 @@
 #include "report/validation.hpp"
 #include "validate/validate.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::regress_command {
 namespace {
 
 namespace fs = std::filesystem;
@@ -137,4 +138,4 @@ const CommandRegistrar reg{{"regress",
                             &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::regress_command

@@ -7,7 +7,8 @@
 #include "cli/options.hpp"
 #include "rocking/summary.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::rock_command {
 namespace {
 
 std::string opt_text(const std::optional<double>& v, const std::string& fmt_spec,
@@ -65,4 +66,4 @@ int run_rock(const std::vector<std::string>& args) {
 const CommandRegistrar reg{{"rock", "closed-form rocking and overturning checks of a block", &run_rock}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::rock_command

@@ -16,7 +16,8 @@
 #include "cli/simulate_flexible.hpp"
 #include "dynamics/simulate.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::simulate_command {
 
 namespace {
 
@@ -152,4 +153,4 @@ const CommandRegistrar reg{{"simulate",
 
 }  // namespace
 
-}  // namespace freestand::cli
+}  // namespace freestand::cli::simulate_command

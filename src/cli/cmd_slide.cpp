@@ -7,7 +7,8 @@
 #include "cli/options.hpp"
 #include "sliding/asce.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::slide_command {
 namespace {
 
 std::string text_value(const std::optional<double>& v, const char* unit, const std::string& why) {
@@ -42,4 +43,4 @@ int run_slide(const std::vector<std::string>& args) {
 const CommandRegistrar reg{{"slide", "closed-form sliding estimates (ASCE 4, energy)", &run_slide}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::slide_command

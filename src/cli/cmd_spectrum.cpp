@@ -8,7 +8,8 @@
 #include "core/readers.hpp"
 #include "spectra/response.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::spectrum_command {
 namespace {
 
 int run_spectrum(const std::vector<std::string>& args) {
@@ -34,4 +35,4 @@ const CommandRegistrar reg{
     {"spectrum", "response spectrum (PSA, SD, PSV) of an acceleration record", &run_spectrum}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::spectrum_command

@@ -12,7 +12,8 @@
 #include "cli/spectra_cli.hpp"
 #include "spectra/design.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::target_command {
 namespace {
 
 /// Where each design's formulas come from (written into --output files).
@@ -91,4 +92,4 @@ const CommandRegistrar reg{{"target",
                             &run_target}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::target_command

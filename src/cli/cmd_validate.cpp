@@ -12,7 +12,8 @@
 #include "report/validation.hpp"
 #include "validate/validate.hpp"
 
-namespace freestand::cli {
+// The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
+namespace freestand::cli::validate_command {
 namespace {
 
 namespace fs = std::filesystem;
@@ -57,4 +58,4 @@ const CommandRegistrar reg{
     {"validate", "run the thesis's tests and worked examples against freestand's models", &run}};
 
 }  // namespace
-}  // namespace freestand::cli
+}  // namespace freestand::cli::validate_command

@@ -12,16 +12,15 @@ namespace {
 using nlohmann::ordered_json;
 using fragility::all_events;
 
-ordered_json num(double v) { return std::isfinite(v) ? ordered_json(round10(v)) : ordered_json(nullptr); }
 
 ordered_json fit_json(const fragility::EventFit& f) {
     if (!f.fit) return nullptr;
     const fragility::Fit& x = *f.fit;
-    return {{"theta_m_g", num(x.theta_m_g)},     {"beta", num(x.beta)},
-            {"pga_1pct_g", num(x.pga_1pct_g)},   {"pga_5pct_g", num(x.pga_5pct_g)},
-            {"pga_50pct_g", num(x.pga_50pct_g)}, {"log_likelihood", num(x.log_likelihood)},
-            {"chi2", num(x.chi2)},               {"dof", x.dof},
-            {"p_value", x.p_value ? num(*x.p_value) : ordered_json(nullptr)}};
+    return {{"theta_m_g", json_number(x.theta_m_g)},     {"beta", json_number(x.beta)},
+            {"pga_1pct_g", json_number(x.pga_1pct_g)},   {"pga_5pct_g", json_number(x.pga_5pct_g)},
+            {"pga_50pct_g", json_number(x.pga_50pct_g)}, {"log_likelihood", json_number(x.log_likelihood)},
+            {"chi2", json_number(x.chi2)},               {"dof", x.dof},
+            {"p_value", x.p_value ? json_number(*x.p_value) : ordered_json(nullptr)}};
 }
 
 }  // namespace
@@ -53,9 +52,9 @@ ordered_json fragility_body_json(const fragility::Result& r) {
         for (std::size_t e = 0; e < all_events.size(); ++e) {
             const fragility::Count& c = l.events[e];
             events[fragility::event_name(all_events[e])] = {
-                {"k", c.k}, {"p", num(c.p)}, {"ci", {num(c.ci[0]), num(c.ci[1])}}};
+                {"k", c.k}, {"p", json_number(c.p)}, {"ci", {json_number(c.ci[0]), json_number(c.ci[1])}}};
         }
-        levels.push_back({{"pga_g", num(l.pga_g)}, {"n", l.n}, {"events", events}});
+        levels.push_back({{"pga_g", json_number(l.pga_g)}, {"n", l.n}, {"events", events}});
     }
     j["levels"] = levels;
     ordered_json fits, notes;
@@ -77,8 +76,8 @@ ordered_json fragility_body_json(const fragility::Result& r) {
                    {"motions", m.motion_source},
                    {"mu_s", m.mu_s_law},
                    {"restitution", m.restitution_law},
-                   {"allowable_slide_m", num(m.allowable_slide_m)},
-                   {"required_overturn_fs", num(m.required_overturn_fs)},
+                   {"allowable_slide_m", json_number(m.allowable_slide_m)},
+                   {"required_overturn_fs", json_number(m.required_overturn_fs)},
                    {"events", events},
                    {"methods", "docs/methods.md s.9"}};
     ordered_json refs = ordered_json::array();

@@ -25,12 +25,14 @@ double round10(double v) {
     return std::stod(fmt::format("{:.10g}", v));
 }
 
-namespace {
-
-ordered_json num(double v) {
+ordered_json json_number(double v) {
     if (!std::isfinite(v)) return nullptr;
     return round10(v);
 }
+
+namespace {
+
+ordered_json num(double v) { return json_number(v); }
 ordered_json num(const std::optional<double>& v) { return v ? num(*v) : ordered_json(nullptr); }
 
 ordered_json text_or_null(const std::string& s) {

@@ -49,4 +49,7 @@ nlohmann::ordered_json to_json(const assess::AssessmentResult& r, const Stamp& s
 /// Rounds to 10 significant digits (the JSON precision).
 double round10(double v);
 
+/// A JSON number rounded by round10; null when not finite.
+nlohmann::ordered_json json_number(double v);
+
 }  // namespace freestand::report

@@ -225,12 +225,6 @@ std::string governing_bound(const LevelResult& l) {
     return none;
 }
 
-mstch::array text_list(const std::vector<std::string>& items) {
-    mstch::array out;
-    for (const std::string& s : items) out.push_back(mstch::map{{"text", s}});
-    return out;
-}
-
 // What the time-history table checks and against which target, with the sources.
 std::string history_basis(const Site& site) {
     const std::string target =

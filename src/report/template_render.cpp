@@ -27,6 +27,12 @@ mstch::array stamp_input_items(const Stamp& stamp) {
     return out;
 }
 
+mstch::array text_list(const std::vector<std::string>& items) {
+    mstch::array out;
+    for (const std::string& s : items) out.push_back(mstch::map{{"text", s}});
+    return out;
+}
+
 mstch::array reference_items(const std::vector<Reference>& refs) {
     mstch::array out;
     for (const Reference& r : refs) out.push_back(mstch::map{{"key", r.key}, {"text", r.text}});

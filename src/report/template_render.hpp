@@ -28,6 +28,9 @@ std::string render_html(const std::string& tpl, const mstch::map& ctx,
 /// [{"file", "sha256"}] of the stamp's other inputs.
 mstch::array stamp_input_items(const Stamp& stamp);
 
+/// [{"text"}] of the lines, in order.
+mstch::array text_list(const std::vector<std::string>& items);
+
 /// [{"key", "text"}] of the references.
 mstch::array reference_items(const std::vector<Reference>& refs);
 

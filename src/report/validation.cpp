@@ -103,12 +103,6 @@ mstch::map row_context(const validate::Row& r) {
                       {"sources", sources_text(r.sources)}};
 }
 
-mstch::array text_list(const std::vector<std::string>& items) {
-    mstch::array out;
-    for (const std::string& t : items) out.push_back(mstch::map{{"text", t}});
-    return out;
-}
-
 mstch::map context(const validate::Validation& v, const Stamp& stamp) {
     mstch::array groups;
     for (const validate::Group& g : v.groups) {
