@@ -8,6 +8,7 @@
 // Each figure is the least of `repeats` runs (default 3); the rendered result.json of every run
 // is compared with the first, byte for byte. Wall times on a shared virtual machine drift:
 // read the ratios of one quiet run.
+// Usage: bench_assess [REPEATS] [CASE]  (another case, e.g. the glove box with more histories).
 #include <unistd.h>
 
 #include <algorithm>
@@ -56,7 +57,8 @@ Timing time_runs(int repeats, const std::string& reference, const std::function<
 
 int main(int argc, char** argv) {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
-    const fs::path case_file = source_dir() / "cases" / "glovebox-single.toml";
+    const fs::path case_file =
+        argc > 2 ? fs::path(argv[2]) : source_dir() / "cases" / "glovebox-single.toml";
     const fs::path cache_dir =
         fs::temp_directory_path() / ("freestand-bench-cache-" + std::to_string(::getpid()));
     const core::ContentStore cache(cache_dir);
@@ -64,8 +66,8 @@ int main(int argc, char** argv) {
         return report::run_case(case_file, std::nullopt, "bench", s).rendered.json;
     };
     const std::string reference = run(assess::RunSettings(1));
-    std::printf("glove box on PVC (cases/glovebox-single.toml): assess, least of %d runs, %d cores\n",
-                repeats, core::thread_count(0));
+    std::printf("%s: assess, least of %d runs, %d cores\n", case_file.string().c_str(), repeats,
+                core::thread_count(0));
     std::printf("   %-34s %9s %9s %s\n", "run", "wall s", "ratio", "result.json");
     const Timing one = time_runs(repeats, reference, [&] { return run(assess::RunSettings(1)); });
     const Timing two = time_runs(repeats, reference, [&] { return run(assess::RunSettings(2)); });

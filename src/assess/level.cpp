@@ -353,11 +353,13 @@ bool same_contact(const ContactBound& a, const ContactBound& b) {
 // A history's summaries at the sliding bound and at the rocking bound.
 using BoundRuns = std::pair<dynamics::Summary, dynamics::Summary>;
 
-// Every history of the bank through `one` (history k and its excitation in direction d at
-// pga_g) on the run's threads, in history order whatever thread ran which.
+// Every history of the bank through `one` (history k at bound 0 or 1, its excitation in
+// direction d at pga_g) on the run's threads, in history order whatever thread ran which. Each
+// (history, bound) is a work item of its own, so 2N runs balance over the threads where N
+// histories alone would leave one idle. With one bound, the rocking slot repeats the sliding run.
 std::vector<BoundRuns> run_histories(
-    HistoryBank& bank, Direction d, double pga_g,
-    const std::function<BoundRuns(std::size_t, const dynamics::Excitation&)>& one) {
+    HistoryBank& bank, Direction d, double pga_g, int bounds,
+    const std::function<dynamics::Summary(std::size_t, int, const dynamics::Excitation&)>& one) {
     const auto& sets = bank.sets();
     const RunSettings& settings = bank.run();
     std::vector<BoundRuns> runs(sets.size());
@@ -369,9 +371,19 @@ std::vector<BoundRuns> run_histories(
             settings.progress(step, done, total);
         };
     }
+    const auto n_bounds = static_cast<std::size_t>(bounds);
     core::parallel_for(
-        sets.size(), settings.threads,
-        [&](std::size_t k) { runs[k] = one(k, excitation(sets[k], d, pga_g)); }, progress);
+        sets.size() * n_bounds, settings.threads,
+        [&](std::size_t item) {
+            const std::size_t k = item / n_bounds;
+            const int bound = static_cast<int>(item % n_bounds);
+            const dynamics::Summary s = one(k, bound, excitation(sets[k], d, pga_g));
+            (bound == 0 ? runs[k].first : runs[k].second) = s;
+        },
+        progress);
+    if (bounds == 1) {
+        for (BoundRuns& r : runs) r.second = r.first;
+    }
     return runs;
 }
 
@@ -396,13 +408,11 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
                              const dynamics::Excitation& ex) {
         return run ? run(k, bound, m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
     };
-    const std::vector<BoundRuns> runs = run_histories(
-        bank, d, pga_g, [&](std::size_t k, const dynamics::Excitation& ex) {
-            BoundRuns r;
-            r.first = run_one(k, 0, slide_model, ex);
-            r.second = sim.bounds_differ ? run_one(k, 1, rock_model, ex) : r.first;
-            return r;
-        });
+    const std::vector<BoundRuns> runs =
+        run_histories(bank, d, pga_g, sim.bounds_differ ? 2 : 1,
+                      [&](std::size_t k, int bound, const dynamics::Excitation& ex) {
+                          return run_one(k, bound, bound == 0 ? slide_model : rock_model, ex);
+                      });
     std::vector<double> slide, residual, rock_over_alpha, rock_rad, amplification;
     double worst = -1.0;
     for (std::size_t k = 0; k < sets.size(); ++k) {
