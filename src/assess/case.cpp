@@ -55,7 +55,8 @@ const std::vector<std::string> site_keys{
     "target_v_file", "pga_g",           "vertical_ratio",  "sliding_damping", "g_mps2",
     "energy_highpass_hz", "energy_table_displacement_m", "va_range_mps_per_g", "adv2_range",
     "da_max_m_per_g"};
-const std::vector<std::string> option_keys{"histories_per_level", "seed", "seed_records",
+const std::vector<std::string> option_keys{"histories_per_level", "max_histories_per_level",
+                                           "seed", "seed_records",
                                            "simulate", "fragility", "fragility_pga_g", "fragility_samples"};
 
 const toml::table* subtable(const toml::table& root, const std::string& name,
@@ -163,9 +164,16 @@ std::optional<std::array<double, 2>> read_bounds(TableReader& r, const std::stri
 
 // Where the friction bounds come from: the case's range (which must hold the nominal value), or
 // docs/methods.md s.7's default around the single measurement, stated as an assumption.
-void read_friction_bounds(TableReader& r, BaseContact& base, bool mu_given,
+void read_friction_bounds(TableReader& r, BaseContact& base, bool mu_given, bool table_range,
                           std::vector<std::string>& assumptions) {
     const auto range = read_bounds(r, "mu_s_range", Range{0.0, 2.0});
+    if (!range && table_range) {
+        assumptions.push_back(fmt::format(
+            "Friction bounds of {}: mu_s in [{:.3g}, {:.3g}] ({}); sliding demands use the lower "
+            "bound, rocking, overturning and the classification the upper.",
+            base.material, base.mu_s_range[0], base.mu_s_range[1], base.mu_s_range_source));
+        return;
+    }
     if (!range) {
         base.mu_s_range = default_mu_s_range(base.mu_s);
         base.mu_s_range_source = "default 0.8-1.2 x mu_s (docs/methods.md s.7)";
@@ -211,7 +219,7 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
         if (named) c.base.source += "; mu_s from the case file";
         c.base.mu_s = *mu;
     }
-    read_friction_bounds(r, c.base, mu.has_value() || named, assumptions);
+    read_friction_bounds(r, c.base, mu.has_value() || named, named && !mu, assumptions);
     const auto mu_k = r.number("mu_k", Range{0.0, c.base.mu_s});
     c.base.mu_k = mu_k.value_or(c.base.mu_s);
     if (!mu_k) assumptions.push_back("mu_k not given: taken equal to mu_s.");
@@ -496,7 +504,12 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
 Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
     Options o;
     o.histories_per_level = static_cast<int>(
-        r.integer("histories_per_level", 1, max_histories_per_level).value_or(7));
+        r.integer("histories_per_level", 1, histories_limit).value_or(o.histories_per_level));
+    // docs/methods.md s.6 step 4: an unsettled level gets histories_per_level more sets, up to
+    // this cap.
+    o.max_histories_per_level = static_cast<int>(
+        r.integer("max_histories_per_level", o.histories_per_level, histories_limit)
+            .value_or(std::max(o.histories_per_level, o.max_histories_per_level)));
     o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, max_seed).value_or(1));
     if (const auto records = r.strings("seed_records")) {
         for (const std::string& rec : *records) {
@@ -563,7 +576,9 @@ std::array<double, 2> default_mu_s_range(double mu_s) { return {0.8 * mu_s, 1.2 
 Case with_base_material(Case c, const std::string& material) {
     const Material* m = find_material(material);
     if (m == nullptr) throw std::invalid_argument("with_base_material: unknown " + material);
-    c.component.base = material_contact(*m);
+    // A case's own bounds for its own base stay (docs/methods.md s.6 step 7).
+    const Material* own = find_material(c.component.base.material);
+    if (own != m) c.component.base = material_contact(*m);
     return c;
 }
 

@@ -140,7 +140,10 @@ struct FragilitySection {
 
 /// Run options (issue 6, [options]).
 struct Options {
-    int histories_per_level = 7;  ///< docs/methods.md s.6 step 5: >= 7 lets the mean govern
+    /// Sets per simulated level, and the batch an unsettled level grows by (docs/methods.md s.6
+    /// steps 3-4: percentiles of about 30 sets, ASCE 4-16 and ASCE 43-05 practice).
+    int histories_per_level = 30;
+    int max_histories_per_level = 120;  ///< the cap an unsettled level grows to
     std::uint64_t seed = 1;
     std::vector<std::filesystem::path> seed_records;  ///< resolved against the case's folder
     SimulatePolicy simulate = SimulatePolicy::automatic;
@@ -172,7 +175,8 @@ struct Case {
 };
 
 /// The case with its base replaced by material m's whole property set (friction bounds, mu_k =
-/// mu_s, tabulated restitution), exactly as a case file naming only `base_material = m` reads.
+/// mu_s, tabulated restitution), exactly as a case file naming only `base_material = m` reads;
+/// unchanged when m is the case's own material, whose bounds the case may have given.
 Case with_base_material(Case c, const std::string& material);
 
 /// Why a set of levels cannot be assessed (a level whose vertical PGA, pga_g x vertical_ratio,

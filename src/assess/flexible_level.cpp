@@ -51,14 +51,15 @@ void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, Hi
                              bool rocking_mode) {
     const Direction d = level.direction;
     const dynamics::FlexibleModel probe = flexible_model(c.component, level.bounds.rocking, d);
-    // Slot 2k + bound of history k's run at a bound (the rocking bound's only when they differ).
-    std::vector<dynamics::FlexibleSummary> runs(2 * bank.sets().size());
+    // Slot bound_slots k + slot of history k's run at a bound slot (level.hpp HistoryRunner).
+    constexpr auto slots = static_cast<std::size_t>(bound_slots);
+    std::vector<dynamics::FlexibleSummary> runs(slots * bank.sets().size());
     std::vector<char> ran(runs.size(), 0);
     const HistoryRunner run = [&](std::size_t k, int bound, const dynamics::BlockModel& rigid,
                                   const dynamics::Excitation& ex, const dynamics::Options& opt) {
         dynamics::FlexibleModel m = probe;
         m.rigid = rigid;
-        const std::size_t slot = 2 * k + static_cast<std::size_t>(bound);
+        const std::size_t slot = slots * k + static_cast<std::size_t>(bound);
         runs[slot] = dynamics::simulate_flexible(m, ex, opt).summary;
         ran[slot] = 1;
         return runs[slot].base;
@@ -66,10 +67,10 @@ void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, Hi
     FlexibleSimulation out;
     out.sim = simulate_level(c, level.bounds, d, pga_g, bank, rocking_mode, run);
     std::vector<double> modal, accel;
-    for (std::size_t k = 0; k + 2 <= runs.size(); k += 2) {
+    for (std::size_t k = 0; k + slots <= runs.size(); k += slots) {
         double q = 0.0, a = 0.0;
         bool up = false;
-        for (std::size_t j = k; j < k + 2; ++j) {
+        for (std::size_t j = k; j < k + slots; ++j) {
             if (!ran[j]) continue;
             q = std::max(q, runs[j].modal_max_m);
             a = std::max(a, runs[j].modal_accel_max_g);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "assess/history_cache.hpp"
 #include "core/errors.hpp"
@@ -71,9 +72,9 @@ motion::TargetSet unit_targets(const Site& site) {
 // A set that fails SRP 3.7.1 or the realism checks is not used: the assessment stops and says
 // which history, which component and why (issue 13 s.1: a history that cannot meet them is
 // rejected with the reason).
-void reject_failing(const Case& c, const std::vector<HistorySet>& sets) {
+void reject_failing(const Case& c, const std::vector<HistorySet>& sets, std::size_t first) {
     const std::array<const char*, 3> names{"h1", "h2", "v"};
-    for (std::size_t k = 0; k < sets.size(); ++k) {
+    for (std::size_t k = first; k < sets.size(); ++k) {
         if (sets[k].passed) continue;
         std::string why;
         for (std::size_t j = 0; j < sets[k].acceptance.size() && j < names.size(); ++j) {
@@ -153,54 +154,77 @@ Obtained obtain(const Case& c, const motion::TargetSet& targets, std::size_t k,
 
 }  // namespace
 
-HistoryBank::HistoryBank(const Case& c, RunSettings run) : case_(&c), run_(std::move(run)) {}
+HistoryBank::HistoryBank(const Case& c, RunSettings run)
+    : case_(&c),
+      run_(std::move(run)),
+      active_(static_cast<std::size_t>(std::max(1, c.options.histories_per_level))) {}
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
     // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.
     return core::splitmix64(case_seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k));
 }
 
-const std::vector<HistorySet>& HistoryBank::sets() {
-    if (generated_) return sets_;
+std::size_t HistoryBank::max_sets() const {
     const Options& opt = case_->options;
-    const std::size_t n = static_cast<std::size_t>(opt.histories_per_level);
-    if (!opt.seed_records.empty() && opt.seed_records.size() != 3 * n) {
+    if (!opt.seed_records.empty()) return opt.seed_records.size() / 3;
+    return static_cast<std::size_t>(std::max(opt.histories_per_level, opt.max_histories_per_level));
+}
+
+void HistoryBank::use(std::size_t n) {
+    if (n == 0 || n > max_sets())
+        throw std::invalid_argument(fmt::format("HistoryBank::use({}): expected 1 to {}", n, max_sets()));
+    active_ = n;
+}
+
+std::span<const HistorySet> HistoryBank::sets() {
+    const Options& opt = case_->options;
+    if (!opt.seed_records.empty() &&
+        opt.seed_records.size() != 3 * static_cast<std::size_t>(opt.histories_per_level)) {
+        const std::size_t n = static_cast<std::size_t>(opt.histories_per_level);
         throw InputError(SourceLocation{case_->file, 0, "options.seed_records"},
                          fmt::format("expected 3 records (h1, h2, v) per history, {} in all for "
                                      "histories_per_level = {}, got {}",
                                      3 * n, n, opt.seed_records.size()));
     }
+    if (sets_.size() < active_) extend(active_);
+    return {sets_.data(), active_};
+}
+
+// Sets are made by their index alone (seed, k), so a bank extended to n holds the sets a bank
+// asked for n at once would hold.
+void HistoryBank::extend(std::size_t n) {
+    const std::size_t first = sets_.size();
     const motion::TargetSet targets = unit_targets(case_->site);
     // The sets are independent (own seeds): each lands in its own slot whatever the thread
     // that made it (the motion stage serialises FFTW planning).
-    std::vector<Obtained> got(n);
+    std::vector<Obtained> got(n - first);
     core::parallel_for(
-        n, run_.threads, [&](std::size_t k) { got[k] = obtain(*case_, targets, k, run_.cache); },
+        got.size(), run_.threads,
+        [&](std::size_t i) { got[i] = obtain(*case_, targets, first + i, run_.cache); },
         run_.progress ? [&](std::size_t done, std::size_t total) {
             run_.progress("history sets", done, total);
         } : core::ProgressCallback{});
-    sets_.resize(n);
-    cache_hits_ = generated_sets_ = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-        sets_[k] = std::move(got[k].set);
-        (got[k].from_cache ? cache_hits_ : generated_sets_) += 1;
+    std::size_t generated_now = 0;
+    for (Obtained& o : got) {
+        (o.from_cache ? cache_hits_ : generated_now) += 1;
+        sets_.push_back(std::move(o.set));
     }
-    if (run_.cache != nullptr && generated_sets_ > 0) run_.cache->prune();
-    reject_failing(*case_, sets_);
-    measure_sets();
-    generated_ = true;
-    return sets_;
+    generated_sets_ += generated_now;
+    if (run_.cache != nullptr && generated_now > 0) run_.cache->prune();
+    reject_failing(*case_, sets_, first);
+    measure_sets(first);
 }
 
 // The energy method's DeltaD and the PGV of each set at 1 g (both linear in the level).
-void HistoryBank::measure_sets() {
+void HistoryBank::measure_sets(std::size_t first) {
     const std::size_t n = sets_.size();
-    unit_hp_disp_x_m_.assign(n, 0.0);
-    unit_hp_disp_y_m_.assign(n, 0.0);
-    unit_pgv_x_mps_.assign(n, 0.0);
-    unit_pgv_y_mps_.assign(n, 0.0);
+    unit_hp_disp_x_m_.resize(n, 0.0);
+    unit_hp_disp_y_m_.resize(n, 0.0);
+    unit_pgv_x_mps_.resize(n, 0.0);
+    unit_pgv_y_mps_.resize(n, 0.0);
     const double corner_hz = case_->site.energy_highpass_hz;
-    core::parallel_for(n, run_.threads, [&](std::size_t k) {
+    core::parallel_for(n - first, run_.threads, [&](std::size_t i) {
+        const std::size_t k = first + i;
         const HistorySet& s = sets_[k];
         unit_hp_disp_x_m_[k] = sliding::highpass_peak_displacement_m(s.h1, corner_hz);
         unit_hp_disp_y_m_[k] = sliding::highpass_peak_displacement_m(s.h2, corner_hz);
@@ -216,22 +240,22 @@ core::Record HistoryBank::scaled(const core::Record& unit, double pga_g) {
 }
 
 namespace {
-// Peak measures are linear in the scale of the record.
-double scaled_mean(const std::vector<double>& unit, double pga_g) {
+// Peak measures are linear in the scale of the record: the mean of the first n sets' values.
+double scaled_mean(const std::vector<double>& unit, std::size_t n, double pga_g) {
     double sum = 0.0;
-    for (double v : unit) sum += v;
-    return pga_g * sum / static_cast<double>(unit.size());
+    for (std::size_t k = 0; k < n; ++k) sum += unit[k];
+    return pga_g * sum / static_cast<double>(n);
 }
 }  // namespace
 
 double HistoryBank::mean_highpass_displacement_m(Direction d, double pga_g) {
-    sets();
-    return scaled_mean(d == Direction::x ? unit_hp_disp_x_m_ : unit_hp_disp_y_m_, pga_g);
+    const std::size_t n = sets().size();
+    return scaled_mean(d == Direction::x ? unit_hp_disp_x_m_ : unit_hp_disp_y_m_, n, pga_g);
 }
 
 double HistoryBank::mean_pgv_mps(Direction d, double pga_g) {
-    sets();
-    return scaled_mean(d == Direction::x ? unit_pgv_x_mps_ : unit_pgv_y_mps_, pga_g);
+    const std::size_t n = sets().size();
+    return scaled_mean(d == Direction::x ? unit_pgv_x_mps_ : unit_pgv_y_mps_, n, pga_g);
 }
 
 }  // namespace freestand::assess

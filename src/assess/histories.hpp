@@ -5,6 +5,7 @@
 /// same ratios (response spectra are linear in the input). Sets are generated on every core
 /// and read from the history cache when it holds them (assess/history_cache.hpp).
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,10 +37,17 @@ class HistoryBank {
     /// The run's settings: the simulations of the levels use its threads too.
     const RunSettings& run() const { return run_; }
 
-    /// The options.histories_per_level sets at 1 g, generating them on first call. Throws
-    /// InputError when options.seed_records is not three records (h1, h2, v) per history.
-    const std::vector<HistorySet>& sets();
-    bool generated() const { return generated_; }
+    /// The sets in use at 1 g (the first options.histories_per_level until use() says
+    /// otherwise), generating those not yet made. Throws InputError when options.seed_records
+    /// is not three records (h1, h2, v) per history.
+    std::span<const HistorySet> sets();
+    /// Puts the first n sets in use (1 <= n <= max_sets()); they are made on the next sets().
+    void use(std::size_t n);
+    /// The most sets a level may use: options.max_histories_per_level, or the seed records'.
+    std::size_t max_sets() const;
+    /// Every set made so far (at least those in use once sets() ran), in index order.
+    const std::vector<HistorySet>& made() const { return sets_; }
+    bool generated() const { return !sets_.empty(); }
 
     /// The horizontal record of a direction scaled to pga_g, in m/s^2.
     static core::Record scaled(const core::Record& unit, double pga_g);
@@ -53,16 +61,17 @@ class HistoryBank {
     /// unrelated streams).
     static std::uint64_t history_seed(std::uint64_t case_seed, int k);
 
-    /// Sets read from the cache, and sets generated, by sets().
+    /// Sets read from the cache, and sets generated, by sets() so far.
     std::size_t cache_hits() const { return cache_hits_; }
     std::size_t generated_sets() const { return generated_sets_; }
 
   private:
-    void measure_sets();
+    void extend(std::size_t n);
+    void measure_sets(std::size_t first);
 
     const Case* case_;
     RunSettings run_;
-    bool generated_ = false;
+    std::size_t active_;
     std::size_t cache_hits_ = 0;
     std::size_t generated_sets_ = 0;
     std::vector<HistorySet> sets_;

@@ -76,7 +76,7 @@ TunnelDirection tunnel_direction(const Case& c, Direction d, double pga_g, Histo
 
 std::string level_text(const TunnelLevel& t, const Tunnel& tunnel) {
     const TunnelDirection& g = t.directions[t.governing_direction];
-    const std::string stat = t.mean_governs ? "mean" : "maximum";
+    const std::string stat = "84th-percentile";
     if (g.overturned > 0)
         return fmt::format("a unit overturned in {} of {} histories (direction {}): the tunnel "
                            "is lost",
@@ -124,7 +124,6 @@ TunnelLevel tunnel_level(const Case& c, double pga_g, HistoryBank& bank) {
     TunnelLevel t;
     t.pga_g = pga_g;
     t.histories = static_cast<int>(bank.sets().size());
-    t.mean_governs = t.histories >= min_histories_for_mean;
     t.model_reason =
         "the units stand free and are not braced: each slides and rocks as its own rigid block, "
         "and the tunnel sees their relative displacement at its height";
@@ -133,7 +132,7 @@ TunnelLevel tunnel_level(const Case& c, double pga_g, HistoryBank& bank) {
         const Direction d = i == 0 ? Direction::x : Direction::y;
         t.directions[i] = tunnel_direction(c, d, pga_g, bank);
         const TunnelDirection& td = t.directions[i];
-        const double demand = t.mean_governs ? td.relative_m.mean : td.relative_m.max;
+        const double demand = td.relative_m.p84;
         const double score = td.overturned > 0 ? 1e9 : demand;
         if (score > worst) {
             worst = score;

@@ -33,7 +33,6 @@ struct TunnelDirection {
 struct TunnelLevel {
     double pga_g = 0.0;
     int histories = 0;
-    bool mean_governs = false;  ///< >= 7 histories: the mean governs, else the maximum
     std::array<TunnelDirection, 2> directions;  ///< x, y
     std::size_t governing_direction = 0;        ///< index into directions
     double demand_m = 0.0;  ///< governing statistic of the governing direction, m

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "assess/flexible_level.hpp"
 #include "assess/verdict.hpp"
@@ -88,7 +89,7 @@ std::optional<double> energy_delta_d(const Case& c, Direction d, const LevelDema
     out.delta_d_source = fmt::format(
         "mean peak displacement of the {} matched {} histories after a zero-phase {:.3g} Hz "
         "high-pass (order-{} Butterworth, forward and backward)",
-        c.options.histories_per_level, d == Direction::x ? "h1" : "h2", c.site.energy_highpass_hz,
+        bank.sets().size(), d == Direction::x ? "h1" : "h2", c.site.energy_highpass_hz,
         sliding::highpass_order);
     return bank.mean_highpass_displacement_m(d, dem.pga_g);
 }
@@ -101,6 +102,8 @@ Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction 
     out.mu_s = lower.mu_s;
     out.mu_e = sliding::effective_friction(lower.mu_s, dem.pga_v_g);
     out.c_s_mps2 = 2.0 * out.mu_e * units::g_mps2;
+    out.sa_vh_peak_g =
+        *std::max_element(dem.sa_vh_slide.psa_g.begin(), dem.sa_vh_slide.psa_g.end());
     if (mode == Mode::rest || mode == Mode::rock) {
         out.reason = mode == Mode::rest
                          ? "at rest at the lower friction bound: the sliding methods do not apply"
@@ -320,6 +323,11 @@ DirectionBounds direction_bounds(const Component& comp, Direction d) {
                                hi_is_housner, "lower friction bound"};
     out.rocking = ContactBound{base.mu_s_range[1], ratio * base.mu_s_range[1], r_hi,
                                hi_is_housner, "upper friction and restitution bounds"};
+    if (r_lo != r_hi) {
+        out.rocking_lower = ContactBound{base.mu_s_range[1], ratio * base.mu_s_range[1], r_lo,
+                                         !hi_is_housner && r_lo == housner && !base.restitution_range,
+                                         "upper friction, lower restitution bound"};
+    }
     return out;
 }
 
@@ -330,12 +338,6 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
         contact.housner ? std::nullopt : std::optional<double>(contact.restitution);
     // Top corners at twice the CG height: the uniform-block default of the simulator.
     return dynamics::make_block_model(blk, contact.mu_s, contact.mu_k, r);
-}
-
-Stats stats_of(const std::vector<double>& values) {
-    if (values.empty()) return Stats{};
-    return Stats{core::mean(values), core::quantile(values, 0.84),
-                 *std::max_element(values.begin(), values.end())};
 }
 
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g) {
@@ -350,17 +352,17 @@ bool same_contact(const ContactBound& a, const ContactBound& b) {
            a.housner == b.housner;
 }
 
-// A history's summaries at the sliding bound and at the rocking bound.
-using BoundRuns = std::pair<dynamics::Summary, dynamics::Summary>;
+// A history's summaries at each bound slot (HistoryRunner).
+using BoundRuns = std::array<dynamics::Summary, bound_slots>;
 
-// Every history of the bank through `one` (history k at bound 0 or 1, its excitation in
-// direction d at pga_g) on the run's threads, in history order whatever thread ran which. Each
-// (history, bound) is a work item of its own, so 2N runs balance over the threads where N
-// histories alone would leave one idle. With one bound, the rocking slot repeats the sliding run.
+// Every history of the bank through `one` (history k at bound slot b, its excitation in
+// direction d at pga_g) for the slots `run`, on the run's threads, in history order whatever
+// thread ran which. Each (history, slot) is a work item of its own, so the runs balance over
+// the threads where N histories alone would leave one idle.
 std::vector<BoundRuns> run_histories(
-    HistoryBank& bank, Direction d, double pga_g, int bounds,
+    HistoryBank& bank, Direction d, double pga_g, const std::vector<int>& run,
     const std::function<dynamics::Summary(std::size_t, int, const dynamics::Excitation&)>& one) {
-    const auto& sets = bank.sets();
+    const auto sets = bank.sets();
     const RunSettings& settings = bank.run();
     std::vector<BoundRuns> runs(sets.size());
     core::ProgressCallback progress;
@@ -371,20 +373,40 @@ std::vector<BoundRuns> run_histories(
             settings.progress(step, done, total);
         };
     }
-    const auto n_bounds = static_cast<std::size_t>(bounds);
     core::parallel_for(
-        sets.size() * n_bounds, settings.threads,
+        sets.size() * run.size(), settings.threads,
         [&](std::size_t item) {
-            const std::size_t k = item / n_bounds;
-            const int bound = static_cast<int>(item % n_bounds);
-            const dynamics::Summary s = one(k, bound, excitation(sets[k], d, pga_g));
-            (bound == 0 ? runs[k].first : runs[k].second) = s;
+            const std::size_t k = item / run.size();
+            const int slot = run[item % run.size()];
+            runs[k][static_cast<std::size_t>(slot)] = one(k, slot, excitation(sets[k], d, pga_g));
         },
         progress);
-    if (bounds == 1) {
-        for (BoundRuns& r : runs) r.second = r.first;
-    }
     return runs;
+}
+
+// Rocking statistics of one restitution bound from the runs of slot `slot`.
+RockingRuns rocking_runs(const ContactBound& bound, const std::vector<BoundRuns>& runs,
+                         std::size_t slot) {
+    RockingRuns out;
+    out.bound = bound;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> over_alpha, rad;
+    for (const BoundRuns& r : runs) {
+        const dynamics::Summary& s = r[slot];
+        if (s.overturned) ++out.overturned;
+        over_alpha.push_back(s.overturned ? nan : s.rock_max_over_alpha);
+        rad.push_back(s.overturned ? nan : s.rock_max_rad);
+    }
+    out.over_alpha = stats_of(over_alpha);
+    out.rad = stats_of(rad);
+    return out;
+}
+
+// The worse of two restitution bounds' rocking: more overturned sets, then the larger governing
+// theta / alpha (near the overturning threshold the peak is not monotone in r).
+bool worse(const RockingRuns& a, const RockingRuns& b) {
+    if (a.overturned != b.overturned) return a.overturned > b.overturned;
+    return a.over_alpha.p84 > b.over_alpha.p84;
 }
 
 }  // namespace
@@ -392,42 +414,54 @@ std::vector<BoundRuns> run_histories(
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
                           double pga_g, HistoryBank& bank, bool rocking_mode,
                           const HistoryRunner& run) {
-    const dynamics::BlockModel slide_model = block_model(c.component, bounds.sliding, d);
-    const dynamics::BlockModel rock_model = block_model(c.component, bounds.rocking, d);
+    std::array<dynamics::BlockModel, bound_slots> models{
+        block_model(c.component, bounds.sliding, d), block_model(c.component, bounds.rocking, d),
+        block_model(c.component, bounds.rocking_lower.value_or(bounds.rocking), d)};
     dynamics::Options opt;
     opt.record_series = false;
     opt.g_mps2 = c.site.g_mps2;
     Simulation sim;
     sim.sliding_bound = bounds.sliding;
-    sim.rocking_bound = bounds.rocking;
     sim.bounds_differ = !same_contact(bounds.sliding, bounds.rocking);
-    const auto& sets = bank.sets();
+    const bool lower_r = bounds.rocking_lower.has_value();
+    // Slot 1 repeats slot 0 when the bounds coincide; slot 2 runs only for a second restitution.
+    std::vector<int> slots{0};
+    if (sim.bounds_differ) slots.push_back(1);
+    if (lower_r) slots.push_back(2);
+    const auto sets = bank.sets();
     sim.histories = static_cast<int>(sets.size());
-    sim.mean_governs = sim.histories >= min_histories_for_mean;
-    const auto run_one = [&](std::size_t k, int bound, const dynamics::BlockModel& m,
-                             const dynamics::Excitation& ex) {
-        return run ? run(k, bound, m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
-    };
-    const std::vector<BoundRuns> runs =
-        run_histories(bank, d, pga_g, sim.bounds_differ ? 2 : 1,
-                      [&](std::size_t k, int bound, const dynamics::Excitation& ex) {
-                          return run_one(k, bound, bound == 0 ? slide_model : rock_model, ex);
-                      });
-    std::vector<double> slide, residual, rock_over_alpha, rock_rad, amplification;
+    std::vector<BoundRuns> runs = run_histories(
+        bank, d, pga_g, slots, [&](std::size_t k, int slot, const dynamics::Excitation& ex) {
+            const dynamics::BlockModel& m = models[static_cast<std::size_t>(slot)];
+            return run ? run(k, slot, m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
+        });
+    if (!sim.bounds_differ)
+        for (BoundRuns& r : runs) r[1] = r[0];
+    RockingRuns upper = rocking_runs(bounds.rocking, runs, 1);
+    std::size_t rock_slot = 1;
+    if (lower_r) {
+        RockingRuns lower = rocking_runs(*bounds.rocking_lower, runs, 2);
+        if (worse(lower, upper)) {
+            std::swap(lower, upper);
+            rock_slot = 2;
+        }
+        sim.rocking_other = std::move(lower);
+    }
+    sim.rocking_bound = upper.bound;
+    sim.rock_over_alpha = std::move(upper.over_alpha);
+    sim.rock_rad = std::move(upper.rad);
+    std::vector<double> slide, residual, amplification;
     double worst = -1.0;
-    for (std::size_t k = 0; k < sets.size(); ++k) {
-        const dynamics::Summary& s_slide = runs[k].first;
-        const dynamics::Summary& s_rock = runs[k].second;
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const dynamics::Summary& s_slide = runs[k][0];
+        const dynamics::Summary& s_rock = runs[k][rock_slot];
         slide.push_back(s_slide.slide_max_m);
         residual.push_back(s_slide.slide_residual_m);
         amplification.push_back(s_rock.amplification);
-        const bool overturned = s_slide.overturned || s_rock.overturned;
-        if (overturned) {
-            ++sim.overturned;
-        } else {
-            rock_over_alpha.push_back(s_rock.rock_max_over_alpha);
-            rock_rad.push_back(s_rock.rock_max_rad);
-        }
+        bool overturned = s_slide.overturned || runs[k][1].overturned;
+        if (lower_r) overturned = overturned || runs[k][2].overturned;
+        sim.overturned_sets.push_back(overturned ? 1 : 0);
+        if (overturned) ++sim.overturned;
         // Governing history: an overturned one, else the largest rocking (rocking modes) or slip.
         const double score =
             overturned ? 1e9 : (rocking_mode ? s_rock.rock_max_over_alpha : s_slide.slide_max_m);
@@ -440,11 +474,15 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
     FREESTAND_EXPECT(sim.overturned <= sim.histories, "overturns are counted once per history");
     sim.slide_m = stats_of(slide);
     sim.slide_residual_m = stats_of(residual);
-    sim.rock_over_alpha = stats_of(rock_over_alpha);
-    sim.rock_rad = stats_of(rock_rad);
     sim.amplification = stats_of(amplification);
     sim.overturn_ci = core::clopper_pearson(sim.overturned, sim.histories);
+    count_exceedances(sim, c.component.allowable_slide_m, c.component.required_overturn_fs);
     return sim;
+}
+
+void count_exceedances(Simulation& sim, double allowable_slide_m, double required_fs) {
+    sim.slide_exceed = exceedance(sim.slide_m.values, allowable_slide_m);
+    sim.rock_exceed = exceedance(sim.rock_over_alpha.values, 1.0 / required_fs, sim.overturned);
 }
 
 LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand,

@@ -76,21 +76,26 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
 /// The excitation of history k in direction d at the demand's PGA (horizontal and vertical).
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g);
 
-/// Mean, 84th percentile and maximum of the values (all 0 when empty).
-Stats stats_of(const std::vector<double>& values);
-
-/// History k's run at one bound (0: the sliding bound; 1: the rocking bound, run only when the
-/// bounds differ): the summary the statistics read. Histories run on several threads at once,
+/// History k's run at one bound (0: the sliding bound; 1: the rocking bound, run only when it
+/// differs from the sliding one; 2: the rocking bound at the lower restitution, when that
+/// differs): the summary the statistics read. Histories run on several threads at once,
 /// so a runner keeps anything else it records in the slot of (k, bound).
 using HistoryRunner = std::function<dynamics::Summary(
     std::size_t k, int bound, const dynamics::BlockModel&, const dynamics::Excitation&,
     const dynamics::Options&)>;
 
-/// Simulates every history at both bounds (once when they coincide) and gathers the
-/// statistics of docs/methods.md s.6 step 5; rocking_mode picks the governing history's measure.
+/// Number of bound slots a history can run at (HistoryRunner's `bound` is below it).
+inline constexpr int bound_slots = 3;
+
+/// Simulates every history at each distinct bound and gathers the statistics of
+/// docs/methods.md s.6 steps 3 and 6; rocking_mode picks the governing history's measure.
 /// run: the model each history runs (empty: the planar rigid block, dynamics::simulate).
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
                           double pga_g, HistoryBank& bank, bool rocking_mode,
                           const HistoryRunner& run = {});
+
+/// Counts the sets beyond each limit state (docs/methods.md s.6 step 3): slides beyond the
+/// allowable; theta / alpha above 1 / FS_required, overturned sets included.
+void count_exceedances(Simulation& sim, double allowable_slide_m, double required_fs);
 
 }  // namespace freestand::assess

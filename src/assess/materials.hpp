@@ -1,6 +1,7 @@
 #pragma once
 /// Base materials of docs/methods.md s.7 (static friction on steel; restitution measured on
 /// steel specimens, absent where the table gives none).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,8 +10,10 @@ namespace freestand::assess {
 
 struct Material {
     std::string name;
-    double mu_s;
-    std::optional<double> restitution;
+    double mu_s;                        ///< the thesis's single measurement
+    std::array<double, 2> mu_s_range;   ///< default friction bounds (docs/methods.md s.7)
+    std::string range_source;           ///< where the bounds come from
+    std::optional<double> restitution;  ///< measured on small steel specimens
 };
 
 /// The library in the table's order (weakest friction first).
@@ -22,7 +25,8 @@ const Material* find_material(const std::string& name);
 struct BaseContact;
 
 /// The base contact of a case naming only `base_material = m`: tabulated mu_s, mu_k = mu_s,
-/// tabulated restitution (absent: Housner's), default friction bounds (docs/methods.md s.7).
+/// tabulated restitution (absent: Housner's), the literature range as friction bounds
+/// (docs/methods.md s.7).
 BaseContact material_contact(const Material& m);
 
 /// Names joined with ", " for error messages.

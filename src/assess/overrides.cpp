@@ -56,7 +56,7 @@ void check_overrides(const CaseOverrides& o,
     }
     if (o.seed) check_integer(*o.seed, 0, max_seed, where("seed"));
     if (o.histories_per_level)
-        check_integer(*o.histories_per_level, 1, max_histories_per_level,
+        check_integer(*o.histories_per_level, 1, histories_limit,
                       where("histories_per_level"));
 }
 

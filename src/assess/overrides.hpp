@@ -13,7 +13,7 @@ namespace freestand::assess {
 
 /// Limits of the overridable values; the case reader applies the same ones.
 inline constexpr double max_pga_g = 3.0;                    ///< [site] pga_g levels in (0, 3] g
-inline constexpr long long max_histories_per_level = 100;  ///< [options] histories_per_level
+inline constexpr long long histories_limit = 1000;  ///< [options] histories_per_level and max_histories_per_level
 /// [options] seed in [0, 2^53 - 1]: every seed is exact as a JSON number.
 inline constexpr long long max_seed = 9007199254740991LL;
 

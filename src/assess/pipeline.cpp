@@ -10,6 +10,7 @@
 #include "assess/level.hpp"
 #include "assess/materials.hpp"
 #include "assess/plot_data.hpp"
+#include "assess/settle.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 
@@ -17,14 +18,13 @@ namespace freestand::assess {
 
 namespace {
 
-constexpr std::array<Direction, 2> directions{Direction::x, Direction::y};
-
+// Every PGA level, each settled on as many sets as its decision needs (assess/settle.hpp).
 std::vector<LevelResult> evaluate_all(const Case& c, const std::vector<LevelDemand>& demands,
                                       HistoryBank& bank) {
     std::vector<LevelResult> out;
-    for (const LevelDemand& dem : demands) {
-        for (Direction d : directions) out.push_back(evaluate_level(c, d, dem, bank));
-        apply_biaxial(c, dem, {&out[out.size() - 2], &out.back()}, bank);
+    for (std::size_t i = 0; i < demands.size(); ++i) {
+        for (LevelResult& l : evaluate_settled(c, demands[i], i, bank))
+            out.push_back(std::move(l));
     }
     return out;
 }
@@ -87,12 +87,18 @@ Governing headline(const std::vector<LevelResult>& levels) {
 
 struct Search {
     Upgrade upgrade;
+    double best_margin = 0.0;
     std::vector<LevelResult> recommended_levels;
 };
 
+// The governing margin of a trial (0 when it has none: a failure without a ratio).
+double trial_margin(const MaterialTrial& t) { return t.governing.verdict.margin.value_or(0.0); }
+
 // docs/methods.md s.6 step 7: each material is the case reassessed with that material's whole
 // property set, through evaluate_all as for the case itself (with_base_material makes the case
-// a file naming only that material would give); the first in table order that passes.
+// a file naming only that material would give); of those that pass, the one with the largest
+// governing margin (the most robust, not the first that scrapes through; the first in table
+// order on a tie).
 Search search_materials(const Case& c, const std::vector<LevelDemand>& demands,
                         HistoryBank& bank) {
     Search out;
@@ -103,12 +109,15 @@ Search search_materials(const Case& c, const std::vector<LevelDemand>& demands,
         MaterialTrial t;
         t.material = m.name;
         t.mu_s_range = trial_case.component.base.mu_s_range;
-        t.restitution = m.restitution;
+        t.restitution = trial_case.component.base.restitution;
         t.governing = headline(levels);
         t.passes = passes(t.governing.verdict);
+        const bool best = t.passes && (!out.upgrade.recommended ||
+                                       trial_margin(t) > out.best_margin);
         out.upgrade.trials.push_back(t);
-        if (t.passes && !out.upgrade.recommended) {
+        if (best) {
             out.upgrade.recommended = m.name;
+            out.best_margin = trial_margin(t);
             out.recommended_levels = std::move(levels);
         }
     }
@@ -201,20 +210,38 @@ std::vector<std::string> pipeline_assumptions(const Case& c) {
         "failure. The energy-conservation estimate is informational: it neither decides nor "
         "triggers a simulation.");
     out.push_back(fmt::format(
-        "Statistics (docs/methods.md s.6 step 5): with {} or more histories the mean of the peak "
-        "responses governs, with fewer the maximum; the 84th percentile is reported. Any "
-        "overturned history fails the level; overturning is reported as overturned / simulated "
-        "with its exact 95% interval (Clopper & Pearson 1934).",
-        min_histories_for_mean));
+        "Statistics (docs/methods.md s.6 step 3): each simulated level runs {} three-component "
+        "sets; per limit state the 84th percentile of the sets' peaks (the ceil(0.84 N)-th "
+        "smallest) governs; the mean, the maximum and the count beyond the limit k/N with its "
+        "exact 95% interval (Clopper & Pearson 1934) are reported beside it. Any overturned set "
+        "fails the level.",
+        c.options.histories_per_level));
+    out.push_back(fmt::format(
+        "Settled decisions (docs/methods.md s.6 step 4): the sets of a level decided by "
+        "simulation are resampled with replacement {} times (a bootstrap from the case seed) and "
+        "the decision redone on each; below {:.0f}% agreement the level gets {} more sets, up to "
+        "{} (options.max_histories_per_level); a level still unsettled there fails.",
+        bootstrap_resamples, 100.0 * settle_agreement, settle_batch_sets,
+        c.options.max_histories_per_level));
+    if (c.options.histories_per_level < 30) {
+        out.push_back(fmt::format(
+            "options.histories_per_level = {} is below the 30 sets of ASCE 4-16 and ASCE 43-05 "
+            "practice for nonlinear response (docs/methods.md s.6 step 3): the 84th percentile "
+            "of so few sets is coarse.",
+            c.options.histories_per_level));
+    }
     out.push_back(
         "Bounds (docs/methods.md s.6 step 6): sliding demands (ASCE 4 and the simulated slip) use the "
         "lower friction bound; rocking, overturning and the classification use the upper "
-        "friction and restitution bounds, with mu_k / mu_s kept at each bound.");
+        "friction bound, with mu_k / mu_s kept at each bound; rocking is simulated at both "
+        "restitution bounds and the worse governs.");
     out.push_back(
         "Base-material search (docs/methods.md s.6 step 7): each material of the table is assessed "
-        "with its whole property set (tabulated mu_s with default bounds 0.8-1.2 x mu_s, mu_k = "
-        "mu_s, the tabulated restitution as the measured r) exactly as a case naming it; the "
-        "first material in table order that passes every level is recommended.");
+        "with its whole property set (the literature friction range as bounds, mu_k = mu_s, "
+        "restitution from Housner's value of the component's own geometry to the value measured "
+        "on steel specimens; the case's own bounds for its own material) exactly as a case "
+        "naming it; of the materials that pass every level, the one with the largest governing "
+        "margin is recommended.");
     if (c.component.allowable_relative_m) {
         out.push_back(fmt::format(
             "Joined units: the allowable relative displacement {:.1f} mm (slack of the "
@@ -257,7 +284,7 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
         "specimens, Saraswat 2017; docs/methods.md s.5); equipment attached to a rocking body "
         "must be checked for it."};
     if (bank.generated()) {
-        const auto& sets = bank.sets();
+        const auto& sets = bank.made();
         out.push_back(fmt::format(
             "{} three-component histories ({}) matched to {} at 1 g and scaled to each "
             "level; response spectra are linear, so each scaled record matches its scaled target "
@@ -269,6 +296,11 @@ std::vector<std::string> limits(const AssessmentResult& r, HistoryBank& bank) {
         out.push_back("No time histories were generated: the closed forms settled every level.");
     }
     return out;
+}
+
+// Runs behind a simulation: one per set and distinct bound.
+int runs_of(const Simulation& sim) {
+    return sim.histories * (1 + (sim.bounds_differ ? 1 : 0) + (sim.rocking_other ? 1 : 0));
 }
 
 }  // namespace
@@ -308,10 +340,10 @@ AssessmentResult assess(const Case& c, const RunSettings& run) {
     res.assumptions = pipeline_assumptions(c);
     res.limits = limits(res, bank);
     if (bank.generated()) {
-        res.histories_generated = static_cast<int>(bank.sets().size());
+        res.histories_generated = static_cast<int>(bank.made().size());
         const std::array<const char*, 3> names{"h1", "h2", "v"};
-        for (std::size_t k = 0; k < bank.sets().size(); ++k) {
-            const HistorySet& set = bank.sets()[k];
+        for (std::size_t k = 0; k < bank.made().size(); ++k) {
+            const HistorySet& set = bank.made()[k];
             for (std::size_t j = 0; j < set.acceptance.size() && j < names.size(); ++j) {
                 res.history_checks.push_back(HistoryCheck{static_cast<int>(k + 1), names[j],
                                                           set.method, set.acceptance[j]});
@@ -319,14 +351,8 @@ AssessmentResult assess(const Case& c, const RunSettings& run) {
         }
     }
     for (const LevelResult& l : res.levels) {
-        if (l.simulation) {
-            res.simulations_run +=
-                l.simulation->histories * (l.simulation->bounds_differ ? 2 : 1);
-        }
-        if (l.flexible_simulation) {
-            const Simulation& f = l.flexible_simulation->sim;
-            res.simulations_run += f.histories * (f.bounds_differ ? 2 : 1);
-        }
+        if (l.simulation) res.simulations_run += runs_of(*l.simulation);
+        if (l.flexible_simulation) res.simulations_run += runs_of(l.flexible_simulation->sim);
     }
     return res;
 }

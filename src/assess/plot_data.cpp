@@ -55,7 +55,7 @@ Series history_series(std::string label, const std::vector<double>& t,
 void add_histories(PlotData& p, const AssessmentResult& r, const LevelResult& lvl,
                    HistoryBank& bank) {
     const HistorySet& set =
-        bank.sets().at(static_cast<std::size_t>(lvl.simulation->governing_history));
+        bank.made().at(static_cast<std::size_t>(lvl.simulation->governing_history));
     const dynamics::Excitation ex = excitation(set, lvl.direction, lvl.pga_g);
     std::vector<double> t(ex.horizontal_mps2.size());
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = ex.dt_s * static_cast<double>(i);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "assess/case.hpp"
+#include "assess/statistics.hpp"
 #include "sliding/initiation.hpp"
 
 namespace freestand::assess {
@@ -41,7 +42,8 @@ enum class Failure {
     slides_beyond_allowable,
     rocking_fs_below_required,
     overturns,
-    screen_inconclusive
+    screen_inconclusive,
+    not_settled  ///< the bootstrap of the sets still disagrees at the cap (s.6 step 4)
 };
 const char* to_string(Failure f);
 
@@ -50,7 +52,8 @@ struct Verdict {
     VerdictKind kind = VerdictKind::acceptable;
     Failure failure = Failure::none;
     /// The demand is negligible (docs/methods.md s.2 low-motion threshold, or a closed form that
-    /// finds no motion): the report says "no motion" instead of a ratio; margin is then empty.
+    /// finds no motion): the report says "no motion" beside the margin, which is then the
+    /// demand ratio or the static margin (docs/methods.md s.6 step 8).
     bool no_motion = false;
     std::optional<double> margin;  ///< capacity / demand
     std::string margin_basis;      ///< what the ratio compares, e.g. "allowable / ASCE 4 slide"
@@ -103,11 +106,13 @@ struct ContactBound {
 };
 
 /// Both bounds of one direction: sliding demands at the lower friction, rocking, overturning
-/// and the classification at the upper friction and restitution.
+/// and the classification at the upper friction; rocking simulated at both restitution bounds
+/// (docs/methods.md s.6 step 6).
 struct DirectionBounds {
     ContactBound sliding;
-    ContactBound rocking;
-    double restitution_lower = 0.0;  ///< reported; no check reads it
+    ContactBound rocking;                      ///< upper friction, upper restitution
+    std::optional<ContactBound> rocking_lower;  ///< upper friction, lower restitution (if it differs)
+    double restitution_lower = 0.0;
 };
 
 /// Closed-form sliding estimates (docs/methods.md s.4) at the lower friction bound.
@@ -115,6 +120,7 @@ struct Sliding {
     double mu_s = 0.0;  ///< the friction they used (the lower bound)
     double mu_e = 0.0;
     double c_s_mps2 = 0.0;
+    double sa_vh_peak_g = 0.0;  ///< peak of SA_VH at the sliding damping, g
     /// DeltaD of the energy method (docs/methods.md s.4): the table displacement, m; 0 when the
     /// estimate was not made.
     double delta_d_m = 0.0;
@@ -161,32 +167,37 @@ struct Screen {
     bool passed = true;
 };
 
-/// Mean, 84th percentile and maximum of a peak response over the histories (docs/methods.md s.6
-/// step 5).
-struct Stats {
-    double mean = 0.0;
-    double p84 = 0.0;  ///< empirical, linear between order statistics (Hyndman-Fan type 7)
-    double max = 0.0;
+/// Rocking simulated at one restitution bound (docs/methods.md s.6 step 6).
+struct RockingRuns {
+    ContactBound bound;
+    Stats over_alpha;    ///< peak theta / alpha per set (NaN where the set overturned)
+    Stats rad;           ///< peak theta per set, rad (NaN where the set overturned)
+    int overturned = 0;  ///< sets overturned at this bound
 };
 
-/// Aggregated time-history simulation over the level's histories (docs/methods.md s.3, s.6).
+/// Aggregated time-history simulation over the level's history sets (docs/methods.md s.3, s.6).
+/// Per limit state the 84th percentile of the sets' peaks governs (s.6 step 3).
 struct Simulation {
     int histories = 0;
-    bool mean_governs = false;  ///< >= 7 histories: the mean governs; fewer: the maximum
     ContactBound sliding_bound;
-    ContactBound rocking_bound;
-    bool bounds_differ = false;  ///< two runs per history (else one serves both)
+    ContactBound rocking_bound;  ///< the restitution bound whose rocking governs
+    bool bounds_differ = false;  ///< the rocking runs are not the sliding runs
     Stats slide_m;               ///< peak |slip| at the sliding bound, m
     Stats slide_residual_m;      ///< |slip| at the end at the sliding bound, m
-    Stats rock_over_alpha;       ///< peak theta / alpha at the rocking bound (standing histories)
-    Stats rock_rad;              ///< peak theta at the rocking bound (standing histories), rad
-    int overturned = 0;          ///< histories overturned at either bound
+    Stats rock_over_alpha;       ///< peak theta / alpha at the governing rocking bound
+    Stats rock_rad;              ///< peak theta at the governing rocking bound, rad
+    /// The other restitution bound's rocking, reported beside (absent when the bounds coincide).
+    std::optional<RockingRuns> rocking_other;
+    std::vector<char> overturned_sets;  ///< per set: overturned at any bound
+    int overturned = 0;                 ///< sets overturned at any bound
     std::array<double, 2> overturn_ci{0.0, 0.0};  ///< Clopper-Pearson 95% of overturned / n
-    Stats amplification;  ///< top acceleration / PGA at the rocking bound
+    Exceedance slide_exceed;  ///< sets sliding beyond the allowable
+    Exceedance rock_exceed;   ///< sets with theta / alpha above 1 / FS_required, or overturned
+    Stats amplification;      ///< top acceleration / PGA at the rocking bound
     int governing_history = 0;  ///< index of the worst history (0-based)
 
-    /// The statistic that governs: the mean with >= 7 histories, else the maximum.
-    double governing(const Stats& s) const { return mean_governs ? s.mean : s.max; }
+    /// The statistic that governs: the 84th percentile of the sets' peaks.
+    double governing(const Stats& s) const { return s.p84; }
 };
 
 /// Biaxial sliding of a simulated level (docs/methods.md s.10): every history's two horizontal
@@ -215,6 +226,16 @@ struct FlexibleSimulation {
     double height_m = 0.0;
 };
 
+/// The bootstrap of a simulated level's decision (docs/methods.md s.6 step 4): the sets resampled
+/// with replacement, the decision redone on each resample.
+struct Settling {
+    int n_sets = 0;                 ///< sets the decision rests on
+    int resamples = 0;              ///< bootstrap resamples
+    double settled_fraction = 1.0;  ///< resamples that agree with the decision
+    bool settled = true;            ///< settled_fraction >= settle_agreement
+    int rounds = 1;                 ///< batches of sets it took
+};
+
 /// One PGA level in one direction.
 struct LevelResult {
     double pga_g = 0.0;
@@ -238,6 +259,8 @@ struct LevelResult {
     /// The flexible-body simulation, run where the flag is raised; it then decides the level and
     /// `simulation` (the rigid planar one) is reported beside it.
     std::optional<FlexibleSimulation> flexible_simulation;
+    /// How settled the decision of a simulated level is (docs/methods.md s.6 step 4).
+    std::optional<Settling> settling;
     Verdict verdict;
     /// Screen result -> why simulated -> what governed, one line each (the decision trail).
     std::vector<std::string> trail;

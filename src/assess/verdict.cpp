@@ -4,8 +4,11 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "core/units.hpp"
 
 namespace freestand::assess {
 
@@ -58,6 +61,8 @@ const char* to_string(Failure f) {
             return "overturns";
         case Failure::screen_inconclusive:
             return "screen inconclusive (no simulation)";
+        case Failure::not_settled:
+            return "decision not settled by the sets at the cap";
     }
     return "";
 }
@@ -78,7 +83,14 @@ Verdict no_motion(Model model, std::string basis) {
 Verdict slide_demand_verdict(double slide_m, double allowable_m, Model model,
                              const std::string& what) {
     if (slide_m < no_motion_slide_m) {
-        return no_motion(model, fmt::format("{} {:.2f} mm < 1 mm (no motion)", what, mm(slide_m)));
+        Verdict v =
+            no_motion(model, fmt::format("{} {:.2f} mm < 1 mm (no motion)", what, mm(slide_m)));
+        if (slide_m > 0.0) {
+            v.margin = allowable_m / slide_m;
+            v.margin_basis += fmt::format("; allowable slide {:.1f} mm / {:.2f} mm",
+                                          mm(allowable_m), mm(slide_m));
+        }
+        return v;
     }
     Verdict v;
     v.decided_by = model;
@@ -173,8 +185,15 @@ ScreenCheck slide_check(const Sliding& s, double allowable_m) {
                                  s.mu_s, mm(*s.slide_asce_m), ok ? "<=" : ">", mm(allowable_m)));
     }
     if (s.c_s_mps2 > 0.0 && !s.f_es_hz) {
-        // ASCE 4: the body does not slide when SA_VH never reaches C_s.
-        return check(no_motion(Model::asce4_sliding, "ASCE 4: SA_VH never reaches C_s"),
+        // ASCE 4: the body does not slide when SA_VH never reaches C_s; the margin is how far
+        // the spectrum could scale before it does.
+        Verdict v = no_motion(Model::asce4_sliding, "ASCE 4: SA_VH never reaches C_s");
+        if (s.sa_vh_peak_g > 0.0) {
+            v.margin = s.c_s_mps2 / units::g_mps2 / s.sa_vh_peak_g;
+            v.margin_basis = fmt::format("ASCE 4: C_s {:.3f} g / peak SA_VH {:.3f} g (no sliding)",
+                                         s.c_s_mps2 / units::g_mps2, s.sa_vh_peak_g);
+        }
+        return check(std::move(v),
                      fmt::format("ASCE 4 at mu_s {:.3f}: SA_VH never reaches C_s = {:.3f} m/s^2, "
                                  "no sliding",
                                  s.mu_s, s.c_s_mps2));
@@ -232,8 +251,33 @@ std::string flexible_condition(const LevelResult& l) {
 }
 
 std::string stat_name(const Simulation& sim) {
-    return sim.mean_governs ? fmt::format("mean of {}", sim.histories)
-                            : fmt::format("max of {}", sim.histories);
+    return fmt::format("84th percentile of {} sets", sim.histories);
+}
+
+// "k/N (95% a-b%)" of an exceedance count.
+std::string exceed_text(const Exceedance& e) {
+    return fmt::format("{}/{} (95% {:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0],
+                       100.0 * e.ci95[1]);
+}
+
+std::string simulation_trail_line(const Simulation& sim) {
+    std::string line = fmt::format(
+        "{} sets (the 84th percentile governs): peak slip mean/84th/max {:.1f}/{:.1f}/{:.1f} mm "
+        "at mu_s {:.3f}, beyond the allowable {}; theta/alpha {:.3f}/{:.3f}/{:.3f} at mu_s "
+        "{:.3f}, r {:.3f}, beyond 1/FS {}; overturned {}",
+        sim.histories, mm(sim.slide_m.mean), mm(sim.slide_m.p84), mm(sim.slide_m.max),
+        sim.sliding_bound.mu_s, exceed_text(sim.slide_exceed), sim.rock_over_alpha.mean,
+        sim.rock_over_alpha.p84, sim.rock_over_alpha.max, sim.rocking_bound.mu_s,
+        sim.rocking_bound.restitution, exceed_text(sim.rock_exceed),
+        exceed_text(Exceedance{sim.overturned, sim.histories, sim.overturn_ci}));
+    if (sim.rocking_other) {
+        const RockingRuns& o = *sim.rocking_other;
+        line += fmt::format("; at the other restitution bound r {:.3f}: theta/alpha "
+                            "{:.3f}/{:.3f}/{:.3f}, overturned {}/{} (the worse governs)",
+                            o.bound.restitution, o.over_alpha.mean, o.over_alpha.p84,
+                            o.over_alpha.max, o.overturned, sim.histories);
+    }
+    return line;
 }
 
 std::string flexible_trail_line(const FlexibleSimulation& f) {
@@ -247,6 +291,19 @@ std::string flexible_trail_line(const FlexibleSimulation& f) {
         mm(f.modal_m.mean), mm(f.modal_m.max), mm(sim.slide_m.mean), mm(sim.slide_m.p84),
         mm(sim.slide_m.max), sim.rock_over_alpha.mean, sim.rock_over_alpha.p84,
         sim.rock_over_alpha.max, sim.overturned, sim.histories);
+}
+
+// A verdict of no motion without a demand ratio (nothing moved at all) takes the level's
+// static margin, the threshold acceleration over the demand: never "infinite", so a level at
+// rest cannot govern over one that moves (docs/methods.md s.6 step 8).
+Verdict with_static_margin(Verdict v, const LevelResult& level) {
+    if (v.margin || !v.no_motion) return v;
+    const Initiation& i = level.initiation_lower;
+    if (i.a_ratio <= 0.0) return v;
+    v.margin = std::min(i.mu_s, i.tan_alpha) / i.a_ratio;
+    v.margin_basis += fmt::format("; static margin min(mu_s {:.3f}, tan alpha {:.3f}) / A {:.3f}",
+                                  i.mu_s, i.tan_alpha, i.a_ratio);
+    return v;
 }
 
 }  // namespace
@@ -312,15 +369,20 @@ Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, doub
                          fmt::format("simulated peak rotation ({}) {:.4f} rad < 0.003 rad (no "
                                      "motion)",
                                      stat, theta_rad));
+        if (theta_over_alpha > 0.0) rock.margin = 1.0 / (theta_over_alpha * required_fs);
     } else {
         rock = fs_verdict(1.0 / theta_over_alpha, required_fs, Model::simulation_rocking,
                           fmt::format("simulated, {}", stat));
     }
     if (slide.no_motion && rock.no_motion) {
-        return no_motion(Model::simulation_rocking,
-                         fmt::format("simulated ({}) peak slip {:.2f} mm < 1 mm and peak rotation "
-                                     "{:.4f} rad < 0.003 rad (no motion)",
-                                     stat, mm(slide_m), theta_rad));
+        Verdict v = no_motion(Model::simulation_rocking,
+                              fmt::format("simulated ({}) peak slip {:.2f} mm < 1 mm and peak "
+                                          "rotation {:.4f} rad < 0.003 rad (no motion)",
+                                          stat, mm(slide_m), theta_rad));
+        // The smaller of the two demand ratios that exist (none when nothing moved at all).
+        for (const Verdict* part : std::array<const Verdict*, 2>{&slide, &rock})
+            if (part->margin && (!v.margin || *part->margin < *v.margin)) v.margin = part->margin;
+        return v;
     }
     return combine(slide, rock);
 }
@@ -335,8 +397,8 @@ std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
     return fmt::format("biaxial sliding (h1 along x, h2 along y, with the vertical): peak |u| "
                        "mean/84th/max {:.1f}/{:.1f}/{:.1f} mm at mu_s {:.3f}; {} {:.1f} mm is {}",
                        mm(b.slide_m.mean), mm(b.slide_m.p84), mm(b.slide_m.max),
-                       sim.sliding_bound.mu_s, sim.mean_governs ? "the mean" : "the maximum",
-                       mm(sim.governing(b.slide_m)), vs);
+                       sim.sliding_bound.mu_s, "the 84th percentile", mm(sim.governing(b.slide_m)),
+                       vs);
 }
 }  // namespace
 
@@ -356,7 +418,7 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
                                fmt::format("simulated biaxial peak |u| of the rigid block ({})",
                                            stat_name(sim))));
         }
-        return v;
+        return with_static_margin(v, level);
     }
     Verdict v = screen_verdict(level.screen);
     if (!level.screen.passed && level.simulation) {
@@ -364,7 +426,7 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
                                level.biaxial ? &*level.biaxial : nullptr);
     }
     if (level.flexible.raised && passes(v)) v.conditions.push_back(flexible_condition(level));
-    return v;
+    return with_static_margin(v, level);
 }
 
 std::vector<std::string> decision_trail(const LevelResult& level, double allowable_slide_m,
@@ -385,15 +447,7 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
     }
     if (level.simulation) {
         const Simulation& sim = *level.simulation;
-        out.push_back(fmt::format(
-            "{} histories ({} governs): peak slip mean/84th/max {:.1f}/{:.1f}/{:.1f} mm at "
-            "mu_s {:.3f}; theta/alpha {:.3f}/{:.3f}/{:.3f} at mu_s {:.3f}, r {:.3f}; "
-            "overturned {}/{}",
-            sim.histories, sim.mean_governs ? "the mean" : "the maximum", mm(sim.slide_m.mean),
-            mm(sim.slide_m.p84), mm(sim.slide_m.max), sim.sliding_bound.mu_s,
-            sim.rock_over_alpha.mean, sim.rock_over_alpha.p84, sim.rock_over_alpha.max,
-            sim.rocking_bound.mu_s, sim.rocking_bound.restitution, sim.overturned,
-            sim.histories));
+        out.push_back(simulation_trail_line(sim));
         if (level.biaxial) out.push_back(biaxial_trail_line(sim, *level.biaxial));
         if (level.flexible_simulation) {
             out.push_back(flexible_trail_line(*level.flexible_simulation));
@@ -427,8 +481,8 @@ bool passes(const Verdict& v) {
 bool more_severe(const Verdict& a, const Verdict& b) {
     if (passes(a) != passes(b)) return !passes(a);
     constexpr double inf = std::numeric_limits<double>::infinity();
-    const double ma = a.no_motion ? inf : a.margin.value_or(inf);
-    const double mb = b.no_motion ? inf : b.margin.value_or(inf);
+    const double ma = a.margin.value_or(inf);
+    const double mb = b.margin.value_or(inf);
     if (ma != mb) return ma < mb;
     return a.clearance_m > b.clearance_m;
 }
@@ -492,7 +546,7 @@ std::string verdict_text(const Verdict& v) {
 }
 
 std::string margin_text(const Verdict& v) {
-    if (v.no_motion) return "no motion";
+    if (v.no_motion) return v.margin ? fmt::format("{:.2f} (no motion)", *v.margin) : "no motion";
     return v.margin ? fmt::format("{:.2f}", *v.margin) : "n/a";
 }
 

@@ -17,9 +17,6 @@ namespace freestand::assess {
 /// Below both thresholds the response is "no motion" (docs/methods.md s.2).
 inline constexpr double no_motion_slide_m = 1e-3;
 inline constexpr double no_motion_rock_rad = 0.003;
-/// With at least this many histories the mean of the peaks governs, else the maximum
-/// (docs/methods.md s.6 step 5).
-inline constexpr int min_histories_for_mean = 7;
 
 /// The screen of one level from its initiation (both bounds), sliding and rocking results.
 Screen screen_level(const LevelResult& closed, double allowable_slide_m, double required_fs);
@@ -53,7 +50,8 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
 bool passes(const Verdict& v);
 
 /// True when a is strictly more severe than b: a failure over a pass; then the smaller margin
-/// (a "no motion" verdict has none and is the least severe); then the larger clearance.
+/// (a "no motion" verdict carries its static or demand margin; one without any is the least
+/// severe); then the larger clearance.
 bool more_severe(const Verdict& a, const Verdict& b);
 
 /// The most severe level (the first on ties) with its verdict. levels must not be empty.
@@ -70,7 +68,7 @@ std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels)
 /// up to whole mm.
 std::string verdict_text(const Verdict& v);
 
-/// "1.15", or "no motion" when the demand is negligible.
+/// "1.15", or "4.02 (no motion)" when the demand is negligible.
 std::string margin_text(const Verdict& v);
 
 }  // namespace freestand::assess

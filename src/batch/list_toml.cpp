@@ -23,7 +23,7 @@ BatchEntry read_case_table(const toml::table& t, const std::string& file) {
     o.base_material = r.string("base_material");
     o.seed = r.integer("seed", 0, assess::max_seed);
     o.histories_per_level =
-        r.integer("histories_per_level", 1, assess::max_histories_per_level);
+        r.integer("histories_per_level", 1, assess::histories_limit);
     r.finish(list_keys());
     assess::check_overrides(o, [&](const std::string& key) { return r.where(key); });
     return e;

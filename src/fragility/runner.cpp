@@ -151,7 +151,8 @@ void Runner::prepare(const assess::RunSettings& run) {
         assess::Case pool_case = m.c;
         pool_case.options.histories_per_level = m.config.pool;
         assess::HistoryBank bank(pool_case, run);
-        m.sets = bank.sets();
+        const auto pool = bank.sets();
+        m.sets.assign(pool.begin(), pool.end());
     } else {
         for (const std::string& f : m.config.record_files) {
             core::Record r = core::read_record(f);

@@ -52,7 +52,7 @@ mstch::array level_items(const assess::JoinedResult& j) {
         out.push_back(mstch::map{
             {"pga", fmt::format("{:.3f}", l.pga_g)},
             {"histories", std::to_string(l.histories)},
-            {"statistic", std::string(l.mean_governs ? "mean" : "maximum")},
+            {"statistic", std::string("84th percentile")},
             {"direction", std::string(assess::to_string(g.direction))},
             {"relative", fmt::format("{} / {} / {}", mm(g.relative_m.mean), mm(g.relative_m.p84),
                                      mm(g.relative_m.max))},
@@ -116,7 +116,7 @@ nlohmann::ordered_json pair_json(const assess::JoinedResult& j) {
         nlohmann::ordered_json lj;
         lj["pga_g"] = round10(l.pga_g);
         lj["histories"] = l.histories;
-        lj["mean_governs"] = l.mean_governs;
+        lj["governing_statistic"] = "p84";
         lj["model"] = l.model;
         lj["model_reason"] = l.model_reason;
         lj["governing_direction"] = assess::to_string(l.directions[l.governing_direction].direction);

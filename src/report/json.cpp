@@ -48,7 +48,7 @@ ordered_json verdict_json(const Verdict& v) {
     j["failure"] = to_string(v.failure);
     j["no_motion"] = v.no_motion;
     // "no motion" is said instead of a ratio: no number that could be read as a margin.
-    j["margin"] = v.no_motion ? ordered_json(nullptr) : num(v.margin);
+    j["margin"] = num(v.margin);
     j["margin_basis"] = v.margin_basis;
     j["decided_by"] = to_string(v.decided_by);
     j["clearance_m"] = num(v.clearance_m);
@@ -90,7 +90,7 @@ ordered_json check_json(const ScreenCheck& c) {
     return {{"applies", c.applies},
             {"passed", c.passed},
             {"text", c.text},
-            {"margin", c.verdict.no_motion ? ordered_json(nullptr) : num(c.verdict.margin)},
+            {"margin", num(c.verdict.margin)},
             {"no_motion", c.verdict.no_motion}};
 }
 
@@ -105,20 +105,45 @@ ordered_json stats_json(const Stats& s) {
     return {{"mean", num(s.mean)}, {"p84", num(s.p84)}, {"max", num(s.max)}};
 }
 
+ordered_json exceedance_json(const Exceedance& e) {
+    return {{"k", e.k}, {"n", e.n}, {"ci95", pair_json(e.ci95)}};
+}
+
+ordered_json rocking_runs_json(const std::optional<RockingRuns>& r, int histories) {
+    if (!r) return nullptr;
+    const bool standing = r->overturned < histories;
+    return {{"bound", contact_json(r->bound)},
+            {"rock_over_alpha", standing ? stats_json(r->over_alpha) : ordered_json(nullptr)},
+            {"overturned", r->overturned}};
+}
+
+ordered_json settling_json(const std::optional<Settling>& s) {
+    if (!s) return nullptr;
+    return {{"n_sets", s->n_sets},
+            {"resamples", s->resamples},
+            {"settled_fraction", num(s->settled_fraction)},
+            {"settled", s->settled},
+            {"batches", s->rounds}};
+}
+
 ordered_json simulation_json(const std::optional<Simulation>& sim) {
     if (!sim) return nullptr;
     ordered_json j;
     j["histories"] = sim->histories;
-    j["mean_governs"] = sim->mean_governs;
+    j["governing_statistic"] = "p84";
     j["bounds_differ"] = sim->bounds_differ;
+    j["rocking_bound"] = contact_json(sim->rocking_bound);
     j["slide_m"] = stats_json(sim->slide_m);
     j["slide_residual_m"] = stats_json(sim->slide_residual_m);
     // Over the histories that stayed standing: none when every history overturned.
     const bool standing = sim->overturned < sim->histories;
     j["rock_over_alpha"] = standing ? stats_json(sim->rock_over_alpha) : ordered_json(nullptr);
     j["rock_rad"] = standing ? stats_json(sim->rock_rad) : ordered_json(nullptr);
+    j["rocking_other_restitution"] = rocking_runs_json(sim->rocking_other, sim->histories);
     j["overturned"] = sim->overturned;
     j["overturn_ci"] = pair_json(sim->overturn_ci);
+    j["slide_exceedances"] = exceedance_json(sim->slide_exceed);
+    j["rock_exceedances"] = exceedance_json(sim->rock_exceed);
     j["amplification"] = stats_json(sim->amplification);
     j["governing_history"] = sim->governing_history;
     return j;
@@ -206,6 +231,10 @@ ordered_json level_json(const LevelResult& l) {
     j["simulation"] = simulation_json(l.simulation);
     j["biaxial"] = biaxial_json(l.biaxial);
     j["flexible_simulation"] = flexible_simulation_json(l.flexible_simulation);
+    j["n_sets"] = l.settling ? ordered_json(l.settling->n_sets) : ordered_json(nullptr);
+    j["settled_fraction"] =
+        l.settling ? num(l.settling->settled_fraction) : ordered_json(nullptr);
+    j["settling"] = settling_json(l.settling);
     j["verdict"] = verdict_json(l.verdict);
     j["trail"] = l.trail;
     return j;

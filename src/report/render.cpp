@@ -8,6 +8,7 @@
 
 #include <mstch/mstch.hpp>
 
+#include "assess/settle.hpp"
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
@@ -74,11 +75,12 @@ std::string restitution_note(const BaseContact& b, const DirectionBounds& bounds
                : "";
 }
 
-std::string statistic_rule(int histories) {
+std::string statistic_rule(const Options& o) {
     return fmt::format(
-        "the mean of the peaks governs with >= {} histories, else the maximum: "
-        "here the {} (docs/methods.md s.6 step 5)",
-        min_histories_for_mean, histories >= min_histories_for_mean ? "mean" : "maximum");
+        "the 84th percentile of the sets' peaks governs, with k/N beyond each limit beside it; a "
+        "decision the bootstrap does not settle gets {} more sets, up to {} (docs/methods.md s.6 "
+        "steps 3-4)",
+        assess::settle_batch_sets, o.max_histories_per_level);
 }
 
 std::string energy_delta_d_text(const Site& site) {
@@ -156,7 +158,7 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
         input("damping of the sliding spectrum", fixed(c.site.sliding_damping * 100.0, 1), "%"));
     out.push_back(input("gravity", fixed(c.site.g_mps2, 3), "m/s^2"));
     out.push_back(input("histories per level", std::to_string(c.options.histories_per_level), "",
-                        statistic_rule(c.options.histories_per_level)));
+                        statistic_rule(c.options)));
     out.push_back(input("simulate", to_string(c.options.simulate), "",
                         "screen, then simulate (docs/methods.md s.6 step 4)"));
     return out;
@@ -263,7 +265,11 @@ mstch::map level_row(const LevelResult& l) {
         {"el_fs", el_fs_text(l)},
         {"amplification_estimate", amplification_estimate(l)},
         {"histories",
-         sim ? fmt::format("{} ({})", sim->histories, sim->mean_governs ? "mean" : "max") : none},
+         sim ? fmt::format("{} (84th percentile{})", sim->histories,
+                           l.settling ? fmt::format(", {:.0f}% settled",
+                                                    100.0 * l.settling->settled_fraction)
+                                      : std::string())
+             : none},
         {"sim_slide", sim ? stats_text(sim->slide_m, 1000.0, 1) : none},
         {"sim_biaxial", biaxial_text(l)},
         {"sim_residual", sim ? mm(sim->slide_residual_m.max) : none},

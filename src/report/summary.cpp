@@ -155,7 +155,7 @@ SummaryOutcome summary_outcome(const assess::AssessmentResult& r) {
                           r.overall.pga_g,
                           assess::to_string(r.overall.direction),
                           r.overall_from_trial ? trial_material : std::string(),
-                          v.no_motion ? std::nullopt : v.margin,
+                          v.margin,
                           assess::margin_text(v),
                           assess::to_string(v.decided_by),
                           r.upgrade.recommended.value_or(""),

@@ -84,18 +84,21 @@ FlexibleScreen flexible_screen(const spectra::Spectrum& s, const FlexibleInput& 
             out.peak_f_hz = f;
         }
     }
-    const bool strong = out.peak_psa_g >= out.threshold_g;
-    const bool below = in.pga_h_g < out.threshold_g;
-    out.flagged = strong && below;
+    // Strong content raises the flag whatever the PGA: a rigid classification that already
+    // predicts uplift, or one that predicts sliding only (friction below tan(alpha)), says
+    // nothing about the body's own mode, which can lift the base at its frequency either way
+    // (docs/methods.md s.2, s.6 step 1).
+    out.flagged = out.peak_psa_g >= out.threshold_g;
     const std::string where = fmt::format("peak PSA {:.4g} g at {:.4g} Hz in {}", out.peak_psa_g,
                                           out.peak_f_hz, describe(bands));
-    if (!strong)
+    if (!out.flagged)
         out.reason = fmt::format("{} < static uplift threshold {:.4g} g: no strong content",
                                  where, out.threshold_g);
-    else if (!below)
-        out.reason = fmt::format("{} >= threshold, but PGA {:.4g} g already reaches the static "
-                                 "threshold {:.4g} g: the rigid classification covers uplift",
-                                 where, in.pga_h_g, out.threshold_g);
+    else if (in.pga_h_g >= out.threshold_g)
+        out.reason = fmt::format("{} >= static uplift threshold {:.4g} g, and PGA {:.4g} g "
+                                 "reaches it too: the body's own mode can lift the base beyond "
+                                 "what the rigid classification shows",
+                                 where, out.threshold_g, in.pga_h_g);
     else
         out.reason = fmt::format("{} >= static uplift threshold {:.4g} g while PGA {:.4g} g is "
                                  "below it: possible frequency-induced rocking of a flexible body",

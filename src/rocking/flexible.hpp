@@ -29,8 +29,8 @@ struct FlexibleInput {
 /// the static uplift threshold, peak_psa_g >= uplift_threshold_g. Reason: a body responding at
 /// its own frequency carries inertial forces of M PSA at its mass, so its base overturning
 /// moment reaches the restoring moment M g b once PSA >= g tan(alpha) even while the ground
-/// acceleration stays below it. Only reported as "below the static threshold" when
-/// pga_h_g < uplift_threshold_g (otherwise the rigid classification already predicts uplift).
+/// acceleration stays below it. The flag does not depend on pga_h_g: a rigid classification
+/// (uplift predicted, or sliding only) never lowers it; pga_h_g only shapes the reason.
 struct FlexibleScreen {
     bool applies = false;           ///< false: no band in the seismic range (reason says why)
     double band_lo_hz = 0.0;        ///< lowest frequency screened (of either band)
@@ -38,7 +38,7 @@ struct FlexibleScreen {
     double peak_psa_g = 0.0;        ///< max of psa_at over the band(s), not the gap between
     double peak_f_hz = 0.0;
     double threshold_g = 0.0;
-    bool flagged = false;           ///< possible frequency-induced rocking below the threshold
+    bool flagged = false;           ///< strong content in the band: the flexible model must run
     std::string reason;
 };
 

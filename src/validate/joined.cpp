@@ -23,7 +23,7 @@ std::string demand_text(const assess::TunnelLevel& l) {
     return fmt::format(
         "{:.1f} mm ({} over {} histories, direction {}; max {:.1f} mm; direction x, the thesis's "
         "above 0.2 g: {:.1f} mm); both units at their common lower friction bound: {:.1f} mm",
-        l.demand_m * 1000.0, l.mean_governs ? "mean" : "maximum", l.histories,
+        l.demand_m * 1000.0, "84th percentile", l.histories,
         assess::to_string(g.direction), g.relative_m.max * 1000.0, x.relative_m.mean * 1000.0,
         g.relative_common_m.mean * 1000.0);
 }

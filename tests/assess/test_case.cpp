@@ -47,7 +47,8 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
         const Case c =
             read_case(fs::path(freestand::test::source_dir()) / "cases" / (std::string(name) + ".toml"));
         CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
-        CHECK(c.options.histories_per_level == 7);  // docs/methods.md s.6 step 5: the mean governs
+        CHECK(c.options.histories_per_level == 30);
+    CHECK(c.options.max_histories_per_level == 120);  // docs/methods.md s.6 step 5: the mean governs
     }
 }
 
@@ -93,7 +94,8 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     CHECK(c.site.sliding_damping == 0.10);
     CHECK(c.options.simulate == SimulatePolicy::automatic);
     CHECK(c.options.seed == 1);
-    CHECK(c.options.histories_per_level == 7);
+    CHECK(c.options.histories_per_level == 30);
+    CHECK(c.options.max_histories_per_level == 120);
     // friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
     CHECK(c.assumptions.size() == 6);
     CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.8 * 0.3, 1.2 * 0.3});
@@ -153,8 +155,31 @@ TEST_CASE("a material trial case reads as a case naming only that material",
     CHECK(a.restitution == b.restitution);
     CHECK(*b.restitution == 0.97);
     CHECK(a.mu_s_range == b.mu_s_range);
-    CHECK(b.mu_s_range == std::array<double, 2>{0.8 * 0.48, 1.2 * 0.48});
+    CHECK(b.mu_s_range == std::array<double, 2>{0.3, 0.5});  // the literature range
     CHECK(a.restitution_range == b.restitution_range);
+}
+
+TEST_CASE("materials take the literature friction range; a case's own bounds for its own base stay",
+          "[assess][case][bounds]") {
+    std::string named = base_component;
+    named.replace(named.find("mu_s = 0.3"), 10, "base_material = \"HDPE\"");
+    const Case c = parse_case(named + base_site, "case.toml");
+    CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.2, 0.4});
+    CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {
+        return a.rfind("Friction bounds of HDPE: mu_s in [0.2, 0.4] (literature range", 0) == 0;
+    }));
+    std::string own = base_component;
+    own.replace(own.find("mu_s = 0.3"), 10,
+                "base_material = \"HDPE\"\nmu_s_range = [0.3, 0.34]");
+    const Case with_own = parse_case(own + base_site, "case.toml");
+    CHECK(with_own.component.base.mu_s_range == std::array<double, 2>{0.3, 0.34});
+    // The trial of its own material keeps the case's bounds; another material brings its own.
+    CHECK(with_base_material(with_own, "hdpe").component.base.mu_s_range ==
+          std::array<double, 2>{0.3, 0.34});
+    CHECK(with_base_material(with_own, "steel").component.base.mu_s_range ==
+          std::array<double, 2>{0.7, 0.8});
+    CHECK(with_base_material(with_own, "PVC sheet on concrete").component.base.mu_s_range ==
+          std::array<double, 2>{0.12, 0.18});
 }
 
 TEST_CASE("case errors name file, line, key and the allowed range", "[assess][case]") {
@@ -236,9 +261,9 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     SECTION("integer option out of range and wrong type") {
         CHECK(error_of(base_component + base_site + "[options]\nhistories_per_level = 0\n") ==
               "case.toml:12: options.histories_per_level: value 0 is out of range; expected an "
-              "integer in [1, 100]");
+              "integer in [1, 1000]");
         CHECK(error_of(base_component + base_site + "[options]\nhistories_per_level = 2.5\n") ==
-              "case.toml:12: options.histories_per_level: expected an integer in [1, 100], got a "
+              "case.toml:12: options.histories_per_level: expected an integer in [1, 1000], got a "
               "number");
     }
     SECTION("unknown design") {

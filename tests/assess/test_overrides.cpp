@@ -131,10 +131,10 @@ TEST_CASE("override checks name the key and the allowed values", "[assess][overr
     o = CaseOverrides{};
     o.histories_per_level = 0;
     CHECK(check_error(o) == "list.csv:4: histories_per_level: value 0 is out of range; expected "
-                            "an integer in [1, 100]");
-    o.histories_per_level = 101;
-    CHECK(check_error(o) == "list.csv:4: histories_per_level: value 101 is out of range; "
-                            "expected an integer in [1, 100]");
+                            "an integer in [1, 1000]");
+    o.histories_per_level = 1001;
+    CHECK(check_error(o) == "list.csv:4: histories_per_level: value 1001 is out of range; "
+                            "expected an integer in [1, 1000]");
 }
 
 TEST_CASE("what depends on the case is checked when the case is read", "[assess][overrides]") {

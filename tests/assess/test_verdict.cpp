@@ -49,7 +49,6 @@ Stats same(double v) { return Stats{v, v, v}; }
 Simulation sim(int n, Stats slide_m, Stats rock_over_alpha = {}, int overturned = 0) {
     Simulation s;
     s.histories = n;
-    s.mean_governs = n >= min_histories_for_mean;
     s.slide_m = slide_m;
     s.rock_over_alpha = rock_over_alpha;
     s.rock_rad = Stats{0.4 * rock_over_alpha.mean, 0.4 * rock_over_alpha.p84,
@@ -108,14 +107,14 @@ TEST_CASE("a failed screen requires the simulation, which governs pass and fail"
     CHECK_FALSE(l.screen.passed);
     CHECK(simulation_need(l.screen, SimulatePolicy::automatic).run);
     CHECK(simulation_need(l.screen, SimulatePolicy::always).run);
-    // Seven histories: the mean governs (20 mm), not the maximum (60 mm).
-    l = decided(l, sim(7, Stats{0.020, 0.030, 0.060}));
+    // The 84th percentile governs (30 mm), not the mean (20 mm) nor the maximum (60 mm).
+    l = decided(l, sim(30, Stats{0.020, 0.030, 0.060}));
     CHECK(l.verdict.kind == VerdictKind::acceptable_with_clearance);
     CHECK(l.verdict.decided_by == Model::simulation_slide);
-    CHECK(l.verdict.clearance_m == 0.020);
-    CHECK(*l.verdict.margin == Approx(2.5));
-    // Five histories: the maximum governs, and fails.
-    l = decided(l, sim(5, Stats{0.020, 0.030, 0.060}));
+    CHECK(l.verdict.clearance_m == 0.030);
+    CHECK(*l.verdict.margin == Approx(0.050 / 0.030));
+    // A mean within the allowable does not save a level whose 84th percentile is beyond it.
+    l = decided(l, sim(30, Stats{0.040, 0.060, 0.080}));
     CHECK(l.verdict.kind == VerdictKind::anchor);
     CHECK(l.verdict.failure == Failure::slides_beyond_allowable);
     CHECK(*l.verdict.margin == Approx(0.050 / 0.060));
@@ -170,14 +169,26 @@ TEST_CASE("simulated rocking: any overturn fails; theta/alpha against 1/FS; no m
     CHECK(l.verdict.failure == Failure::overturns);
     CHECK(*l.verdict.margin == 0.0);
     CHECK(l.verdict.margin_basis.find("1 of 7 histories overturned") != std::string::npos);
-    l = decided(l, sim(7, same(0.0), Stats{0.4, 0.5, 0.9}));
+    // The 84th percentile governs, not the mean.
+    l = decided(l, sim(30, same(0.0), Stats{0.4, 0.6, 0.9}));
     CHECK(l.verdict.decided_by == Model::simulation_rocking);
-    CHECK(*l.verdict.margin == Approx(1.0 / (0.4 * 1.5)));
+    CHECK(*l.verdict.margin == Approx(1.0 / (0.6 * 1.5)));
     CHECK(passes(l.verdict));
+    l = decided(l, sim(30, same(0.0), Stats{0.4, 0.7, 0.9}));
+    CHECK_FALSE(passes(l.verdict));
+    // No motion still has a margin: the rotation's ratio.
     l = decided(l, sim(7, same(0.0), Stats{0.001, 0.002, 0.005}));
     CHECK(l.verdict.no_motion);
-    CHECK_FALSE(l.verdict.margin.has_value());
-    CHECK(margin_text(l.verdict) == "no motion");
+    CHECK(*l.verdict.margin == Approx(1.0 / (0.002 * 1.5)));
+    CHECK(margin_text(l.verdict) == "333.33 (no motion)");
+    // Nothing moved at all: the level's static margin, never an unlimited one.
+    l.initiation_lower.a_ratio = 0.5;
+    l.initiation_lower.mu_s = 0.3;
+    l.initiation_lower.tan_alpha = 0.6;
+    l = decided(l, sim(7, same(0.0), same(0.0)));
+    CHECK(l.verdict.no_motion);
+    CHECK(*l.verdict.margin == Approx(0.3 / 0.5));
+    CHECK(l.verdict.margin_basis.find("static margin") != std::string::npos);
 }
 
 TEST_CASE("the flexible-body flag becomes an open condition of a passing level",
@@ -229,6 +240,11 @@ TEST_CASE("severity: failures first, then the smaller margin; no motion is least
     fail.margin = 0.9;
     CHECK(more_severe(pass_small, pass_big));
     CHECK(more_severe(pass_big, quiet));
+    // A level at rest with its static margin governs over one that moves with a larger margin.
+    Verdict at_rest;
+    at_rest.no_motion = true;
+    at_rest.margin = 1.05;
+    CHECK(more_severe(at_rest, pass_small));
     CHECK(more_severe(fail, pass_small));
     CHECK_FALSE(more_severe(pass_big, pass_small));
     std::vector<LevelResult> levels(3);

@@ -143,7 +143,7 @@ TEST_CASE("a CSV list's errors name list:line and the column", "[batch][list][cs
           "9007199254740991]");
     CHECK(csv_error("file,histories_per_level\na.toml,0\n") ==
           "plant/list.csv:2: histories_per_level: value 0 is out of range; expected an integer "
-          "in [1, 100]");
+          "in [1, 1000]");
     CHECK(csv_error("file,base_material\na.toml,granite\n") ==
           "plant/list.csv:2: base_material: unknown material \"granite\"; expected one of "
           "\"plywood\", \"PVC sheet on concrete\", \"HDPE\", \"aluminium\", \"steel\"");

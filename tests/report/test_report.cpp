@@ -61,7 +61,6 @@ assess::AssessmentResult hand_result() {
     l.screen.passed = false;
     assess::Simulation sim;
     sim.histories = 7;
-    sim.mean_governs = true;
     sim.slide_m = {0.010, 0.011, 0.012};
     sim.rock_over_alpha = {0.1, 0.2, 0.3};
     sim.overturn_ci = {0.0, 0.41};
@@ -268,7 +267,7 @@ TEST_CASE("numbers are formatted with fixed precision and the stamp is present",
     }
     const auto& sim = level.at("simulation");
     CHECK(sim.at("histories") == 7);
-    CHECK(sim.at("mean_governs") == true);
+    CHECK(sim.at("governing_statistic") == "p84");
     CHECK(sim.at("slide_m").at("p84") == 0.011);
     CHECK(sim.at("rock_over_alpha").at("max") == 0.3);
     CHECK(sim.at("overturn_ci") == nlohmann::ordered_json::array({0.0, 0.41}));

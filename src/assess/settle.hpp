@@ -1,0 +1,43 @@
+#pragma once
+/// Settled decisions (docs/methods.md s.6 step 4): the sets of a simulated level are resampled
+/// with replacement (a bootstrap from the case seed) and the level's decision is redone on each
+/// resample. Fewer than 95% agreeing: the level gets another batch of sets, up to the cap; a
+/// level still unsettled at the cap fails, saying so.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "assess/case.hpp"
+#include "assess/histories.hpp"
+#include "assess/level.hpp"
+#include "assess/result.hpp"
+
+namespace freestand::assess {
+
+/// Resamples of the bootstrap (Efron & Tibshirani 1993: 1000-2000 for a percentile or a
+/// proportion near 95%).
+inline constexpr int bootstrap_resamples = 2000;
+/// The share of resamples that must agree with the decision for it to be settled.
+inline constexpr double settle_agreement = 0.95;
+/// Sets an unsettled level gets per batch.
+inline constexpr int settle_batch_sets = 30;
+
+/// True when the level's decision rests on its simulation (flexible-body model, or the screen
+/// failed and the rigid simulation ran): the decisions the sets can move.
+bool decided_by_sets(const LevelResult& level);
+
+/// The level's decision (decide_level) redone on the sets at the given indices.
+bool passes_on(const LevelResult& level, const std::vector<std::size_t>& sets,
+               double allowable_slide_m, double required_fs);
+
+/// The bootstrap of the level's decision from stream `seed`.
+Settling settle(const LevelResult& level, std::uint64_t seed, double allowable_slide_m,
+                double required_fs);
+
+/// Both directions of one PGA level (index `level` in the case's list), with biaxial sliding,
+/// evaluated on options.histories_per_level sets, then on settle_batch_sets more while a decision
+/// the sets can move is unsettled, up to bank.max_sets(); an unsettled decision at the cap fails.
+std::vector<LevelResult> evaluate_settled(const Case& c, const LevelDemand& demand,
+                                          std::size_t level, HistoryBank& bank);
+
+}  // namespace freestand::assess

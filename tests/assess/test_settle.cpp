@@ -1,0 +1,120 @@
+// Settled decisions (docs/methods.md s.6 step 4): the bootstrap of a level's decision, its seed
+// determinism, and a level that grows its sets or fails unsettled at the cap.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "assess/pipeline.hpp"
+#include "assess/settle.hpp"
+#include "assess/verdict.hpp"
+#include "support/paths.hpp"
+
+namespace fs = std::filesystem;
+using namespace freestand::assess;
+
+namespace {
+
+constexpr double allowable = 0.05;
+constexpr double fs_required = 1.5;
+
+// A level the screen failed, decided by a rigid simulation whose sets slide the given peaks.
+LevelResult sliding_level(const std::vector<double>& slide_m) {
+    LevelResult l;
+    l.screen.passed = false;
+    Simulation s;
+    s.histories = static_cast<int>(slide_m.size());
+    s.slide_m = stats_of(slide_m);
+    s.rock_over_alpha = stats_of(std::vector<double>(slide_m.size(), 0.0));
+    s.rock_rad = stats_of(std::vector<double>(slide_m.size(), 0.0));
+    s.overturned_sets.assign(slide_m.size(), 0);
+    l.simulation = s;
+    l.verdict = decide_level(l, allowable, fs_required);
+    return l;
+}
+
+std::vector<std::size_t> all_of(std::size_t n) {
+    std::vector<std::size_t> v(n);
+    for (std::size_t k = 0; k < n; ++k) v[k] = k;
+    return v;
+}
+
+}  // namespace
+
+TEST_CASE("the decision redone on all sets is the level's decision", "[assess][settle]") {
+    const LevelResult pass = sliding_level(std::vector<double>(30, 0.02));
+    CHECK(passes(pass.verdict));
+    CHECK(passes_on(pass, all_of(30), allowable, fs_required));
+    std::vector<double> high(30, 0.02);
+    for (int k = 0; k < 10; ++k) high[static_cast<std::size_t>(k)] = 0.08;  // 10 of 30 beyond
+    const LevelResult fail = sliding_level(high);
+    CHECK_FALSE(passes(fail.verdict));  // the 26th smallest is 0.08
+    CHECK_FALSE(passes_on(fail, all_of(30), allowable, fs_required));
+    // The sets beyond the allowable alone pass nothing; those below alone pass.
+    CHECK(passes_on(fail, std::vector<std::size_t>(30, 20), allowable, fs_required));
+}
+
+TEST_CASE("a clear decision is settled, a borderline one is not", "[assess][settle]") {
+    const Settling clear = settle(sliding_level(std::vector<double>(30, 0.02)), 7, allowable,
+                                  fs_required);
+    CHECK(clear.settled_fraction == 1.0);
+    CHECK(clear.settled);
+    CHECK(clear.n_sets == 30);
+    CHECK(clear.resamples == bootstrap_resamples);
+    // 4 of 30 sets beyond the allowable: the 26th smallest is below it, so the level passes,
+    // but a resample holding 5 or more of them fails (binomial(30, 4/30): P = 0.37).
+    std::vector<double> edge(30, 0.02);
+    for (int k = 0; k < 4; ++k) edge[static_cast<std::size_t>(k)] = 0.08;
+    const LevelResult l = sliding_level(edge);
+    CHECK(passes(l.verdict));
+    const Settling s = settle(l, 7, allowable, fs_required);
+    CHECK_FALSE(s.settled);
+    CHECK(s.settled_fraction == Approx(0.63).margin(0.04));
+    // The same seed gives the same fraction; another seed a close one.
+    CHECK(settle(l, 7, allowable, fs_required).settled_fraction == s.settled_fraction);
+    CHECK(settle(l, 8, allowable, fs_required).settled_fraction ==
+          Approx(s.settled_fraction).margin(0.05));
+}
+
+TEST_CASE("an overturned set fails every resample that holds it", "[assess][settle]") {
+    LevelResult l = sliding_level(std::vector<double>(30, 0.0));
+    l.simulation->overturned_sets[3] = 1;
+    l.simulation->overturned = 1;
+    l.verdict = decide_level(l, allowable, fs_required);
+    CHECK(l.verdict.failure == Failure::overturns);
+    // P(a resample of 30 holds set 3) = 1 - (29/30)^30 = 0.64: the failure is not settled.
+    const Settling s = settle(l, 11, allowable, fs_required);
+    CHECK(s.settled_fraction == Approx(1.0 - std::pow(29.0 / 30.0, 30)).margin(0.03));
+    CHECK_FALSE(s.settled);
+}
+
+TEST_CASE("evaluate_settled grows an unsettled level by batches up to the cap, then fails it",
+          "[assess][settle]") {
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
+    c = with_pga_levels(c, {0.3});
+    c.options.histories_per_level = 3;
+    c.options.max_histories_per_level = 3;
+    c.options.search_materials = false;
+    const AssessmentResult r = assess(c);
+    for (const LevelResult& l : r.levels) {
+        INFO(to_string(l.direction));
+        REQUIRE(l.settling.has_value());
+        CHECK(l.settling->n_sets == 3);
+        CHECK(l.settling->rounds == 1);
+        if (!l.settling->settled) {
+            CHECK(l.verdict.failure == Failure::not_settled);
+            CHECK(l.verdict.margin_basis.rfind("not settled: ", 0) == 0);
+        }
+    }
+    // With room to grow, a PGA level unsettled in either direction on 3 sets takes 30 more in
+    // both (the biaxial run joins them).
+    c.options.max_histories_per_level = 33;
+    const AssessmentResult grown = assess(c);
+    const bool grew = !r.levels[0].settling->settled || !r.levels[1].settling->settled;
+    for (const LevelResult& l : grown.levels) {
+        CHECK(l.settling->n_sets == (grew ? 33 : 3));
+        CHECK(l.settling->rounds == (grew ? 2 : 1));
+    }
+}
