@@ -166,7 +166,8 @@ std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
 
 std::size_t HistoryBank::max_sets() const {
     const Options& opt = case_->options;
-    if (!opt.seed_records.empty()) return opt.seed_records.size() / 3;
+    // Seed records give exactly histories_per_level sets (sets() refuses any other count).
+    if (!opt.seed_records.empty()) return static_cast<std::size_t>(opt.histories_per_level);
     return static_cast<std::size_t>(std::max(opt.histories_per_level, opt.max_histories_per_level));
 }
 

@@ -302,6 +302,32 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
 
 // Rigid and flexible side by side at each level the flexible-body model ran (docs/methods.md
 // s.10): one row per model over the same histories and bounds.
+// "How sure is this verdict" (docs/methods.md s.6 steps 3-4): per level decided by its sets,
+// N, the share of bootstrap resamples that agree, and the counts beyond each limit.
+mstch::array how_sure_rows(const std::vector<LevelResult>& levels) {
+    mstch::array out;
+    for (const LevelResult& l : levels) {
+        if (!l.settling) continue;
+        const Simulation& sim =
+            l.flexible_simulation ? l.flexible_simulation->sim : *l.simulation;
+        const auto count = [](const Exceedance& e) {
+            return fmt::format("{}/{} ({:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0],
+                               100.0 * e.ci95[1]);
+        };
+        out.push_back(mstch::map{
+            {"pga", fixed(l.pga_g, 3)},
+            {"dir", std::string(to_string(l.direction))},
+            {"n_sets", std::to_string(l.settling->n_sets)},
+            {"settled", fmt::format("{:.1f}%{}", 100.0 * l.settling->settled_fraction,
+                                    l.settling->settled ? "" : " (not settled)")},
+            {"slide_beyond", count(sim.slide_exceed)},
+            {"rock_beyond", count(sim.rock_exceed)},
+            {"overturned", count(Exceedance{sim.overturned, sim.histories, sim.overturn_ci})},
+            {"verdict", std::string(passes(l.verdict) ? "passes" : "fails")}});
+    }
+    return out;
+}
+
 mstch::array flex_compare(const std::vector<LevelResult>& levels) {
     mstch::array out;
     const auto row = [](const LevelResult& l, const Simulation& sim, const std::string& model,
@@ -436,6 +462,9 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"trials", trial_rows(r.upgrade)},
         {"inputs", inputs(r.input, r.levels)},
         {"levels", levels},
+        {"how_sure", how_sure_rows(r.levels)},
+        {"has_how_sure", std::any_of(r.levels.begin(), r.levels.end(),
+                                     [](const LevelResult& l) { return l.settling.has_value(); })},
         {"flex_notes", flex_notes(r.levels)},
         {"flex_compare", flex_compare(r.levels)},
         {"has_flex_compare", std::any_of(r.levels.begin(), r.levels.end(), [](const LevelResult& l) {

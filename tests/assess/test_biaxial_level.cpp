@@ -20,6 +20,7 @@ namespace {
 Case shipped(const char* name, const std::vector<double>& pga, int histories) {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / name);
     c.options.histories_per_level = histories;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     return with_pga_levels(c, pga);
 }
 

@@ -142,6 +142,7 @@ TEST_CASE("the bank reads what the cache holds and generates the rest", "[assess
     const core::ContentStore store(dir);
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "block-ts1.toml");
     c.options.histories_per_level = 2;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     RunSettings run(2);
     run.cache = &store;
     HistoryBank first(c, run);
@@ -149,6 +150,7 @@ TEST_CASE("the bank reads what the cache holds and generates the rest", "[assess
     CHECK(first.generated_sets() == 2);
     CHECK(first.cache_hits() == 0);
     c.options.histories_per_level = 3;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     HistoryBank second(c, run);
     const auto more = second.sets();
     CHECK(second.cache_hits() == 2);

@@ -20,6 +20,7 @@ namespace {
 Case glovebox(const std::vector<double>& pga, int histories) {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.options.histories_per_level = histories;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     return with_pga_levels(c, pga);
 }
 }  // namespace
@@ -302,6 +303,7 @@ TEST_CASE("the reported extreme footprint (glove box, p_radps kept) is assessed"
     REQUIRE(text.find("p_radps = 1.97") != std::string::npos);
     Case c = parse_case(text, file.string());
     c.options.histories_per_level = 1;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     const AssessmentResult r = assess::assess(with_pga_levels(c, {0.1}));
     const LevelResult& x = r.levels.at(0);
     REQUIRE(x.direction == Direction::x);
@@ -315,6 +317,7 @@ namespace {
 Case steel_pads(const std::vector<double>& pga, int histories) {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-steel-pads.toml");
     c.options.histories_per_level = histories;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     return with_pga_levels(c, pga);
 }
 }  // namespace

@@ -72,11 +72,13 @@ void check_material_trials(const std::string& name) {
     // Trial and direct assessment must agree for any number of histories: 3 keep it quick.
     Case c = read_case(file);
     c.options.histories_per_level = 3;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     const Upgrade search = search_materials(c);
     for (const Material& m : materials()) {
         INFO(file.filename().string() << " with " << m.name);
         Case edited = parse_case(edited_case_text(file, m.name), file.string());
         edited.options.histories_per_level = 3;
+        edited.options.max_histories_per_level = edited.options.histories_per_level;
         const AssessmentResult direct = assess::assess(edited);
         const auto trial =
             std::find_if(search.trials.begin(), search.trials.end(),
@@ -119,6 +121,7 @@ TEST_CASE("every material trial equals a direct assessment: each unit of glovebo
     for (std::size_t i = 0; i < 2; ++i) {
         Case c = unit_case(pair, i);
         c.options.histories_per_level = 3;  // any number must agree: 3 keep it quick
+        c.options.max_histories_per_level = c.options.histories_per_level;
         const Upgrade search = search_materials(c);
         REQUIRE(search.trials.size() == materials().size());
         for (const MaterialTrial& t : search.trials) {

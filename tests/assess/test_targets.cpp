@@ -57,6 +57,7 @@ fs::path rewritten(const std::string& name, const fs::path& from, F factor) {
 Case glovebox(const std::string& site_extra) {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.options.histories_per_level = 1;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     c = with_pga_levels(c, {0.2});
     if (site_extra.empty()) return c;
     const Case files = parse_case(component + site_extra, label);

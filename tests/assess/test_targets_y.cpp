@@ -57,6 +57,7 @@ fs::path scaled_file(const std::string& name, const fs::path& from, double facto
 Case glovebox(const std::string& site_extra) {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     c.options.histories_per_level = 1;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     c = with_pga_levels(c, {0.2});
     const Case files = parse_case(component + site_extra, label);
     c.site.targets = files.site.targets;

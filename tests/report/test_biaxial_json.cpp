@@ -17,6 +17,7 @@ namespace {
 nlohmann::ordered_json levels_json(const char* name, double pga_g) {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / name);
     c.options.histories_per_level = 1;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     // Without the flexible-body inputs no flag is raised: the biaxial model alone decides.
     c.component.fixed_base_frequency_hz.reset();
     c.component.free_rocking_band_hz.reset();
