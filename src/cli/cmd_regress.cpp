@@ -35,15 +35,17 @@ std::vector<fs::path> case_files(const fs::path& dir) {
     return out;
 }
 
-// A headline value as one line: a string as it is, anything else as JSON.
+// A headline value (a JSON pointer into the document) as one line: a string as it is, anything
+// else as JSON.
 std::string headline_text(const nlohmann::ordered_json& doc, const char* headline) {
-    if (!doc.contains(headline)) return "(none)";
-    const auto& h = doc.at(headline);
+    const nlohmann::ordered_json::json_pointer at(headline);
+    if (!doc.contains(at)) return "(none)";
+    const auto& h = doc.at(at);
     return h.is_string() ? h.get<std::string>() : h.dump();
 }
 
 // Compares one fresh result.json with its golden; returns true when they match. headline is the
-// fresh document's one-line summary ("verdict" of a case, "summary" of the validation).
+// fresh document's one-line summary ("/verdict" of a case, "/summary/text" of the validation).
 bool check(const fs::path& golden_file, const std::string& fresh_json, const char* headline,
            double rtol) {
     const std::string name = golden_file.parent_path().filename().string();
@@ -79,6 +81,8 @@ bool check(const fs::path& golden_file, const std::string& fresh_json, const cha
     return false;
 }
 
+const char* const validation_headline = "/summary/text";
+
 // The validation against the thesis (reports/validation/), when the cases folder holds the
 // shipped cases it assesses.
 bool regress_validation(const fs::path& reports, const fs::path& cases, bool update, double rtol) {
@@ -91,10 +95,11 @@ bool regress_validation(const fs::path& reports, const fs::path& cases, bool upd
     const report::ValidationReport rendered =
         report::render_validation(v, report::validation_stamp(v, build_commit));
     const fs::path dir = reports / "validation";
-    if (!update) return check(dir / "result.json", rendered.json, "summary", rtol);
+    if (!update) return check(dir / "result.json", rendered.json, validation_headline, rtol);
     report::write_validation(dir, rendered);
-    std::cout << fmt::format("updated {}: {}\n", dir.string(),
-                             nlohmann::ordered_json::parse(rendered.json).at("summary").dump());
+    std::cout << fmt::format(
+        "updated {}: {}\n", dir.string(),
+        headline_text(nlohmann::ordered_json::parse(rendered.json), validation_headline));
     return true;
 }
 
@@ -124,7 +129,7 @@ int run(const std::vector<std::string>& args) {
             std::cout << fmt::format("updated {}: {}\n", dir.string(),
                                      report::verdict_line(run.result));
         } else {
-            all_ok = check(dir / "result.json", run.rendered.json, "verdict", rtol) && all_ok;
+            all_ok = check(dir / "result.json", run.rendered.json, "/verdict", rtol) && all_ok;
         }
     }
     all_ok = regress_validation(reports, (*vm)["cases"].as<std::string>(), update, rtol) && all_ok;

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <mstch/mstch.hpp>
 #include <set>
@@ -58,23 +59,32 @@ std::string sources_text(const std::vector<std::string>& keys) {
     return out;
 }
 
-struct Counts {
-    int agrees = 0, differs = 0, not_comparable = 0;
-};
-Counts count(const validate::Validation& v) {
-    Counts c;
-    for (const validate::Row& r : v.rows) {
-        if (r.agreement == Agreement::agrees) ++c.agrees;
-        if (r.agreement == Agreement::differs) ++c.differs;
-        if (r.agreement == Agreement::not_comparable) ++c.not_comparable;
-    }
-    return c;
+// "outcome: 70 of 80 agree (16 not runnable on the thesis's table)": agreements counted among
+// the rows that compare; the rest named apart.
+std::string tally_text(const validate::Tally& t) {
+    std::string out =
+        fmt::format("{}: {} of {} agree", validate::to_string(t.kind), t.agrees, t.compared());
+    std::vector<std::string> apart;
+    if (t.not_comparable > 0) apart.push_back(fmt::format("{} not comparable", t.not_comparable));
+    if (t.not_runnable > 0)
+        apart.push_back(fmt::format("{} not runnable on the thesis's table", t.not_runnable));
+    if (!apart.empty()) out += " (" + fmt::format("{}", fmt::join(apart, ", ")) + ")";
+    return out;
 }
 
 std::string summary_text(const validate::Validation& v) {
-    const Counts c = count(v);
-    return fmt::format("{} rows: {} agree, {} differ, {} not comparable", v.rows.size(), c.agrees,
-                       c.differs, c.not_comparable);
+    std::vector<std::string> parts;
+    for (const validate::Tally& t : validate::tally(v.rows)) parts.push_back(tally_text(t));
+    return fmt::format("{} rows; {}", v.rows.size(), fmt::join(parts, "; "));
+}
+
+ordered_json tally_json(const validate::Tally& t) {
+    return {{"kind", validate::to_string(t.kind)},
+            {"rows", t.rows},
+            {"agrees", t.agrees},
+            {"differs", t.differs},
+            {"not_comparable", t.not_comparable},
+            {"not_runnable", t.not_runnable}};
 }
 
 // The thesis facts the rows cite, in the order of thesis.hpp.
@@ -90,15 +100,17 @@ std::vector<const validate::Fact*> cited_facts(const validate::Validation& v) {
 
 mstch::map row_context(const validate::Row& r) {
     return mstch::map{{"id", r.id},
+                      {"kind", std::string(validate::to_string(r.kind))},
                       {"test", r.test},
                       {"thesis", r.thesis},
                       {"predicted", r.predicted},
                       {"difference", r.difference},
                       {"agreement", std::string(validate::to_string(r.agreement))},
-                      {"agreement_class", std::string(r.agreement == Agreement::agrees ? "agrees"
-                                                      : r.agreement == Agreement::differs
-                                                          ? "differs"
-                                                          : "not-comparable")},
+                      {"agreement_class",
+                       std::string(r.agreement == Agreement::agrees         ? "agrees"
+                                   : r.agreement == Agreement::differs      ? "differs"
+                                   : r.agreement == Agreement::not_runnable ? "not-runnable"
+                                                                            : "not-comparable")},
                       {"reason", r.reason},
                       {"sources", sources_text(r.sources)}};
 }
@@ -153,11 +165,9 @@ Stamp validation_stamp(const validate::Validation& v, const std::string& commit)
 ordered_json validation_json(const validate::Validation& v, const Stamp& stamp) {
     ordered_json j;
     j["title"] = title;
-    const Counts c = count(v);
-    j["summary"] = {{"rows", v.rows.size()},
-                    {"agrees", c.agrees},
-                    {"differs", c.differs},
-                    {"not_comparable", c.not_comparable}};
+    ordered_json kinds = ordered_json::array();
+    for (const validate::Tally& t : validate::tally(v.rows)) kinds.push_back(tally_json(t));
+    j["summary"] = {{"rows", v.rows.size()}, {"text", summary_text(v)}, {"kinds", kinds}};
     ordered_json groups = ordered_json::array();
     for (const validate::Group& g : v.groups) {
         groups.push_back({{"key", g.key},
@@ -171,6 +181,7 @@ ordered_json validation_json(const validate::Validation& v, const Stamp& stamp) 
     for (const validate::Row& r : v.rows) {
         rows.push_back({{"group", r.group},
                         {"id", r.id},
+                        {"kind", validate::to_string(r.kind)},
                         {"test", r.test},
                         {"thesis", r.thesis},
                         {"thesis_value", optional_number(r.thesis_value)},
@@ -213,7 +224,8 @@ std::string validation_text(const validate::Validation& v) {
         out += fmt::format("\n== {}\n   tolerance: {}\n", g.title, g.tolerance);
         for (const validate::Row& r : v.rows) {
             if (r.group != g.key) continue;
-            out += fmt::format("\n[{}] {}: {}\n", validate::to_string(r.agreement), r.id, r.test);
+            out += fmt::format("\n[{}, {}] {}: {}\n", validate::to_string(r.agreement),
+                               validate::to_string(r.kind), r.id, r.test);
             out += fmt::format("   thesis:     {}\n", r.thesis);
             out += fmt::format("   freestand:  {}\n", r.predicted);
             out += fmt::format("   difference: {}\n", r.difference);

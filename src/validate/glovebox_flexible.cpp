@@ -31,6 +31,7 @@ Row flexible_row(const assess::AssessmentResult& r, double pga_g) {
     const assess::Simulation& s = f.sim;
     Row row;
     row.group = flexible_key;
+    row.kind = Kind::outcome;
     row.id = fmt::format("gb-steel-flexible-{:g}g", pga_g);
     row.test = fmt::format("single glove box on steel pads, {:g} g (vertical 2/3), flexible-body "
                            "model: glovebox-steel-pads.toml",

@@ -30,11 +30,6 @@ double implied_amplitude_g(double v_mps, double f_hz) {
     return two_pi * f_hz * v_mps / thesis_g_mps2;
 }
 
-// Sine table travel needed for amplitude a_g at f: A g / (2 pi f)^2, m.
-double travel_m(double a_g, double f_hz) {
-    return a_g * thesis_g_mps2 / (two_pi * f_hz * two_pi * f_hz);
-}
-
 std::string outcome_text(const dynamics::Summary& s) {
     if (s.overturned) {
         return fmt::format("overturned at {:.2f} s (mode {}, {})", *s.overturn_time_s,
@@ -82,15 +77,6 @@ std::string housner_text(const Specimen& s, double f_hz, const dynamics::Summary
         r_housner, short_outcome(housner), sine_amplitude_g());
 }
 
-std::string stroke_caveat(double f_hz) {
-    const double need = travel_m(sine_amplitude_g(), f_hz);
-    if (need <= table_stroke_m()) return "";
-    return fmt::format(
-        "A {:g} g sine at {:g} Hz needs +-{:.3f} m of table travel; the table has +-{:.3f} m "
-        "(Table 3-1), so the test cannot have been this input (see the notes).",
-        sine_amplitude_g(), f_hz, need, table_stroke_m());
-}
-
 // The thesis's velocity bound against its own formula (Eq. 3.41).
 std::string ishiyama_text(const Specimen& s, double f_hz) {
     if (!has_table_velocity(f_hz)) return "";
@@ -110,6 +96,7 @@ Row sine_row(const Specimen& s, double f_hz) {
     Row row;
     row.group = group_key;
     row.id = fmt::format("{}-{}", s.key, freq_key(f_hz));
+    row.kind = Kind::outcome;
     row.test = test_text(s, f_hz);
     row.sources = {s.key + ".alpha_rad", s.key + ".R_m", s.key + ".mass_kg", s.key + ".p_radps",
                    "steel.mu_s", "steel.restitution", "ts.sine_g", "ts.duration_s"};
@@ -127,7 +114,7 @@ Row sine_row(const Specimen& s, double f_hz) {
         const bool same = observed == run.overturned;
         row.difference = same ? "same outcome" : "opposite outcome";
         row.agreement = same ? Agreement::agrees : Agreement::differs;
-        std::string reason = stroke_caveat(f_hz);
+        std::string reason;
         if (!same) {
             reason += (reason.empty() ? "" : " ") +
                       std::string("Candidate reasons, each run through the model:");
@@ -143,6 +130,7 @@ Row sine_row(const Specimen& s, double f_hz) {
                            {fmt::format("{}.v_{:g}hz_mps", s.key, f_hz), "ts.velocity_integrated",
                             "ts.stroke_m"});
         row.reason = reason;
+        apply_stroke_rule(row, sine_amplitude_g(), f_hz);
         return row;
     }
     row.thesis =
@@ -160,6 +148,8 @@ Row ishiyama_row(const Specimen& s) {
     Row row;
     row.group = group_key;
     row.id = s.key + "-ishiyama";
+    // The thesis's formula with the thesis's R and alpha: a check of its arithmetic.
+    row.kind = Kind::by_construction;
     row.test = fmt::format("{} Ishiyama velocity bound, Eq. 3.41 with Table 3-2's R and alpha",
                            s.name);
     const double v_thesis = value(s.key + ".vpeak_mps");
@@ -199,6 +189,30 @@ const std::vector<Specimen>& specimens() {
 double sine_amplitude_g() { return value("ts.sine_g"); }
 double sine_duration_s() { return value("ts.duration_s"); }
 double table_stroke_m() { return value("ts.stroke_m"); }
+
+double sine_travel_m(double amplitude_g, double frequency_hz) {
+    return amplitude_g * thesis_g_mps2 / (two_pi * frequency_hz * two_pi * frequency_hz);
+}
+
+bool within_stroke(double travel_m) { return travel_m <= table_stroke_m(); }
+
+bool table_can_play(double amplitude_g, double frequency_hz) {
+    return within_stroke(sine_travel_m(amplitude_g, frequency_hz));
+}
+
+void apply_stroke_rule(Row& row, double amplitude_g, double frequency_hz) {
+    const double need_m = sine_travel_m(amplitude_g, frequency_hz);
+    if (within_stroke(need_m)) return;
+    row.agreement = Agreement::not_runnable;
+    const std::string why = fmt::format(
+        "Not runnable on the thesis's table: a {:g} g sine at {:g} Hz needs +-{:.3f} m of table "
+        "travel (A g / (2 pi f)^2); the table has +-{:.3f} m (Table 3-1), so the test cannot have "
+        "been this input (see the notes). Shown, not counted.",
+        amplitude_g, frequency_hz, need_m, table_stroke_m());
+    row.reason = row.reason.empty() ? why : why + " " + row.reason;
+    if (std::find(row.sources.begin(), row.sources.end(), "ts.stroke_m") == row.sources.end())
+        row.sources.push_back("ts.stroke_m");
+}
 
 const std::vector<double>& sine_frequencies_hz() {
     static const std::vector<double> list{0.5, 1.0, 2.0, 3.0, 5.0, 10.0};
@@ -279,16 +293,17 @@ std::vector<std::string> specimen_notes() {
     std::string travel;
     for (double f : sine_frequencies_hz()) {
         travel += fmt::format("{}{:g} Hz {:.3f} m", travel.empty() ? "" : ", ", f,
-                              travel_m(sine_amplitude_g(), f));
+                              sine_travel_m(sine_amplitude_g(), f));
     }
     notes.push_back(fmt::format(
         "Stroke. A sine of amplitude A at f moves the table +-A g / (2 pi f)^2. At {:g} g: {}. "
         "The table's stroke is +-{:.3f} m (Table 3-1; the thesis's own Eq. 3.42), so the 0.5 and "
         "1 Hz runs at {:g} g were beyond it; the largest sine it can play is {:.3f} g at 0.5 Hz, "
-        "{:.3f} g at 1 Hz and {:.2f} g at 2 Hz.",
+        "{:.3f} g at 1 Hz and {:.2f} g at 2 Hz. The rows of sines beyond it (here and in Table "
+        "3-4) are marked not runnable and not counted.",
         sine_amplitude_g(), travel, table_stroke_m(), sine_amplitude_g(),
-        table_stroke_m() / travel_m(1.0, 0.5), table_stroke_m() / travel_m(1.0, 1.0),
-        table_stroke_m() / travel_m(1.0, 2.0)));
+        table_stroke_m() / sine_travel_m(1.0, 0.5), table_stroke_m() / sine_travel_m(1.0, 1.0),
+        table_stroke_m() / sine_travel_m(1.0, 2.0)));
     std::string implied;
     double half_lo = 1e9, half_hi = 0.0;
     for (const Specimen& s : specimens()) {

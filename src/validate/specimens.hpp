@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "assess/case.hpp"
 #include "block/block.hpp"
 #include "dynamics/simulate.hpp"
 #include "validate/validate.hpp"
@@ -34,6 +35,15 @@ double sine_duration_s();
 const std::vector<double>& sine_frequencies_hz();
 /// Half-stroke of the thesis's shake table, m (Table 3-1).
 double table_stroke_m();
+/// Table travel a sine needs: amplitude A g / (2 pi f)^2 of its displacement, m (g = 9.81).
+double sine_travel_m(double amplitude_g, double frequency_hz);
+/// True when a travel of +-travel_m fits the table's stroke (<= table_stroke_m()).
+bool within_stroke(double travel_m);
+/// True when the thesis's table can play the sine: within_stroke(sine_travel_m(A, f)).
+bool table_can_play(double amplitude_g, double frequency_hz);
+/// Where the table cannot play the sine, marks the row Agreement::not_runnable and puts the
+/// travel against the stroke first in its reason (the comparison stays shown); else nothing.
+void apply_stroke_rule(Row& row, double amplitude_g, double frequency_hz);
 
 /// The planar block: b = R sin(alpha), h = R cos(alpha) and I_c = M g R / p^2 - M R^2, so that
 /// the block has exactly Table 3-2's alpha, R, M and p.
@@ -56,5 +66,38 @@ bool thesis_overturned(const Specimen& s, double frequency_hz);
 Group specimen_group();
 std::vector<Row> specimen_rows();
 std::vector<std::string> specimen_notes();
+
+/// One run of Table 3-4 (specimens_rest.cpp): a specimen under sines of one amplitude.
+struct RestRun {
+    int number = 0;  ///< run number in Table 3-4, 1-6
+    Specimen specimen;
+    std::string key;  ///< fact key of its amplitude, e.g. "ts1.rest_run1_g"
+    double amplitude_g = 0.0;
+};
+/// Table 3-4's six runs, two amplitudes per specimen (X_s = g tan(alpha) and just below).
+const std::vector<RestRun>& rest_runs();
+/// Table 3-4's frequencies: 0.5 Hz, then 1 to 10 Hz by 1 Hz.
+const std::vector<double>& rest_frequencies_hz();
+/// The rest tests: one row per run and frequency (66), outcome rows under the stroke rule.
+Group rest_group();
+std::vector<Row> rest_rows();
+
+/// The random 0.8 g table test of s.3.3.4 (specimens_random.cpp): each specimen under every
+/// history of a case's bank, horizontal record only, scaled to 0.8 g.
+struct RandomRuns {
+    std::string histories;                             ///< where the histories came from, in words
+    std::vector<std::vector<dynamics::Summary>> runs;  ///< [specimen][history]
+    double pgd_mean_m = 0.0;            ///< mean peak ground displacement of the scaled records, m
+    double pgd_max_m = 0.0;             ///< largest of them, m
+    double highpass_hz = 0.0;           ///< the case's energy high-pass corner, Hz
+    double highpass_disp_mean_m = 0.0;  ///< mean peak displacement after that high-pass, m
+};
+/// Runs the specimens under the histories of histories_case (named case_label in the rows):
+/// its options.histories_per_level sets from assess::HistoryBank, on every core; deterministic.
+RandomRuns run_random(const assess::Case& histories_case, const std::string& case_label);
+Group random_group(const RandomRuns& runs);
+std::vector<Row> random_rows(const RandomRuns& runs);
+/// What the table's stroke says about the random test's motion.
+std::string random_note(const RandomRuns& runs);
 
 }  // namespace freestand::validate

@@ -14,8 +14,50 @@ const char* to_string(Agreement a) {
             return "differs";
         case Agreement::not_comparable:
             return "not comparable";
+        case Agreement::not_runnable:
+            return "not runnable";
     }
     return "?";
+}
+
+const char* to_string(Kind k) {
+    switch (k) {
+        case Kind::by_construction:
+            return "by construction";
+        case Kind::outcome:
+            return "outcome";
+        case Kind::quantitative:
+            return "quantitative";
+    }
+    return "?";
+}
+
+std::vector<Tally> tally(const std::vector<Row>& rows) {
+    std::vector<Tally> out;
+    for (Kind k : {Kind::by_construction, Kind::outcome, Kind::quantitative}) {
+        Tally t;
+        t.kind = k;
+        for (const Row& r : rows) {
+            if (r.kind != k) continue;
+            ++t.rows;
+            switch (r.agreement) {
+                case Agreement::agrees:
+                    ++t.agrees;
+                    break;
+                case Agreement::differs:
+                    ++t.differs;
+                    break;
+                case Agreement::not_comparable:
+                    ++t.not_comparable;
+                    break;
+                case Agreement::not_runnable:
+                    ++t.not_runnable;
+                    break;
+            }
+        }
+        out.push_back(t);
+    }
+    return out;
 }
 
 const std::vector<std::string>& case_names() {
@@ -32,18 +74,21 @@ bool has_cases(const std::filesystem::path& cases_dir) {
 }
 
 Validation run(const std::filesystem::path& cases_dir) {
-    Validation v;
-    v.groups = {specimen_group(), worked_group(), modes_group(), joined_group(),
-                flexible_group()};
-    v.rows = specimen_rows();
     const GloveBoxRuns runs = run_glove_boxes(cases_dir);
-    for (auto* part : {&worked_rows, &mode_rows, &flexible_rows}) {
-        std::vector<Row> rows = (*part)(runs);
+    const RandomRuns random = run_random(runs.pvc.input, "glovebox-single.toml");
+    Validation v;
+    v.groups = {specimen_group(), rest_group(),   random_group(random), worked_group(),
+                modes_group(),    joined_group(), flexible_group()};
+    const auto append = [&v](const std::vector<Row>& rows) {
         v.rows.insert(v.rows.end(), rows.begin(), rows.end());
-    }
-    const std::vector<Row> joined = joined_rows(cases_dir);
-    v.rows.insert(v.rows.end(), joined.begin(), joined.end());
+    };
+    append(specimen_rows());
+    append(rest_rows());
+    append(random_rows(random));
+    for (auto* part : {&worked_rows, &mode_rows, &flexible_rows}) append((*part)(runs));
+    append(joined_rows(cases_dir));
     v.notes = specimen_notes();
+    v.notes.push_back(random_note(random));
     for (const std::string& n : case_names()) v.case_files.push_back(cases_dir / n);
     return v;
 }

@@ -34,10 +34,12 @@ TEST_CASE("validate prints the table, writes the reports, prints result.json wit
     const auto a = run_cli("validate --out '" + (dir / "a").string() + "'");
     REQUIRE(a.exit_code == 0);
     CHECK_THAT(a.out, Catch::StartsWith("freestand against the thesis: validation\n"));
-    for (const char* text : {"[differs] ts3-ishiyama:", "   thesis:     47 mm (s.5.5)",
-                             "[agrees] gb-steel-pads-0.3g:", "Saraswat 2017", "\nnotes\n"})
+    for (const char* text :
+         {"[differs, by construction] ts3-ishiyama:", "   thesis:     47 mm (s.5.5)",
+          "[agrees, outcome] gb-steel-pads-0.3g:", "[not runnable, outcome] ts1-0.5hz:",
+          "Saraswat 2017", "\nnotes\n"})
         CHECK_THAT(a.out, Catch::Contains(text));
-    CHECK_THAT(a.err, Catch::Contains("wrote " + (dir / "a").string() + " (46 rows) in "));
+    CHECK_THAT(a.err, Catch::Contains("wrote " + (dir / "a").string() + " (127 rows) in "));
     for (const char* f : {"report.md", "report.html", "result.json"}) CHECK(fs::exists(dir / "a" / f));
     // The second run prints result.json (--json) and must write the same bytes.
     const auto b = run_cli("validate --json --out '" + (dir / "b").string() + "'");
@@ -48,12 +50,30 @@ TEST_CASE("validate prints the table, writes the reports, prints result.json wit
     }
     CHECK(b.out == slurp(dir / "b" / "result.json"));
     const auto j = nlohmann::json::parse(b.out);
-    REQUIRE(j.at("rows").size() == 46);
-    CHECK(j.at("summary").at("rows") == 46);
+    REQUIRE(j.at("rows").size() == 127);
+    CHECK(j.at("summary").at("rows") == 127);
+    // One tally per kind, adding up to the rows; the text says the same.
+    const auto& kinds = j.at("summary").at("kinds");
+    REQUIRE(kinds.size() == 3);
+    int counted = 0;
+    for (const auto& k : kinds) {
+        counted += k.at("rows").get<int>();
+        CHECK(k.at("agrees").get<int>() + k.at("differs").get<int>() +
+                  k.at("not_comparable").get<int>() + k.at("not_runnable").get<int>() ==
+              k.at("rows").get<int>());
+        CHECK_THAT(
+            j.at("summary").at("text").get<std::string>(),
+            Catch::Contains(fmt::format("{}: {} of {} agree", k.at("kind").get<std::string>(),
+                                        k.at("agrees").get<int>(),
+                                        k.at("agrees").get<int>() + k.at("differs").get<int>())));
+    }
+    CHECK(counted == 127);
+    CHECK(kinds.at(1).at("kind") == "outcome");
+    CHECK(kinds.at(1).at("not_runnable") == 15);
     const auto& first = j.at("rows").at(0);
-    for (const char* key : {"group", "id", "test", "thesis", "thesis_value", "predicted",
-                            "predicted_value", "unit", "difference", "difference_value",
-                            "agreement", "reason", "sources"})
+    for (const char* key :
+         {"group", "id", "kind", "test", "thesis", "thesis_value", "predicted", "predicted_value",
+          "unit", "difference", "difference_value", "agreement", "reason", "sources"})
         CHECK(first.contains(key));
     CHECK(j.at("thesis").at("reference") == "Saraswat 2017");
     CHECK(j.at("stamp").at("inputs").size() == 4);
@@ -97,7 +117,9 @@ TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][
     // while the cases stay ok, then report the validation's golden missing.
     const auto update = run_cli("regress " + args + " --update");
     REQUIRE(update.exit_code == 0);
-    CHECK_THAT(update.out, Catch::Contains("updated " + (dir / "reports" / "validation").string()));
+    // The one-line headline is the summary's text, per kind.
+    CHECK_THAT(update.out, Catch::Contains("updated " + (dir / "reports" / "validation").string() +
+                                           ": 127 rows; by construction: "));
     CHECK(fs::exists(dir / "reports" / "validation" / "report.html"));
     // Drift one predicted value by 1%.
     const fs::path golden = dir / "reports" / "validation" / "result.json";

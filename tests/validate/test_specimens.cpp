@@ -2,7 +2,9 @@
 // Ishiyama bound against its formula (issue 13 s.3).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "rocking/checks.hpp"
 #include "validate/specimens.hpp"
@@ -35,7 +37,7 @@ TEST_CASE("specimen blocks have exactly Table 3-2's alpha, R, M and p", "[valida
 }
 
 TEST_CASE("a specimen that cannot uplift stays still at any frequency", "[validate]") {
-    // TS3: tan(alpha) = tan(0.463) = 0.4994; 0.45 g is below it and below mu 0.72 (rest,
+    // TS3: tan(alpha) = tan(0.463) = 0.4992; 0.45 g is below it and below mu 0.72 (rest,
     // docs/methods.md s.2), so the rigid block neither rocks nor slides.
     const Specimen& s = ts(3);
     for (double f : {2.0, 10.0}) {
@@ -87,4 +89,65 @@ TEST_CASE("the thesis's overturning observations", "[validate]") {
     CHECK(thesis_overturned(ts(1), 2.0));
     CHECK(thesis_overturned(ts(2), 2.0));
     CHECK_FALSE(thesis_overturned(ts(3), 2.0));
+}
+
+TEST_CASE("the stroke rule: a sine runs when A g / (2 pi f)^2 is at most the table's 75 mm",
+          "[validate][stroke]") {
+    REQUIRE(table_stroke_m() == 0.075);
+    CHECK(within_stroke(0.075));
+    CHECK_FALSE(within_stroke(std::nextafter(0.075, 1.0)));
+    CHECK(within_stroke(0.0749));
+    CHECK_FALSE(within_stroke(0.0751));
+    // 0.3 g at 1 Hz: 0.3 x 9.81 / (2 pi)^2 = 0.074547 m, just inside; 0.33 g: 0.082 m, outside.
+    CHECK(sine_travel_m(0.3, 1.0) ==
+          Approx(0.3 * 9.81 / (4.0 * std::numbers::pi * std::numbers::pi)).epsilon(1e-14));
+    CHECK(sine_travel_m(0.3, 1.0) == Approx(0.074547).margin(1e-6));
+    CHECK(table_can_play(0.3, 1.0));
+    CHECK_FALSE(table_can_play(0.33, 1.0));
+    // Around the amplitude whose travel is the stroke exactly, at 2 Hz.
+    const double at_stroke_g = 0.075 * (4.0 * std::numbers::pi) * (4.0 * std::numbers::pi) / 9.81;
+    CHECK(table_can_play(at_stroke_g * (1.0 - 1e-9), 2.0));
+    CHECK_FALSE(table_can_play(at_stroke_g * (1.0 + 1e-9), 2.0));
+    // 0.8 g (Table 3-5): 0.5 and 1 Hz beyond the stroke, 2 Hz (0.050 m) within.
+    CHECK_FALSE(table_can_play(0.8, 0.5));
+    CHECK_FALSE(table_can_play(0.8, 1.0));
+    CHECK(table_can_play(0.8, 2.0));
+}
+
+TEST_CASE("the stroke rule marks a row not runnable, keeps its comparison and says why",
+          "[validate][stroke]") {
+    Row row;
+    row.agreement = Agreement::agrees;
+    row.difference = "same outcome";
+    row.reason = "Earlier reason.";
+    row.sources = {"ts.sine_g"};
+    apply_stroke_rule(row, 0.8, 2.0);  // 0.050 m: runnable, untouched
+    CHECK(row.agreement == Agreement::agrees);
+    CHECK(row.reason == "Earlier reason.");
+    CHECK(row.sources == std::vector<std::string>{"ts.sine_g"});
+    apply_stroke_rule(row, 0.8, 1.0);  // 0.199 m
+    CHECK(row.agreement == Agreement::not_runnable);
+    CHECK(row.difference == "same outcome");
+    CHECK(row.reason ==
+          "Not runnable on the thesis's table: a 0.8 g sine at 1 Hz needs +-0.199 m of table "
+          "travel (A g / (2 pi f)^2); the table has +-0.075 m (Table 3-1), so the test cannot "
+          "have been this input (see the notes). Shown, not counted. Earlier reason.");
+    CHECK(row.sources == std::vector<std::string>{"ts.sine_g", "ts.stroke_m"});
+    apply_stroke_rule(row, 0.8, 0.5);  // the stroke's source is cited once
+    CHECK(std::count(row.sources.begin(), row.sources.end(), "ts.stroke_m") == 1);
+}
+
+TEST_CASE("Table 3-4: six runs, X_s and just below, 11 frequencies", "[validate]") {
+    const auto& runs = rest_runs();
+    REQUIRE(runs.size() == 6);
+    const double amplitudes_g[] = {0.25, 0.2, 0.33, 0.3, 0.5, 0.45};
+    const char* names[] = {"TS1", "TS1", "TS2", "TS2", "TS3", "TS3"};
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        INFO("run " << i + 1);
+        CHECK(runs[i].number == static_cast<int>(i) + 1);
+        CHECK(runs[i].amplitude_g == amplitudes_g[i]);
+        CHECK(runs[i].specimen.name == names[i]);
+        CHECK(value(runs[i].key) == amplitudes_g[i]);
+    }
+    CHECK(rest_frequencies_hz() == std::vector<double>{0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
 }
