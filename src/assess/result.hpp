@@ -26,6 +26,7 @@ enum class Model {
     simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
     simulation_biaxial_slide,   ///< docs/methods.md s.10 biaxial sliding simulation, peak |u|
     simulation_flexible,        ///< docs/methods.md s.10 flexible-body simulation (a raised flag)
+    fragility_goal,             ///< docs/methods.md s.6 step 9: the goal, from the fragility engine
 };
 const char* to_string(Model m);
 
@@ -36,12 +37,15 @@ const char* to_string(VerdictKind k);
 
 /// What failed at a level (none when it passes).
 /// screen_inconclusive: the screen cannot show the level safe and no simulation was allowed.
+/// performance_goal: every level passes, but the probability of failure at the DBE or at
+/// 1.5 x DBE exceeds the ASCE 43-05 target (a headline only, never a level).
 enum class Failure {
     none,
     slides_beyond_allowable,
     rocking_fs_below_required,
     overturns,
-    screen_inconclusive
+    screen_inconclusive,
+    performance_goal
 };
 const char* to_string(Failure f);
 

@@ -28,6 +28,9 @@ const char* to_string(Model m) {
         case Model::simulation_flexible:
             return "time-history simulation of the flexible body, rigid base and one elastic mode "
                    "(docs/methods.md s.10)";
+        case Model::fragility_goal:
+            return "performance goal: fragility engine at multiples of the DBE, lognormal fit "
+                   "(docs/methods.md s.6 step 9, s.9; ASCE 43-05 s.1.3)";
     }
     return "";
 }
@@ -58,6 +61,8 @@ const char* to_string(Failure f) {
             return "overturns";
         case Failure::screen_inconclusive:
             return "screen inconclusive (no simulation)";
+        case Failure::performance_goal:
+            return "performance goal not met (ASCE 43-05 s.1.3)";
     }
     return "";
 }

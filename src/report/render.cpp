@@ -221,6 +221,8 @@ std::string governing_bound(const LevelResult& l) {
                                                  : l.bounds.rocking.name;
         case Model::simulation_flexible:
             return "slip at the lower friction bound, rocking at the upper bounds";
+        case Model::fragility_goal:
+            return "friction and restitution drawn between their bounds";
     }
     return none;
 }
