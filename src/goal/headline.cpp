@@ -6,8 +6,10 @@ namespace freestand::goal {
 namespace {
 
 std::string base_text(const assess::BaseContact& b) {
-    const std::string name = b.material.empty() ? "given friction" : b.material;
-    return fmt::format("{} (mu_s {:.3g}-{:.3g})", name, b.mu_s_range[0], b.mu_s_range[1]);
+    if (b.material.empty())
+        return fmt::format("mu_s {:.3g} as given (bounds {:.3g}-{:.3g})", b.mu_s, b.mu_s_range[0],
+                           b.mu_s_range[1]);
+    return fmt::format("{} (mu_s {:.3g}-{:.3g})", b.material, b.mu_s_range[0], b.mu_s_range[1]);
 }
 
 }  // namespace
