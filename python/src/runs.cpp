@@ -162,7 +162,8 @@ void bind_runs(py::module_& m) {
                 const report::CaseAssessment a =
                     report::assess_case_file(case_file, pga_g, cli::build_commit);
                 json = report::result_json_text(a.result, a.stamp,
-                                                a.fragility ? &*a.fragility : nullptr);
+                                                a.fragility ? &*a.fragility : nullptr,
+                                                a.goal ? &*a.goal : nullptr);
             }
             return json_loads(json);
         },

@@ -54,7 +54,7 @@ const std::vector<std::string> site_keys{
     "design",        "target_h_file",   "target_h10_file", "target_y_file",   "target_y10_file",
     "target_v_file", "pga_g",           "vertical_ratio",  "sliding_damping", "g_mps2",
     "energy_highpass_hz", "energy_table_displacement_m", "va_range_mps_per_g", "adv2_range",
-    "da_max_m_per_g"};
+    "da_max_m_per_g", "dbe_pga_g"};
 const std::vector<std::string> option_keys{"histories_per_level", "max_histories_per_level",
                                            "seed", "seed_records",
                                            "simulate", "fragility", "fragility_pga_g", "fragility_samples"};
@@ -497,6 +497,13 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
     s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
     read_energy_displacement(r, s, assumptions);
     read_realism(r, s, assumptions);
+    s.dbe_pga_g = r.number("dbe_pga_g", Range{0.0, max_pga_g, false, true});
+    if (s.dbe_pga_g)
+        assumptions.push_back(fmt::format(
+            "Design-basis earthquake (DBE) PGA {:g} g (site.dbe_pga_g): the ASCE 43-05 s.1.3 "
+            "performance goal is checked at the DBE and at 1.5 x DBE (docs/methods.md s.6 step "
+            "9).",
+            *s.dbe_pga_g));
     r.finish(site_keys);
     return s;
 }
@@ -711,6 +718,10 @@ Case parse_case(const std::string& text, const std::string& file_label,
     }
     TableReader rs(site, file_label, "site");
     out.site = read_site(rs, out.assumptions, std::filesystem::path(file_label).parent_path());
+    if (out.site.dbe_pga_g && !out.units.empty())
+        rs.fail("dbe_pga_g",
+                "the performance goal runs the fragility engine, which takes one "
+                "component, not two [[unit]] tables");
     TableReader ro(subtable(root, "options", file_label), file_label, "options");
     out.options = read_options(ro, std::filesystem::path(file_label).parent_path());
     TableReader ru(subtable(root, "uncertainty", file_label), file_label, "uncertainty");

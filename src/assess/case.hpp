@@ -111,6 +111,10 @@ struct Site {
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy
     /// method's DeltaD (docs/methods.md s.4: the thesis's test band started at 0.5 Hz), Hz.
     double energy_highpass_hz = 0.5;
+    /// PGA of the design-basis earthquake, g ([site] dbe_pga_g, in (0, 3]): given, the ASCE
+    /// 43-05 s.1.3 performance goal is checked at it and at 1.5 x DBE (docs/methods.md s.6
+    /// step 9, src/goal/).
+    std::optional<double> dbe_pga_g;
     /// DeltaD per PGA level given by the case (table displacements), m; replaces the high-pass.
     std::optional<std::vector<double>> energy_table_displacement_m;
     /// Realism ranges every generated history must meet (docs/methods.md s.8): RG 1.60's by

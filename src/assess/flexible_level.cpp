@@ -18,6 +18,10 @@ std::optional<std::string> flexible_model_blocker(const Case& c) {
     return std::nullopt;
 }
 
+bool flexible_model_decides(const Case& c, const FlexibleFlag& flag) {
+    return flag.raised && !flexible_model_blocker(c);
+}
+
 dynamics::FlexibleModel flexible_model(const Component& comp, const ContactBound& contact,
                                        Direction d) {
     dynamics::FlexibleMode mode;

@@ -20,6 +20,9 @@ inline constexpr const char* flexible_model_name =
 /// or options.simulate = "never"), or nullopt when it runs. Not called for a lowered flag.
 std::optional<std::string> flexible_model_blocker(const Case& c);
 
+/// Whether the flexible model decides a level with this flag: raised, and nothing blocks it.
+bool flexible_model_decides(const Case& c, const FlexibleFlag& flag);
+
 /// The flexible model of the component in direction d with one bound's contact: the case's
 /// fixed-base frequency and modal keys, the cantilever defaults for those absent.
 dynamics::FlexibleModel flexible_model(const Component& comp, const ContactBound& contact,

@@ -35,6 +35,8 @@ spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
     return sliding::vector_horizontal({h, h}, damping);
 }
 
+}  // namespace
+
 FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Direction d,
                              const LevelDemand& dem) {
     FlexibleFlag out;
@@ -69,6 +71,8 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     out.basis = fmt::format("{}", fmt::join(basis, "; "));
     return out;
 }
+
+namespace {
 
 // DeltaD of the energy method (docs/methods.md s.4): the case's table displacement for the
 // level, else the mean of the histories' peak displacements after the zero-phase high-pass,
@@ -504,7 +508,7 @@ LevelResult evaluate_level(const Case& c, Direction d, const LevelDemand& demand
     r.screen = screen_level(r, allowable, fs);
     const SimulationNeed need = simulation_need(r.screen, c.options.simulate);
     r.simulation_reason = need.reason;
-    const bool flexible = r.flexible.raised && !flexible_model_blocker(c);
+    const bool flexible = flexible_model_decides(c, r.flexible);
     if (need.run || flexible) {
         const bool rocking_mode =
             r.initiation.mode == Mode::rock || r.initiation.mode == Mode::slide_rock;

@@ -58,6 +58,11 @@ LevelDemand level_demand(const Site& site, double pga_g);
 spectra::Spectrum scaled_target(const spectra::Spectrum& file, double factor,
                                 const std::vector<double>& f_hz);
 
+/// The flexible-body flag of the component in direction d (blk its block there) at a level's
+/// demand (docs/methods.md s.2): shown beside the mode, never changing it.
+FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Direction d,
+                             const LevelDemand& dem);
+
 /// Frequencies the design spectra are tabulated on, Hz.
 std::vector<double> design_frequencies();
 

@@ -27,6 +27,7 @@ enum class Model {
     simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
     simulation_biaxial_slide,   ///< docs/methods.md s.10 biaxial sliding simulation, peak |u|
     simulation_flexible,        ///< docs/methods.md s.10 flexible-body simulation (a raised flag)
+    fragility_goal,             ///< docs/methods.md s.6 step 5: the goal, from the fragility engine
 };
 const char* to_string(Model m);
 
@@ -37,13 +38,16 @@ const char* to_string(VerdictKind k);
 
 /// What failed at a level (none when it passes).
 /// screen_inconclusive: the screen cannot show the level safe and no simulation was allowed.
+/// performance_goal: every level passes, but the probability of failure at the DBE or at
+/// 1.5 x DBE exceeds the ASCE 43-05 target (a headline only, never a level).
 enum class Failure {
     none,
     slides_beyond_allowable,
     rocking_fs_below_required,
     overturns,
     screen_inconclusive,
-    not_settled  ///< the bootstrap of the sets still disagrees at the cap (s.6 step 4)
+    not_settled,  ///< the bootstrap of the sets still disagrees at the cap (s.6 step 4)
+    performance_goal
 };
 const char* to_string(Failure f);
 

@@ -31,6 +31,9 @@ const char* to_string(Model m) {
         case Model::simulation_flexible:
             return "time-history simulation of the flexible body, rigid base and one elastic mode "
                    "(docs/methods.md s.10)";
+        case Model::fragility_goal:
+            return "performance goal: fragility engine at multiples of the DBE, lognormal fit "
+                   "(docs/methods.md s.6 step 5, s.9; ASCE 43-05 s.1.3)";
     }
     return "";
 }
@@ -63,6 +66,8 @@ const char* to_string(Failure f) {
             return "screen inconclusive (no simulation)";
         case Failure::not_settled:
             return "decision not settled by the sets at the cap";
+        case Failure::performance_goal:
+            return "performance goal not met (ASCE 43-05 s.1.3)";
     }
     return "";
 }

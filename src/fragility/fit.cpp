@@ -8,29 +8,17 @@
 #include <stdexcept>
 
 #include "core/statistics.hpp"
+#include "fragility/probit_detail.hpp"
 
 namespace freestand::fragility {
 namespace {
 
-// Below this beta the fit is taken as separated (a step, not a lognormal curve).
-constexpr double kMinBeta = 1e-3;
+using detail::log_phi_cdf;
+using detail::mills;
+
+constexpr double kMinBeta = detail::min_beta;
 constexpr int kMaxIterations = 200;
 constexpr double kTolerance = 1e-12;
-
-// ln Phi(z) without underflow far in the lower tail (Phi(z) ~ phi(z) / -z there).
-double log_phi_cdf(double z) {
-    if (z > -30.0) return std::log(core::normal_cdf(z));
-    return -0.5 * z * z - std::log(-z) - 0.5 * std::log(2.0 * M_PI);
-}
-
-// phi(z) / Phi(z), the inverse Mills ratio, stable for z -> -infinity (~ -z).
-double mills(double z) {
-    if (z > -30.0) {
-        const double phi = std::exp(-0.5 * z * z) / std::sqrt(2.0 * M_PI);
-        return phi / core::normal_cdf(z);
-    }
-    return -z;
-}
 
 struct Levels {
     std::vector<double> x;  // ln a

@@ -26,6 +26,21 @@ inline constexpr std::array<Event, 4> all_events{Event::overturn, Event::slide, 
 /// "overturn", "slide", "rock", "any".
 const char* event_name(Event e);
 
+/// The models a sample runs (docs/methods.md s.9, s.10). The default, the rigid planar block in
+/// x and in y, is what `freestand fragility` runs; the performance goal (src/goal) asks for the
+/// models the case's own levels decide with.
+struct Models {
+    /// Per level (as Config::pga_g) and direction (x, y): the flexible body (rigid base carrying
+    /// one elastic mode, assess::flexible_model) instead of the rigid block. Empty: rigid
+    /// throughout; else one entry per level.
+    std::vector<std::array<bool, 2>> flexible;
+    /// A sample whose block rocks in neither direction under its motion
+    /// (dynamics::biaxial_rocking_reason) takes its slide from the biaxial model, both
+    /// horizontal components at once, instead of the rigid planar runs (a flexible run's slip
+    /// still counts: the larger governs, as at a level). Generated sets only.
+    bool biaxial_slide = false;
+};
+
 /// What to run. Levels strictly increasing in (0, 3] g, at least one; samples >= 1.
 struct Config {
     std::vector<double> pga_g;
@@ -37,9 +52,11 @@ struct Config {
     /// A user suite instead: horizontal records, each applied along x and y, no vertical; a
     /// sample draws one and scales it to the level's PGA.
     std::vector<std::string> record_files;
+    Models models;
 };
 
-/// Throws InputError naming the field (pga_g, samples, pool, records) when the config is invalid.
+/// Throws InputError naming the field (pga_g, samples, pool, records, models) when the config
+/// is invalid.
 void validate(const Config& config);
 
 /// One sample: the drawn motion and properties and the peak responses over both directions.

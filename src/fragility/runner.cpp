@@ -5,13 +5,16 @@
 #include <filesystem>
 #include <random>
 
+#include "assess/flexible_level.hpp"
 #include "assess/histories.hpp"
 #include "assess/level.hpp"
 #include "core/errors.hpp"
 #include "core/random.hpp"
 #include "core/readers.hpp"
+#include "dynamics/flexible.hpp"
 #include "dynamics/simulate.hpp"
 #include "fragility/fragility.hpp"
+#include "fragility/runner_detail.hpp"
 
 namespace freestand::fragility {
 
@@ -46,6 +49,14 @@ void validate(const Config& c) {
     if (c.record_files.empty() && (c.pool < 1 || c.pool > 1000))
         throw InputError(SourceLocation{"", 0, "pool"},
                          fmt::format("{}; expected 1 to 1000 history sets", c.pool));
+    const SourceLocation models{"", 0, "models"};
+    if (!c.models.flexible.empty() && c.models.flexible.size() != c.pga_g.size())
+        throw InputError(models, fmt::format("{} flexible-body entries for {} levels",
+                                             c.models.flexible.size(), c.pga_g.size()));
+    if (c.models.biaxial_slide && !c.record_files.empty())
+        throw InputError(models,
+                         "biaxial sliding needs generated three-component sets, not a "
+                         "suite of horizontal records");
 }
 
 namespace {
@@ -169,6 +180,45 @@ void Runner::prepare(const assess::RunSettings& run) {
     m.prepared = true;
 }
 
+namespace {
+
+// The draws of one sample from its own stream: they depend on (seed, level, sample) alone.
+struct Draw {
+    std::size_t pick = 0;  // index into the pool or the suite
+    double mu_s = 0.0;
+    std::array<double, 2> restitution{};  // x, y
+};
+
+Draw draw(const Laws& laws, std::uint64_t seed, int level, int sample, std::size_t pool) {
+    std::mt19937_64 rng(core::stream_seed(seed, static_cast<std::uint64_t>(level),
+                                          static_cast<std::uint64_t>(sample)));
+    const double u_motion = core::uniform01(rng());
+    const double u_mu = core::uniform01(rng());
+    const double u_r = core::uniform01(rng());
+    Draw d;
+    d.pick = std::min(pool - 1, static_cast<std::size_t>(u_motion * static_cast<double>(pool)));
+    d.mu_s = laws.mu_s.at(u_mu);
+    for (std::size_t dir = 0; dir < 2; ++dir) {
+        const auto& b = laws.restitution_bounds[dir];
+        d.restitution[dir] =
+            laws.restitution ? laws.restitution->at(u_r) : b[0] + u_r * (b[1] - b[0]);
+    }
+    return d;
+}
+
+// The rigid block's run, or the flexible body's base when the level asks for it.
+dynamics::Summary simulate_direction(const assess::Component& comp,
+                                     const assess::ContactBound& contact, assess::Direction d,
+                                     const dynamics::Excitation& ex, const dynamics::Options& opt,
+                                     bool flexible) {
+    if (!flexible)
+        return dynamics::simulate(assess::block_model(comp, contact, d), ex, opt).summary;
+    return dynamics::simulate_flexible(assess::flexible_model(comp, contact, d), ex, opt)
+        .summary.base;
+}
+
+}  // namespace
+
 SampleResult Runner::run(std::size_t global_index) const {
     const Impl& m = *impl_;
     if (!m.prepared) throw std::logic_error("fragility::Runner::run before prepare");
@@ -176,50 +226,54 @@ SampleResult Runner::run(std::size_t global_index) const {
     SampleResult out;
     out.level = static_cast<int>(global_index / samples);
     out.sample = static_cast<int>(global_index % samples);
-    const double pga_g = m.config.pga_g.at(static_cast<std::size_t>(out.level));
-    // The sample's own stream: the draws depend on (seed, level, sample) alone.
-    std::mt19937_64 rng(core::stream_seed(m.config.seed, static_cast<std::uint64_t>(out.level),
-                                          static_cast<std::uint64_t>(out.sample)));
-    const double u_motion = core::uniform01(rng());
-    const double u_mu = core::uniform01(rng());
-    const double u_r = core::uniform01(rng());
-    const std::size_t pool = m.sets.empty() ? m.records.size() : m.sets.size();
-    const std::size_t pick =
-        std::min(pool - 1, static_cast<std::size_t>(u_motion * static_cast<double>(pool)));
-    out.motion = m.sets.empty() ? m.record_names[pick] : fmt::format("set {}", pick + 1);
-    out.mu_s = m.laws.mu_s.at(u_mu);
-    const auto restitution = [&](int dir) {
-        if (m.laws.restitution) return m.laws.restitution->at(u_r);
-        const auto& b = m.laws.restitution_bounds[static_cast<std::size_t>(dir)];
-        return b[0] + u_r * (b[1] - b[0]);
-    };
-    out.restitution_x = restitution(0);
-    out.restitution_y = restitution(1);
+    const auto level = static_cast<std::size_t>(out.level);
+    const double pga_g = m.config.pga_g.at(level);
+    const Draw dr = draw(m.laws, m.config.seed, out.level, out.sample,
+                         m.sets.empty() ? m.records.size() : m.sets.size());
+    out.motion = m.sets.empty() ? m.record_names[dr.pick] : fmt::format("set {}", dr.pick + 1);
+    out.mu_s = dr.mu_s;
+    out.restitution_x = dr.restitution[0];
+    out.restitution_y = dr.restitution[1];
+    const Models& models = m.config.models;
     dynamics::Options opt;
     opt.record_series = false;
     opt.g_mps2 = m.c.site.g_mps2;
+    const double mu_k = m.laws.kinetic_ratio * out.mu_s;
+    const auto where = [&](const std::string& direction, const NumericalError& e) {
+        // Name the sample so that it can be rerun alone (its draws depend on these only).
+        return NumericalError(fmt::format(
+            "level {} (PGA {:g} g), sample {} ({}, mu_s {:.6g}, restitution x {:.6g}, y {:.6g}, "
+            "{}): {}",
+            out.level + 1, pga_g, out.sample + 1, out.motion, out.mu_s, out.restitution_x,
+            out.restitution_y, direction, e.what()));
+    };
+    double flexible_slide_m = 0.0;
     for (const assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
-        const double r = d == assess::Direction::x ? out.restitution_x : out.restitution_y;
-        const assess::ContactBound contact{out.mu_s, m.laws.kinetic_ratio * out.mu_s, r, false, ""};
-        const dynamics::BlockModel model = assess::block_model(m.c.component, contact, d);
+        const std::size_t dir = d == assess::Direction::x ? 0 : 1;
+        const bool flexible = !models.flexible.empty() && models.flexible[level][dir];
+        const assess::ContactBound contact{out.mu_s, mu_k, dr.restitution[dir], false, ""};
         const dynamics::Excitation ex =
-            m.sets.empty()
-                ? dynamics::excitation_from_record(m.records[pick], pga_g / m.record_pga_g[pick])
-                : assess::excitation(m.sets[pick], d, pga_g);
+            m.sets.empty() ? dynamics::excitation_from_record(m.records[dr.pick],
+                                                              pga_g / m.record_pga_g[dr.pick])
+                           : assess::excitation(m.sets[dr.pick], d, pga_g);
         dynamics::Summary s;
         try {
-            s = dynamics::simulate(model, ex, opt).summary;
+            s = simulate_direction(m.c.component, contact, d, ex, opt, flexible);
         } catch (const NumericalError& e) {
-            // Name the sample so that it can be rerun alone (its draws depend on these only).
-            throw NumericalError(fmt::format(
-                "level {} (PGA {:g} g), sample {} ({}, mu_s {:.6g}, restitution {:.6g}, direction "
-                "{}): {}",
-                out.level + 1, pga_g, out.sample + 1, out.motion, out.mu_s, r,
-                d == assess::Direction::x ? "x" : "y", e.what()));
+            throw where(fmt::format("direction {}", assess::to_string(d)), e);
         }
         out.slide_max_m = std::max(out.slide_max_m, s.slide_max_m);
+        if (flexible) flexible_slide_m = std::max(flexible_slide_m, s.slide_max_m);
         out.rock_max_over_alpha = std::max(out.rock_max_over_alpha, s.rock_max_over_alpha);
         out.overturned = out.overturned || s.overturned;
+    }
+    if (models.biaxial_slide && !m.sets.empty()) {
+        try {
+            if (const auto biaxial = biaxial_slide_m(m.c, m.sets[dr.pick], pga_g, out.mu_s, mu_k))
+                out.slide_max_m = std::max(flexible_slide_m, *biaxial);
+        } catch (const NumericalError& e) {
+            throw where("biaxial sliding", e);
+        }
     }
     return out;
 }

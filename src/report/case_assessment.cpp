@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "report/fragility_json.hpp"
+#include "report/goal_json.hpp"
 
 namespace freestand::report {
 
@@ -26,6 +27,10 @@ CaseAssessment assess_case(const assess::Case& c, const std::string& case_bytes,
         config.seed = c.options.seed;
         run.fragility = fragility::run_all(c, config, settings);
     }
+    if (c.site.dbe_pga_g) {
+        run.goal = goal::evaluate_headline_goal(run.result, settings);
+        goal::apply_goal(run.result, *run.goal);
+    }
     run.stamp = make_stamp(case_bytes, case_file.string(), c.options.seed, commit);
     run.stamp.inputs = stamped_inputs(c);
     return run;
@@ -41,9 +46,11 @@ CaseAssessment assess_case_file(const std::filesystem::path& case_file,
 }
 
 std::string result_json_text(const assess::AssessmentResult& r, const Stamp& stamp,
-                             const fragility::Result* fragility) {
+                             const fragility::Result* fragility,
+                             const goal::PerformanceGoal* goal) {
     nlohmann::ordered_json json = to_json(r, stamp);
     if (fragility) json["fragility"] = fragility_body_json(*fragility);
+    if (goal) json["performance_goal"] = goal_json(*goal);
     return json.dump(2) + "\n";
 }
 

@@ -14,6 +14,7 @@
 #include "core/printable.hpp"
 #include "core/publish.hpp"
 #include "report/fragility_report.hpp"
+#include "report/goal_report.hpp"
 #include "report/joined.hpp"
 #include "report/references.hpp"
 #include "report/template_render.hpp"
@@ -223,6 +224,8 @@ std::string governing_bound(const LevelResult& l) {
                                                  : l.bounds.rocking.name;
         case Model::simulation_flexible:
             return "slip at the lower friction bound, rocking at the upper bounds";
+        case Model::fragility_goal:
+            return "friction and restitution drawn between their bounds";
     }
     return none;
 }
@@ -490,7 +493,10 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
 }  // namespace
 
 std::string headline_level(const AssessmentResult& r) {
-    std::string out = level_name(r.overall.pga_g, r.overall.direction);
+    // The goal speaks for a PGA over both directions, not for one level.
+    std::string out = r.overall.verdict.failure == Failure::performance_goal
+                          ? fmt::format("performance goal at PGA {:.3f} g", r.overall.pga_g)
+                          : level_name(r.overall.pga_g, r.overall.direction);
     if (r.overall_from_trial) {
         const std::string& m = r.overall.verdict.material;
         out += " with " + (m.empty() ? r.upgrade.recommended.value_or("the recommended base") : m);
@@ -565,8 +571,8 @@ std::string html_escape(const std::string& text) {
     return out;
 }
 
-Rendered render(const AssessmentResult& r, const Stamp& stamp,
-                const fragility::Result* fragility) {
+Rendered render(const AssessmentResult& r, const Stamp& stamp, const fragility::Result* fragility,
+                const goal::PerformanceGoal* goal) {
     if (r.joined) return render_joined(r, stamp);
     Rendered out;
     out.figures = figures(r);
@@ -580,11 +586,14 @@ Rendered render(const AssessmentResult& r, const Stamp& stamp,
             ctx.emplace(key, value);
         out.extra_files.push_back({fig.file, fig.svg});
     }
+    ctx.emplace("has_goal", goal != nullptr);
+    if (goal)
+        for (auto& [key, value] : goal_section_context(*goal)) ctx.emplace(key, value);
     out.markdown = render_markdown(template_report_md, ctx,
                                    {{"fragility_section", template_fragility_section_md}});
     out.html = render_html(template_report_html, ctx,
                            {{"fragility_section", template_fragility_section_html}});
-    out.json = result_json_text(r, stamp, fragility);
+    out.json = result_json_text(r, stamp, fragility, goal);
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include "assess/result.hpp"
 #include "core/publish.hpp"
 #include "fragility/fragility.hpp"
+#include "goal/goal.hpp"
 #include "report/json.hpp"
 #include "report/plots.hpp"
 
@@ -27,9 +28,11 @@ struct Rendered {
 /// '<' and '&' as entities (no raw HTML can start) and Markdown punctuation backslash-escaped,
 /// newlines folded to spaces. With a fragility result ([options] fragility = true) the reports
 /// gain its section before the assumptions, result.json its "fragility" object and the folder
-/// its figure.
+/// its figure. With a performance goal ([site] dbe_pga_g) the reports gain its section after
+/// the verdict and result.json its "performance_goal" object.
 Rendered render(const assess::AssessmentResult& r, const Stamp& stamp,
-                const fragility::Result* fragility = nullptr);
+                const fragility::Result* fragility = nullptr,
+                const goal::PerformanceGoal* goal = nullptr);
 
 /// The files of a report folder: the figures, the extra files, report.md, report.html,
 /// result.json (what write_report publishes).

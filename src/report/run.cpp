@@ -16,9 +16,11 @@ namespace {
 
 CaseRun render_case(CaseAssessment a) {
     CaseRun run;
-    run.rendered = render(a.result, a.stamp, a.fragility ? &*a.fragility : nullptr);
+    run.rendered = render(a.result, a.stamp, a.fragility ? &*a.fragility : nullptr,
+                          a.goal ? &*a.goal : nullptr);
     run.result = std::move(a.result);
     run.fragility = std::move(a.fragility);
+    run.goal = std::move(a.goal);
     return run;
 }
 

@@ -14,6 +14,7 @@ namespace freestand::report {
 struct CaseRun {
     assess::AssessmentResult result;
     std::optional<fragility::Result> fragility;  ///< with [options] fragility = true
+    std::optional<goal::PerformanceGoal> goal;   ///< with [site] dbe_pga_g
     Rendered rendered;
 };
 

@@ -506,3 +506,24 @@ TEST_CASE("flexible-body mode keys: defaults stated, values read, errors at thei
                      "0.95 M at 1.9 m carries more second moment than the body has",
                      0) == 0);
 }
+
+TEST_CASE("site.dbe_pga_g: absent by default, read and echoed, refused outside 0 < DBE <= 3 g",
+          "[assess][case][goal]") {
+    CHECK_FALSE(parse_case(base_component + base_site, "case.toml").site.dbe_pga_g.has_value());
+    const Case c = parse_case(base_component + base_site + "dbe_pga_g = 0.3\n", "case.toml");
+    REQUIRE(c.site.dbe_pga_g.has_value());
+    CHECK(*c.site.dbe_pga_g == 0.3);
+    CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {
+        return a.find("(DBE) PGA 0.3 g (site.dbe_pga_g)") != std::string::npos;
+    }));
+    CHECK(parse_case(base_component + base_site + "dbe_pga_g = 3\n", "case.toml").site.dbe_pga_g ==
+          3.0);
+    CHECK(error_of(base_component + base_site + "dbe_pga_g = 0\n") ==
+          "case.toml:11: site.dbe_pga_g: value 0 is out of range; expected (0, 3]");
+    CHECK(error_of(base_component + base_site + "dbe_pga_g = -0.2\n") ==
+          "case.toml:11: site.dbe_pga_g: value -0.2 is out of range; expected (0, 3]");
+    CHECK(error_of(base_component + base_site + "dbe_pga_g = 3.5\n") ==
+          "case.toml:11: site.dbe_pga_g: value 3.5 is out of range; expected (0, 3]");
+    CHECK(error_of(base_component + base_site + "dbe_pga_g = \"0.3 g\"\n") ==
+          "case.toml:11: site.dbe_pga_g: expected a number in (0, 3], got a string");
+}

@@ -95,3 +95,10 @@ TEST_CASE("joined case: neither [component] nor [[unit]] names both", "[assess][
           "pair.toml: component: missing required table [component] (or two [[unit]] and a "
           "[tunnel])");
 }
+
+TEST_CASE("joined case: a DBE is refused at its line (the goal takes one component)",
+          "[assess][case][joined][goal]") {
+    CHECK(error_of(unit("A") + unit("B") + tunnel + site + "dbe_pga_g = 0.2\n") ==
+          "pair.toml:22: site.dbe_pga_g: the performance goal runs the fragility engine, which "
+          "takes one component, not two [[unit]] tables");
+}

@@ -1,0 +1,123 @@
+// The models a fragility sample runs (fragility::Models): the flexible body at the levels and
+// directions asked for, biaxial sliding for a sample that only slides; the default is the rigid
+// planar block.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "assess/case.hpp"
+#include "assess/histories.hpp"
+#include "core/content_store.hpp"
+#include "dynamics/biaxial.hpp"
+#include "fragility/fragility.hpp"
+
+namespace fs = std::filesystem;
+using namespace freestand;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("freestand_models_" + name + "_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+// A block 4 m wide and 0.4 m tall (tan alpha = 10: it only slides), friction 0.1-0.2.
+const char* slider_toml = R"([component]
+name = "slider"
+mass_kg = 100.0
+width_m = 4.0
+depth_m = 4.0
+height_m = 0.4
+mu_s = 0.15
+restitution = 0.5
+allowable_slide_m = 0.03
+[site]
+pga_g = [0.3]
+[options]
+histories_per_level = 1
+)";
+
+std::vector<fragility::SampleResult> run(const assess::Case& c, const fragility::Config& cfg,
+                                         const assess::RunSettings& settings) {
+    fragility::Runner runner(c, cfg);
+    runner.prepare(settings);
+    std::vector<std::size_t> all(runner.total());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    return fragility::run_samples(runner, all, 1);
+}
+
+}  // namespace
+
+TEST_CASE("the flexible body runs at the levels and directions asked for, and only there",
+          "[fragility][models]") {
+    const fs::path dir = scratch("flexible");
+    const std::string record = (dir / "sine.csv").string();
+    {
+        std::ofstream out(record);
+        out << "time_s,accel_g\n";
+        for (int i = 0; i <= 4000; ++i)
+            out << i * 0.001 << "," << std::sin(2.0 * M_PI * 2.5 * i * 0.001) << "\n";
+    }
+    assess::Case c = assess::parse_case(slider_toml, (dir / "slider.toml").string());
+    c.component.fixed_base_frequency_hz = 3.0;  // a mode near the 2.5 Hz drive
+    fragility::Config cfg;
+    cfg.pga_g = {0.3, 0.4};
+    cfg.samples = 4;
+    cfg.record_files = {record};
+    const auto rigid = run(c, cfg, assess::RunSettings(1));
+    cfg.models.flexible = {{true, true}, {false, false}};
+    const auto flexible = run(c, cfg, assess::RunSettings(1));
+    REQUIRE(rigid.size() == 8);
+    for (std::size_t i = 0; i < rigid.size(); ++i) {
+        INFO("sample " << i);
+        CHECK(flexible[i].mu_s == rigid[i].mu_s);  // the same draws
+        if (i < 4)
+            CHECK(flexible[i].slide_max_m != rigid[i].slide_max_m);
+        else
+            CHECK(flexible[i].slide_max_m == rigid[i].slide_max_m);
+    }
+    cfg.models.flexible = {{true, true}};
+    CHECK_THROWS_WITH(
+        fragility::validate(cfg),
+        Catch::Contains("models") && Catch::Contains("1 flexible-body entries for 2"));
+    cfg.models.flexible.clear();
+    cfg.models.biaxial_slide = true;
+    CHECK_THROWS_WITH(fragility::validate(cfg),
+                      Catch::Contains("models") && Catch::Contains("generated three-component"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a sample that only slides takes its slide from biaxial sliding", "[fragility][models]") {
+    const fs::path dir = scratch("biaxial");
+    const core::ContentStore cache(dir / "cache");
+    assess::RunSettings settings(1);
+    settings.cache = &cache;
+    const assess::Case c = assess::parse_case(slider_toml, (dir / "slider.toml").string());
+    fragility::Config cfg;
+    cfg.pga_g = {0.3};
+    cfg.samples = 3;
+    cfg.pool = 1;
+    const auto planar = run(c, cfg, settings);
+    cfg.models.biaxial_slide = true;
+    const auto biaxial = run(c, cfg, settings);
+    // The same set (from the cache) run directly: both horizontals at once, the sample's friction.
+    assess::HistoryBank bank(c, settings);
+    const assess::HistorySet& set = bank.sets().at(0);
+    const auto ex = dynamics::biaxial_excitation_from_records(set.h1, set.h2, 0.3, &set.v);
+    dynamics::Options opt = dynamics::biaxial_options();
+    opt.record_series = false;
+    for (std::size_t i = 0; i < planar.size(); ++i) {
+        INFO("sample " << i << ", mu_s " << biaxial[i].mu_s);
+        const auto model = dynamics::make_biaxial_model(biaxial[i].mu_s, biaxial[i].mu_s);
+        const double direct = dynamics::simulate_biaxial(model, ex, opt).summary.slide_max_m;
+        CHECK(biaxial[i].slide_max_m == direct);
+        CHECK(biaxial[i].slide_max_m != planar[i].slide_max_m);
+        CHECK(biaxial[i].rock_max_over_alpha == planar[i].rock_max_over_alpha);
+    }
+    fs::remove_all(dir);
+}
