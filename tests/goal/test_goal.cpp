@@ -1,4 +1,4 @@
-// The ASCE 43-05 performance goal (goal/goal.hpp, docs/methods.md s.6 step 9): a body surely
+// The ASCE 43-05 performance goal (goal/goal.hpp, docs/methods.md s.6 step 5): a body surely
 // failing it and one surely meeting it, the headline it decides, the configuration it speaks
 // for, and the models its samples run.
 #include <catch2/catch.hpp>

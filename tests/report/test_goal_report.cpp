@@ -1,4 +1,4 @@
-// The performance goal in the outputs (docs/methods.md s.6 step 9): result.json's
+// The performance goal in the outputs (docs/methods.md s.6 step 5): result.json's
 // "performance_goal" object and its consistency with the headline, the same bytes at 1 and 2
 // threads, and the reports' section.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-/// Two cases for the performance goal's tests (docs/methods.md s.6 step 9): one whose levels
+/// Two cases for the performance goal's tests (docs/methods.md s.6 step 5): one whose levels
 /// pass at rest but which surely fails the goal, one that surely meets it; and the build's
 /// test cache, so the cases' history sets are generated once per build.
 #include <memory>
