@@ -113,7 +113,7 @@ struct Site {
     double energy_highpass_hz = 0.5;
     /// PGA of the design-basis earthquake, g ([site] dbe_pga_g, in (0, 3]): given, the ASCE
     /// 43-05 s.1.3 performance goal is checked at it and at 1.5 x DBE (docs/methods.md s.6
-    /// step 9, src/goal/).
+    /// step 5, src/goal/).
     std::optional<double> dbe_pga_g;
     /// DeltaD per PGA level given by the case (table displacements), m; replaces the high-pass.
     std::optional<std::vector<double>> energy_table_displacement_m;
