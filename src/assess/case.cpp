@@ -502,7 +502,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         assumptions.push_back(fmt::format(
             "Design-basis earthquake (DBE) PGA {:g} g (site.dbe_pga_g): the ASCE 43-05 s.1.3 "
             "performance goal is checked at the DBE and at 1.5 x DBE (docs/methods.md s.6 step "
-            "9).",
+            "5).",
             *s.dbe_pga_g));
     r.finish(site_keys);
     return s;

@@ -172,6 +172,7 @@ ScreenCheck rest_check(const Initiation& lower) {
     std::string text = fmt::format("A = {:.3f} <= min(mu_s {:.3f}, tan alpha {:.3f}): at rest",
                                    lower.a_ratio, lower.mu_s, lower.tan_alpha);
     if (lower.a_ratio > 0.0) {
+        v.no_motion = true;  // at rest: the static margin is its margin (s.6 step 8)
         v.margin = threshold / lower.a_ratio;
         v.margin_basis = "static threshold min(mu_s lower bound, tan alpha) / A";
     } else {
@@ -485,6 +486,9 @@ bool passes(const Verdict& v) {
 
 bool more_severe(const Verdict& a, const Verdict& b) {
     if (passes(a) != passes(b)) return !passes(a);
+    // A passing level that moves governs over one at rest, whatever their margins: a low level
+    // at rest cannot hide a higher one that moves (docs/methods.md s.6 step 8).
+    if (passes(a) && a.no_motion != b.no_motion) return !a.no_motion;
     constexpr double inf = std::numeric_limits<double>::infinity();
     const double ma = a.margin.value_or(inf);
     const double mb = b.margin.value_or(inf);

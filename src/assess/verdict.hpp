@@ -49,9 +49,9 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
 /// True for acceptable and acceptable_with_clearance.
 bool passes(const Verdict& v);
 
-/// True when a is strictly more severe than b: a failure over a pass; then the smaller margin
-/// (a "no motion" verdict carries its static or demand margin; one without any is the least
-/// severe); then the larger clearance.
+/// True when a is strictly more severe than b: a failure over a pass; among passes a level that
+/// moves over one with no motion; then the smaller margin (a "no motion" verdict carries its
+/// static or demand margin; one without any is the least severe); then the larger clearance.
 bool more_severe(const Verdict& a, const Verdict& b);
 
 /// The most severe level (the first on ties) with its verdict. levels must not be empty.

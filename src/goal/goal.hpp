@@ -79,7 +79,7 @@ PerformanceGoal evaluate_headline_goal(const assess::AssessmentResult& r,
                                        const assess::RunSettings& run = {});
 
 /// A passing headline becomes the goal's failure when the goal fails (docs/methods.md s.6 step
-/// 9: the verdict needs the levels and the goal both): kind anchor, Failure::performance_goal,
+/// 5: the verdict needs the levels and the goal both): kind anchor, Failure::performance_goal,
 /// the governing limit state's margin and its basis in words, Model::fragility_goal, at the
 /// governing PGA; the headline's configuration (overall_from_trial) and open conditions stay.
 /// A failing headline, or a passing goal, leaves r as it is.

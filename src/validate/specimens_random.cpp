@@ -83,7 +83,7 @@ Row random_row(const Specimen& s, const std::vector<dynamics::Summary>& runs,
 
 RandomRuns run_random(const assess::Case& histories_case, const std::string& case_label) {
     assess::HistoryBank bank(histories_case);
-    const std::vector<assess::HistorySet>& sets = bank.sets();
+    const auto sets = bank.sets();
     RandomRuns out;
     out.histories = fmt::format("the {} RG 1.60 history sets of {}, record h1 scaled to {:g} g",
                                 sets.size(), case_label, random_pga_g());

@@ -240,11 +240,16 @@ TEST_CASE("severity: failures first, then the smaller margin; no motion is least
     fail.margin = 0.9;
     CHECK(more_severe(pass_small, pass_big));
     CHECK(more_severe(pass_big, quiet));
-    // A level at rest with its static margin governs over one that moves with a larger margin.
+    // A level that moves governs over one at rest even when the rest margin is smaller
+    // (docs/methods.md s.6 step 8); among levels at rest the smaller margin.
     Verdict at_rest;
     at_rest.no_motion = true;
     at_rest.margin = 1.05;
-    CHECK(more_severe(at_rest, pass_small));
+    CHECK(more_severe(pass_big, at_rest));
+    Verdict at_rest_more = at_rest;
+    at_rest_more.margin = 4.0;
+    CHECK(more_severe(at_rest, at_rest_more));
+    CHECK(more_severe(at_rest_more, quiet));
     CHECK(more_severe(fail, pass_small));
     CHECK_FALSE(more_severe(pass_big, pass_small));
     std::vector<LevelResult> levels(3);

@@ -107,7 +107,7 @@ TEST_CASE("a sample that only slides takes its slide from biaxial sliding", "[fr
     const auto biaxial = run(c, cfg, settings);
     // The same set (from the cache) run directly: both horizontals at once, the sample's friction.
     assess::HistoryBank bank(c, settings);
-    const assess::HistorySet& set = bank.sets().at(0);
+    const assess::HistorySet& set = bank.sets().front();
     const auto ex = dynamics::biaxial_excitation_from_records(set.h1, set.h2, 0.3, &set.v);
     dynamics::Options opt = dynamics::biaxial_options();
     opt.record_series = false;
