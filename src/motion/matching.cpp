@@ -146,6 +146,8 @@ struct Matcher {
     std::vector<Column> columns;                           // one per matching frequency
     std::vector<OscillatorAt> observed;                    // each oscillator at its peak time
     std::array<std::vector<Response>, 2> pulse_responses;  // [pulse][oscillator]
+    // A pass's new wavelet placements to sample.
+    std::vector<SampleRequest> sample_queue;
     // A pass's closed forms to evaluate, and the (row, column) of each response.
     std::vector<StartRequest> start_queue;
     std::vector<ResponseRequest> response_queue;
@@ -224,8 +226,8 @@ struct Matcher {
         return false;
     }
 
-    // The wavelet of column j placed for the peak at t_s, with its samples and end rows, or the
-    // column's previous placement if that was at t_s.
+    // The wavelet of column j placed for the peak at t_s, or the column's previous placement if
+    // that was at t_s; a new one is queued for its samples and end rows (sample_queued).
     void place(std::size_t j, double t_s) {
         Column& col = columns[j];
         if (col.now.placed && col.now.t_s == t_s) return;
@@ -235,11 +237,16 @@ struct Matcher {
         p.placed = true;
         p.t_s = t_s;
         p.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
-        const auto [end_v, end_d] = sample_wavelet(p.wave, rec.dt_s, rec.size(), p.sampled,
-                                                   ends.velocity, ends.displacement);
-        p.end_v = end_v;
-        p.end_d = end_d;
+        sample_queue.push_back({&p.wave, &p.sampled, &p.end_v, &p.end_d});
         p.response.assign(f.size(), Response{});
+    }
+
+    // Every column's wavelet placed for its oscillator's peak, the new ones sampled together.
+    void place_all(const Peaks& pk) {
+        sample_queue.clear();
+        for (std::size_t j = 0; j < f.size(); ++j) place(j, pk.t[j]);
+        sample_wavelets(sample_queue.data(), sample_queue.size(), rec.dt_s, rec.size(),
+                        ends.velocity, ends.displacement);
     }
 
     // Pseudo-acceleration of oscillator i at its peak time due to wavelet w, remembered in
@@ -307,11 +314,10 @@ struct Matcher {
         const std::size_t m = f.size();
         const std::size_t cols = m + 2;
         const std::size_t rows = m + 2 + pk.accel_rows.size();
-        for (std::size_t j = 0; j < m; ++j) {
-            place(j, pk.t[j]);
+        place_all(pk);
+        for (std::size_t j = 0; j < m; ++j)
             if (observed[j].t_s != pk.t[j] || observed[j].f_hz == 0.0)
                 observed[j] = oscillator_at(f[j], kDamping, pk.t[j]);
-        }
         Eigen::MatrixXd c(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
         Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows));
         const auto mv = static_cast<Eigen::Index>(m);

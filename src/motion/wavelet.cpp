@@ -280,68 +280,139 @@ SampledWavelet sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples
 
 namespace {
 
-// sample_wavelet, with the weighted sums when weights_a and weights_b are given.
-std::array<double, 2> sample_into(const Wavelet& w, double dt_s, std::size_t samples,
-                                  SampledWavelet& out, const double* weights_a,
-                                  const double* weights_b) {
+using Pair = double __attribute__((vector_size(16)));
+
+// One wavelet being sampled: x_k = (i0 + k) dt - centre; exp(i W x) rotates by exp(i W dt); the
+// Gaussian ratio g_{k+1} / g_k = exp(-(2 x_k dt + dt^2) / gamma^2) itself changes by
+// exp(-2 dt^2 / gamma^2). rot *= step with (re, im) in one vector: (re, im) sr + (im, re)
+// (-si, si) performs the complex multiply's operations, re sr - im si and im sr + re si
+// (x + (-y) is x - y and addition commutes), so the samples keep their bits.
+struct Sampler {
+    double* out = nullptr;  // the samples
+    std::size_t count = 0;
+    const double* wa = nullptr;  // the weights at the samples, or null
+    const double* wb = nullptr;
+    Pair sr{}, si{}, rot{};
+    double gauss = 0.0, ratio = 0.0, ratio_step = 0.0;
+    Pair sum{0.0, 0.0};  // the two weighted sums, each in order of k
+};
+
+// The sampler of w into out over its support inside the record (out.first and the size of
+// out.values set; count 0 if the support misses the record).
+Sampler sampler(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out,
+                const double* weights_a, const double* weights_b) {
+    Sampler s;
     out.first = 0;
     if (samples == 0 || w.end_s() < 0.0 || w.start_s() > static_cast<double>(samples - 1) * dt_s) {
         out.values.clear();
-        return {0.0, 0.0};
+        return s;
     }
     const double last = static_cast<double>(samples - 1);
     const auto i0 = static_cast<std::size_t>(std::clamp(std::ceil(w.start_s() / dt_s), 0.0, last));
     const auto i1 = static_cast<std::size_t>(std::clamp(std::floor(w.end_s() / dt_s), 0.0, last));
     out.first = i0;
-    out.values.resize(i1 - i0 + 1);  // every value is written below
-    // x_k = (i0 + k) dt - centre; exp(i W x) rotates by exp(i W dt); the Gaussian ratio
-    // g_{k+1} / g_k = exp(-(2 x_k dt + dt^2) / gamma^2) itself changes by exp(-2 dt^2 / gamma^2).
+    out.values.resize(i1 - i0 + 1);  // every value is written by the steps
+    s.out = out.values.data();
+    s.count = out.values.size();
+    if (weights_a != nullptr) {
+        s.wa = weights_a + i0;
+        s.wb = weights_b + i0;
+    }
     const double x0 = static_cast<double>(i0) * dt_s - w.centre_s;
     const double g2 = w.gamma_s * w.gamma_s;
     const std::complex<double> step = std::polar(1.0, w.omega_d_radps * dt_s);
     const std::complex<double> phase = std::polar(1.0, w.omega_d_radps * x0);
-    double gauss = std::exp(-x0 * x0 / g2);
-    double ratio = std::exp(-(2.0 * x0 * dt_s + dt_s * dt_s) / g2);
-    const double ratio_step = std::exp(-2.0 * dt_s * dt_s / g2);
-    // phase *= step with (re, im) in one vector: (re, im) sr + (im, re) (-si, si) performs the
-    // complex multiply's operations, re sr - im si and im sr + re si (x + (-y) is x - y and
-    // addition commutes), so the samples keep their bits.
-    using Pair = double __attribute__((vector_size(16)));
-    const Pair sr{step.real(), step.real()}, si{-step.imag(), step.imag()};
-    Pair rot{phase.real(), phase.imag()};
-    if (weights_a == nullptr) {
-        for (double& v : out.values) {
-            v = rot[0] * gauss;
-            rot = rot * sr + Pair{rot[1], rot[0]} * si;
-            gauss *= ratio;
-            ratio *= ratio_step;
+    s.gauss = std::exp(-x0 * x0 / g2);
+    s.ratio = std::exp(-(2.0 * x0 * dt_s + dt_s * dt_s) / g2);
+    s.ratio_step = std::exp(-2.0 * dt_s * dt_s / g2);
+    s.sr = Pair{step.real(), step.real()};
+    s.si = Pair{-step.imag(), step.imag()};
+    s.rot = Pair{phase.real(), phase.imag()};
+    return s;
+}
+
+// Steps [from, to) of K samplers side by side: each is a chain of dependent multiplies and
+// adds (the rotation, the Gaussian, the sums), which one at a time leaves the floating-point
+// units idle; each keeps its own operations in its own order. The states are copied in and out
+// so that they stay in registers (a store of a sample could alias a member).
+template <std::size_t K, bool Weighted>
+void run_together(Sampler* s, std::size_t from, std::size_t to) {
+    Pair sr[K], si[K], rot[K], sum[K];
+    double gauss[K], ratio[K], ratio_step[K];
+    for (std::size_t l = 0; l < K; ++l) {
+        sr[l] = s[l].sr;
+        si[l] = s[l].si;
+        rot[l] = s[l].rot;
+        sum[l] = s[l].sum;
+        gauss[l] = s[l].gauss;
+        ratio[l] = s[l].ratio;
+        ratio_step[l] = s[l].ratio_step;
+    }
+    for (std::size_t k = from; k < to; ++k)
+#pragma GCC unroll 4
+        for (std::size_t l = 0; l < K; ++l) {
+            const double v = rot[l][0] * gauss[l];
+            s[l].out[k] = v;
+            if constexpr (Weighted) sum[l] += Pair{s[l].wa[k], s[l].wb[k]} * v;
+            rot[l] = rot[l] * sr[l] + Pair{rot[l][1], rot[l][0]} * si[l];
+            gauss[l] *= ratio[l];
+            ratio[l] *= ratio_step[l];
         }
-        return {0.0, 0.0};
+    for (std::size_t l = 0; l < K; ++l) {
+        s[l].rot = rot[l];
+        s[l].sum = sum[l];
+        s[l].gauss = gauss[l];
+        s[l].ratio = ratio[l];
     }
-    const double* wa = weights_a + i0;
-    const double* wb = weights_b + i0;
-    Pair sum{0.0, 0.0};  // the two weighted sums, each in order of k
-    for (std::size_t k = 0; k < out.values.size(); ++k) {
-        const double v = rot[0] * gauss;
-        out.values[k] = v;
-        sum += Pair{wa[k], wb[k]} * v;
-        rot = rot * sr + Pair{rot[1], rot[0]} * si;
-        gauss *= ratio;
-        ratio *= ratio_step;
-    }
-    return {sum[0], sum[1]};
+}
+
+void run(Sampler& s) {
+    if (s.wa != nullptr)
+        run_together<1, true>(&s, 0, s.count);
+    else
+        run_together<1, false>(&s, 0, s.count);
 }
 
 }  // namespace
 
 void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledWavelet& out) {
-    sample_into(w, dt_s, samples, out, nullptr, nullptr);
+    Sampler s = sampler(w, dt_s, samples, out, nullptr, nullptr);
+    run(s);
 }
 
 std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples,
                                      SampledWavelet& out, const std::vector<double>& weights_a,
                                      const std::vector<double>& weights_b) {
-    return sample_into(w, dt_s, samples, out, weights_a.data(), weights_b.data());
+    Sampler s = sampler(w, dt_s, samples, out, weights_a.data(), weights_b.data());
+    run(s);
+    return {s.sum[0], s.sum[1]};
+}
+
+void sample_wavelets(const SampleRequest* r, std::size_t n, double dt_s, std::size_t samples,
+                     const std::vector<double>& weights_a, const std::vector<double>& weights_b) {
+    // In threes of about equal length (longest first): side by side over the shortest one's
+    // samples, the rest of the others alone.
+    constexpr std::size_t kTogether = 3;
+    std::vector<Sampler> s(n);
+    std::vector<std::size_t> order(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        s[j] = sampler(*r[j].wavelet, dt_s, samples, *r[j].out, weights_a.data(), weights_b.data());
+        order[j] = j;
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return s[a].count > s[b].count; });
+    std::array<Sampler, kTogether> group;
+    for (std::size_t g = 0; g < n; g += kTogether) {
+        const std::size_t size = std::min(kTogether, n - g);
+        for (std::size_t l = 0; l < size; ++l) group[l] = s[order[g + l]];
+        const std::size_t common = group[size - 1].count;
+        if (size == kTogether) run_together<kTogether, true>(group.data(), 0, common);
+        for (std::size_t l = 0; l < size; ++l) {
+            run_together<1, true>(&group[l], size == kTogether ? common : 0, group[l].count);
+            *r[order[g + l]].sum_a = group[l].sum[0];
+            *r[order[g + l]].sum_b = group[l].sum[1];
+        }
+    }
 }
 
 void add_wavelet(const SampledWavelet& w, double amplitude, std::vector<double>& accel) {

@@ -110,6 +110,18 @@ std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t 
                                      SampledWavelet& out, const std::vector<double>& weights_a,
                                      const std::vector<double>& weights_b);
 
+/// The last form for several wavelets at once, the same bits: *out, *sum_a and *sum_b of each
+/// request as sample_wavelet(*wavelet, dt_s, samples, *out, weights_a, weights_b) gives them.
+/// Each sampling is a chain of dependent steps; several run side by side.
+struct SampleRequest {
+    const Wavelet* wavelet = nullptr;
+    SampledWavelet* out = nullptr;
+    double* sum_a = nullptr;
+    double* sum_b = nullptr;
+};
+void sample_wavelets(const SampleRequest* r, std::size_t n, double dt_s, std::size_t samples,
+                     const std::vector<double>& weights_a, const std::vector<double>& weights_b);
+
 /// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);
 void add_wavelet(const SampledWavelet& w, double amplitude, std::vector<double>& accel);

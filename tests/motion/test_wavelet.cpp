@@ -217,6 +217,35 @@ TEST_CASE("sampling a wavelet with its weighted sums gives the samples and the d
     }
 }
 
+TEST_CASE("wavelets sampled together keep each one's samples and sums", "[motion][wavelet]") {
+    // Lengths from the whole record to a few samples, one wavelet outside the record, and
+    // counts leaving every remainder of the groups sampled side by side.
+    const std::size_t samples = 4001;
+    const EndWeights ends = end_weights(samples, 0.005);
+    std::vector<Wavelet> waves;
+    for (double f : {0.1, 30.0, 2.0, 0.1, 8.0, 45.0, 0.7})
+        waves.push_back(Wavelet::at(f, 0.05, 9.5 + f / 10.0));
+    waves.push_back(Wavelet::at(5.0, 0.05, 40.0));
+    waves.push_back(Wavelet::pulse(6.7, 1.6));
+    for (std::size_t n = 0; n <= waves.size(); ++n) {
+        std::vector<SampledWavelet> out(n);
+        std::vector<double> v(n, -1.0), d(n, -1.0);
+        std::vector<SampleRequest> r;
+        for (std::size_t j = 0; j < n; ++j) r.push_back({&waves[j], &out[j], &v[j], &d[j]});
+        sample_wavelets(r.data(), n, 0.005, samples, ends.velocity, ends.displacement);
+        for (std::size_t j = 0; j < n; ++j) {
+            SampledWavelet one;
+            const auto [v1, d1] =
+                sample_wavelet(waves[j], 0.005, samples, one, ends.velocity, ends.displacement);
+            INFO(n << " wavelets, the one at " << waves[j].centre_s << " s");
+            CHECK(out[j].first == one.first);
+            CHECK(out[j].values == one.values);
+            CHECK(v[j] == v1);
+            CHECK(d[j] == d1);
+        }
+    }
+}
+
 TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual",
           "[motion][wavelet]") {
     for (double f : {0.5, 2.0, 10.0}) {
