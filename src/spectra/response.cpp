@@ -313,38 +313,33 @@ using Kernel = void (*)(const Pass&);
 constexpr std::size_t kUnrolled = 5;
 using Unrolled = std::make_index_sequence<kUnrolled + 1>;  // N = 0 (any count), 1 .. kUnrolled
 
+// One instance of the loops per instruction set, each compiled for it (a target attribute is
+// not a template argument), and the table of a set's instances by sub-step count.
 template <std::size_t P, std::size_t N, Watch M>
-void advance_sse2(const Pass& s) {
-    advance<V2, 2, P, N, M>(s);
-}
-
-template <std::size_t P, Watch M, std::size_t... N>
-constexpr std::array<Kernel, kUnrolled + 1> sse2_kernels(std::index_sequence<N...>) {
-    return {advance_sse2<P, N, M>...};
-}
+struct Sse2 {
+    static void run(const Pass& s) { advance<V2, 2, P, N, M>(s); }
+};
 
 #ifdef FREESTAND_RESPONSE_AVX
 template <std::size_t P, std::size_t N, Watch M>
-__attribute__((target("avx"))) void advance_avx(const Pass& s) {
-    advance<V4, 4, P, N, M>(s);
-}
-
-template <std::size_t P, Watch M, std::size_t... N>
-constexpr std::array<Kernel, kUnrolled + 1> avx_kernels(std::index_sequence<N...>) {
-    return {advance_avx<P, N, M>...};
-}
+struct Avx {
+    __attribute__((target("avx"))) static void run(const Pass& s) { advance<V4, 4, P, N, M>(s); }
+};
 
 // AVX-512 has fused multiply-adds too; -ffp-contract=off keeps them out, as everywhere here.
 template <std::size_t P, std::size_t N, Watch M>
-__attribute__((target("avx512f"))) void advance_avx512(const Pass& s) {
-    advance<V8, 8, P, N, M>(s);
-}
-
-template <std::size_t P, Watch M, std::size_t... N>
-constexpr std::array<Kernel, kUnrolled + 1> avx512_kernels(std::index_sequence<N...>) {
-    return {advance_avx512<P, N, M>...};
-}
+struct Avx512 {
+    __attribute__((target("avx512f"))) static void run(const Pass& s) {
+        advance<V8, 8, P, N, M>(s);
+    }
+};
 #endif
+
+template <template <std::size_t, std::size_t, Watch> class Isa, std::size_t P, Watch M,
+          std::size_t... N>
+constexpr std::array<Kernel, kUnrolled + 1> kernels(std::index_sequence<N...>) {
+    return {&Isa<P, N, M>::run...};
+}
 
 /// The widest vectors of at most max_lanes lanes this CPU has: 8 (AVX-512), 4 (AVX) or 2.
 std::size_t lanes_for(std::size_t max_lanes) {
@@ -363,13 +358,13 @@ template <std::size_t P, Watch M>
 Kernel kernel_for(std::size_t width, std::size_t n) {
     const std::size_t unrolled = n <= kUnrolled ? n : 0;
 #ifdef FREESTAND_RESPONSE_AVX
-    static constexpr std::array<Kernel, kUnrolled + 1> avx = avx_kernels<P, M>(Unrolled{});
+    static constexpr std::array<Kernel, kUnrolled + 1> avx = kernels<Avx, P, M>(Unrolled{});
     if (width == 4) return avx[unrolled];
-    static constexpr std::array<Kernel, kUnrolled + 1> avx512 = avx512_kernels<P, M>(Unrolled{});
+    static constexpr std::array<Kernel, kUnrolled + 1> avx512 = kernels<Avx512, P, M>(Unrolled{});
     if (width == 8) return avx512[unrolled];
 #endif
     FREESTAND_EXPECT(width == 2, "vectors of 2 lanes, or of 4 with AVX, or of 8 with AVX-512");
-    static constexpr std::array<Kernel, kUnrolled + 1> sse2 = sse2_kernels<P, M>(Unrolled{});
+    static constexpr std::array<Kernel, kUnrolled + 1> sse2 = kernels<Sse2, P, M>(Unrolled{});
     return sse2[unrolled];
 }
 
