@@ -15,7 +15,6 @@ namespace {
 // with their slope at both ends, content below ~(k + 2) / (2T) Hz (0.125 Hz at k = 3 in 20 s),
 // i.e. mostly under the 0.1 Hz bottom of the acceptance band.
 constexpr int kTrendShapes = 3;
-constexpr std::size_t kShapes = 2 + kTrendShapes;  // with the two pulses
 // Displacement is fitted on a grid this fine (it is smooth at these periods).
 constexpr double kFitStep_s = 0.05;
 // Reweighting passes toward the peak: w_i <- w_i (1 + kGain (|d_i| / max |d|)^kPower).
@@ -75,6 +74,7 @@ BaselineCorrector::BaselineCorrector(std::size_t samples, double dt_s)
       dt_s_(dt_s),
       stride_(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kFitStep_s / dt_s)))),
       ends_(end_weights(samples, dt_s)) {
+    static_assert(kShapes == 2 + kTrendShapes, "the two pulses and the trend shapes");
     for (const Wavelet& w : pulses(static_cast<double>(samples - 1) * dt_s))
         shape_a_.push_back(sampled(w, samples, dt_s));
     for (int k = 1; k <= kTrendShapes; ++k) shape_a_.push_back(trend_shape(k, samples, dt_s));
@@ -125,17 +125,15 @@ void BaselineCorrector::minimise_displacement(std::vector<double>& accel_mps2) c
     for (int pass = 0; pass <= kReweights; ++pass) {
         Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(nb + 2, nb + 2);
         Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nb + 2);
+        const WeightedSums sums = weighted_sums(weight, d);
+        std::size_t pair = 0;
         for (std::size_t i = 0; i < nbu; ++i) {
             const auto ii = static_cast<Eigen::Index>(i);
             for (std::size_t j = i; j < nbu; ++j) {
-                double h = 0.0;
-                for (std::size_t q = 0; q < d.size(); ++q)
-                    h += weight[q] * shape_d_[i][q] * shape_d_[j][q];
+                const double h = sums.h[pair++];
                 kkt(ii, static_cast<Eigen::Index>(j)) = kkt(static_cast<Eigen::Index>(j), ii) = h;
             }
-            double g = 0.0;
-            for (std::size_t q = 0; q < d.size(); ++q) g += weight[q] * shape_d_[i][q] * d[q];
-            rhs(ii) = -g;
+            rhs(ii) = -sums.g[i];
             kkt(nb, ii) = kkt(ii, nb) = shape_end_v_[i];
             kkt(nb + 1, ii) = kkt(ii, nb + 1) = shape_end_d_[i];
         }
@@ -162,6 +160,24 @@ void BaselineCorrector::minimise_displacement(std::vector<double>& accel_mps2) c
         for (std::size_t k = 0; k < kShapes; ++k) a += ck[k] * shape_a_[k][i];
         accel_mps2[i] = a;
     }
+}
+
+BaselineCorrector::WeightedSums BaselineCorrector::weighted_sums(
+    const std::vector<double>& weight, const std::vector<double>& d) const {
+    // H_ij = sum_q w_q D_iq D_jq (j >= i) and g_i = sum_q w_q D_iq d_q, each summed in order of q
+    // as (w_q D_iq) D_jq: twenty chains of dependent additions, taken side by side in one sweep
+    // rather than one after another (the same operations, the same bits).
+    WeightedSums s;
+    for (std::size_t q = 0; q < d.size(); ++q) {
+        std::array<double, kShapes> wd;
+        for (std::size_t i = 0; i < kShapes; ++i) wd[i] = weight[q] * shape_d_[i][q];
+        std::size_t pair = 0;
+        for (std::size_t i = 0; i < kShapes; ++i) {
+            for (std::size_t j = i; j < kShapes; ++j) s.h[pair++] += wd[i] * shape_d_[j][q];
+            s.g[i] += wd[i] * d[q];
+        }
+    }
+    return s;
 }
 
 std::vector<double> BaselineCorrector::displacement_on_grid(

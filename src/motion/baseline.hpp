@@ -56,6 +56,16 @@ class BaselineCorrector {
     std::vector<std::vector<double>> shape_d_;  // their displacement on the fit grid
     std::vector<double> shape_end_v_, shape_end_d_;
 
+    /// Correction shapes: the two pulses and the three displacement shapes.
+    static constexpr std::size_t kShapes = 5;
+    /// The weighted least-squares sums of minimise_displacement: H_ij (j >= i, row by row) and
+    /// g_i, for the fit-grid weights and displacement d.
+    struct WeightedSums {
+        std::array<double, kShapes*(kShapes + 1) / 2> h{};
+        std::array<double, kShapes> g{};
+    };
+    WeightedSums weighted_sums(const std::vector<double>& weight,
+                               const std::vector<double>& d) const;
     /// The displacement of core::displacement_m at every stride-th sample.
     std::vector<double> displacement_on_grid(const std::vector<double>& accel_mps2) const;
     void taper_ends(std::vector<double>& accel_mps2) const;

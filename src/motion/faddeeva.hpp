@@ -3,6 +3,7 @@
 /// oscillator to a Gaussian-tapered cosine wavelet (wavelet.hpp). Hand-written because no
 /// packaged library on the build machine provides a complex error function.
 #include <complex>
+#include <cstddef>
 
 namespace freestand::motion {
 
@@ -11,5 +12,10 @@ namespace freestand::motion {
 /// six terms) beyond; relative error below 1e-8 over the closed upper half plane.
 /// Callers reflect with w(-z) = 2 exp(-z^2) - w(z) for Im z < 0.
 std::complex<double> faddeeva_upper(std::complex<double> z);
+
+/// w[j] = faddeeva_upper(z[j]) for j < n, the same bits, with the series of several arguments
+/// evaluated side by side: each is a chain of 35 dependent complex multiply-adds, and chains
+/// that run together overlap their latencies.
+void faddeeva_upper(const std::complex<double>* z, std::complex<double>* w, std::size_t n);
 
 }  // namespace freestand::motion

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -145,6 +146,12 @@ struct Matcher {
     std::vector<Column> columns;                           // one per matching frequency
     std::vector<OscillatorAt> observed;                    // each oscillator at its peak time
     std::array<std::vector<Response>, 2> pulse_responses;  // [pulse][oscillator]
+    // A pass's new wavelet placements to sample.
+    std::vector<SampleRequest> sample_queue;
+    // A pass's closed forms to evaluate, and the (row, column) of each response.
+    std::vector<StartRequest> start_queue;
+    std::vector<ResponseRequest> response_queue;
+    std::vector<std::pair<std::size_t, std::size_t>> queued_at;
 
     Matcher(const Target& t, const MatchOptions& o, core::Record& r)
         : target(t),
@@ -219,8 +226,8 @@ struct Matcher {
         return false;
     }
 
-    // The wavelet of column j placed for the peak at t_s, with its samples and end rows, or the
-    // column's previous placement if that was at t_s.
+    // The wavelet of column j placed for the peak at t_s, or the column's previous placement if
+    // that was at t_s; a new one is queued for its samples and end rows (sample_queued).
     void place(std::size_t j, double t_s) {
         Column& col = columns[j];
         if (col.now.placed && col.now.t_s == t_s) return;
@@ -230,33 +237,73 @@ struct Matcher {
         p.placed = true;
         p.t_s = t_s;
         p.wave = Wavelet::for_oscillator(f_wave[j], f[j], kDamping, t_s);
-        const auto [end_v, end_d] = sample_wavelet(p.wave, rec.dt_s, rec.size(), p.sampled,
-                                                   ends.velocity, ends.displacement);
-        p.end_v = end_v;
-        p.end_d = end_d;
+        sample_queue.push_back({&p.wave, &p.sampled, &p.end_v, &p.end_d});
         p.response.assign(f.size(), Response{});
     }
 
+    // Every column's wavelet placed for its oscillator's peak, the new ones sampled together.
+    void place_all(const Peaks& pk) {
+        sample_queue.clear();
+        for (std::size_t j = 0; j < f.size(); ++j) place(j, pk.t[j]);
+        sample_wavelets(sample_queue.data(), sample_queue.size(), rec.dt_s, rec.size(),
+                        ends.velocity, ends.displacement);
+    }
+
     // Pseudo-acceleration of oscillator i at its peak time due to wavelet w, remembered in
-    // `memo`: the
-    // closed form costs two to four Faddeeva evaluations, and most peak times stay put from
-    // one pass to the next.
-    double response(Response& memo, const Wavelet& w, std::size_t i) const {
-        const OscillatorAt& o = observed[i];
-        const double t_s = o.t_s;
+    // `memo`: the closed form costs two to four Faddeeva evaluations, and most peak times stay
+    // put from one pass to the next. Null when the memo does not hold the oscillator's current
+    // peak time.
+    const double* remembered(const Response& memo, std::size_t i) const {
         for (std::size_t k = 0; k < 2; ++k)
-            if (memo.known[k] && memo.t_s[k] == t_s) return memo.y[k];
+            if (memo.known[k] && memo.t_s[k] == observed[i].t_s) return &memo.y[k];
+        return nullptr;
+    }
+
+    // The memo takes oscillator i's current peak time, keeping the previous one; its response
+    // (and the wavelet's start state, the first time it is needed) is queued for evaluation.
+    void queue(Response& memo, const Wavelet& w, std::size_t i) {
         if (!memo.start_known && w.start_s() < 0.0) {
-            memo.start = wavelet_start(w, f[i], kDamping);
+            start_queue.push_back({&w, f[i], kDamping, &memo.start});
             memo.start_known = true;
         }
         memo.known[1] = memo.known[0];
         memo.t_s[1] = memo.t_s[0];
         memo.y[1] = memo.y[0];
         memo.known[0] = true;
-        memo.t_s[0] = t_s;
-        memo.y[0] = wavelet_response(w, o, memo.start);
-        return memo.y[0];
+        memo.t_s[0] = observed[i].t_s;
+        response_queue.push_back({&w, &observed[i], &memo.start, &memo.y[0]});
+    }
+
+    // The response rows of c: c(i, j) = gain_j y_ij / q_i for the wavelet columns and y_ij / q_i
+    // for the two pulse columns, y_ij the response of oscillator i at its peak time to column j,
+    // remembered or evaluated with the other new ones in one batch (wavelet_responses).
+    void fill_responses(Eigen::MatrixXd& c) {
+        const std::size_t m = f.size();
+        const auto value = [&](std::size_t i, std::size_t j, double y) {
+            return j < m ? gain[j] * y / q[i] : y / q[i];
+        };
+        start_queue.clear();
+        response_queue.clear();
+        queued_at.clear();
+        for (std::size_t j = 0; j < m + 2; ++j) {
+            const Wavelet& w = j < m ? columns[j].now.wave : pulses[j - m];
+            std::vector<Response>& memos = j < m ? columns[j].now.response : pulse_responses[j - m];
+            for (std::size_t i = 0; i < m; ++i) {
+                if (const double* y = remembered(memos[i], i)) {
+                    c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = value(i, j, *y);
+                    continue;
+                }
+                queue(memos[i], w, i);
+                queued_at.push_back({i, j});
+            }
+        }
+        wavelet_starts(start_queue.data(), start_queue.size());
+        wavelet_responses(response_queue.data(), response_queue.size());
+        for (std::size_t k = 0; k < queued_at.size(); ++k) {
+            const auto [i, j] = queued_at[k];
+            c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+                value(i, j, *response_queue[k].out);
+        }
     }
 
     // One linearised correction: rows in units of the target (spectral rows: change of the
@@ -267,22 +314,16 @@ struct Matcher {
         const std::size_t m = f.size();
         const std::size_t cols = m + 2;
         const std::size_t rows = m + 2 + pk.accel_rows.size();
-        for (std::size_t j = 0; j < m; ++j) {
-            place(j, pk.t[j]);
+        place_all(pk);
+        for (std::size_t j = 0; j < m; ++j)
             if (observed[j].t_s != pk.t[j] || observed[j].f_hz == 0.0)
                 observed[j] = oscillator_at(f[j], kDamping, pk.t[j]);
-        }
         Eigen::MatrixXd c(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
         Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows));
         const auto mv = static_cast<Eigen::Index>(m);
+        fill_responses(c);
         for (std::size_t i = 0; i < m; ++i) {
             const auto ii = static_cast<Eigen::Index>(i);
-            for (std::size_t j = 0; j < m; ++j)
-                c(ii, static_cast<Eigen::Index>(j)) =
-                    gain[j] * response(columns[j].now.response[i], columns[j].now.wave, i) / q[i];
-            for (std::size_t k = 0; k < 2; ++k)
-                c(ii, mv + static_cast<Eigen::Index>(k)) =
-                    response(pulse_responses[k][i], pulses[k], i) / q[i];
             const double ratio = pk.r[i] / q[i];
             const bool inside = ratio >= opt.lower && ratio <= upper[i];
             const double want = inside ? pk.r[i] : opt.aim * q[i];

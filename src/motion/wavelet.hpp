@@ -74,6 +74,25 @@ OscillatorAt oscillator_at(double f_hz, double damping, double t_s);
 /// one oscillator and time.
 double wavelet_response(const Wavelet& w, const OscillatorAt& o, const WaveletStart& start);
 
+/// Many closed forms at once (a matcher's pass needs thousands): each costs two Faddeeva
+/// evaluations, which are evaluated side by side (faddeeva.hpp). The same bits as one at a time.
+/// wavelet_start(*wavelet, f_hz, damping) into *out, for each of r[0..n).
+struct StartRequest {
+    const Wavelet* wavelet = nullptr;
+    double f_hz = 0.0;
+    double damping = 0.0;
+    WaveletStart* out = nullptr;
+};
+void wavelet_starts(const StartRequest* r, std::size_t n);
+/// wavelet_response(*wavelet, *at, *start) into *out, for each of r[0..n).
+struct ResponseRequest {
+    const Wavelet* wavelet = nullptr;
+    const OscillatorAt* at = nullptr;
+    const WaveletStart* start = nullptr;
+    double* out = nullptr;
+};
+void wavelet_responses(const ResponseRequest* r, std::size_t n);
+
 /// The wavelet sampled at i * dt_s over its support inside a record of `samples` samples:
 /// values[k] = w((first + k) dt). Computed by exact rotation / Gaussian-ratio recurrences
 /// (relative drift ~1e-13 over 10^4 samples) instead of a cos and an exp per sample.
@@ -90,6 +109,18 @@ void sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples, SampledW
 std::array<double, 2> sample_wavelet(const Wavelet& w, double dt_s, std::size_t samples,
                                      SampledWavelet& out, const std::vector<double>& weights_a,
                                      const std::vector<double>& weights_b);
+
+/// The last form for several wavelets at once, the same bits: *out, *sum_a and *sum_b of each
+/// request as sample_wavelet(*wavelet, dt_s, samples, *out, weights_a, weights_b) gives them.
+/// Each sampling is a chain of dependent steps; several run side by side.
+struct SampleRequest {
+    const Wavelet* wavelet = nullptr;
+    SampledWavelet* out = nullptr;
+    double* sum_a = nullptr;
+    double* sum_b = nullptr;
+};
+void sample_wavelets(const SampleRequest* r, std::size_t n, double dt_s, std::size_t samples,
+                     const std::vector<double>& weights_a, const std::vector<double>& weights_b);
 
 /// Adds amplitude * w sampled at i * dt_s to accel (over the wavelet's support inside the record).
 void add_wavelet(const Wavelet& w, double amplitude, double dt_s, std::vector<double>& accel);

@@ -100,13 +100,14 @@ Stepper make_stepper(double f_hz, double zeta, double dt_s, int min_steps_per_pe
 // ---- The oscillators advanced in lockstep ----
 //
 // Oscillators with the same sub-step count are packed W to a vector register (W = 2 with SSE2,
-// 4 with AVX) and up to kMaxVectors registers are advanced together: the recurrences are
-// independent, so one oscillator's latency chain (u -> u_next, three dependent flops per step)
-// overlaps the others'. Every lane performs the scalar recurrence's IEEE operations in the same
-// order (no fused multiply-add: this file is compiled with -ffp-contract=off), so the results do
-// not depend on W, on the grouping or on the CPU.
+// 4 with AVX, 8 with AVX-512) and up to kMaxVectors registers are advanced together: the
+// recurrences are independent, so one oscillator's latency chain (u -> u_next, three dependent
+// flops per step) overlaps the others'. Every lane performs the scalar recurrence's IEEE operations
+// in the same order (no fused multiply-add: this file is compiled with -ffp-contract=off), so the
+// results do not depend on W, on the grouping or on the CPU.
 
 constexpr std::size_t kMaxVectors = 4;
+constexpr std::size_t kMaxLanes = 8;  // AVX-512
 // Steps per block when peak times are wanted: the loop keeps only the running maximum (as for
 // PSA) and logs each block's maximum and starting state; the one block holding an oscillator's
 // peak is then run again with the time tracked (a blend per sub-point otherwise).
@@ -116,6 +117,8 @@ using V2 = double __attribute__((vector_size(16), may_alias));
 #if defined(__x86_64__) || defined(__i386__)
 #define FREESTAND_RESPONSE_AVX 1
 using V4 = double __attribute__((vector_size(32), may_alias));
+using V8 = double __attribute__((vector_size(64), may_alias));
+using L8 = long long __attribute__((vector_size(64)));  // lane indices of a V8
 #endif
 
 /// Doubles on a 64-byte boundary, so that packed coefficients load as aligned vectors.
@@ -171,10 +174,15 @@ struct Pass {
 
 template <class V, std::size_t W>
 [[gnu::always_inline]] inline void broadcast(V& out, double x) {
-    if constexpr (W == 2)
+    if constexpr (W == 2) {
         out = V{x, x};
-    else
+    } else if constexpr (W == 4) {
         out = V{x, x, x, x};
+    } else {
+        // x into lane 0, then lane 0 into every lane: one broadcast (an eight-lane initialiser
+        // is built lane by lane).
+        out = __builtin_shuffle(V{x}, L8{});
+    }
 }
 
 /// Peak bookkeeping of one vector after a new sub-point value un at sub-point index `at`.
@@ -305,35 +313,44 @@ using Kernel = void (*)(const Pass&);
 constexpr std::size_t kUnrolled = 5;
 using Unrolled = std::make_index_sequence<kUnrolled + 1>;  // N = 0 (any count), 1 .. kUnrolled
 
+// One instance of the loops per instruction set, each compiled for it (a target attribute is
+// not a template argument), and the table of a set's instances by sub-step count.
 template <std::size_t P, std::size_t N, Watch M>
-void advance_sse2(const Pass& s) {
-    advance<V2, 2, P, N, M>(s);
-}
-
-template <std::size_t P, Watch M, std::size_t... N>
-constexpr std::array<Kernel, kUnrolled + 1> sse2_kernels(std::index_sequence<N...>) {
-    return {advance_sse2<P, N, M>...};
-}
+struct Sse2 {
+    static void run(const Pass& s) { advance<V2, 2, P, N, M>(s); }
+};
 
 #ifdef FREESTAND_RESPONSE_AVX
 template <std::size_t P, std::size_t N, Watch M>
-__attribute__((target("avx"))) void advance_avx(const Pass& s) {
-    advance<V4, 4, P, N, M>(s);
-}
+struct Avx {
+    __attribute__((target("avx"))) static void run(const Pass& s) { advance<V4, 4, P, N, M>(s); }
+};
 
-template <std::size_t P, Watch M, std::size_t... N>
-constexpr std::array<Kernel, kUnrolled + 1> avx_kernels(std::index_sequence<N...>) {
-    return {advance_avx<P, N, M>...};
-}
+// AVX-512 has fused multiply-adds too; -ffp-contract=off keeps them out, as everywhere here.
+template <std::size_t P, std::size_t N, Watch M>
+struct Avx512 {
+    __attribute__((target("avx512f"))) static void run(const Pass& s) {
+        advance<V8, 8, P, N, M>(s);
+    }
+};
 #endif
 
-bool cpu_has_avx() {
+template <template <std::size_t, std::size_t, Watch> class Isa, std::size_t P, Watch M,
+          std::size_t... N>
+constexpr std::array<Kernel, kUnrolled + 1> kernels(std::index_sequence<N...>) {
+    return {&Isa<P, N, M>::run...};
+}
+
+/// The widest vectors of at most max_lanes lanes this CPU has: 8 (AVX-512), 4 (AVX) or 2.
+std::size_t lanes_for(std::size_t max_lanes) {
 #ifdef FREESTAND_RESPONSE_AVX
-    static const bool has = __builtin_cpu_supports("avx");
-    return has;
-#else
-    return false;
+    static const bool avx512 = __builtin_cpu_supports("avx512f");
+    static const bool avx = __builtin_cpu_supports("avx");
+    if (max_lanes >= 8 && avx512) return 8;
+    if (max_lanes >= 4 && avx) return 4;
 #endif
+    (void)max_lanes;
+    return 2;
 }
 
 /// The loop for P vectors of `width` lanes and n sub-steps per step, watching M.
@@ -341,11 +358,13 @@ template <std::size_t P, Watch M>
 Kernel kernel_for(std::size_t width, std::size_t n) {
     const std::size_t unrolled = n <= kUnrolled ? n : 0;
 #ifdef FREESTAND_RESPONSE_AVX
-    static constexpr std::array<Kernel, kUnrolled + 1> avx = avx_kernels<P, M>(Unrolled{});
+    static constexpr std::array<Kernel, kUnrolled + 1> avx = kernels<Avx, P, M>(Unrolled{});
     if (width == 4) return avx[unrolled];
+    static constexpr std::array<Kernel, kUnrolled + 1> avx512 = kernels<Avx512, P, M>(Unrolled{});
+    if (width == 8) return avx512[unrolled];
 #endif
-    FREESTAND_EXPECT(width == 2, "vectors of 2 lanes, or of 4 with AVX");
-    static constexpr std::array<Kernel, kUnrolled + 1> sse2 = sse2_kernels<P, M>(Unrolled{});
+    FREESTAND_EXPECT(width == 2, "vectors of 2 lanes, or of 4 with AVX, or of 8 with AVX-512");
+    static constexpr std::array<Kernel, kUnrolled + 1> sse2 = kernels<Sse2, P, M>(Unrolled{});
     return sse2[unrolled];
 }
 
@@ -405,8 +424,8 @@ std::vector<Group> groups_of(const std::vector<Stepper>& steppers, std::size_t w
     return groups;
 }
 
-/// Lane storage of one group's run: kMaxVectors x 4 lanes at most.
-using LaneArray = std::array<double, kMaxVectors * 4>;
+/// Lane storage of one group's run: kMaxVectors x kMaxLanes lanes at most.
+using LaneArray = std::array<double, kMaxVectors * kMaxLanes>;
 
 Pass pass_over(const Group& g, const std::vector<double>& a) {
     Pass s;
@@ -523,7 +542,7 @@ struct OscillatorSet::Prepared {
             s.block_v = block_v.get();
             kernel_for<Watch::blocks>(width, g.vectors, g.n)(s);
             // Each lane's peak is in the first block whose maximum equals the overall one.
-            std::array<std::size_t, kMaxVectors * 4> in_block{};
+            std::array<std::size_t, kMaxVectors * kMaxLanes> in_block{};
             for (std::size_t lane = 0; lane < g.member.size(); ++lane) {
                 double most = 0.0;
                 for (std::size_t b = 0; b < blocks; ++b)
@@ -585,7 +604,8 @@ OscillatorSet::OscillatorSet(double damping, const std::vector<double>& frequenc
     p->damping = damping;
     p->dt_s = dt_s;
     p->frequency_hz = frequency_hz;
-    p->width = options.wide_vectors && cpu_has_avx() ? 4 : 2;
+    FREESTAND_EXPECT(options.max_lanes >= 2, "at least the two lanes of SSE2");
+    p->width = lanes_for(static_cast<std::size_t>(options.max_lanes));
     std::vector<Stepper> steppers;
     steppers.reserve(frequency_hz.size());
     for (double f : frequency_hz) {

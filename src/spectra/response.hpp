@@ -34,10 +34,11 @@ struct ResponseOptions {
     /// T/20, else peaks between samples are missed). 0 turns sub-stepping off: one step per
     /// sample, exact at the samples but blind between them (for benchmarks and tests only).
     int min_steps_per_period = 20;
-    /// Advance four oscillators per 256-bit AVX register where the CPU has AVX (else two per
-    /// 128-bit one). Each oscillator's arithmetic is the same IEEE operations in the same order
-    /// either way, so the results are the same bits; false is for the tests that check so.
-    bool wide_vectors = true;
+    /// Advance up to this many oscillators per vector register: eight per 512-bit register
+    /// where the CPU has AVX-512, four per 256-bit one where it has AVX, else two per 128-bit
+    /// one (>= 2). Each oscillator's arithmetic is the same IEEE operations in the same order
+    /// at any width, so the results are the same bits; fewer is for the tests that check so.
+    int max_lanes = 8;
 };
 
 /// As above with explicit integration controls (benchmarks, convergence tests).

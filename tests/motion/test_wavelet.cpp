@@ -139,6 +139,60 @@ TEST_CASE(
     CHECK(compared > 500);
 }
 
+TEST_CASE("Faddeeva's batch form gives each argument's bits", "[motion][faddeeva]") {
+    // Arguments of the series (|z| < 8) and of the asymptotic form, interleaved, in batches of
+    // every remainder of the series' groups of four.
+    std::vector<std::complex<double>> z;
+    for (double x : {0.0, 0.4, -1.3, 3.0, -6.5, 9.0})
+        for (double y : {0.0, 0.2, 1.7, 5.0, 8.5}) z.emplace_back(x, y);
+    for (std::size_t n = 0; n <= z.size(); n += (n < 9 ? 1 : 7)) {
+        std::vector<std::complex<double>> w(n);
+        faddeeva_upper(z.data(), w.data(), n);
+        for (std::size_t j = 0; j < n; ++j) {
+            INFO(n << " arguments, z = " << z[j]);
+            CHECK(w[j].real() == faddeeva_upper(z[j]).real());
+            CHECK(w[j].imag() == faddeeva_upper(z[j]).imag());
+        }
+    }
+}
+
+TEST_CASE("wavelet responses and start states in a batch keep each one's bits",
+          "[motion][wavelet]") {
+    // Wavelets cut off at t = 0 and not, pulses, and times before a wavelet (zero), inside and
+    // long after it: more requests than one batch of the closed forms' Faddeeva evaluations.
+    std::vector<Wavelet> waves;
+    for (double fw : {0.1, 2.0, 40.0})
+        for (double t_peak : {0.37, 12.0}) waves.push_back(Wavelet::at(fw, 0.05, t_peak));
+    waves.push_back(Wavelet::pulse(6.0, 1.5));
+    std::vector<OscillatorAt> at;
+    for (double fo : {0.1, 3.0, 50.0})
+        for (double t : {0.0, 0.005, 5.0, 19.995}) at.push_back(oscillator_at(fo, 0.05, t));
+    std::vector<StartRequest> starts;
+    std::vector<WaveletStart> start(waves.size() * at.size());
+    for (std::size_t k = 0; k < start.size(); ++k)
+        starts.push_back({&waves[k / at.size()], at[k % at.size()].f_hz, 0.05, &start[k]});
+    wavelet_starts(starts.data(), starts.size());
+    std::vector<ResponseRequest> requests;
+    std::vector<double> y(start.size());
+    for (std::size_t k = 0; k < start.size(); ++k)
+        requests.push_back({&waves[k / at.size()], &at[k % at.size()], &start[k], &y[k]});
+    wavelet_responses(requests.data(), requests.size());
+    REQUIRE(requests.size() > 64);
+    std::size_t nonzero = 0;
+    for (std::size_t k = 0; k < requests.size(); ++k) {
+        const Wavelet& w = waves[k / at.size()];
+        const OscillatorAt& o = at[k % at.size()];
+        INFO("wavelet at " << w.centre_s << " s, " << w.frequency_hz << " Hz; f " << o.f_hz
+                           << " Hz, t " << o.t_s << " s");
+        const WaveletStart ref = wavelet_start(w, o.f_hz, 0.05);
+        CHECK(start[k].y == ref.y);
+        CHECK(start[k].ydot == ref.ydot);
+        CHECK(y[k] == wavelet_response(w, o, ref));
+        nonzero += y[k] != 0.0 ? 1 : 0;
+    }
+    CHECK(nonzero > 40);
+}
+
 TEST_CASE("sampling a wavelet with its weighted sums gives the samples and the dot products",
           "[motion][wavelet]") {
     const std::size_t samples = 4001;
@@ -160,6 +214,35 @@ TEST_CASE("sampling a wavelet with its weighted sums gives the samples and the d
         CHECK(reused.values == plain.values);
         CHECK(v == v_ref);
         CHECK(d == d_ref);
+    }
+}
+
+TEST_CASE("wavelets sampled together keep each one's samples and sums", "[motion][wavelet]") {
+    // Lengths from the whole record to a few samples, one wavelet outside the record, and
+    // counts leaving every remainder of the groups sampled side by side.
+    const std::size_t samples = 4001;
+    const EndWeights ends = end_weights(samples, 0.005);
+    std::vector<Wavelet> waves;
+    for (double f : {0.1, 30.0, 2.0, 0.1, 8.0, 45.0, 0.7})
+        waves.push_back(Wavelet::at(f, 0.05, 9.5 + f / 10.0));
+    waves.push_back(Wavelet::at(5.0, 0.05, 40.0));
+    waves.push_back(Wavelet::pulse(6.7, 1.6));
+    for (std::size_t n = 0; n <= waves.size(); ++n) {
+        std::vector<SampledWavelet> out(n);
+        std::vector<double> v(n, -1.0), d(n, -1.0);
+        std::vector<SampleRequest> r;
+        for (std::size_t j = 0; j < n; ++j) r.push_back({&waves[j], &out[j], &v[j], &d[j]});
+        sample_wavelets(r.data(), n, 0.005, samples, ends.velocity, ends.displacement);
+        for (std::size_t j = 0; j < n; ++j) {
+            SampledWavelet one;
+            const auto [v1, d1] =
+                sample_wavelet(waves[j], 0.005, samples, one, ends.velocity, ends.displacement);
+            INFO(n << " wavelets, the one at " << waves[j].centre_s << " s");
+            CHECK(out[j].first == one.first);
+            CHECK(out[j].values == one.values);
+            CHECK(v[j] == v1);
+            CHECK(d[j] == d1);
+        }
     }
 }
 
