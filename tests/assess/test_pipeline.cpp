@@ -167,7 +167,8 @@ TEST_CASE("documented values are assessed or refused at their key, never by an i
         c.component.base.mu_s_range = {0.0, 0.0};
         // No flexible-body screen inputs: the planar simulation decides.
         c.component.fixed_base_frequency_hz.reset();
-        c.component.free_rocking_band_hz.reset();
+        c.component.x.free_rocking_band_hz.reset();
+        c.component.y.free_rocking_band_hz.reset();
         const AssessmentResult r = assess::assess(c);
         const LevelResult& l = r.levels.at(0);
         CHECK_FALSE(l.screen.passed);

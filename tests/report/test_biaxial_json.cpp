@@ -19,7 +19,8 @@ nlohmann::ordered_json levels_json(const char* name, double pga_g) {
     c.options.histories_per_level = 1;
     // Without the flexible-body inputs no flag is raised: the biaxial model alone decides.
     c.component.fixed_base_frequency_hz.reset();
-    c.component.free_rocking_band_hz.reset();
+    c.component.x.free_rocking_band_hz.reset();
+    c.component.y.free_rocking_band_hz.reset();
     const AssessmentResult r = assess::assess(with_pga_levels(c, {pga_g}));
     return report::to_json(r, report::make_stamp("case", "case.toml", 1, "abc")).at("levels");
 }
