@@ -114,7 +114,10 @@ struct Site {
     std::string design = "rg1.60";      ///< "rg1.60", or "user target files" when targets is set
     std::optional<UserTargets> targets; ///< user target files instead of RG 1.60
     std::vector<double> pga_g;          ///< horizontal PGA levels, g, strictly increasing
-    double vertical_ratio = 2.0 / 3.0;  ///< vertical PGA / horizontal PGA
+    /// Vertical PGA / horizontal PGA: the case's, else RG 1.60's vertical ZPA ratio (1) for
+    /// design = "rg1.60" and 2/3 for target files (the vertical file's ratio when given). With
+    /// RG 1.60 the vertical histories match its vertical spectrum scaled to this ZPA.
+    double vertical_ratio = 2.0 / 3.0;
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
     double g_mps2 = 9.81;               ///< gravity used throughout the case
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy

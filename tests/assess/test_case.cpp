@@ -89,7 +89,7 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     const Case c = parse_case(base_component + base_site, "case.toml");
     CHECK(c.component.base.mu_k == 0.3);
     CHECK(c.component.required_overturn_fs == 1.5);
-    CHECK(c.site.vertical_ratio == Approx(2.0 / 3.0));
+    CHECK(c.site.vertical_ratio == 1.0);  // RG 1.60's vertical ZPA is the horizontal PGA
     CHECK(c.site.sliding_damping == 0.10);
     CHECK(c.options.simulate == SimulatePolicy::automatic);
     CHECK(c.options.seed == 1);
@@ -290,7 +290,8 @@ TEST_CASE("a level the vertical PGA makes weightless, a zero vertical ratio: ref
     // Issue 16 defect 6: pga_g = [1.5, 3.0] was read, then refused by the pipeline as "peak_v_g:
     // value 1 is out of range; expected [0, 1)"; vertical_ratio = 0 (read as [0, 1.5]) as
     // "vertical_ratio: value 0 is out of range; expected (0, 2]". Both without file:line.
-    CHECK(error_of(base_component + "[site]\npga_g = [1.5, 3.0]\n") ==
+    CHECK(error_of(base_component +
+                   "[site]\npga_g = [1.5, 3.0]\nvertical_ratio = 0.6666666666666666\n") ==
           "case.toml:10: site.pga_g: PGA 1.5 g with a vertical/horizontal ratio of 0.6667 gives a "
           "vertical PGA of 1 g; at 1 g or more, taken downward as the static checks take it, the "
           "block is weightless: each level needs pga_g x ratio < 1");
