@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <string>
 
+#include "support/case_text.hpp"
 #include "support/paths.hpp"
 #include "assess/case.hpp"
 #include "core/errors.hpp"
@@ -15,28 +16,10 @@ using namespace freestand::assess;
 
 namespace {
 
-// A minimal valid case; tests replace one line at a time.
-const std::string base_component = R"([component]
-name = "Box"
-mass_kg = 100.0
-cg_height_m = 1.0
-cg_to_edge_x_m = [0.4, 0.5]
-cg_to_edge_y_m = [0.3, 0.3]
-mu_s = 0.3
-allowable_slide_m = 0.05
-)";
-const std::string base_site = R"([site]
-pga_g = [0.1, 0.2]
-)";
+const std::string& base_component = test::box_component;
+const std::string& base_site = test::box_site;
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_case(text, "case.toml");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+std::string error_of(const std::string& text) { return test::case_error(text); }
 
 }  // namespace
 
