@@ -357,6 +357,12 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     c.description = r.string("description").value_or("");
     c.mass_kg = r.required_number("mass_kg", Range{0.0, 1e7, false, true});
     read_geometry(r, c);
+    if (!c.height_m) {
+        assumptions.push_back(fmt::format(
+            "height_m not given: the body's top taken at twice the CG height, {:.3f} m (the point "
+            "of the simulated top acceleration; docs/methods.md s.1).",
+            c.body_height_m()));
+    }
     read_inertia(r, c, assumptions);
     c.footprint = r.string("footprint").value_or("");
     c.fixed_base_frequency_hz = r.number("fixed_base_frequency_hz", frequency_range);

@@ -77,8 +77,11 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     CHECK(c.options.simulate == SimulatePolicy::automatic);
     CHECK(c.options.seed == 1);
     CHECK(c.options.histories_per_level == 7);
-    // friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
-    CHECK(c.assumptions.size() == 6);
+    // height, friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
+    CHECK(c.assumptions.size() == 7);
+    CHECK(c.assumptions.front() ==
+          "height_m not given: the body's top taken at twice the CG height, 2.000 m (the point of "
+          "the simulated top acceleration; docs/methods.md s.1).");
     CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.8 * 0.3, 1.2 * 0.3});
     CHECK(c.component.base.mu_s_range_source == "default 0.8-1.2 x mu_s (docs/methods.md s.7)");
     CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {

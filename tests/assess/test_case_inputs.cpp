@@ -49,6 +49,7 @@ TEST_CASE("height_m: the top point, the default inertia and the modal height fol
     REQUIRE(c.component.height_m == 1.8);
     CHECK(c.component.body_height_m() == 1.8);
     CHECK_FALSE(c.component.uniform_block);
+    CHECK_FALSE(has_assumption(c, "height_m not given"));
     // Uniform block of the footprint and H = 1.8 m about its own centre (docs/methods.md s.1):
     // x, mean half-width 0.45 m: I_c = 100 (0.45^2 + 0.9^2) / 3 = 33.75 kg m^2; y: 30 kg m^2.
     CHECK(c.component.x.inertia_cg_kgm2 == Approx(33.75).epsilon(1e-14));
@@ -82,6 +83,9 @@ TEST_CASE("without height_m the body is twice its CG height, as before", "[asses
     const Case c = parse("fixed_base_frequency_hz = 8.0\n");
     CHECK_FALSE(c.component.height_m.has_value());
     CHECK(c.component.body_height_m() == 2.0);
+    CHECK(has_assumption(c,
+                         "height_m not given: the body's top taken at twice the CG height, "
+                         "2.000 m"));
     CHECK(c.component.x.inertia_cg_kgm2 == Approx(100.0 * (0.2025 + 1.0) / 3.0).epsilon(1e-14));
     CHECK(block_model(c.component, contact, Direction::x).top_height_m == 2.0);
     CHECK(flexible_model(c.component, contact, Direction::x).height_m ==
