@@ -13,6 +13,7 @@
 #include "core/limits.hpp"
 #include "core/units.hpp"
 #include "dynamics/flexible.hpp"
+#include "spectra/design.hpp"
 
 namespace freestand::assess {
 
@@ -40,6 +41,8 @@ const std::vector<std::string> component_keys{"name",
                                               "modal_mass_fraction",
                                               "modal_height_m",
                                               "free_rocking_band_hz",
+                                              "free_rocking_band_x_hz",
+                                              "free_rocking_band_y_hz",
                                               "base_material",
                                               "mu_s",
                                               "mu_k",
@@ -70,26 +73,30 @@ const toml::table* subtable(const toml::table& root, const std::string& name,
     return n->as_table();
 }
 
-// Geometry: either CG height and distances to the edges, or a uniform block's box.
-void read_geometry(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
-    const bool box = r.has("width_m") || r.has("depth_m") || r.has("height_m");
+// Geometry: either CG height and distances to the edges (with the body's height when its CG is
+// not at mid-height), or a uniform block's box.
+void read_geometry(TableReader& r, Component& c) {
+    const bool box = r.has("width_m") || r.has("depth_m");
     const bool general = r.has("cg_height_m") || r.has("cg_to_edge_x_m") || r.has("cg_to_edge_y_m");
     if (box && general) {
-        r.fail(r.has("width_m") ? "width_m" : (r.has("depth_m") ? "depth_m" : "height_m"),
+        r.fail(r.has("width_m") ? "width_m" : "depth_m",
                "give either width_m/depth_m/height_m (uniform block) or cg_height_m with "
-               "cg_to_edge_x_m/cg_to_edge_y_m, not both");
+               "cg_to_edge_x_m/cg_to_edge_y_m (and optional height_m), not both");
     }
-    if (box) {
+    if (box || (r.has("height_m") && !general)) {
         const double w = r.required_number("width_m", positive_size);
         const double d = r.required_number("depth_m", positive_size);
         const double h = r.required_number("height_m", positive_size);
         c.uniform_block = true;
         c.cg_height_m = h / 2.0;
+        c.height_m = h;
         c.x.b_left_m = c.x.b_right_m = w / 2.0;
         c.y.b_left_m = c.y.b_right_m = d / 2.0;
         return;
     }
     c.cg_height_m = r.required_number("cg_height_m", positive_size);
+    // Above the CG (the top corners cannot lie below it), within the size limit.
+    c.height_m = r.number("height_m", Range{c.cg_height_m, max_size_m, false, true});
     const auto bx = r.numbers("cg_to_edge_x_m", positive_size, 2);
     if (!bx)
         r.fail("cg_to_edge_x_m",
@@ -102,12 +109,39 @@ void read_geometry(TableReader& r, Component& c, std::vector<std::string>& assum
     c.x.b_right_m = (*bx)[1];
     c.y.b_left_m = (*by)[0];
     c.y.b_right_m = (*by)[1];
-    (void)assumptions;
 }
 
-// I_c of a uniform block filling the footprint and twice the CG height (docs/methods.md s.1).
-double uniform_inertia(double mass_kg, const PlanarGeometry& g, double h_m) {
-    return block::uniform_inertia_cg_kgm2(mass_kg, (g.b_left_m + g.b_right_m) / 2.0, h_m);
+// I_c of a uniform block filling the footprint and the body's height, about its own centre
+// (docs/methods.md s.1); with the CG at mid-height, the block's own I_c.
+double uniform_inertia(double mass_kg, const PlanarGeometry& g, double height_m) {
+    return block::uniform_inertia_cg_kgm2(mass_kg, (g.b_left_m + g.b_right_m) / 2.0,
+                                          height_m / 2.0);
+}
+
+// p_radps, one value for both directions or [p_x, p_y]. p^2 = M g R / I_O (docs/methods.md
+// s.1), so I_O = M g R / p^2 and I_c = I_O - M R^2 > 0 needs p < sqrt(g / R), R about the
+// critical (smaller-alpha) edge of the direction.
+std::array<double, 2> read_p(TableReader& r, const Component& c) {
+    std::array<double, 2> p_max{};
+    for (const Direction d : {Direction::x, Direction::y}) {
+        const block::Block b = c.block(d);
+        p_max[d == Direction::x ? 0 : 1] = std::sqrt(units::g_mps2 / b.R_m(b.critical_edge()));
+    }
+    if (!r.holds_array("p_radps")) {
+        const double p =
+            *r.number("p_radps", Range{0.0, std::min(p_max[0], p_max[1]), false, false});
+        return {p, p};
+    }
+    const std::vector<double> p =
+        *r.numbers("p_radps", Range{0.0, std::max(p_max[0], p_max[1]), false, false}, 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (!(p[i] < p_max[i])) {
+            r.fail("p_radps", fmt::format("p_{} = {} rad/s is out of range; expected (0, {:.4f}) "
+                                          "(p < sqrt(g / R) of direction {}'s critical edge)",
+                                          i == 0 ? "x" : "y", p[i], p_max[i], i == 0 ? "x" : "y"));
+        }
+    }
+    return {p[0], p[1]};
 }
 
 void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
@@ -123,27 +157,35 @@ void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assump
         return;
     }
     if (r.has("p_radps")) {
-        // p^2 = M g R / I_O (docs/methods.md s.1), so I_O = M g R / p^2 and I_c = I_O - M R^2 must be
-        // > 0: p < sqrt(g / R) about the critical (smaller-alpha) edge of each direction.
-        const block::Block bx0 = c.block(Direction::x);
-        const block::Block by0 = c.block(Direction::y);
-        const double r_max = std::max(bx0.R_m(bx0.critical_edge()), by0.R_m(by0.critical_edge()));
-        const double p_max = std::sqrt(units::g_mps2 / r_max);
-        const double p = *r.number("p_radps", Range{0.0, p_max, false, false});
-        for (PlanarGeometry* g : {&c.x, &c.y}) {
-            const double b = std::min(g->b_left_m, g->b_right_m);
+        const std::array<double, 2> p = read_p(r, c);
+        for (const Direction d : {Direction::x, Direction::y}) {
+            PlanarGeometry& g = d == Direction::x ? c.x : c.y;
+            const double p_d = p[d == Direction::x ? 0 : 1];
+            const double b = std::min(g.b_left_m, g.b_right_m);
             const double R2 = b * b + c.cg_height_m * c.cg_height_m;
-            const double i_edge = c.mass_kg * units::g_mps2 * std::sqrt(R2) / (p * p);
-            g->inertia_cg_kgm2 = i_edge - c.mass_kg * R2;
-            g->inertia_source = fmt::format("from p = {} rad/s: I_O = M g R / p^2", p);
+            const double i_edge = c.mass_kg * units::g_mps2 * std::sqrt(R2) / (p_d * p_d);
+            g.inertia_cg_kgm2 = i_edge - c.mass_kg * R2;
+            g.inertia_source = fmt::format("from p = {} rad/s: I_O = M g R / p^2", p_d);
         }
         return;
     }
     for (PlanarGeometry* g : {&c.x, &c.y}) {
-        g->inertia_cg_kgm2 = uniform_inertia(c.mass_kg, *g, c.cg_height_m);
-        g->inertia_source = "uniform block: I_c = M (b^2 + h^2) / 3";
+        g->inertia_cg_kgm2 = uniform_inertia(c.mass_kg, *g, c.body_height_m());
+        g->inertia_source = c.height_m && !c.uniform_block
+                                ? "uniform block of the height given: I_c = M (b^2 + (H/2)^2) / 3"
+                                : "uniform block: I_c = M (b^2 + h^2) / 3";
     }
-    if (!c.uniform_block) {
+    if (c.uniform_block) return;
+    if (c.height_m) {
+        // No parallel-axis term M (H/2 - h)^2: that would describe mass spread evenly over the
+        // height, which a body with its CG off mid-height does not have; the centroidal value
+        // is the smaller, so p (and the overturning capacity it measures) is not overstated.
+        assumptions.push_back(fmt::format(
+            "No inertia or p given: I_c taken as that of a uniform block of the same footprint "
+            "and the body's height H = {:.3f} m about its own centre, I_c = M (b^2 + (H/2)^2) / "
+            "3, with no parallel-axis term for the CG at {:.3f} m.",
+            *c.height_m, c.cg_height_m));
+    } else {
         assumptions.push_back(
             "No inertia or p given: I_c taken as that of a uniform block of the same footprint and "
             "twice the CG height, I_c = M (b^2 + h^2) / 3.");
@@ -244,6 +286,32 @@ void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptio
     }
 }
 
+// One free-rocking band [lo, hi], lo < hi.
+std::optional<std::array<double, 2>> read_band(TableReader& r, const std::string& key) {
+    const auto band = r.numbers(key, frequency_range, 2);
+    if (!band) return std::nullopt;
+    if ((*band)[0] >= (*band)[1]) {
+        r.fail(key,
+               fmt::format("expected [lo, hi] with lo < hi, got [{}, {}]", (*band)[0], (*band)[1]));
+    }
+    return std::array<double, 2>{(*band)[0], (*band)[1]};
+}
+
+// The free-rocking bands: one for both directions, or one per direction (measured rocking in
+// each plane, e.g. Saraswat 2017 Table 5-2); a direction without one has no band.
+void read_free_rocking(TableReader& r, Component& c) {
+    const auto both = read_band(r, "free_rocking_band_hz");
+    const auto x = read_band(r, "free_rocking_band_x_hz");
+    const auto y = read_band(r, "free_rocking_band_y_hz");
+    if (both && (x || y)) {
+        r.fail(x ? "free_rocking_band_x_hz" : "free_rocking_band_y_hz",
+               "give free_rocking_band_hz (both directions) or free_rocking_band_x_hz / "
+               "free_rocking_band_y_hz (one per direction), not both");
+    }
+    c.x.free_rocking_band_hz = both ? both : x;
+    c.y.free_rocking_band_hz = both ? both : y;
+}
+
 // The flexible body's mode (docs/methods.md s.10): its keys need the fixed-base frequency; the
 // defaults are stated as assumptions.
 void read_modal(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
@@ -260,7 +328,10 @@ void read_modal(TableReader& r, Component& c, std::vector<std::string>& assumpti
     mode.height_m = c.modal_height_m;
     for (const Direction d : {Direction::x, Direction::y}) {
         try {
-            dynamics::make_flexible_model(dynamics::make_block_model(c.block(d), 0.0), mode);
+            dynamics::make_flexible_model(
+                dynamics::make_block_model(c.block(d), 0.0, std::nullopt, std::nullopt,
+                                           c.body_height_m()),
+                mode);
         } catch (const InputError& e) {
             r.fail(c.modal_height_m ? "modal_height_m" : "modal_mass_fraction",
                    fmt::format("in the {} direction: {}", to_string(d), e.message()));
@@ -274,10 +345,10 @@ void read_modal(TableReader& r, Component& c, std::vector<std::string>& assumpti
                                        dynamics::cantilever_modal_mass_fraction));
     if (!c.modal_height_m)
         defaults.push_back(fmt::format(
-            "modal height {} x the body's height, taken as 2 x the CG height = {:.3f} m (uniform "
-            "cantilever)",
+            "modal height {} x the body's height, {} = {:.3f} m (uniform cantilever)",
             dynamics::cantilever_modal_height_ratio,
-            dynamics::cantilever_modal_height_ratio * 2.0 * c.cg_height_m));
+            c.height_m ? fmt::format("{:.3f} m", *c.height_m) : "taken as 2 x the CG height",
+            dynamics::cantilever_modal_height_ratio * c.body_height_m()));
     if (!defaults.empty())
         assumptions.push_back(fmt::format(
             "Flexible-body model (run where a flexible-body flag is raised): {}.",
@@ -293,19 +364,18 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     c.name = r.required_string("name");
     c.description = r.string("description").value_or("");
     c.mass_kg = r.required_number("mass_kg", Range{0.0, 1e7, false, true});
-    read_geometry(r, c, assumptions);
+    read_geometry(r, c);
+    if (!c.height_m) {
+        assumptions.push_back(fmt::format(
+            "height_m not given: the body's top taken at twice the CG height, {:.3f} m (the point "
+            "of the simulated top acceleration; docs/methods.md s.1).",
+            c.body_height_m()));
+    }
     read_inertia(r, c, assumptions);
     c.footprint = r.string("footprint").value_or("");
     c.fixed_base_frequency_hz = r.number("fixed_base_frequency_hz", frequency_range);
     read_modal(r, c, assumptions);
-    if (const auto band = r.numbers("free_rocking_band_hz", frequency_range, 2)) {
-        if ((*band)[0] >= (*band)[1]) {
-            r.fail("free_rocking_band_hz",
-                   fmt::format("expected [lo, hi] with lo < hi, got [{}, {}]", (*band)[0],
-                               (*band)[1]));
-        }
-        c.free_rocking_band_hz = std::array<double, 2>{(*band)[0], (*band)[1]};
-    }
+    read_free_rocking(r, c);
     read_base(r, c, assumptions);
     c.allowable_slide_m = r.required_number("allowable_slide_m", Range{0.0, 10.0, false, true});
     c.allowable_relative_m = r.number("allowable_relative_m", Range{0.0, 10.0, false, true});
@@ -450,6 +520,24 @@ std::optional<std::string> weightless_level(const std::vector<double>& pga_g,
 
 namespace {
 
+// The RG 1.60 vertical target, as the report states it (docs/methods.md s.8).
+std::string rg160_vertical_assumption(bool ratio_given, double ratio) {
+    const std::string shape =
+        "RG 1.60's vertical design spectrum (2/3 of the horizontal below 0.25 Hz, equal to it "
+        "above 3.5 Hz; RG 1.60 Rev. 2, docs/methods.md s.8)";
+    if (ratio_given) {
+        return fmt::format(
+            "Vertical histories matched to {} scaled to a zero-period "
+            "acceleration of vertical_ratio = {:.4f} x the horizontal PGA.",
+            shape, ratio);
+    }
+    return fmt::format(
+        "vertical_ratio not given: vertical histories matched to {}, whose "
+        "zero-period acceleration is the horizontal PGA: vertical PGA = {:.4g} x "
+        "horizontal.",
+        shape, ratio);
+}
+
 Site read_site(TableReader& r, std::vector<std::string>& assumptions,
                const std::filesystem::path& case_dir) {
     Site s;
@@ -471,11 +559,11 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         }
     }
     s.pga_g = *pga;
-    // (0, 1.5]: the vertical history is matched to ratio x the horizontal target, so 0 leaves
-    // it nothing to match.
+    // (0, 1.5]: the vertical history is matched to a target scaled by the ratio, so 0 leaves it
+    // nothing to match.
     const Range ratio_range{0.0, 1.5, false, true};
     const auto ratio = r.number("vertical_ratio", ratio_range);
-    s.vertical_ratio = ratio.value_or(2.0 / 3.0);
+    s.vertical_ratio = ratio.value_or(s.targets ? 2.0 / 3.0 : spectra::rg160_vertical_zpa_ratio);
     if (s.targets && s.targets->v) {
         // The vertical file's rigid-limit PSA over the horizontal one's is the PGA ratio.
         s.vertical_ratio = s.targets->v->spectrum.psa_g.back() / s.targets->zpa_h_g;
@@ -486,11 +574,16 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
                                "vertical_ratio",
                                s.vertical_ratio, describe(ratio_range)));
         }
-    } else if (!ratio) {
+    } else if (s.targets && !ratio) {
         assumptions.push_back("vertical_ratio not given: vertical PGA = 2/3 of horizontal.");
+    } else if (!s.targets) {
+        assumptions.push_back(rg160_vertical_assumption(ratio.has_value(), s.vertical_ratio));
     }
     if (const auto bad = weightless_level(s.pga_g, s.vertical_ratio)) {
-        r.fail("pga_g", *bad);
+        r.fail("pga_g", *bad + (s.targets || ratio ? ""
+                                                   : " (RG 1.60's vertical ZPA equals "
+                                                     "the horizontal PGA; vertical_ratio "
+                                                     "scales its vertical spectrum)"));
     }
     // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
@@ -575,7 +668,7 @@ block::Block Component::block(Direction d) const {
     }
     // Before the inertia is known (while reading p_radps) only R and alpha are used.
     return block::Block::general(g.b_left_m, g.b_right_m, cg_height_m, mass_kg,
-                                 uniform_inertia(mass_kg, g, cg_height_m));
+                                 uniform_inertia(mass_kg, g, body_height_m()));
 }
 
 std::array<double, 2> default_mu_s_range(double mu_s) { return {0.8 * mu_s, 1.2 * mu_s}; }

@@ -20,12 +20,16 @@ namespace freestand::assess {
 enum class Direction { x, y };
 inline const char* to_string(Direction d) { return d == Direction::x ? "x" : "y"; }
 
-/// Geometry of the component in the vertical plane of one horizontal direction.
+/// Geometry and rocking properties of the component in the vertical plane of one horizontal
+/// direction.
 struct PlanarGeometry {
     double b_left_m = 0.0;         ///< CG to the left rocking edge (or leg), m
     double b_right_m = 0.0;        ///< CG to the right rocking edge (or leg), m
     double inertia_cg_kgm2 = 0.0;  ///< I_c about the CG, out of this plane, kg m^2
     std::string inertia_source;    ///< how I_c was obtained, for the report
+    /// Measured free-rocking frequencies of rocking in this plane, [lo, hi] Hz (the
+    /// flexible-body screen's band, docs/methods.md s.2).
+    std::optional<std::array<double, 2>> free_rocking_band_hz;
 };
 
 /// Base friction and restitution, with where each value came from, and their bounds
@@ -58,6 +62,10 @@ struct Component {
     std::string description;
     double mass_kg = 0.0;
     double cg_height_m = 0.0;
+    /// Height of the body's top above the base, m; absent: twice the CG height (a body with its
+    /// CG at mid-height). Sets the top point of the simulation's top acceleration, the default
+    /// inertia and the default modal height.
+    std::optional<double> height_m;
     PlanarGeometry x;            ///< rocking in the x-z plane
     PlanarGeometry y;            ///< rocking in the y-z plane
     bool uniform_block = false;  ///< given as width/depth/height of a uniform block
@@ -68,7 +76,6 @@ struct Component {
     std::optional<double> modal_damping;
     std::optional<double> modal_mass_fraction;  ///< m_s / M
     std::optional<double> modal_height_m;       ///< h_s above the base, m
-    std::optional<std::array<double, 2>> free_rocking_band_hz;
     BaseContact base;
     double allowable_slide_m = 0.0;     ///< absolute slide allowed: clearance to walls, neighbours
     /// Relative displacement allowed between joined units (slack of a transfer tunnel), m.
@@ -76,6 +83,8 @@ struct Component {
     double required_overturn_fs = 1.5;  ///< required alpha / theta_max (docs/methods.md s.5a)
 
     const PlanarGeometry& plane(Direction d) const { return d == Direction::x ? x : y; }
+    /// height_m, else twice the CG height, m.
+    double body_height_m() const { return height_m.value_or(2.0 * cg_height_m); }
     /// The planar rigid block of one direction.
     block::Block block(Direction d) const;
 };
@@ -105,7 +114,10 @@ struct Site {
     std::string design = "rg1.60";      ///< "rg1.60", or "user target files" when targets is set
     std::optional<UserTargets> targets; ///< user target files instead of RG 1.60
     std::vector<double> pga_g;          ///< horizontal PGA levels, g, strictly increasing
-    double vertical_ratio = 2.0 / 3.0;  ///< vertical PGA / horizontal PGA
+    /// Vertical PGA / horizontal PGA: the case's, else RG 1.60's vertical ZPA ratio (1) for
+    /// design = "rg1.60" and 2/3 for target files (the vertical file's ratio when given). With
+    /// RG 1.60 the vertical histories match its vertical spectrum scaled to this ZPA.
+    double vertical_ratio = 2.0 / 3.0;
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
     double g_mps2 = 9.81;               ///< gravity used throughout the case
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy

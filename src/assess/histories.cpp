@@ -51,14 +51,17 @@ motion::TargetSet user_unit_targets(const Site& site, const UserTargets& u) {
     return t;
 }
 
+// RG 1.60 at 1 g: the horizontal spectrum, and RG 1.60's own vertical spectrum scaled to the
+// site's vertical PGA (docs/methods.md s.8).
 motion::TargetSet rg160_unit_targets(const Site& site) {
     const auto f = target_frequencies();
-    motion::TargetSet t = motion::ratio_targets(
-        fmt::format("RG 1.60 horizontal, vertical {:.4f} x horizontal, PGA 1 g",
-                    site.vertical_ratio),
-        spectra::rg160(1.0, 0.05, false, f), spectra::rg160(1.0, 0.10, false, f),
-        site.vertical_ratio);
+    motion::TargetSet t;
+    t.label = fmt::format("RG 1.60 horizontal and vertical, vertical ZPA {:.4f} x PGA, PGA 1 g",
+                          site.vertical_ratio);
+    t.horizontal.psa_5pct = spectra::rg160(1.0, 0.05, false, f);
+    t.horizontal.psa_10pct = spectra::rg160(1.0, 0.10, false, f);
     t.horizontal.rg160_psd_pga_g = 1.0;  // the RG 1.60 target PSD applies to the horizontals
+    t.vertical = motion::rg160_vertical_target(1.0, site.vertical_ratio, f);
     return t;
 }
 

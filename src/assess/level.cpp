@@ -42,15 +42,17 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     FlexibleFlag out;
     const block::Edge e = blk.critical_edge();
     out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
-    if (!comp.fixed_base_frequency_hz && !comp.free_rocking_band_hz) {
+    // The band of rocking in this direction's plane.
+    const std::optional<std::array<double, 2>>& band = comp.plane(d).free_rocking_band_hz;
+    if (!comp.fixed_base_frequency_hz && !band) {
         out.reason = "no fixed-base frequency or free-rocking band given: treated as rigid";
         return out;
     }
     rocking::FlexibleInput in;
     in.fixed_base_hz = comp.fixed_base_frequency_hz;
-    if (comp.free_rocking_band_hz) {
-        in.rock_band_lo_hz = (*comp.free_rocking_band_hz)[0];
-        in.rock_band_hi_hz = (*comp.free_rocking_band_hz)[1];
+    if (band) {
+        in.rock_band_lo_hz = (*band)[0];
+        in.rock_band_hi_hz = (*band)[1];
     }
     in.uplift_threshold_g = out.uplift_a_g;
     in.pga_h_g = dem.pga_of(d);
@@ -63,11 +65,8 @@ FlexibleFlag screen_flexible(const Component& comp, const block::Block& blk, Dir
     std::vector<std::string> basis;
     if (comp.fixed_base_frequency_hz)
         basis.push_back(fmt::format("fixed-base {:.2f} Hz", *comp.fixed_base_frequency_hz));
-    if (comp.free_rocking_band_hz) {
-        basis.push_back(fmt::format("free-rocking band {:.2f}-{:.2f} Hz",
-                                    (*comp.free_rocking_band_hz)[0],
-                                    (*comp.free_rocking_band_hz)[1]));
-    }
+    if (band)
+        basis.push_back(fmt::format("free-rocking band {:.2f}-{:.2f} Hz", (*band)[0], (*band)[1]));
     out.basis = fmt::format("{}", fmt::join(basis, "; "));
     return out;
 }
@@ -340,8 +339,8 @@ dynamics::BlockModel block_model(const Component& comp, const ContactBound& cont
     const block::Block blk = comp.block(d);
     const std::optional<double> r =
         contact.housner ? std::nullopt : std::optional<double>(contact.restitution);
-    // Top corners at twice the CG height: the uniform-block default of the simulator.
-    return dynamics::make_block_model(blk, contact.mu_s, contact.mu_k, r);
+    // Top corners at the body's height (twice the CG height unless the case gives height_m).
+    return dynamics::make_block_model(blk, contact.mu_s, contact.mu_k, r, comp.body_height_m());
 }
 
 dynamics::Excitation excitation(const HistorySet& set, Direction d, double pga_g) {

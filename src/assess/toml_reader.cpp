@@ -61,6 +61,11 @@ bool TableReader::has(const std::string& key) const {
     return table_ != nullptr && table_->contains(key);
 }
 
+bool TableReader::holds_array(const std::string& key) const {
+    const toml::node* n = table_ == nullptr ? nullptr : table_->get(key);
+    return n != nullptr && n->is_array();
+}
+
 SourceLocation TableReader::where(const std::string& key) const {
     SourceLocation loc{file_, 0, name_ + "." + key};
     if (table_ == nullptr) return loc;

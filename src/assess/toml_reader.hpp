@@ -31,6 +31,8 @@ class TableReader {
     TableReader(const toml::table* table, std::string file, std::string table_name);
 
     bool has(const std::string& key) const;
+    /// The key is present and holds an array (for keys that take a number or an array).
+    bool holds_array(const std::string& key) const;
     /// Location of key (its value's line), or of the table when the key is absent.
     SourceLocation where(const std::string& key) const;
 

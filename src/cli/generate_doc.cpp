@@ -22,13 +22,9 @@ motion::TargetSet design_targets(const po::variables_map& vm, double vertical_ra
     check_design_options(vm, "--target", name);
     if (name == "rg1.60") {
         const double pga = required_positive(vm, "--target", name, "pga");
-        motion::TargetSet t = motion::rg160_targets(pga);
-        if (!ratio_given) return t;
-        motion::TargetSet r = motion::ratio_targets(t.label, t.horizontal.psa_5pct,
-                                                    t.horizontal.psa_10pct, vertical_ratio);
-        r.horizontal.rg160_psd_pga_g = pga;
-        motion::set_realism(r, motion::rg160_realism());
-        return r;
+        // RG 1.60's vertical spectrum, scaled to the ratio's ZPA when one is given (as assess).
+        return motion::rg160_targets(
+            pga, ratio_given ? vertical_ratio : spectra::rg160_vertical_zpa_ratio);
     }
     const auto f = target_grid();
     const spectra::Spectrum h5 = design_spectrum(vm, "--target", name, 0.05, false, f);
@@ -143,7 +139,8 @@ po::options_description generate_options() {
     add_design_options(desc);
     desc.add_options()(
         "vertical-ratio", po::value<std::string>(),
-        "vertical target = ratio x horizontal (default: RG 1.60 vertical for rg1.60, else 2/3)")(
+        "vertical PGA / horizontal: rg1.60 scales its vertical spectrum to this ZPA (default 1, "
+        "RG 1.60's own); other targets: ratio x horizontal (default 2/3)")(
         "seed-record", po::value<std::vector<std::string>>(),
         "seed record(s) to match, one per component (repeat or comma-separate); default synthetic")(
         "components", po::value<std::string>(),

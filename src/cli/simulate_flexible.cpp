@@ -60,8 +60,9 @@ int run_flexible_simulation(const po::variables_map& vm, const dynamics::BlockMo
             "modal mass {} M: first mode of a uniform cantilever", model.mass_fraction));
     if (model.height_default)
         assumptions.push_back(fmt::format(
-            "modal height {:.4g} m: {} of the body's height, taken as 2 x the CG height",
-            model.height_m, dynamics::cantilever_modal_height_ratio));
+            "modal height {:.4g} m: {} of the body's height, taken as the top height {:.4g} m "
+            "(--top; 2 x the CG height when not given)",
+            model.height_m, dynamics::cantilever_modal_height_ratio, rigid.top_height_m));
     if (vm["json"].as<bool>()) {
         nlohmann::ordered_json j;
         j["model"] = "flexible";

@@ -33,8 +33,8 @@ inline constexpr double default_modal_damping = 0.02;
 /// its momentum through an impact, one much faster follows the base (docs/methods.md s.10).
 inline constexpr double default_impact_duration_s = 1e-4;
 
-/// The elastic mode. Unset mass and height take the cantilever defaults above with the body's
-/// height taken as 2 h (a uniform body).
+/// The elastic mode. Unset mass and height take the cantilever defaults above, the body's
+/// height being the rigid model's top_height_m (2 h, a uniform body, unless given).
 struct FlexibleMode {
     double frequency_hz = 0.0;                ///< fixed-base frequency f, Hz (> 0)
     double damping = default_modal_damping;   ///< modal damping ratio zeta, [0, 1)

@@ -29,7 +29,8 @@ FlexibleModel make_flexible_model(const BlockModel& rigid, const FlexibleMode& m
     m.mass_fraction_default = !mode.mass_fraction;
     m.height_default = !mode.height_m;
     m.mass_fraction = mode.mass_fraction.value_or(cantilever_modal_mass_fraction);
-    m.height_m = mode.height_m.value_or(cantilever_modal_height_ratio * 2.0 * blk.h_m);
+    // The body's height is the rigid model's top (2 h unless given).
+    m.height_m = mode.height_m.value_or(cantilever_modal_height_ratio * rigid.top_height_m);
     if (!std::isfinite(m.mass_fraction) || m.mass_fraction <= 0.0 || m.mass_fraction >= 1.0)
         throw bad("flexible.mass", fmt::format("modal mass fraction must be in (0, 1); got {}",
                                                m.mass_fraction));

@@ -68,7 +68,17 @@ struct TargetSet {
 };
 
 /// RG 1.60 horizontal and vertical (5% and 10%), with the RG 1.60 target PSD on horizontals.
-TargetSet rg160_targets(double pga_g);
+/// The vertical is rg160_vertical_target at vertical_zpa_ratio (1: RG 1.60's own vertical).
+TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio = 1.0);
+
+/// RG 1.60's vertical target (5% and 10%, tabulated on frequency_hz) at the horizontal PGA
+/// pga_g, scaled so its zero-period acceleration is zpa_ratio x pga_g. RG 1.60's own vertical
+/// spectrum (zpa_ratio = spectra::rg160_vertical_zpa_ratio, 1) is 2/3 of the horizontal below
+/// 0.25 Hz and equal to it above 3.5 Hz, its ZPA the horizontal PGA (docs/methods.md s.8).
+/// A vertical component: no target PSD, realism limited to PGA / ZPA and D5-75. InputError
+/// (field "vertical_ratio") unless zpa_ratio is in (0, 2].
+Target rg160_vertical_target(double pga_g, double zpa_ratio,
+                             const std::vector<double>& frequency_hz);
 
 /// Sets the realism limits of every target of the set (validated).
 void set_realism(TargetSet& targets, const RealismLimits& limits);

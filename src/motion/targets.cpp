@@ -59,20 +59,33 @@ void validate_target(const spectra::Spectrum& s, double expected_damping) {
     }
 }
 
-TargetSet rg160_targets(double pga_g) {
+Target rg160_vertical_target(double pga_g, double zpa_ratio,
+                             const std::vector<double>& frequency_hz) {
+    require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
+    require_in_range(zpa_ratio, 0.0, 2.0, SourceLocation{"", 0, "vertical_ratio"}, false, true);
+    Target t;
+    // The shape is linear in the PGA it is drawn for (D scales the ground displacement, itself
+    // proportional to the PGA), so scaling the argument scales the whole spectrum.
+    t.psa_5pct = spectra::rg160(zpa_ratio * pga_g, 0.05, true, frequency_hz);
+    t.psa_10pct = spectra::rg160(zpa_ratio * pga_g, 0.10, true, frequency_hz);
+    t.horizontal = false;
+    t.realism = rg160_realism();
+    return t;
+}
+
+TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio) {
     require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
     TargetSet t;
-    t.label = fmt::format("RG 1.60, PGA {} g", pga_g);
+    t.label =
+        vertical_zpa_ratio == spectra::rg160_vertical_zpa_ratio
+            ? fmt::format("RG 1.60, PGA {} g", pga_g)
+            : fmt::format("RG 1.60, PGA {} g, vertical ZPA {} x PGA", pga_g, vertical_zpa_ratio);
     const auto fh = design_grid(2.5);
-    const auto fv = design_grid(3.5);
     t.horizontal.psa_5pct = spectra::rg160(pga_g, 0.05, false, fh);
     t.horizontal.psa_10pct = spectra::rg160(pga_g, 0.10, false, fh);
     t.horizontal.rg160_psd_pga_g = pga_g;
     t.horizontal.realism = rg160_realism();
-    t.vertical.psa_5pct = spectra::rg160(pga_g, 0.05, true, fv);
-    t.vertical.psa_10pct = spectra::rg160(pga_g, 0.10, true, fv);
-    t.vertical.horizontal = false;
-    t.vertical.realism = rg160_realism();
+    t.vertical = rg160_vertical_target(pga_g, vertical_zpa_ratio, design_grid(3.5));
     return t;
 }
 

@@ -266,6 +266,7 @@ ordered_json case_json(const Case& c) {
     comp["description"] = k.description;
     comp["mass_kg"] = num(k.mass_kg);
     comp["cg_height_m"] = num(k.cg_height_m);
+    comp["height_m"] = num(k.body_height_m());
     comp["cg_to_edge_x_m"] = {num(k.x.b_left_m), num(k.x.b_right_m)};
     comp["cg_to_edge_y_m"] = {num(k.y.b_left_m), num(k.y.b_right_m)};
     comp["inertia_cg_x_kgm2"] = num(k.x.inertia_cg_kgm2);
@@ -274,10 +275,10 @@ ordered_json case_json(const Case& c) {
     comp["uniform_block"] = k.uniform_block;
     comp["footprint"] = k.footprint;
     comp["fixed_base_frequency_hz"] = num(k.fixed_base_frequency_hz);
-    comp["free_rocking_band_hz"] =
-        k.free_rocking_band_hz
-            ? ordered_json{num((*k.free_rocking_band_hz)[0]), num((*k.free_rocking_band_hz)[1])}
-            : ordered_json(nullptr);
+    comp["free_rocking_band_x_hz"] =
+        k.x.free_rocking_band_hz ? pair_json(*k.x.free_rocking_band_hz) : ordered_json(nullptr);
+    comp["free_rocking_band_y_hz"] =
+        k.y.free_rocking_band_hz ? pair_json(*k.y.free_rocking_band_hz) : ordered_json(nullptr);
     comp["base_material"] =
         k.base.material.empty() ? ordered_json(nullptr) : ordered_json(k.base.material);
     comp["mu_s"] = num(k.base.mu_s);

@@ -101,6 +101,10 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
     out.push_back(input("mass", fixed(k.mass_kg, 1), "kg"));
     out.push_back(input("CG height above the contact plane", fixed(k.cg_height_m, 3), "m",
                         k.uniform_block ? "uniform block: half the height" : ""));
+    if (k.height_m && !k.uniform_block) {
+        out.push_back(input("height of the top above the contact plane", fixed(*k.height_m, 3), "m",
+                            "top point of the top acceleration; default inertia and modal height"));
+    }
     out.push_back(
         input("CG to rocking edges, x (left, right)", pair(k.x.b_left_m, k.x.b_right_m, 3), "m"));
     out.push_back(
@@ -111,11 +115,18 @@ mstch::array inputs(const Case& c, const std::vector<LevelResult>& levels) {
                         k.y.inertia_source));
     out.push_back(input("footprint", k.footprint.empty() ? none : k.footprint, ""));
     out.push_back(input("fixed-base natural frequency", fixed(k.fixed_base_frequency_hz, 2), "Hz"));
-    out.push_back(input("free-rocking band",
-                        k.free_rocking_band_hz
-                            ? pair((*k.free_rocking_band_hz)[0], (*k.free_rocking_band_hz)[1], 2)
-                            : none,
-                        "Hz"));
+    // One row when both directions share a band (or have none), else one per direction.
+    const auto band_text = [&](Direction d) {
+        const auto& band = k.plane(d).free_rocking_band_hz;
+        return band ? pair((*band)[0], (*band)[1], 2) : none;
+    };
+    if (k.x.free_rocking_band_hz == k.y.free_rocking_band_hz) {
+        out.push_back(input("free-rocking band", band_text(Direction::x), "Hz"));
+    } else {
+        for (const Direction d : {Direction::x, Direction::y})
+            out.push_back(input(fmt::format("free-rocking band, {} plane", to_string(d)),
+                                band_text(d), "Hz"));
+    }
     out.push_back(input("base material", k.base.material.empty() ? none : k.base.material, "",
                         k.base.source));
     out.push_back(input("static friction mu_s (nominal)", fixed(k.base.mu_s, 3), "-"));

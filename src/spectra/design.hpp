@@ -10,6 +10,11 @@ namespace freestand::spectra {
 /// The dampings RG 1.60 tabulates (docs/methods.md s.8).
 inline constexpr std::array<double, 5> rg160_dampings{0.005, 0.02, 0.05, 0.07, 0.10};
 
+/// RG 1.60's vertical zero-period acceleration over the horizontal PGA: factor A of its
+/// vertical table is 1 (docs/methods.md s.8), the vertical spectrum following the maximum
+/// horizontal ground acceleration above 33 Hz.
+inline constexpr double rg160_vertical_zpa_ratio = 1.0;
+
 /// US NRC RG 1.60 at damping in {0.005, 0.02, 0.05, 0.07, 0.10}; other dampings in
 /// [0.005, 0.10] interpolate the factors on log damping (InputError outside). Horizontal or
 /// vertical control points (A 33 Hz, B 9 Hz, C 2.5 Hz or 3.5 Hz vertical, D 0.25 Hz), straight

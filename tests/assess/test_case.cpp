@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <string>
 
+#include "support/case_text.hpp"
 #include "support/paths.hpp"
 #include "assess/case.hpp"
 #include "core/errors.hpp"
@@ -15,28 +16,10 @@ using namespace freestand::assess;
 
 namespace {
 
-// A minimal valid case; tests replace one line at a time.
-const std::string base_component = R"([component]
-name = "Box"
-mass_kg = 100.0
-cg_height_m = 1.0
-cg_to_edge_x_m = [0.4, 0.5]
-cg_to_edge_y_m = [0.3, 0.3]
-mu_s = 0.3
-allowable_slide_m = 0.05
-)";
-const std::string base_site = R"([site]
-pga_g = [0.1, 0.2]
-)";
+const std::string& base_component = test::box_component;
+const std::string& base_site = test::box_site;
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_case(text, "case.toml");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+std::string error_of(const std::string& text) { return test::case_error(text); }
 
 }  // namespace
 
@@ -63,7 +46,7 @@ TEST_CASE("glove box inertia derived from p reproduces p", "[assess][case]") {
     CHECK(c.component.base.mu_s == 0.15);
     CHECK(c.component.base.material == "PVC sheet on concrete");
     CHECK_FALSE(c.component.base.restitution.has_value());
-    CHECK(c.component.free_rocking_band_hz.has_value());
+    CHECK(c.component.x.free_rocking_band_hz.has_value());
 }
 
 TEST_CASE("the case's own assumptions are kept for the report, first", "[assess][case]") {
@@ -90,14 +73,17 @@ TEST_CASE("defaults are applied and stated", "[assess][case]") {
     const Case c = parse_case(base_component + base_site, "case.toml");
     CHECK(c.component.base.mu_k == 0.3);
     CHECK(c.component.required_overturn_fs == 1.5);
-    CHECK(c.site.vertical_ratio == Approx(2.0 / 3.0));
+    CHECK(c.site.vertical_ratio == 1.0);  // RG 1.60's vertical ZPA is the horizontal PGA
     CHECK(c.site.sliding_damping == 0.10);
     CHECK(c.options.simulate == SimulatePolicy::automatic);
     CHECK(c.options.seed == 1);
     CHECK(c.options.histories_per_level == 30);
     CHECK(c.options.max_histories_per_level == 120);
-    // friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
-    CHECK(c.assumptions.size() == 6);
+    // height, friction bounds, mu_k, inertia, restitution, vertical ratio, energy high-pass corner
+    CHECK(c.assumptions.size() == 7);
+    CHECK(c.assumptions.front() ==
+          "height_m not given: the body's top taken at twice the CG height, 2.000 m (the point of "
+          "the simulated top acceleration; docs/methods.md s.1).");
     CHECK(c.component.base.mu_s_range == std::array<double, 2>{0.8 * 0.3, 1.2 * 0.3});
     CHECK(c.component.base.mu_s_range_source == "default 0.8-1.2 x mu_s (docs/methods.md s.7)");
     CHECK(std::any_of(c.assumptions.begin(), c.assumptions.end(), [](const std::string& a) {
@@ -239,7 +225,8 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     SECTION("conflicting geometry") {
         CHECK(error_of(base_component + "width_m = 1.0\n" + base_site) ==
               "case.toml:9: component.width_m: give either width_m/depth_m/height_m (uniform "
-              "block) or cg_height_m with cg_to_edge_x_m/cg_to_edge_y_m, not both");
+              "block) or cg_height_m with cg_to_edge_x_m/cg_to_edge_y_m (and optional "
+              "height_m), not both");
     }
     SECTION("p too large for a positive I_c") {
         const std::string e = error_of(base_component + "p_radps = 5.0\n" + base_site);
@@ -277,10 +264,9 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
                                    "base_material, one of \"plywood\"",
                                    0) == 0);
     }
-    SECTION("a key that is allowed but unused in this combination") {
-        CHECK(
-            error_of(base_component + "height_m = 2.0\n" + base_site).find("component.height_m") !=
-            std::string::npos);
+    SECTION("a body's height at or below its CG") {
+        CHECK(error_of(base_component + "height_m = 1.0\n" + base_site) ==
+              "case.toml:9: component.height_m: value 1 is out of range; expected (1, 100]");
     }
 }
 
@@ -315,7 +301,8 @@ TEST_CASE("a level the vertical PGA makes weightless, a zero vertical ratio: ref
     // Issue 16 defect 6: pga_g = [1.5, 3.0] was read, then refused by the pipeline as "peak_v_g:
     // value 1 is out of range; expected [0, 1)"; vertical_ratio = 0 (read as [0, 1.5]) as
     // "vertical_ratio: value 0 is out of range; expected (0, 2]". Both without file:line.
-    CHECK(error_of(base_component + "[site]\npga_g = [1.5, 3.0]\n") ==
+    CHECK(error_of(base_component +
+                   "[site]\npga_g = [1.5, 3.0]\nvertical_ratio = 0.6666666666666666\n") ==
           "case.toml:10: site.pga_g: PGA 1.5 g with a vertical/horizontal ratio of 0.6667 gives a "
           "vertical PGA of 1 g; at 1 g or more, taken downward as the static checks take it, the "
           "block is weightless: each level needs pga_g x ratio < 1");

@@ -131,6 +131,11 @@ TEST_CASE("every input of a generation moves the cache key", "[assess][cache]") 
     tt = t;
     tt.vertical.realism.d5_75_min_s = 5.0;
     CHECK(add(tt, go, 1, 0));
+    // The vertical target itself (RG 1.60's vertical spectrum against a ratio of the horizontal).
+    tt = t;
+    tt.vertical.psa_5pct.psa_g[10] *= 1.0 + 1e-15;
+    CHECK(add(tt, go, 1, 0));
+    CHECK(add(motion::rg160_targets(1.0, 2.0 / 3.0), go, 1, 0));
     tt = t;
     tt.horizontal_2 = t.horizontal;
     CHECK(add(tt, go, 1, 0));

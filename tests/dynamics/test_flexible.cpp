@@ -150,6 +150,10 @@ TEST_CASE("the flexible model states its cantilever defaults", "[dynamics][flexi
     CHECK(m.height_m == Approx(0.726 * 1.5));
     CHECK(m.mass_fraction_default);
     CHECK(m.height_default);
+    // The body's height is the rigid model's top: 0.726 of it when the top is not at 2 h.
+    const auto low_top = dynamics::make_block_model(block::Block::uniform(0.25, 0.75, 1000.0), 0.8,
+                                                    std::nullopt, std::nullopt, 1.2);
+    CHECK(flexible(low_top, 5.0).height_m == Approx(0.726 * 1.2).epsilon(1e-15));
 }
 
 TEST_CASE("make_flexible_model refuses bad modes", "[dynamics][flexible][errors]") {

@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/readers.hpp"
 #include "motion/motion.hpp"
+#include "spectra/design.hpp"
 
 using namespace freestand;
 using Catch::Contains;
@@ -123,4 +124,30 @@ TEST_CASE("the acceptance report names every failed criterion", "[motion][accept
     for (double& x : drift.accel_mps2) x += 0.01;
     a = motion::check_acceptance(drift, t);
     CHECK_THAT(a.reason, Contains("final velocity") && Contains("final displacement"));
+}
+
+TEST_CASE("RG 1.60's vertical target: its own spectrum, scaled to a ZPA ratio up to 2",
+          "[motion][errors][vertical]") {
+    const std::vector<double> f{0.1, 0.25, 1.0, 3.5, 9.0, 33.0, 50.0};
+    const motion::Target own = motion::rg160_vertical_target(0.3, 1.0, f);
+    const motion::Target half = motion::rg160_vertical_target(0.3, 0.5, f);
+    CHECK_FALSE(own.horizontal);
+    CHECK_FALSE(own.rg160_psd_pga_g.has_value());
+    // RG 1.60: the vertical ZPA is the horizontal PGA; 2/3 of the horizontal below 0.25 Hz,
+    // equal above 3.5 Hz (docs/methods.md s.8).
+    const spectra::Spectrum h = spectra::rg160(0.3, 0.05, false, f);
+    CHECK(motion::zero_period_g(own.psa_5pct) == Approx(0.3).epsilon(1e-15));
+    CHECK(own.psa_5pct.psa_g[0] / h.psa_g[0] == Approx(1.37 / 2.05).epsilon(1e-12));
+    CHECK(own.psa_5pct.psa_g[3] / h.psa_g[3] == Approx(1.0).epsilon(0.002));
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        CHECK(half.psa_5pct.psa_g[i] == Approx(0.5 * own.psa_5pct.psa_g[i]).epsilon(1e-14));
+        CHECK(half.psa_10pct->psa_g[i] == Approx(0.5 * own.psa_10pct->psa_g[i]).epsilon(1e-14));
+    }
+    CHECK(motion::zero_period_g(motion::rg160_targets(0.3, 0.5).vertical.psa_5pct) ==
+          Approx(0.15).epsilon(1e-15));
+    CHECK(motion::rg160_targets(0.3).vertical.psa_5pct.psa_g ==
+          motion::rg160_targets(0.3, 1.0).vertical.psa_5pct.psa_g);
+    CHECK_THROWS_MATCHES(
+        motion::rg160_vertical_target(0.3, 0.0, f), InputError,
+        Catch::Message("vertical_ratio: value 0 is out of range; expected (0, 2]"));
 }

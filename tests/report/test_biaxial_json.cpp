@@ -20,7 +20,8 @@ nlohmann::ordered_json levels_json(const char* name, double pga_g) {
     c.options.max_histories_per_level = c.options.histories_per_level;
     // Without the flexible-body inputs no flag is raised: the biaxial model alone decides.
     c.component.fixed_base_frequency_hz.reset();
-    c.component.free_rocking_band_hz.reset();
+    c.component.x.free_rocking_band_hz.reset();
+    c.component.y.free_rocking_band_hz.reset();
     const AssessmentResult r = assess::assess(with_pga_levels(c, {pga_g}));
     return report::to_json(r, report::make_stamp("case", "case.toml", 1, "abc")).at("levels");
 }
