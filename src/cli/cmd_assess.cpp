@@ -57,9 +57,15 @@ int run(const std::vector<std::string>& args) {
     core::publish_folder(out, files);
     std::cout << report::verdict_line(r.result) << "\n";
     // Timing goes to stdout only, never into the reports (they must be byte-identical per input).
-    std::cout << fmt::format("wrote {} ({} histories generated, {} simulations) in {:.2f} s\n",
+    std::string goal_samples;
+    if (r.goal) {
+        const fragility::Config& g = r.goal->meta.config;
+        goal_samples = fmt::format(", performance goal {} samples",
+                                   g.pga_g.size() * static_cast<std::size_t>(g.samples));
+    }
+    std::cout << fmt::format("wrote {} ({} histories generated, {} simulations{}) in {:.2f} s\n",
                              out.string(), r.result.histories_generated, r.result.simulations_run,
-                             assess_s);
+                             goal_samples, assess_s);
     if (converter) std::cout << fmt::format("report.pdf made by {} in {:.2f} s\n",
                                             converter->string(), pdf_s);
     return 0;
