@@ -28,7 +28,8 @@ const char* event_name(Event e);
 
 /// The models a sample runs (docs/methods.md s.9, s.10). The default, the rigid planar block in
 /// x and in y, is what `freestand fragility` runs; the performance goal (src/goal) asks for the
-/// models the case's own levels decide with.
+/// models the case's own levels decide with. Shard files (fragility/serialize.hpp) do not carry
+/// the models: a sharded run is always the default's.
 struct Models {
     /// Per level (as Config::pga_g) and direction (x, y): the flexible body (rigid base carrying
     /// one elastic mode, assess::flexible_model) instead of the rigid block. Empty: rigid
