@@ -240,7 +240,8 @@ TEST_CASE("RG 1.60 histories: the vertical matches RG 1.60's vertical spectrum a
     // the horizontal spectrum, the target of a ratio times the horizontal.
     Case c = parse("", "vertical_ratio = 0.5\n[options]\nhistories_per_level = 1\n");
     HistoryBank bank(c);
-    const HistorySet& set = bank.sets().at(0);
+    REQUIRE(bank.sets().size() == 1);
+    const HistorySet& set = bank.sets().front();
     const std::vector<double> f{0.3, 1.0, 20.0};
     const std::vector<double> v = spectra::psa_g(set.v, 0.05, f);
     const spectra::Spectrum target_v = spectra::rg160(0.5, 0.05, true, f);
