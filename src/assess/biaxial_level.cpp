@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "assess/level_runs.hpp"
 #include "assess/verdict.hpp"
 #include "core/parallel.hpp"
 #include "dynamics/biaxial.hpp"
@@ -39,13 +40,16 @@ std::optional<std::string> not_applicable(const Case& c, const LevelResult& l,
 // Peak |u| of every history run biaxially at the sliding bound.
 Stats biaxial_peaks(const dynamics::BiaxialModel& model,
                     const std::vector<dynamics::BiaxialExcitation>& ex, double g_mps2,
-                    int threads) {
+                    HistoryBank& bank) {
     dynamics::Options opt = dynamics::biaxial_options();
     opt.record_series = false;
     opt.g_mps2 = g_mps2;
     std::vector<double> peaks(ex.size());
-    core::parallel_for(ex.size(), threads, [&](std::size_t k) {
-        peaks[k] = dynamics::simulate_biaxial(model, ex[k], opt).summary.slide_max_m;
+    RunTable<double>* kept = bank.level_runs() ? &bank.level_runs()->biaxial(ex.size()) : nullptr;
+    core::parallel_for(ex.size(), bank.run().threads, [&](std::size_t k) {
+        peaks[k] = remembered(kept, k, [&] {
+            return dynamics::simulate_biaxial(model, ex[k], opt).summary.slide_max_m;
+        });
     });
     return stats_of(peaks);
 }
@@ -78,7 +82,7 @@ void apply_biaxial(const Case& c, const LevelDemand& demand, std::vector<LevelRe
             b.reason = *why;
             l->model_reason += "; biaxial sliding does not apply: " + *why;
         } else {
-            if (!peaks) peaks = biaxial_peaks(model, ex, c.site.g_mps2, bank.run().threads);
+            if (!peaks) peaks = biaxial_peaks(model, ex, c.site.g_mps2, bank);
             b.ran = true;
             b.slide_m = *peaks;
             b.reason = "the block slides without rocking at the sliding bound: both horizontal "

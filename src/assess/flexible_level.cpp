@@ -1,11 +1,13 @@
 #include "assess/flexible_level.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <vector>
 
 #include "assess/level.hpp"
+#include "assess/level_runs.hpp"
 
 namespace freestand::assess {
 
@@ -59,12 +61,19 @@ void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, Hi
     constexpr auto slots = static_cast<std::size_t>(bound_slots);
     std::vector<dynamics::FlexibleSummary> runs(slots * bank.sets().size());
     std::vector<char> ran(runs.size(), 0);
+    std::array<RunTable<dynamics::FlexibleSummary>*, slots> kept{};
+    if (bank.level_runs())
+        for (std::size_t b = 0; b < slots; ++b)
+            kept[b] = &bank.level_runs()->flexible(d, static_cast<int>(b), bank.sets().size());
     const HistoryRunner run = [&](std::size_t k, int bound, const dynamics::BlockModel& rigid,
                                   const dynamics::Excitation& ex, const dynamics::Options& opt) {
-        dynamics::FlexibleModel m = probe;
-        m.rigid = rigid;
-        const std::size_t slot = slots * k + static_cast<std::size_t>(bound);
-        runs[slot] = dynamics::simulate_flexible(m, ex, opt).summary;
+        const auto b = static_cast<std::size_t>(bound);
+        const std::size_t slot = slots * k + b;
+        runs[slot] = remembered(kept[b], k, [&] {
+            dynamics::FlexibleModel m = probe;
+            m.rigid = rigid;
+            return dynamics::simulate_flexible(m, ex, opt).summary;
+        });
         ran[slot] = 1;
         return runs[slot].base;
     };

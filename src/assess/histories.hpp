@@ -16,6 +16,8 @@
 
 namespace freestand::assess {
 
+class LevelRuns;
+
 /// One three-component history at the reference PGA of 1 g.
 struct HistorySet {
     core::Record h1;                             ///< applied along x
@@ -45,6 +47,10 @@ class HistoryBank {
     void use(std::size_t n);
     /// The most sets a level may use: options.max_histories_per_level, or the seed records'.
     std::size_t max_sets() const;
+    /// The runs kept for the level being evaluated (assess/level_runs.hpp), or null: a level
+    /// that grows its sets (settle.cpp) keeps its runs here while it does.
+    LevelRuns* level_runs() const { return level_runs_; }
+    void keep_level_runs(LevelRuns* runs) { level_runs_ = runs; }
     /// Every set made so far (at least those in use once sets() ran), in index order.
     const std::vector<HistorySet>& made() const { return sets_; }
     bool generated() const { return !sets_.empty(); }
@@ -72,6 +78,7 @@ class HistoryBank {
     const Case* case_;
     RunSettings run_;
     std::size_t active_;
+    LevelRuns* level_runs_ = nullptr;
     std::size_t cache_hits_ = 0;
     std::size_t generated_sets_ = 0;
     std::vector<HistorySet> sets_;

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "assess/flexible_level.hpp"
+#include "assess/level_runs.hpp"
 #include "assess/verdict.hpp"
 #include "core/contract.hpp"
 #include "core/measures.hpp"
@@ -433,10 +434,16 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
     if (lower_r) slots.push_back(2);
     const auto sets = bank.sets();
     sim.histories = static_cast<int>(sets.size());
+    std::array<RunTable<dynamics::Summary>*, bound_slots> kept{};
+    if (bank.level_runs() && !run)
+        for (int slot : slots)
+            kept[static_cast<std::size_t>(slot)] = &bank.level_runs()->rigid(d, slot, sets.size());
     std::vector<BoundRuns> runs = run_histories(
         bank, d, pga_g, slots, [&](std::size_t k, int slot, const dynamics::Excitation& ex) {
-            const dynamics::BlockModel& m = models[static_cast<std::size_t>(slot)];
-            return run ? run(k, slot, m, ex, opt) : dynamics::simulate(m, ex, opt).summary;
+            const auto b = static_cast<std::size_t>(slot);
+            if (run) return run(k, slot, models[b], ex, opt);
+            return remembered(kept[b], k,
+                              [&] { return dynamics::simulate(models[b], ex, opt).summary; });
         });
     if (!sim.bounds_differ)
         for (BoundRuns& r : runs) r[1] = r[0];

@@ -6,12 +6,25 @@
 #include <random>
 
 #include "assess/biaxial_level.hpp"
+#include "assess/level_runs.hpp"
 #include "assess/verdict.hpp"
 #include "core/random.hpp"
 
 namespace freestand::assess {
 
 namespace {
+
+// Installs a level's kept runs in the bank for the scope of one level.
+class KeptRuns {
+  public:
+    KeptRuns(HistoryBank& bank, LevelRuns& runs) : bank_(bank) { bank_.keep_level_runs(&runs); }
+    ~KeptRuns() { bank_.keep_level_runs(nullptr); }
+    KeptRuns(const KeptRuns&) = delete;
+    KeptRuns& operator=(const KeptRuns&) = delete;
+
+  private:
+    HistoryBank& bank_;
+};
 
 // The simulation on the resampled sets: what decide_level reads.
 Simulation resampled(const Simulation& s, const std::vector<std::size_t>& sets) {
@@ -114,6 +127,9 @@ std::vector<LevelResult> evaluate_settled(const Case& c, const LevelDemand& dema
     const std::size_t cap = bank.max_sets();
     std::size_t n = std::min(first, cap);
     std::vector<LevelResult> out;
+    // The first n sets' runs are kept from batch to batch (assess/level_runs.hpp).
+    LevelRuns kept;
+    const KeptRuns keeping(bank, kept);
     for (int round = 1;; ++round) {
         bank.use(n);
         out = {evaluate_level(c, Direction::x, demand, bank),

@@ -2,11 +2,14 @@
 // determinism, and a level that grows its sets or fails unsettled at the cap.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "assess/level_runs.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/settle.hpp"
 #include "assess/verdict.hpp"
@@ -19,6 +22,12 @@ namespace {
 
 constexpr double allowable = 0.05;
 constexpr double fs_required = 1.5;
+
+// The same values bit for bit (an overturned set's NaN included).
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
 
 // A level the screen failed, decided by a rigid simulation whose sets slide the given peaks.
 LevelResult sliding_level(const std::vector<double>& slide_m) {
@@ -97,7 +106,18 @@ TEST_CASE("evaluate_settled grows an unsettled level by batches up to the cap, t
     c.options.histories_per_level = 3;
     c.options.max_histories_per_level = 3;
     c.options.search_materials = false;
+    // The allowable slide between the least and the largest biaxial peak of the 3 sets: a
+    // resample without the largest passes, one with it fails, so the level cannot settle.
+    {
+        const AssessmentResult first = assess(c);
+        REQUIRE(first.levels.at(0).biaxial.has_value());
+        const std::vector<double>& peaks = first.levels[0].biaxial->slide_m.values;
+        const auto [lo, hi] = std::minmax_element(peaks.begin(), peaks.end());
+        REQUIRE(*lo < *hi);
+        c.component.allowable_slide_m = 0.5 * (*lo + *hi);
+    }
     const AssessmentResult r = assess(c);
+    CHECK_FALSE(r.levels.at(0).settling->settled);
     for (const LevelResult& l : r.levels) {
         INFO(to_string(l.direction));
         REQUIRE(l.settling.has_value());
@@ -112,9 +132,47 @@ TEST_CASE("evaluate_settled grows an unsettled level by batches up to the cap, t
     // both (the biaxial run joins them).
     c.options.max_histories_per_level = 33;
     const AssessmentResult grown = assess(c);
-    const bool grew = !r.levels[0].settling->settled || !r.levels[1].settling->settled;
     for (const LevelResult& l : grown.levels) {
-        CHECK(l.settling->n_sets == (grew ? 33 : 3));
-        CHECK(l.settling->rounds == (grew ? 2 : 1));
+        CHECK(l.settling->n_sets == 33);
+        CHECK(l.settling->rounds == 2);
     }
+    // The grown level kept its first 3 sets' runs and simulated the 30 new ones: its peaks are
+    // the bits of a level that ran all 33 sets from the start.
+    c.options.histories_per_level = grown.levels[0].settling->n_sets;
+    c.options.max_histories_per_level = c.options.histories_per_level;
+    const AssessmentResult direct = assess(c);
+    REQUIRE(direct.levels.size() == grown.levels.size());
+    for (std::size_t i = 0; i < grown.levels.size(); ++i) {
+        const LevelResult& a = grown.levels[i];
+        const LevelResult& b = direct.levels[i];
+        REQUIRE(a.simulation.has_value() == b.simulation.has_value());
+        if (!a.simulation) continue;
+        CHECK(same_bits(a.simulation->slide_m.values, b.simulation->slide_m.values));
+        CHECK(same_bits(a.simulation->rock_over_alpha.values, b.simulation->rock_over_alpha.values));
+        REQUIRE(a.flexible_simulation.has_value() == b.flexible_simulation.has_value());
+        if (a.flexible_simulation)
+            CHECK(same_bits(a.flexible_simulation->sim.rock_over_alpha.values,
+                            b.flexible_simulation->sim.rock_over_alpha.values));
+        REQUIRE(a.biaxial.has_value() == b.biaxial.has_value());
+        if (a.biaxial) CHECK(same_bits(a.biaxial->slide_m.values, b.biaxial->slide_m.values));
+    }
+}
+
+TEST_CASE("a level's kept runs are made once per set and model", "[assess][settle]") {
+    LevelRuns runs;
+    int made = 0;
+    const auto make = [&made] { return static_cast<double>(++made); };
+    RunTable<double>& t = runs.biaxial(2);
+    CHECK(remembered(&t, 1, make) == 1.0);
+    CHECK(remembered(&t, 1, make) == 1.0);
+    // Growing the table keeps what it holds.
+    RunTable<double>& grown = runs.biaxial(5);
+    CHECK(&grown == &t);
+    CHECK(remembered(&grown, 1, make) == 1.0);
+    CHECK(remembered(&grown, 4, make) == 2.0);
+    CHECK(remembered<double>(nullptr, 4, make) == 3.0);
+    // Directions and slots are tables of their own.
+    CHECK(&runs.rigid(Direction::x, 0, 3) != &runs.rigid(Direction::y, 0, 3));
+    CHECK(&runs.rigid(Direction::x, 0, 3) != &runs.rigid(Direction::x, 1, 3));
+    CHECK(runs.flexible(Direction::y, 2, 7).size() == 7);
 }
