@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "report/svg.hpp"
@@ -123,21 +124,77 @@ double pga_max_g(const std::vector<const assess::LevelResult*>& levels) {
     return out;
 }
 
+// The statistic of a simulated level that its verdict reads (docs/methods.md s.6 step 3).
+double governing_of(const assess::Simulation& sim, const assess::Stats& s) {
+    return sim.governing(s);
+}
+
+bool biaxial_ran(const assess::LevelResult& l) { return l.biaxial && l.biaxial->ran; }
+
+// The sliding demand the level's verdict read, as decide_level reads it (assess/verdict.cpp):
+// the flexible body's slip, or the biaxial |u| where that is larger; else, where the simulation
+// decides, the biaxial |u| where it ran and the planar slip where not. None where the screen
+// decides.
+std::optional<double> deciding_slide_m(const assess::LevelResult& l) {
+    if (!l.simulation) return std::nullopt;
+    if (l.flexible_simulation) {
+        const assess::Simulation& s = l.flexible_simulation->sim;
+        double v = governing_of(s, s.slide_m);
+        if (biaxial_ran(l)) v = std::max(v, governing_of(s, l.biaxial->slide_m));
+        return v;
+    }
+    if (l.screen.passed) return std::nullopt;
+    const assess::Simulation& s = *l.simulation;
+    return governing_of(s, biaxial_ran(l) ? l.biaxial->slide_m : s.slide_m);
+}
+
+// theta_max / alpha that the level's verdict read: the flexible body's where it ran, else the
+// planar block's where the simulation decides; none where every set overturned.
+std::optional<double> deciding_rock_over_alpha(const assess::LevelResult& l) {
+    if (!l.simulation) return std::nullopt;
+    const assess::Simulation* s = l.flexible_simulation ? &l.flexible_simulation->sim
+                                  : l.screen.passed     ? nullptr
+                                                        : &*l.simulation;
+    if (!s || s->overturned >= s->histories) return std::nullopt;
+    return governing_of(*s, s->rock_over_alpha);
+}
+
+void add_finite(Curve& c, double pga_g, double v, double scale = 1.0) {
+    if (std::isfinite(v)) c.add(pga_g, v * scale);
+}
+
+// The deciding demand: drawn last, in black and wider, over the models it was taken from.
+void add_deciding(Plot& p, const Curve& c) {
+    if (c.empty()) return;
+    Line l{"decides: 84th percentile of the deciding model", c.pga_g, c.value, "#000000", 2.6,
+           false};
+    l.points = true;
+    p.lines.push_back(std::move(l));
+}
+
 // Sliding demand against PGA: the ASCE 4 screen and the energy estimate at the lower friction
-// bound, the simulated statistics where simulated, and the allowable.
+// bound; at the simulated levels the 84th percentile of each model that ran (planar rigid
+// block, biaxial rigid block, flexible body) and the planar maximum; the demand that decided
+// each level; the allowable.
 std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, assess::Direction d) {
     const auto levels = levels_of(r, d);
-    Curve asce, energy, mean, p84, max;
+    Curve asce, energy, planar, planar_max, biaxial, flexible, deciding;
     for (const assess::LevelResult* l : levels) {
         if (l->sliding.slide_asce_m) asce.add(l->pga_g, *l->sliding.slide_asce_m * 1000.0);
         if (l->sliding.slide_energy_m) energy.add(l->pga_g, *l->sliding.slide_energy_m * 1000.0);
         if (!l->simulation) continue;
-        const assess::Stats& s = l->simulation->slide_m;
-        mean.add(l->pga_g, s.mean * 1000.0);
-        p84.add(l->pga_g, s.p84 * 1000.0);
-        max.add(l->pga_g, s.max * 1000.0);
+        const assess::Simulation& sim = *l->simulation;
+        add_finite(planar, l->pga_g, governing_of(sim, sim.slide_m), 1000.0);
+        add_finite(planar_max, l->pga_g, sim.slide_m.max, 1000.0);
+        if (biaxial_ran(*l))
+            add_finite(biaxial, l->pga_g, governing_of(sim, l->biaxial->slide_m), 1000.0);
+        if (l->flexible_simulation) {
+            const assess::Simulation& f = l->flexible_simulation->sim;
+            add_finite(flexible, l->pga_g, governing_of(f, f.slide_m), 1000.0);
+        }
+        if (const auto v = deciding_slide_m(*l)) add_finite(deciding, l->pga_g, *v, 1000.0);
     }
-    if (asce.empty() && energy.empty() && mean.empty()) return std::nullopt;
+    if (asce.empty() && energy.empty() && planar.empty()) return std::nullopt;
     const char* dir = assess::to_string(d);
     const double allowable_mm = r.input.component.allowable_slide_m * 1000.0;
     Plot p;
@@ -146,45 +203,59 @@ std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, ass
     p.y = Axis{"peak slide (mm)", false, 0.0, {}};
     add_curve(p, "ASCE 4 at the lower friction bound (screen)", asce, palette[0], false);
     add_curve(p, "energy conservation (informational)", energy, palette[1], true);
-    add_curve(p, "simulated mean", mean, palette[2], false);
-    add_curve(p, "simulated 84th percentile", p84, palette[4], false);
-    add_curve(p, "simulated maximum", max, palette[3], false);
+    add_curve(p, "planar rigid block, 84th percentile", planar, palette[4], false);
+    add_curve(p, "planar rigid block, maximum", planar_max, palette[3], true);
+    add_curve(p, "biaxial rigid block |u|, 84th percentile", biaxial, palette[5], false);
+    add_curve(p, "flexible body, 84th percentile", flexible, palette[6], false);
+    add_deciding(p, deciding);
     add_limit(p, fmt::format("allowable slide {:.1f} mm (clearance)", allowable_mm), allowable_mm,
               pga_max_g(levels));
     return Figure{fmt::format("demand-slide-{}.svg", dir),
                   fmt::format("Sliding demand against PGA, direction {}: ASCE 4 at the lower "
                               "friction bound (the screen), energy conservation (dashed, "
-                              "informational: it never decides), the simulated mean, 84th "
-                              "percentile and maximum at the simulated levels, and the allowable "
+                              "informational: it never decides), the 84th percentile of each "
+                              "model simulated at a level (planar rigid block, biaxial rigid "
+                              "block, flexible body) with the planar maximum (dashed), the "
+                              "demand that decided each simulated level (black: the deciding "
+                              "model's 84th percentile, docs/methods.md s.6), and the allowable "
                               "slide.",
                               dir),
                   render_svg(p)};
 }
 
-// theta_max / alpha against PGA: the equivalent-linear screen and the simulated statistics of
-// the standing histories at the rocking bound, the limit 1 / FS_required, and the overturns.
+// theta_max / alpha against PGA: the equivalent-linear screen; at the simulated levels the 84th
+// percentile of the planar rigid block (at the worse restitution bound) and of the flexible
+// body, the planar maximum, and the demand that decided; the limit 1 / FS_required; overturns.
 std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, assess::Direction d) {
     const auto levels = levels_of(r, d);
-    Curve screen, mean, p84, max;
+    Curve screen, planar, planar_max, flexible, deciding;
     std::vector<Marker> overturns;
     for (const assess::LevelResult* l : levels) {
         if (l->rocking.theta_rad && l->rocking.alpha_rad > 0.0)
             screen.add(l->pga_g, *l->rocking.theta_rad / l->rocking.alpha_rad);
         if (!l->simulation) continue;
         const assess::Simulation& sim = *l->simulation;
-        if (sim.overturned > 0) {
+        const int over = l->flexible_simulation
+                             ? std::max(sim.overturned, l->flexible_simulation->sim.overturned)
+                             : sim.overturned;
+        if (over > 0) {
             // Drawn at theta / alpha = 1, where the block goes over.
-            overturns.push_back(
-                Marker{fmt::format("{}/{} overturned", sim.overturned, sim.histories), l->pga_g,
-                       1.0, "#000000"});
+            overturns.push_back(Marker{fmt::format("{}/{} overturned", over, sim.histories),
+                                       l->pga_g, 1.0, "#000000"});
         }
+        if (l->flexible_simulation) {
+            const assess::Simulation& f = l->flexible_simulation->sim;
+            if (f.overturned < f.histories)
+                add_finite(flexible, l->pga_g, governing_of(f, f.rock_over_alpha));
+        }
+        if (const auto v = deciding_rock_over_alpha(*l)) add_finite(deciding, l->pga_g, *v);
         // The statistics cover the standing histories only: none when all went over.
         if (sim.overturned >= sim.histories) continue;
-        mean.add(l->pga_g, sim.rock_over_alpha.mean);
-        p84.add(l->pga_g, sim.rock_over_alpha.p84);
-        max.add(l->pga_g, sim.rock_over_alpha.max);
+        add_finite(planar, l->pga_g, governing_of(sim, sim.rock_over_alpha));
+        add_finite(planar_max, l->pga_g, sim.rock_over_alpha.max);
     }
-    if (screen.empty() && mean.empty() && overturns.empty()) return std::nullopt;
+    if (screen.empty() && planar.empty() && flexible.empty() && overturns.empty())
+        return std::nullopt;
     const char* dir = assess::to_string(d);
     const double fs = r.input.component.required_overturn_fs;
     Plot p;
@@ -196,18 +267,23 @@ std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, asse
     p.y = Axis{"theta_max / alpha", false, 0.0, 1.2};
     add_curve(p, "equivalent-linear estimate at the upper bounds (screen)", screen, palette[0],
               true);
-    add_curve(p, "simulated mean (standing histories)", mean, palette[2], false);
-    add_curve(p, "simulated 84th percentile", p84, palette[4], false);
-    add_curve(p, "simulated maximum", max, palette[3], false);
+    add_curve(p, "planar rigid block, 84th percentile (standing sets)", planar, palette[4], false);
+    add_curve(p, "planar rigid block, maximum (standing sets)", planar_max, palette[3], true);
+    add_curve(p, "flexible body, 84th percentile (standing sets)", flexible, palette[6], false);
+    add_deciding(p, deciding);
     add_limit(p, fmt::format("1 / FS required = 1 / {:.2f} = {:.3f}", fs, 1.0 / fs), 1.0 / fs,
               p.x.max.value_or(pga_max_g(levels)));
     p.markers = std::move(overturns);
     return Figure{fmt::format("demand-rock-{}.svg", dir),
                   fmt::format("Rocking demand against PGA, direction {}: peak rotation over the "
-                              "slenderness angle, equivalent-linear estimate (dashed, the screen) "
-                              "and simulated mean, 84th percentile and maximum of the histories "
-                              "that stayed standing, against the limit 1 / FS required; levels "
-                              "with overturned histories are marked at theta / alpha = 1.",
+                              "slenderness angle, the equivalent-linear estimate (dashed, the "
+                              "screen), the 84th percentile of the planar rigid block at the "
+                              "worse restitution bound and of the flexible body where it ran, "
+                              "the planar maximum (dashed), over the sets that stayed standing, "
+                              "the demand that decided each simulated level (black: the deciding "
+                              "model's 84th percentile), against the limit 1 / FS required; "
+                              "levels with overturned sets are marked at theta / alpha = 1 (any "
+                              "overturn fails the level).",
                               dir),
                   render_svg(p)};
 }

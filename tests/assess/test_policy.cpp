@@ -158,6 +158,9 @@ void check_auto_equals_always(const std::string& name) {
 TEST_CASE("simulate = \"auto\" and \"always\" give the same verdict: glovebox-pair-unbraced",
           "[assess][policy][simulate][joined]") {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-pair-unbraced.toml");
+    // As check_auto_equals_always: any number of sets, 7 without growth.
+    c.options.histories_per_level = 7;
+    c.options.max_histories_per_level = c.options.histories_per_level;
     c.options.simulate = SimulatePolicy::automatic;
     const AssessmentResult automatic = assess::assess(c);
     c.options.simulate = SimulatePolicy::always;
