@@ -605,8 +605,8 @@ Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
     Options o;
     o.histories_per_level = static_cast<int>(
         r.integer("histories_per_level", 1, histories_limit).value_or(o.histories_per_level));
-    // docs/methods.md s.6 step 4: an unsettled level gets histories_per_level more sets, up to
-    // this cap.
+    // docs/methods.md s.6 step 4: an unsettled level grows in batches of 30 sets up to this
+    // cap, never below the sets it starts with.
     o.max_histories_per_level = static_cast<int>(
         r.integer("max_histories_per_level", o.histories_per_level, histories_limit)
             .value_or(std::max(o.histories_per_level, o.max_histories_per_level)));

@@ -283,7 +283,7 @@ struct MaterialTrial {
 struct Upgrade {
     bool needed = false;                     ///< the case's own base failed somewhere
     std::vector<MaterialTrial> trials;       ///< in docs/methods.md s.7 order
-    std::optional<std::string> recommended;  ///< first material in table order that passes
+    std::optional<std::string> recommended;  ///< the passing material with the largest margin
 };
 
 /// A plotted curve.

@@ -1,5 +1,7 @@
 #include "assess/statistics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,6 +51,10 @@ Exceedance exceedance(const std::vector<double>& values, double limit, int alway
     out.k = std::min(out.k, out.n);
     out.ci95 = core::clopper_pearson(out.k, out.n);
     return out;
+}
+
+std::string exceedance_text(const Exceedance& e) {
+    return fmt::format("{}/{} (95% {:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0], 100.0 * e.ci95[1]);
 }
 
 }  // namespace freestand::assess

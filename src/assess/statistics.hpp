@@ -4,6 +4,7 @@
 /// exceedance count k/N with its Clopper-Pearson 95% interval are reported beside it.
 #include <array>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -47,5 +48,8 @@ struct Exceedance {
 /// Sets whose value exceeds limit, plus `always` sets counted as exceeding whatever their value
 /// (overturned sets for a rotation limit), out of values.size().
 Exceedance exceedance(const std::vector<double>& values, double limit, int always = 0);
+
+/// "k/n (95% lo-hi%)", as the trail and the report print a count.
+std::string exceedance_text(const Exceedance& e);
 
 }  // namespace freestand::assess

@@ -261,21 +261,16 @@ std::string stat_name(const Simulation& sim) {
 }
 
 // "k/N (95% a-b%)" of an exceedance count.
-std::string exceed_text(const Exceedance& e) {
-    return fmt::format("{}/{} (95% {:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0],
-                       100.0 * e.ci95[1]);
-}
-
 std::string simulation_trail_line(const Simulation& sim) {
     std::string line = fmt::format(
         "{} sets (the 84th percentile governs): peak slip mean/84th/max {:.1f}/{:.1f}/{:.1f} mm "
         "at mu_s {:.3f}, beyond the allowable {}; theta/alpha {:.3f}/{:.3f}/{:.3f} at mu_s "
         "{:.3f}, r {:.3f}, beyond 1/FS {}; overturned {}",
         sim.histories, mm(sim.slide_m.mean), mm(sim.slide_m.p84), mm(sim.slide_m.max),
-        sim.sliding_bound.mu_s, exceed_text(sim.slide_exceed), sim.rock_over_alpha.mean,
+        sim.sliding_bound.mu_s, exceedance_text(sim.slide_exceed), sim.rock_over_alpha.mean,
         sim.rock_over_alpha.p84, sim.rock_over_alpha.max, sim.rocking_bound.mu_s,
-        sim.rocking_bound.restitution, exceed_text(sim.rock_exceed),
-        exceed_text(Exceedance{sim.overturned, sim.histories, sim.overturn_ci}));
+        sim.rocking_bound.restitution, exceedance_text(sim.rock_exceed),
+        exceedance_text(Exceedance{sim.overturned, sim.histories, sim.overturn_ci}));
     if (sim.rocking_other) {
         const RockingRuns& o = *sim.rocking_other;
         line += fmt::format("; at the other restitution bound r {:.3f}: theta/alpha "

@@ -318,25 +318,33 @@ mstch::array flex_notes(const std::vector<LevelResult>& levels) {
 // s.10): one row per model over the same histories and bounds.
 // "How sure is this verdict" (docs/methods.md s.6 steps 3-4): per level decided by its sets,
 // N, the share of bootstrap resamples that agree, and the counts beyond each limit.
-mstch::array how_sure_rows(const std::vector<LevelResult>& levels) {
+// The sets beyond the allowable slide by the demand that decided: the biaxial |u| where it ran
+// (beside the flexible body's slip, the larger of the two per set), else the model's own slip.
+Exceedance slide_beyond(const LevelResult& l, const Simulation& sim, double allowable_m) {
+    if (!l.biaxial || !l.biaxial->ran) return sim.slide_exceed;
+    std::vector<double> demand_m = l.biaxial->slide_m.values;
+    if (l.flexible_simulation)
+        for (std::size_t k = 0; k < demand_m.size() && k < sim.slide_m.values.size(); ++k)
+            demand_m[k] = std::max(demand_m[k], sim.slide_m.values[k]);
+    return exceedance(demand_m, allowable_m);
+}
+
+mstch::array how_sure_rows(const std::vector<LevelResult>& levels, double allowable_m) {
     mstch::array out;
     for (const LevelResult& l : levels) {
         if (!l.settling) continue;
         const Simulation& sim =
             l.flexible_simulation ? l.flexible_simulation->sim : *l.simulation;
-        const auto count = [](const Exceedance& e) {
-            return fmt::format("{}/{} ({:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0],
-                               100.0 * e.ci95[1]);
-        };
         out.push_back(mstch::map{
             {"pga", fixed(l.pga_g, 3)},
             {"dir", std::string(to_string(l.direction))},
             {"n_sets", std::to_string(l.settling->n_sets)},
             {"settled", fmt::format("{:.1f}%{}", 100.0 * l.settling->settled_fraction,
                                     l.settling->settled ? "" : " (not settled)")},
-            {"slide_beyond", count(sim.slide_exceed)},
-            {"rock_beyond", count(sim.rock_exceed)},
-            {"overturned", count(Exceedance{sim.overturned, sim.histories, sim.overturn_ci})},
+            {"slide_beyond", exceedance_text(slide_beyond(l, sim, allowable_m))},
+            {"rock_beyond", exceedance_text(sim.rock_exceed)},
+            {"overturned",
+             exceedance_text(Exceedance{sim.overturned, sim.histories, sim.overturn_ci})},
             {"verdict", std::string(passes(l.verdict) ? "passes" : "fails")}});
     }
     return out;
@@ -476,7 +484,7 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
         {"trials", trial_rows(r.upgrade)},
         {"inputs", inputs(r.input, r.levels)},
         {"levels", levels},
-        {"how_sure", how_sure_rows(r.levels)},
+        {"how_sure", how_sure_rows(r.levels, r.input.component.allowable_slide_m)},
         {"has_how_sure", std::any_of(r.levels.begin(), r.levels.end(),
                                      [](const LevelResult& l) { return l.settling.has_value(); })},
         {"flex_notes", flex_notes(r.levels)},

@@ -31,7 +31,7 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
             read_case(fs::path(freestand::test::source_dir()) / "cases" / (std::string(name) + ".toml"));
         CHECK(c.site.pga_g == std::vector<double>{0.1, 0.2, 0.3, 0.4});
         CHECK(c.options.histories_per_level == 30);
-    CHECK(c.options.max_histories_per_level == 120);  // docs/methods.md s.6 step 5: the mean governs
+        CHECK(c.options.max_histories_per_level == 120);  // docs/methods.md s.6 step 4
     }
 }
 
@@ -252,6 +252,21 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
         CHECK(error_of(base_component + base_site + "[options]\nhistories_per_level = 2.5\n") ==
               "case.toml:12: options.histories_per_level: expected an integer in [1, 1000], got a "
               "number");
+    }
+    SECTION("the cap on grown levels: from histories_per_level to 1000") {
+        const std::string options = base_component + base_site + "[options]\n";
+        CHECK(error_of(options + "histories_per_level = 40\nmax_histories_per_level = 39\n") ==
+              "case.toml:13: options.max_histories_per_level: value 39 is out of range; expected "
+              "an integer in [40, 1000]");
+        CHECK(error_of(options + "max_histories_per_level = 1001\n") ==
+              "case.toml:12: options.max_histories_per_level: value 1001 is out of range; "
+              "expected an integer in [30, 1000]");
+        CHECK(error_of(options + "max_histories_per_level = \"many\"\n") ==
+              "case.toml:12: options.max_histories_per_level: expected an integer in [30, 1000], "
+              "got a string");
+        // Without a cap, a level never holds fewer sets than it starts with.
+        const Case big = parse_case(options + "histories_per_level = 200\n", "case.toml");
+        CHECK(big.options.max_histories_per_level == 200);
     }
     SECTION("unknown design") {
         CHECK(error_of(base_component + base_site + "design = \"asce7\"\n") ==

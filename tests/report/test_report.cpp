@@ -405,6 +405,39 @@ TEST_CASE("demand figures are drawn from the levels", "[report][figures]") {
     CHECK(render(r, stamp()).markdown.find("(demand-slide-y.svg)") != std::string::npos);
 }
 
+TEST_CASE("How sure: N, the settled share and the sets beyond each limit by the deciding model",
+          "[report][settle]") {
+    auto r = hand_result();
+    CHECK(render(r, stamp()).markdown.find("No level was decided by simulation") !=
+          std::string::npos);
+    assess::LevelResult& l = r.levels[1];
+    l.settling = assess::Settling{3, 2000, 0.973, true, 2};
+    l.simulation->histories = 3;
+    l.simulation->slide_m = assess::stats_of({0.010, 0.011, 0.012});
+    l.simulation->rock_over_alpha = assess::stats_of({0.1, 0.2, 0.3});
+    l.simulation->slide_exceed = assess::exceedance(l.simulation->slide_m.values, 0.05);
+    l.simulation->rock_exceed = assess::exceedance(l.simulation->rock_over_alpha.values, 1.0 / 1.5);
+    l.simulation->overturn_ci = {0.0, 0.71};
+    // The biaxial |u| decides the slide: two of its three sets pass 50 mm, none of the planar.
+    assess::BiaxialSlide b;
+    b.ran = true;
+    b.slide_m = assess::stats_of({0.01, 0.06, 0.07});
+    l.biaxial = b;
+    const std::string md = render(r, stamp()).markdown;
+    const auto section = md.find("## How sure is this verdict");
+    REQUIRE(section != std::string::npos);
+    INFO(md.substr(section, 1500));
+    const auto row = md.find("| 0.200 | y | 3 | 97.3% | 2/3 (95% 9-99%) | 0/3 (95% 0-71%) | "
+                             "0/3 (95% 0-71%) | passes |",
+                             section);
+    CHECK(row != std::string::npos);
+    CHECK(row < md.find("## Results per PGA level"));
+    // Unsettled at the cap, the row says so.
+    l.settling->settled = false;
+    l.settling->settled_fraction = 0.71;
+    CHECK(render(r, stamp()).markdown.find("| 71.0% (not settled) |") != std::string::npos);
+}
+
 TEST_CASE("rendering twice gives identical bytes", "[report][determinism]") {
     const Rendered a = render(hand_result(), stamp());
     const Rendered b = render(hand_result(), stamp());
