@@ -7,6 +7,7 @@
 #include <string>
 
 #include "assess/level_runs.hpp"
+#include "assess/run_cache.hpp"
 #include "assess/verdict.hpp"
 #include "core/parallel.hpp"
 #include "dynamics/biaxial.hpp"
@@ -47,9 +48,8 @@ Stats biaxial_peaks(const dynamics::BiaxialModel& model,
     std::vector<double> peaks(ex.size());
     RunTable<double>* kept = bank.level_runs() ? &bank.level_runs()->biaxial(ex.size()) : nullptr;
     core::parallel_for(ex.size(), bank.run().threads, [&](std::size_t k) {
-        peaks[k] = remembered(kept, k, [&] {
-            return dynamics::simulate_biaxial(model, ex[k], opt).summary.slide_max_m;
-        });
+        peaks[k] = remembered(
+            kept, k, [&] { return biaxial_peak_run(bank.run().run_cache, model, ex[k], opt); });
     });
     return stats_of(peaks);
 }

@@ -8,6 +8,7 @@
 
 #include "assess/level.hpp"
 #include "assess/level_runs.hpp"
+#include "assess/run_cache.hpp"
 
 namespace freestand::assess {
 
@@ -72,7 +73,7 @@ void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, Hi
         runs[slot] = remembered(kept[b], k, [&] {
             dynamics::FlexibleModel m = probe;
             m.rigid = rigid;
-            return dynamics::simulate_flexible(m, ex, opt).summary;
+            return flexible_run(bank.run().run_cache, m, ex, opt);
         });
         ran[slot] = 1;
         return runs[slot].base;

@@ -4,9 +4,12 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
+#include "assess/settle.hpp"
+#include "core/random.hpp"
 #include "assess/verdict.hpp"
 #include "core/contract.hpp"
 #include "core/parallel.hpp"
@@ -29,24 +32,27 @@ UnitModels unit_models(const Component& unit, Direction d) {
     return UnitModels{block_model(unit, b.sliding, d), block_model(unit, b.rocking, d)};
 }
 
-TunnelDirection tunnel_direction(const Case& c, Direction d, double pga_g, HistoryBank& bank) {
+// One set's pair runs in one direction: the larger relative peak of the two opposite-friction
+// pairings, the relative peak at the common lower bound, and whether a unit overturned.
+struct PairRuns {
+    double peak_m = 0.0;
+    double common_m = 0.0;
+    bool overturned = false;
+};
+
+// Appends the runs of the bank's sets from runs.size() on in direction d.
+void run_pairs(const Case& c, Direction d, double pga_g, HistoryBank& bank,
+               std::vector<PairRuns>& runs) {
     const std::array<UnitModels, 2> m{unit_models(c.units[0], d), unit_models(c.units[1], d)};
     dynamics::PairOptions pair;
     pair.tunnel_height_m = c.tunnel->height_m;
     dynamics::Options opt;
     opt.g_mps2 = c.site.g_mps2;
-    TunnelDirection out;
-    out.direction = d;
-    std::vector<double> relative, common;
-    double worst = -1.0;
-    const auto& sets = bank.sets();
-    // Per history: the pair with opposite friction bounds both ways, and with equal ones.
-    struct Runs {
-        double peak = 0.0, common = 0.0;
-        bool overturned = false;
-    };
-    std::vector<Runs> runs(sets.size());
-    core::parallel_for(sets.size(), bank.run().threads, [&](std::size_t k) {
+    const auto sets = bank.sets();
+    const std::size_t first = runs.size();
+    runs.resize(sets.size());
+    core::parallel_for(sets.size() - first, bank.run().threads, [&](std::size_t i) {
+        const std::size_t k = first + i;
         const dynamics::Excitation ex = excitation(sets[k], d, pga_g);
         const auto a = dynamics::simulate_pair({m[0].lower, m[1].upper}, ex, pair, opt);
         const auto b = dynamics::simulate_pair({m[0].upper, m[1].lower}, ex, pair, opt);
@@ -54,16 +60,20 @@ TunnelDirection tunnel_direction(const Case& c, Direction d, double pga_g, Histo
         runs[k] = {std::max(a.relative_max_m, b.relative_max_m), same.relative_max_m,
                    a.overturned || b.overturned || same.overturned};
     });
-    for (std::size_t k = 0; k < sets.size(); ++k) {
-        const bool overturned = runs[k].overturned;
-        const double peak = runs[k].peak;
-        if (overturned) {
-            ++out.overturned;
-        } else {
-            relative.push_back(peak);
-            common.push_back(runs[k].common);
-        }
-        const double score = overturned ? 1e9 : peak;
+}
+
+TunnelDirection tunnel_direction(Direction d, const std::vector<PairRuns>& runs) {
+    TunnelDirection out;
+    out.direction = d;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> relative, common;
+    double worst = -1.0;
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const PairRuns& r = runs[k];
+        if (r.overturned) ++out.overturned;
+        relative.push_back(r.overturned ? nan : r.peak_m);
+        common.push_back(r.overturned ? nan : r.common_m);
+        const double score = r.overturned ? 1e9 : r.peak_m;
         if (score > worst) {
             worst = score;
             out.governing_history = static_cast<int>(k);
@@ -72,6 +82,55 @@ TunnelDirection tunnel_direction(const Case& c, Direction d, double pga_g, Histo
     out.relative_m = stats_of(relative);
     out.relative_common_m = stats_of(common);
     return out;
+}
+
+// The tunnel's decision on the sets at the given indices: any overturned unit, or the 84th
+// percentile of either direction's relative peaks above the slack, fails.
+bool tunnel_passes_on(const std::array<std::vector<PairRuns>, 2>& runs,
+                      const std::vector<std::size_t>& sets, double allowable_m) {
+    for (const std::vector<PairRuns>& dir : runs) {
+        std::vector<double> peaks;
+        peaks.reserve(sets.size());
+        for (std::size_t k : sets) {
+            if (dir[k].overturned) return false;
+            peaks.push_back(dir[k].peak_m);
+        }
+        if (order_statistic(peaks, governing_percentile) > allowable_m) return false;
+    }
+    return true;
+}
+
+// The level's statistics and decision on the runs so far.
+TunnelLevel decide_tunnel(const Case& c, double pga_g,
+                          const std::array<std::vector<PairRuns>, 2>& runs) {
+    TunnelLevel t;
+    t.pga_g = pga_g;
+    t.histories = static_cast<int>(runs[0].size());
+    t.model_reason =
+        "the units stand free and are not braced: each slides and rocks as its own rigid block, "
+        "and the tunnel sees their relative displacement at its height";
+    double worst = -1.0;
+    for (std::size_t i = 0; i < 2; ++i) {
+        t.directions[i] = tunnel_direction(i == 0 ? Direction::x : Direction::y, runs[i]);
+        const TunnelDirection& td = t.directions[i];
+        const double demand = td.relative_m.p84;
+        const double score = td.overturned > 0 ? 1e9 : demand;
+        if (score > worst) {
+            worst = score;
+            t.governing_direction = i;
+            t.demand_m = demand;
+        }
+    }
+    const TunnelDirection& g = t.directions[t.governing_direction];
+    const double allowable = c.tunnel->allowable_relative_m;
+    if (g.overturned == 0 && t.demand_m >= no_relative_motion_m) t.margin = allowable / t.demand_m;
+    t.passes = g.overturned == 0 && t.demand_m <= allowable;
+    return t;
+}
+
+// Bootstrap streams of the tunnel: after the 2 per level of the units' own levels.
+std::uint64_t tunnel_stream(const Case& c, std::size_t level) {
+    return 2 * c.site.pga_g.size() + level;
 }
 
 std::string level_text(const TunnelLevel& t, const Tunnel& tunnel) {
@@ -119,32 +178,44 @@ Case unit_case(const Case& c, std::size_t i) {
     return out;
 }
 
-TunnelLevel tunnel_level(const Case& c, double pga_g, HistoryBank& bank) {
+TunnelLevel tunnel_level(const Case& c, std::size_t level, HistoryBank& bank) {
     FREESTAND_EXPECT(c.units.size() == 2 && c.tunnel, "two units and a tunnel");
-    TunnelLevel t;
-    t.pga_g = pga_g;
-    t.histories = static_cast<int>(bank.sets().size());
-    t.model_reason =
-        "the units stand free and are not braced: each slides and rocks as its own rigid block, "
-        "and the tunnel sees their relative displacement at its height";
-    double worst = -1.0;
-    for (std::size_t i = 0; i < 2; ++i) {
-        const Direction d = i == 0 ? Direction::x : Direction::y;
-        t.directions[i] = tunnel_direction(c, d, pga_g, bank);
-        const TunnelDirection& td = t.directions[i];
-        const double demand = td.relative_m.p84;
-        const double score = td.overturned > 0 ? 1e9 : demand;
-        if (score > worst) {
-            worst = score;
-            t.governing_direction = i;
-            t.demand_m = demand;
-        }
-    }
-    const TunnelDirection& g = t.directions[t.governing_direction];
+    FREESTAND_EXPECT(level < c.site.pga_g.size(), "a level of the case");
+    const double pga_g = c.site.pga_g[level];
     const double allowable = c.tunnel->allowable_relative_m;
-    if (g.overturned == 0 && t.demand_m >= no_relative_motion_m) t.margin = allowable / t.demand_m;
-    t.passes = g.overturned == 0 && t.demand_m <= allowable;
+    const std::size_t cap = bank.max_sets();
+    const std::size_t first = std::min(static_cast<std::size_t>(c.options.histories_per_level), cap);
+    std::size_t n = first;
+    std::array<std::vector<PairRuns>, 2> runs;
+    TunnelLevel t;
+    for (int round = 1;; ++round) {
+        bank.use(n);
+        run_pairs(c, Direction::x, pga_g, bank, runs[0]);
+        run_pairs(c, Direction::y, pga_g, bank, runs[1]);
+        t = decide_tunnel(c, pga_g, runs);
+        t.settling.n_sets = static_cast<int>(n);
+        t.settling.resamples = bootstrap_resamples;
+        t.settling.rounds = round;
+        t.settling.settled_fraction = bootstrap_agreement(
+            n, core::stream_seed(c.options.seed, tunnel_stream(c, level), n), t.passes,
+            [&](const std::vector<std::size_t>& sets) {
+                return tunnel_passes_on(runs, sets, allowable);
+            });
+        t.settling.settled = t.settling.settled_fraction >= settle_agreement;
+        if (t.settling.settled || n >= cap) break;
+        n = std::min(n + static_cast<std::size_t>(settle_batch_sets), cap);
+    }
+    bank.use(first);
     t.text = level_text(t, *c.tunnel);
+    if (!t.settling.settled) {
+        const double pass_share =
+            t.passes ? t.settling.settled_fraction : 1.0 - t.settling.settled_fraction;
+        t.text = fmt::format("not settled: {:.0f}% of {} resamples pass at N = {} (cap; {:.0f}% "
+                             "needed either way); on all sets {}",
+                             100.0 * pass_share, t.settling.resamples, t.settling.n_sets,
+                             100.0 * settle_agreement, t.text);
+        t.passes = false;
+    }
     return t;
 }
 
@@ -154,7 +225,8 @@ AssessmentResult assess_joined(const Case& c, const RunSettings& run) {
     joined->tunnel = *c.tunnel;
     for (std::size_t i = 0; i < 2; ++i) joined->units[i] = assess(unit_case(c, i), run);
     HistoryBank bank(c, run);
-    for (double pga : c.site.pga_g) joined->levels.push_back(tunnel_level(c, pga, bank));
+    for (std::size_t i = 0; i < c.site.pga_g.size(); ++i)
+        joined->levels.push_back(tunnel_level(c, i, bank));
     std::vector<std::string> failing;
     for (std::size_t i = 0; i < joined->levels.size(); ++i) {
         const TunnelLevel& l = joined->levels[i];
@@ -188,13 +260,12 @@ AssessmentResult assess_joined(const Case& c, const RunSettings& run) {
                                           joined->units[0].overall.verdict);
     r.overall = joined->units[second_worse ? 1 : 0].overall;
     r.own = r.overall;
-    r.histories_generated = static_cast<int>(bank.sets().size());
+    r.histories_generated = static_cast<int>(bank.made().size());
     for (const AssessmentResult& u : joined->units) {
         r.simulations_run += u.simulations_run;
     }
-    // Per level: two directions, three pairings, two units, every history.
-    r.simulations_run += static_cast<int>(joined->levels.size()) * 12 *
-                         static_cast<int>(bank.sets().size());
+    // Per level: two directions, three pairings, two units, every set of the level.
+    for (const TunnelLevel& l : joined->levels) r.simulations_run += 12 * l.histories;
     r.joined = std::move(joined);
     return r;
 }

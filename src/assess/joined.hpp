@@ -21,7 +21,8 @@ inline constexpr const char* pair_model_name =
 struct TunnelDirection {
     Direction direction = Direction::x;
     /// Per history, the larger relative peak of the two opposite-friction pairings (unit 1 at
-    /// its lower friction bound and unit 2 at its upper, and the reverse), m.
+    /// its lower friction bound and unit 2 at its upper, and the reverse), m; NaN in `values`
+    /// where a unit overturned, the statistics over the other sets.
     Stats relative_m;
     /// Both units at their own lower friction bound (a common floor), m: for comparison.
     Stats relative_common_m;
@@ -41,6 +42,8 @@ struct TunnelLevel {
     std::string model = pair_model_name;
     std::string model_reason;
     std::string text;  ///< the comparison in words
+    /// The bootstrap of the tunnel's decision over the sets (docs/methods.md s.6 step 4).
+    Settling settling;
 };
 
 /// A two-unit case's result (AssessmentResult::joined).
@@ -56,9 +59,11 @@ struct JoinedResult {
     std::string bounds;    ///< which friction and restitution the tunnel check ran with, why
 };
 
-/// The tunnel check of one level: both units under every history of the bank at pga_g, in
-/// each direction (docs/methods.md s.10; sampling at the input steps, dynamics::simulate_pair).
-TunnelLevel tunnel_level(const Case& c, double pga_g, HistoryBank& bank);
+/// The tunnel check of level `level` of the case's PGA list: both units under every set of the
+/// bank, in each direction (docs/methods.md s.10; sampling at the input steps,
+/// dynamics::simulate_pair), on options.histories_per_level sets, grown by batches while the
+/// decision is unsettled (docs/methods.md s.6 step 4); unsettled at the cap, it fails.
+TunnelLevel tunnel_level(const Case& c, std::size_t level, HistoryBank& bank);
 
 /// Assesses a two-unit case (c.units, c.tunnel): each unit as a one-component case with the
 /// same site and options, then the tunnel check at every level; the headline is the worst of

@@ -9,6 +9,7 @@
 
 #include "assess/flexible_level.hpp"
 #include "assess/level_runs.hpp"
+#include "assess/run_cache.hpp"
 #include "assess/verdict.hpp"
 #include "core/contract.hpp"
 #include "core/measures.hpp"
@@ -27,8 +28,6 @@
 namespace freestand::assess {
 
 namespace {
-
-
 
 spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
     const spectra::Spectrum h = spectra::rg160(pga_g, damping, false, design_frequencies());
@@ -163,6 +162,7 @@ rocking::ElBlockResult equivalent_linear(const Case& c, const ContactBound& uppe
     opt.fs_required = c.component.required_overturn_fs;
     rocking::VerticalDemand vertical;
     vertical.ratio = c.site.vertical_ratio;
+    vertical.spectra = dem.sa_v_damped;
     rocking::ElBlockResult result =
         rocking::equivalent_linear_rocking(blk, dem.sa_vh_damped, vertical, opt);
     dem.el_cache.emplace(key, result);
@@ -259,8 +259,13 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
                                     site.sliding_damping, slide.note);
     sa_vh_slide.frequency_hz = f;
     for (double fi : f) sa_vh_slide.psa_g.push_back(slide.psa_g(fi));
-    LevelDemand out{pga_g, site.vertical_ratio * pga_g, h5, std::move(sa_vh_slide),
-                    std::move(damped), {}, std::nullopt, std::nullopt, std::nullopt};
+    LevelDemand out{pga_g,        site.vertical_ratio * pga_g,
+                    h5,           std::move(sa_vh_slide),
+                    std::move(damped), {},
+                    std::nullopt, std::nullopt,
+                    std::nullopt, std::nullopt};
+    // The vertical file at the horizontal's scale: its ZPA is then ratio x pga_g.
+    if (u.v) out.sa_v_damped.emplace(std::vector{scaled_target(u.v->spectrum, factor, f)});
     if (y5) {
         out.h5_y = std::move(y5);
         // Same factor as x: y's PGA is its file's rigid limit at that scale (equal files: pga_g).
@@ -273,18 +278,27 @@ LevelDemand user_level_demand(const Site& site, const UserTargets& u, double pga
 namespace {
 // The RG 1.60 demand of a level.
 LevelDemand rg160_level_demand(const Site& site, double pga_g) {
-    std::vector<spectra::Spectrum> damped;
+    std::vector<spectra::Spectrum> damped, vertical;
     damped.reserve(spectra::rg160_dampings.size());
-    for (double d : spectra::rg160_dampings) damped.push_back(vector_horizontal_target(pga_g, d));
-    return LevelDemand{pga_g,
-                       site.vertical_ratio * pga_g,
-                       spectra::rg160(pga_g, 0.05, false, design_frequencies()),
-                       vector_horizontal_target(pga_g, site.sliding_damping),
-                       rocking::DampedSpectra(std::move(damped)),
-                       {},
-                       std::nullopt,
-                       std::nullopt,
-                       std::nullopt};
+    const double pga_v_g = site.vertical_ratio * pga_g;
+    for (double d : spectra::rg160_dampings) {
+        damped.push_back(vector_horizontal_target(pga_g, d));
+        // RG 1.60's vertical spectrum, its ZPA the vertical PGA (docs/methods.md s.8): the
+        // vertical demand of the equivalent-linear estimate (s.5a), as of the histories.
+        vertical.push_back(spectra::rg160(pga_v_g, d, true, design_frequencies()));
+    }
+    LevelDemand out{pga_g,
+                    pga_v_g,
+                    spectra::rg160(pga_g, 0.05, false, design_frequencies()),
+                    vector_horizontal_target(pga_g, site.sliding_damping),
+                    rocking::DampedSpectra(std::move(damped)),
+                    {},
+                    std::nullopt,
+                    std::nullopt,
+                    std::nullopt,
+                    std::nullopt};
+    out.sa_v_damped.emplace(std::move(vertical));
+    return out;
 }
 
 // The case's table displacement of the level with this PGA (the table follows site.pga_g).
@@ -442,8 +456,9 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
         bank, d, pga_g, slots, [&](std::size_t k, int slot, const dynamics::Excitation& ex) {
             const auto b = static_cast<std::size_t>(slot);
             if (run) return run(k, slot, models[b], ex, opt);
-            return remembered(kept[b], k,
-                              [&] { return dynamics::simulate(models[b], ex, opt).summary; });
+            return remembered(kept[b], k, [&] {
+                return rigid_run(bank.run().run_cache, models[b], ex, opt);
+            });
         });
     if (!sim.bounds_differ)
         for (BoundRuns& r : runs) r[1] = r[0];

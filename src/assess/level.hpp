@@ -44,6 +44,9 @@ struct LevelDemand {
     double pga_of(Direction d) const {
         return d == Direction::y && pga_y_g ? *pga_y_g : pga_g;
     }
+    /// The vertical design spectrum at any damping, its ZPA the vertical PGA pga_v_g (RG 1.60's
+    /// vertical shape, or the case's vertical file); absent: SA_V = vertical ratio x SA_H.
+    std::optional<rocking::DampedSpectra> sa_v_damped;
 };
 
 /// The model name LevelResult::model carries for the planar rigid-block simulation.

@@ -1,5 +1,5 @@
 #pragma once
-/// How a run uses the machine: threads, the history cache and progress reports. No output
+/// How a run uses the machine: threads, the caches of history sets and runs, and progress reports. No output
 /// depends on any of them: every result is the same at any thread count, with or without the
 /// cache (docs/methods.md s.12).
 #include <cstddef>
@@ -22,6 +22,8 @@ struct RunSettings {
 
     int threads = 0;                            ///< 0: every core
     const core::ContentStore* cache = nullptr;  ///< none: every history set is generated
+    /// Simulation runs (assess/run_cache.hpp); none: every run is simulated.
+    const core::ContentStore* run_cache = nullptr;
     StepProgress progress;                      ///< none: silent
 };
 

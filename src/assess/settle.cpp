@@ -107,16 +107,24 @@ Settling settle(const LevelResult& level, std::uint64_t seed, double allowable_s
         for (std::size_t k = 0; k < n; ++k) all[k] = k;
         return all;
     }(), allowable_slide_m, required_fs);
+    out.settled_fraction =
+        bootstrap_agreement(n, seed, decision, [&](const std::vector<std::size_t>& sets) {
+            return passes_on(level, sets, allowable_slide_m, required_fs);
+        });
+    out.settled = out.settled_fraction >= settle_agreement;
+    return out;
+}
+
+double bootstrap_agreement(std::size_t n, std::uint64_t seed, bool decision,
+                           const std::function<bool(const std::vector<std::size_t>&)>& passes_on_sets) {
     std::mt19937_64 rng(seed);
     std::vector<std::size_t> sets(n);
     int agree = 0;
     for (int b = 0; b < bootstrap_resamples; ++b) {
         for (std::size_t& k : sets) k = draw_index(rng(), n);
-        if (passes_on(level, sets, allowable_slide_m, required_fs) == decision) ++agree;
+        if (passes_on_sets(sets) == decision) ++agree;
     }
-    out.settled_fraction = static_cast<double>(agree) / bootstrap_resamples;
-    out.settled = out.settled_fraction >= settle_agreement;
-    return out;
+    return static_cast<double>(agree) / bootstrap_resamples;
 }
 
 std::vector<LevelResult> evaluate_settled(const Case& c, const LevelDemand& demand,

@@ -5,6 +5,7 @@
 /// level still unsettled at the cap fails, saying so.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "assess/case.hpp"
@@ -29,6 +30,11 @@ bool decided_by_sets(const LevelResult& level);
 /// The level's decision (decide_level) redone on the sets at the given indices.
 bool passes_on(const LevelResult& level, const std::vector<std::size_t>& sets,
                double allowable_slide_m, double required_fs);
+
+/// The share of bootstrap_resamples resamples of n sets (indices drawn with replacement from
+/// stream `seed`) on which `passes_on_sets` gives `decision`.
+double bootstrap_agreement(std::size_t n, std::uint64_t seed, bool decision,
+                           const std::function<bool(const std::vector<std::size_t>&)>& passes_on_sets);
 
 /// The bootstrap of the level's decision from stream `seed`.
 Settling settle(const LevelResult& level, std::uint64_t seed, double allowable_slide_m,

@@ -54,7 +54,8 @@ Exceedance exceedance(const std::vector<double>& values, double limit, int alway
 }
 
 std::string exceedance_text(const Exceedance& e) {
-    return fmt::format("{}/{} (95% {:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0], 100.0 * e.ci95[1]);
+    return fmt::format("{}/{} (95% {:.0f}-{:.0f}%)", e.k, e.n, 100.0 * e.ci95[0],
+                       100.0 * e.ci95[1]);
 }
 
 }  // namespace freestand::assess

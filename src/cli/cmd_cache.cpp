@@ -20,8 +20,9 @@ namespace {
 
 const char* const usage =
     "info|clear|fill [CASE.toml] [--sets N] [--threads T] [--cache DIR]\n\n"
-    "info   the folder, its entries and size, and the bound (FREESTAND_CACHE_MAX_MB)\n"
-    "clear  removes every entry (only the cache's own files)\n"
+    "info   the folder, its entries and size, and the bound (FREESTAND_CACHE_MAX_MB), for the\n"
+    "       history sets and for the simulation runs (its runs/ folder)\n"
+    "clear  removes every entry of both (only the cache's own files)\n"
     "fill   generates the first N history sets of CASE.toml into the cache (default N: the\n"
     "       case's histories_per_level; give fragility's --pool for a fragility run), so that\n"
     "       the shards of a cluster run read them instead of each generating them";
@@ -76,16 +77,20 @@ int run(const std::vector<std::string>& args) {
     if (vm->count("case") || vm->count("sets"))
         throw UsageError(fmt::format("cache {} takes no case file and no --sets", core::printable(action)));
     const core::ContentStore& store = store_or_fail(run);
+    const core::ContentStore& runs = *run.runs();
     if (action == "info") {
-        const core::StoreInfo i = store.info();
-        std::cout << fmt::format("{}: {} entries, {:.1f} MiB of {:.0f} MiB\n",
-                                 core::printable(i.dir.string()), i.entries, mib(i.bytes),
-                                 mib(i.max_bytes));
+        for (const auto& [s, what] : {std::pair{&store, "history sets"}, std::pair{&runs, "runs"}}) {
+            const core::StoreInfo i = s->info();
+            std::cout << fmt::format("{}: {} entries ({}), {:.1f} MiB of {:.0f} MiB\n",
+                                     core::printable(i.dir.string()), i.entries, what,
+                                     mib(i.bytes), mib(i.max_bytes));
+        }
         return 0;
     }
     if (action == "clear") {
-        std::cout << fmt::format("{}: removed {} files\n", core::printable(store.dir().string()),
-                                 store.clear());
+        for (const core::ContentStore* s : {&store, &runs})
+            std::cout << fmt::format("{}: removed {} files\n", core::printable(s->dir().string()),
+                                     s->clear());
         return 0;
     }
     throw UsageError(fmt::format("unknown action '{}': expected info, clear or fill",

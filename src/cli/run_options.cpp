@@ -36,9 +36,13 @@ std::optional<std::filesystem::path> cache_dir(const po::variables_map& vm) {
 
 RunContext::RunContext(const po::variables_map& vm) {
     settings_.threads = threads_option(vm);
-    if (const auto dir = cache_dir(vm))
-        cache_.emplace(*dir, core::cache_max_bytes_from_environment());
+    if (const auto dir = cache_dir(vm)) {
+        const std::uint64_t max_bytes = core::cache_max_bytes_from_environment();
+        cache_.emplace(*dir, max_bytes);
+        runs_.emplace(*dir / runs_folder, max_bytes);
+    }
     settings_.cache = cache();
+    settings_.run_cache = runs();
     bar_ = std::make_shared<StepProgressBar>();
     settings_.progress = [bar = bar_](const std::string& step, std::size_t done,
                                       std::size_t total) { bar->update(step, done, total); };
@@ -51,6 +55,14 @@ void RunContext::finish(const std::string& command) const {
         std::cerr << fmt::format("freestand {}: warning: history sets were not cached in {}: {}\n",
                                  command, core::printable(cache_->dir().string()),
                                  core::printable(cache_failure));
+    if (!runs_) return;
+    const std::string runs_failure = runs_->first_failure();
+    if (!runs_failure.empty())
+        std::cerr << fmt::format("freestand {}: warning: runs were not cached in {}: {}\n",
+                                 command, core::printable(runs_->dir().string()),
+                                 core::printable(runs_failure));
+    else
+        runs_->prune();
 }
 
 }  // namespace freestand::cli

@@ -13,6 +13,9 @@
 
 namespace freestand::cli {
 
+/// The simulation runs' folder inside the cache folder: the history sets' entries stay apart.
+inline constexpr const char* runs_folder = "runs";
+
 /// Adds --threads (0, the default: every core), --cache and --no-cache to desc.
 void add_run_options(po::options_description& desc);
 
@@ -28,11 +31,15 @@ class RunContext {
 
     const assess::RunSettings& settings() const { return settings_; }
     const core::ContentStore* cache() const { return cache_ ? &*cache_ : nullptr; }
-    /// Ends the progress line, and warns on standard error when sets could not be cached.
+    /// The simulation runs' store, the cache folder's runs/ (assess/run_cache.hpp).
+    const core::ContentStore* runs() const { return runs_ ? &*runs_ : nullptr; }
+    /// Ends the progress line, warns on standard error when sets or runs could not be cached,
+    /// and bounds the runs' folder (the history sets' is bounded as they are generated).
     void finish(const std::string& command) const;
 
   private:
     std::optional<core::ContentStore> cache_;
+    std::optional<core::ContentStore> runs_;
     std::shared_ptr<StepProgressBar> bar_;
     assess::RunSettings settings_;
 };

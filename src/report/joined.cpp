@@ -52,6 +52,8 @@ mstch::array level_items(const assess::JoinedResult& j) {
         out.push_back(mstch::map{
             {"pga", fmt::format("{:.3f}", l.pga_g)},
             {"histories", std::to_string(l.histories)},
+            {"settled", fmt::format("{:.1f}%{}", 100.0 * l.settling.settled_fraction,
+                                    l.settling.settled ? "" : " (not settled)")},
             {"statistic", std::string("84th percentile")},
             {"direction", std::string(assess::to_string(g.direction))},
             {"relative", fmt::format("{} / {} / {}", mm(g.relative_m.mean), mm(g.relative_m.p84),
@@ -116,6 +118,9 @@ nlohmann::ordered_json pair_json(const assess::JoinedResult& j) {
         nlohmann::ordered_json lj;
         lj["pga_g"] = round10(l.pga_g);
         lj["histories"] = l.histories;
+        lj["n_sets"] = l.settling.n_sets;
+        lj["settled_fraction"] = json_number(l.settling.settled_fraction);
+        lj["settling"] = settling_json(l.settling);
         lj["governing_statistic"] = "p84";
         lj["model"] = l.model;
         lj["model_reason"] = l.model_reason;

@@ -119,11 +119,7 @@ ordered_json rocking_runs_json(const std::optional<RockingRuns>& r, int historie
 
 ordered_json settling_json(const std::optional<Settling>& s) {
     if (!s) return nullptr;
-    return {{"n_sets", s->n_sets},
-            {"resamples", s->resamples},
-            {"settled_fraction", num(s->settled_fraction)},
-            {"settled", s->settled},
-            {"batches", s->rounds}};
+    return report::settling_json(*s);
 }
 
 ordered_json simulation_json(const std::optional<Simulation>& sim) {
@@ -318,6 +314,14 @@ ordered_json case_json(const Case& c) {
 }
 
 }  // namespace
+
+ordered_json settling_json(const Settling& s) {
+    return {{"n_sets", s.n_sets},
+            {"resamples", s.resamples},
+            {"settled_fraction", num(s.settled_fraction)},
+            {"settled", s.settled},
+            {"batches", s.rounds}};
+}
 
 std::vector<StampedInput> stamped_inputs(const Case& c) {
     std::vector<StampedInput> out;

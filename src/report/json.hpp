@@ -52,4 +52,8 @@ double round10(double v);
 /// A JSON number rounded by round10; null when not finite.
 nlohmann::ordered_json json_number(double v);
 
+/// A level's settling (docs/methods.md s.6 step 4): n_sets, resamples, settled_fraction,
+/// settled, batches.
+nlohmann::ordered_json settling_json(const assess::Settling& s);
+
 }  // namespace freestand::report

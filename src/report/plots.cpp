@@ -166,8 +166,8 @@ void add_finite(Curve& c, double pga_g, double v, double scale = 1.0) {
 // The deciding demand: drawn last, in black and wider, over the models it was taken from.
 void add_deciding(Plot& p, const Curve& c) {
     if (c.empty()) return;
-    Line l{"decides: 84th percentile of the deciding model", c.pga_g, c.value, "#000000", 2.6,
-           false};
+    Line l{
+        "decides: 84th percentile of the deciding model", c.pga_g, c.value, "#000000", 2.6, false};
     l.points = true;
     p.lines.push_back(std::move(l));
 }

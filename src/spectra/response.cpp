@@ -181,7 +181,11 @@ template <class V, std::size_t W>
     } else {
         // x into lane 0, then lane 0 into every lane: one broadcast (an eight-lane initialiser
         // is built lane by lane).
+#if defined(__clang__)
+        out = __builtin_shufflevector(V{x}, V{x}, 0, 0, 0, 0, 0, 0, 0, 0);
+#else
         out = __builtin_shuffle(V{x}, L8{});
+#endif
     }
 }
 

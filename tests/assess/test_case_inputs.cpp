@@ -255,3 +255,57 @@ TEST_CASE("RG 1.60 histories: the vertical matches RG 1.60's vertical spectrum a
     CHECK(v[0] < 0.9 * 0.5 * target_h.psa_g[0]);
     CHECK(set.acceptance.at(2).zpa_g == Approx(0.5).epsilon(1e-12));
 }
+
+TEST_CASE("RG 1.60 levels: the equivalent-linear estimate reads RG 1.60's vertical spectrum",
+          "[assess][level][vertical]") {
+    // vertical_ratio 0.5: the vertical spectrum has RG 1.60's shape and a ZPA of 0.5 x PGA: 2/3
+    // of the horizontal (factor D, 1.37 / 2.05) at low frequency, equal to it (A, B) above 9 Hz.
+    // A large block (h 3 m, tan alpha 0.25) rocks at 0.3 g (A = 0.3 / 0.925 > 0.25 < mu_s 0.8).
+    std::string component = box_component;
+    component.replace(component.find("mu_s = 0.3"), 10, "mu_s = 0.8");
+    component.replace(component.find("cg_height_m = 1.0"), 17, "cg_height_m = 3.0");
+    component.replace(component.find("cg_to_edge_x_m = [0.4, 0.5]"), 27,
+                      "cg_to_edge_x_m = [0.75, 0.9]");
+    const Case c =
+        parse_case(component + box_site + "vertical_ratio = 0.5\n[options]\nsimulate = \"never\"\n",
+                   "case.toml");
+    LevelDemand demand = level_demand(c.site, 0.3);
+    REQUIRE(demand.sa_v_damped.has_value());
+    CHECK(demand.sa_v_damped->zpa_g() == Approx(0.15).epsilon(1e-9));
+    const spectra::Spectrum h = spectra::rg160(0.3, 0.05, false, {0.2, 20.0});
+    const rocking::DampedDemand v = demand.sa_v_damped->at(0.05);
+    CHECK(v.psa_g(0.2) / h.psa_g[0] == Approx(0.5 * 1.37 / 2.05).epsilon(1e-2));
+    CHECK(v.psa_g(20.0) / h.psa_g[1] == Approx(0.5).epsilon(1e-2));
+    // The level's estimate is the one with that vertical spectrum. Its effective frequency
+    // shows it (gravity reduced by 0.4 SA_V(f_e)); theta itself does not move here, where the
+    // demand is a constant displacement (below RG 1.60's 0.25 Hz).
+    HistoryBank bank(c);
+    const LevelResult level = evaluate_level(c, Direction::x, demand, bank);
+    REQUIRE(level.rocking.theta_rad.has_value());
+    REQUIRE(demand.el_cache.size() == 1);
+    const rocking::ElResult& used = demand.el_cache.begin()->second.governing();
+    const block::Block blk = c.component.block(Direction::x);
+    rocking::ElOptions opt;
+    opt.pga_h_g = 0.3;
+    opt.pga_v_g = 0.15;
+    rocking::VerticalDemand with_spectrum;
+    with_spectrum.ratio = 0.5;
+    with_spectrum.spectra = demand.sa_v_damped;
+    rocking::VerticalDemand with_ratio;
+    with_ratio.ratio = 0.5;
+    const auto spectrum_f =
+        rocking::equivalent_linear_rocking(blk, demand.sa_vh_damped, with_spectrum, opt)
+            .governing()
+            .f_e_hz;
+    const auto ratio_f =
+        rocking::equivalent_linear_rocking(blk, demand.sa_vh_damped, with_ratio, opt)
+            .governing()
+            .f_e_hz;
+    REQUIRE(used.f_e_hz.has_value());
+    REQUIRE(spectrum_f.has_value());
+    REQUIRE(ratio_f.has_value());
+    CHECK(*used.f_e_hz == *spectrum_f);
+    // Less vertical demand at f_e, less gravity lost: a higher effective frequency.
+    CHECK(*spectrum_f > *ratio_f);
+    CHECK_FALSE(bank.generated());
+}

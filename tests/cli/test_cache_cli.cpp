@@ -72,9 +72,13 @@ TEST_CASE("assess writes the same bytes at any thread count, with or without the
     // level needed.
     CHECK(stored.size() >= 30);
     CHECK(stored.size() % 30 == 0);
+    // The runs are cached beside the sets (runs/); the warm run reads them all and adds none.
+    const auto runs = entries(d.path / "cache" / "runs");
+    CHECK_FALSE(runs.empty());
     const auto warm = run_cli(base + (d / "warm") + " --cache '" + cache + "'");
     REQUIRE(warm.exit_code == 0);
     CHECK(entries(cache) == stored);
+    CHECK(entries(d.path / "cache" / "runs") == runs);
     // A damaged entry is detected, regenerated and rewritten; the outputs do not change.
     {
         std::string bytes = slurp(stored[3]);
@@ -143,7 +147,9 @@ TEST_CASE("freestand cache info and clear report the folder; clear leaves other 
     std::ofstream(d.path / "cache" / "notes.txt") << "mine";
     const auto info = run_cli("cache info" + cache);
     REQUIRE(info.exit_code == 0);
-    CHECK_THAT(info.out, Contains(": 2 entries, ") && Contains(" MiB of 1024 MiB"));
+    CHECK_THAT(info.out, Contains(": 2 entries (history sets), ") && Contains(" MiB of 1024 MiB"));
+    // cache fill simulates nothing: the runs' folder is empty.
+    CHECK_THAT(info.out, Contains("runs: 0 entries (runs), "));
     const auto bound = run_cli("cache info" + cache, "FREESTAND_CACHE_MAX_MB=5 ");
     CHECK_THAT(bound.out, Contains("of 5 MiB"));
     const auto cleared = run_cli("cache clear" + cache);
@@ -189,5 +195,6 @@ TEST_CASE("an unwritable cache folder is a warning, never a failure", "[cli][cac
                            (d.path / "file" / "cache").string() + "' --out " + (d / "o"));
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.err, Contains("warning: history sets were not cached in") && Contains("cannot create"));
+    CHECK_THAT(r.err, Contains("warning: runs were not cached in"));
     CHECK(fs::exists(d.path / "o" / "result.json"));
 }
