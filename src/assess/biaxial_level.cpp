@@ -38,10 +38,10 @@ std::optional<std::string> not_applicable(const Case& c, const LevelResult& l,
     return std::nullopt;
 }
 
-// Peak |u| of every history run biaxially at the sliding bound.
+// Peak |u| of every history run biaxially at the sliding bound, the excitations at pga_g.
 Stats biaxial_peaks(const dynamics::BiaxialModel& model,
-                    const std::vector<dynamics::BiaxialExcitation>& ex, double g_mps2,
-                    HistoryBank& bank) {
+                    const std::vector<dynamics::BiaxialExcitation>& ex, double pga_g,
+                    double g_mps2, HistoryBank& bank) {
     dynamics::Options opt = dynamics::biaxial_options();
     opt.record_series = false;
     opt.g_mps2 = g_mps2;
@@ -49,7 +49,10 @@ Stats biaxial_peaks(const dynamics::BiaxialModel& model,
     RunTable<double>* kept = bank.level_runs() ? &bank.level_runs()->biaxial(ex.size()) : nullptr;
     core::parallel_for(ex.size(), bank.run().threads, [&](std::size_t k) {
         peaks[k] = remembered(
-            kept, k, [&] { return biaxial_peak_run(bank.run().run_cache, model, ex[k], opt); });
+            kept, k, [&] {
+                return biaxial_peak_run(bank.run().run_cache, model, ex[k],
+                                        bank.excitation_key(k, 2, pga_g, ex[k]), opt);
+            });
     });
     return stats_of(peaks);
 }
@@ -82,7 +85,7 @@ void apply_biaxial(const Case& c, const LevelDemand& demand, std::vector<LevelRe
             b.reason = *why;
             l->model_reason += "; biaxial sliding does not apply: " + *why;
         } else {
-            if (!peaks) peaks = biaxial_peaks(model, ex, c.site.g_mps2, bank);
+            if (!peaks) peaks = biaxial_peaks(model, ex, demand.pga_g, c.site.g_mps2, bank);
             b.ran = true;
             b.slide_m = *peaks;
             b.reason = "the block slides without rocking at the sliding bound: both horizontal "

@@ -73,7 +73,8 @@ void simulate_flexible_level(const Case& c, LevelResult& level, double pga_g, Hi
         runs[slot] = remembered(kept[b], k, [&] {
             dynamics::FlexibleModel m = probe;
             m.rigid = rigid;
-            return flexible_run(bank.run().run_cache, m, ex, opt);
+            return flexible_run(bank.run().run_cache, m, ex,
+                                bank.excitation_key(k, static_cast<int>(d), pga_g, ex), opt);
         });
         ran[slot] = 1;
         return runs[slot].base;

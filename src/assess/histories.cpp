@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "assess/history_cache.hpp"
+#include "assess/run_cache.hpp"
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "core/random.hpp"
@@ -160,7 +161,9 @@ Obtained obtain(const Case& c, const motion::TargetSet& targets, std::size_t k,
 HistoryBank::HistoryBank(const Case& c, RunSettings run)
     : case_(&c),
       run_(std::move(run)),
-      active_(static_cast<std::size_t>(std::max(1, c.options.histories_per_level))) {}
+      active_(static_cast<std::size_t>(std::max(1, c.options.histories_per_level))) {
+    if (run_.run_cache) excitation_keys_ = std::make_shared<ExcitationKeys>();
+}
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
     // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.

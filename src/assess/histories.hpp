@@ -5,6 +5,7 @@
 /// same ratios (response spectra are linear in the input). Sets are generated on every core
 /// and read from the history cache when it holds them (assess/history_cache.hpp).
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 
 namespace freestand::assess {
 
+class ExcitationKeys;
 class LevelRuns;
 
 /// One three-component history at the reference PGA of 1 g.
@@ -51,6 +53,10 @@ class HistoryBank {
     /// that grows its sets (settle.cpp) keeps its runs here while it does.
     LevelRuns* level_runs() const { return level_runs_; }
     void keep_level_runs(LevelRuns* runs) { level_runs_ = runs; }
+    /// The run cache's key of set k's excitation ex along axis (0: x, 1: y, 2: both) at pga_g,
+    /// computed once per excitation (assess/run_cache.hpp); "" without a run cache.
+    template <class Excitation>
+    std::string excitation_key(std::size_t k, int axis, double pga_g, const Excitation& ex);
     /// Every set made so far (at least those in use once sets() ran), in index order.
     const std::vector<HistorySet>& made() const { return sets_; }
     bool generated() const { return !sets_.empty(); }
@@ -79,6 +85,7 @@ class HistoryBank {
     RunSettings run_;
     std::size_t active_;
     LevelRuns* level_runs_ = nullptr;
+    std::shared_ptr<ExcitationKeys> excitation_keys_;
     std::size_t cache_hits_ = 0;
     std::size_t generated_sets_ = 0;
     std::vector<HistorySet> sets_;

@@ -457,7 +457,8 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
             const auto b = static_cast<std::size_t>(slot);
             if (run) return run(k, slot, models[b], ex, opt);
             return remembered(kept[b], k, [&] {
-                return rigid_run(bank.run().run_cache, models[b], ex, opt);
+                return rigid_run(bank.run().run_cache, models[b], ex,
+                                 bank.excitation_key(k, static_cast<int>(d), pga_g, ex), opt);
             });
         });
     if (!sim.bounds_differ)

@@ -45,13 +45,6 @@ void write_options(core::ByteWriter& w, const dynamics::Options& o) {
     w.flag(o.record_series);
 }
 
-// The excitation's numbers (its label names it only).
-void write_excitation(core::ByteWriter& w, const dynamics::Excitation& ex) {
-    w.f64(ex.dt_s);
-    w.f64s(ex.horizontal_mps2);
-    w.f64s(ex.vertical_mps2);
-}
-
 void write_summary(core::ByteWriter& w, const dynamics::Summary& s) {
     w.text(s.integrator);
     for (double v : {s.slide_max_m, s.slide_residual_m, s.rock_max_rad, s.rock_max_over_alpha,
@@ -112,17 +105,36 @@ std::string encode_peak(const double& v) {
 
 }  // namespace
 
-std::string rigid_run_key(const dynamics::BlockModel& model, const dynamics::Excitation& ex,
+std::string excitation_key(const dynamics::Excitation& ex) {
+    core::ByteWriter w;
+    w.text("planar excitation");
+    w.f64(ex.dt_s);
+    w.f64s(ex.horizontal_mps2);
+    w.f64s(ex.vertical_mps2);
+    return core::sha256_hex(w.bytes());
+}
+
+std::string excitation_key(const dynamics::BiaxialExcitation& ex) {
+    core::ByteWriter w;
+    w.text("biaxial excitation");
+    w.f64(ex.dt_s);
+    w.f64s(ex.x_mps2);
+    w.f64s(ex.y_mps2);
+    w.f64s(ex.vertical_mps2);
+    return core::sha256_hex(w.bytes());
+}
+
+std::string rigid_run_key(const dynamics::BlockModel& model, const std::string& ex_key,
                           const dynamics::Options& opt) {
     core::ByteWriter w;
     write_head(w, "rigid planar block");
     write_model(w, model);
     write_options(w, opt);
-    write_excitation(w, ex);
+    w.text(ex_key);
     return core::sha256_hex(w.bytes());
 }
 
-std::string flexible_run_key(const dynamics::FlexibleModel& model, const dynamics::Excitation& ex,
+std::string flexible_run_key(const dynamics::FlexibleModel& model, const std::string& ex_key,
                              const dynamics::Options& opt) {
     core::ByteWriter w;
     write_head(w, "flexible body");
@@ -133,21 +145,18 @@ std::string flexible_run_key(const dynamics::FlexibleModel& model, const dynamic
     w.flag(model.mass_fraction_default);
     w.flag(model.height_default);
     write_options(w, opt);
-    write_excitation(w, ex);
+    w.text(ex_key);
     return core::sha256_hex(w.bytes());
 }
 
-std::string biaxial_run_key(const dynamics::BiaxialModel& model,
-                            const dynamics::BiaxialExcitation& ex, const dynamics::Options& opt) {
+std::string biaxial_run_key(const dynamics::BiaxialModel& model, const std::string& ex_key,
+                            const dynamics::Options& opt) {
     core::ByteWriter w;
     write_head(w, "biaxial block, peak |u|");
     w.f64(model.mu_s);
     w.f64(model.mu_k);
     write_options(w, opt);
-    w.f64(ex.dt_s);
-    w.f64s(ex.x_mps2);
-    w.f64s(ex.y_mps2);
-    w.f64s(ex.vertical_mps2);
+    w.text(ex_key);
     return core::sha256_hex(w.bytes());
 }
 
@@ -189,31 +198,34 @@ std::optional<dynamics::FlexibleSummary> decode_flexible_summary(std::string_vie
 }
 
 dynamics::Summary rigid_run(const core::ContentStore* store, const dynamics::BlockModel& model,
-                            const dynamics::Excitation& ex, const dynamics::Options& opt) {
+                            const dynamics::Excitation& ex, const std::string& ex_key,
+                            const dynamics::Options& opt) {
     const auto make = [&] { return dynamics::simulate(model, ex, opt).summary; };
     if (!store || opt.record_series) return make();
-    return stored<dynamics::Summary>(store, rigid_run_key(model, ex, opt), decode_summary,
+    return stored<dynamics::Summary>(store, rigid_run_key(model, ex_key, opt), decode_summary,
                                      encode_summary, make);
 }
 
 dynamics::FlexibleSummary flexible_run(const core::ContentStore* store,
                                        const dynamics::FlexibleModel& model,
-                                       const dynamics::Excitation& ex,
+                                       const dynamics::Excitation& ex, const std::string& ex_key,
                                        const dynamics::Options& opt) {
     const auto make = [&] { return dynamics::simulate_flexible(model, ex, opt).summary; };
     if (!store || opt.record_series) return make();
-    return stored<dynamics::FlexibleSummary>(store, flexible_run_key(model, ex, opt),
+    return stored<dynamics::FlexibleSummary>(store, flexible_run_key(model, ex_key, opt),
                                              decode_flexible_summary, encode_flexible_summary,
                                              make);
 }
 
 double biaxial_peak_run(const core::ContentStore* store, const dynamics::BiaxialModel& model,
-                        const dynamics::BiaxialExcitation& ex, const dynamics::Options& opt) {
+                        const dynamics::BiaxialExcitation& ex, const std::string& ex_key,
+                        const dynamics::Options& opt) {
     const auto make = [&] {
         return dynamics::simulate_biaxial(model, ex, opt).summary.slide_max_m;
     };
     if (!store || opt.record_series) return make();
-    return stored<double>(store, biaxial_run_key(model, ex, opt), decode_peak, encode_peak, make);
+    return stored<double>(store, biaxial_run_key(model, ex_key, opt), decode_peak, encode_peak,
+                          make);
 }
 
 }  // namespace freestand::assess

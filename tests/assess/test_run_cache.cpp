@@ -85,31 +85,32 @@ TEST_CASE("a run's key changes with anything the run depends on", "[assess][cach
     const dynamics::BlockModel m = slender();
     const dynamics::Excitation ex = sine(0.5);
     const dynamics::Options o = quiet();
-    const std::string key = rigid_run_key(m, ex, o);
+    const std::string key = rigid_run_key(m, excitation_key(ex), o);
     CHECK(key.size() == 64);
-    CHECK(rigid_run_key(m, ex, o) == key);
+    CHECK(rigid_run_key(m, excitation_key(ex), o) == key);
     dynamics::BlockModel other_r = m;
     other_r.restitution = 0.9;
-    CHECK(rigid_run_key(other_r, ex, o) != key);
+    CHECK(rigid_run_key(other_r, excitation_key(ex), o) != key);
     dynamics::BlockModel other_mu = m;
     other_mu.mu_k = 0.4;
-    CHECK(rigid_run_key(other_mu, ex, o) != key);
+    CHECK(rigid_run_key(other_mu, excitation_key(ex), o) != key);
     dynamics::Options other_g = o;
     other_g.g_mps2 = 9.80665;
-    CHECK(rigid_run_key(m, ex, other_g) != key);
+    CHECK(rigid_run_key(m, excitation_key(ex), other_g) != key);
     dynamics::Excitation other_ex = ex;
     other_ex.horizontal_mps2[10] = std::nextafter(other_ex.horizontal_mps2[10], 1e9);
-    CHECK(rigid_run_key(m, other_ex, o) != key);
+    CHECK(rigid_run_key(m, excitation_key(other_ex), o) != key);
     // The label names the excitation only.
     dynamics::Excitation renamed = ex;
     renamed.label = "another name";
-    CHECK(rigid_run_key(m, renamed, o) == key);
+    CHECK(rigid_run_key(m, excitation_key(renamed), o) == key);
     // One model and excitation, three kinds of run: three keys.
     const dynamics::FlexibleModel flex = dynamics::make_flexible_model(m, mode_at(8.0));
-    CHECK(flexible_run_key(flex, ex, o) != key);
+    CHECK(flexible_run_key(flex, excitation_key(ex), o) != key);
     dynamics::FlexibleModel stiffer = flex;
     stiffer.frequency_hz = 9.0;
-    CHECK(flexible_run_key(stiffer, ex, o) != flexible_run_key(flex, ex, o));
+    CHECK(flexible_run_key(stiffer, excitation_key(ex), o) !=
+          flexible_run_key(flex, excitation_key(ex), o));
 }
 
 TEST_CASE("runs are read from the store when it holds them, simulated and stored when not",
@@ -120,24 +121,24 @@ TEST_CASE("runs are read from the store when it holds them, simulated and stored
     const dynamics::Excitation ex = sine(0.5);
     const dynamics::Options o = quiet();
     const dynamics::Summary direct = dynamics::simulate(m, ex, o).summary;
-    const dynamics::Summary first = rigid_run(&store, m, ex, o);
+    const dynamics::Summary first = rigid_run(&store, m, ex, excitation_key(ex), o);
     CHECK(bits(first) == bits(direct));
-    REQUIRE(store.get(rigid_run_key(m, ex, o)));
+    REQUIRE(store.get(rigid_run_key(m, excitation_key(ex), o)));
     CHECK(store.info().entries == 1);
     // What the store holds under the key is what a run returns: plant a different summary.
     dynamics::Summary planted = direct;
     planted.slide_max_m = 123.0;
-    REQUIRE(store.put(rigid_run_key(m, ex, o), encode_summary(planted)));
-    CHECK(rigid_run(&store, m, ex, o).slide_max_m == 123.0);
+    REQUIRE(store.put(rigid_run_key(m, excitation_key(ex), o), encode_summary(planted)));
+    CHECK(rigid_run(&store, m, ex, excitation_key(ex), o).slide_max_m == 123.0);
     // Bytes that are not a summary are simulated again and replaced.
-    REQUIRE(store.put(rigid_run_key(m, ex, o), "not a summary"));
-    CHECK(bits(rigid_run(&store, m, ex, o)) == bits(direct));
-    CHECK(decode_summary(*store.get(rigid_run_key(m, ex, o))));
+    REQUIRE(store.put(rigid_run_key(m, excitation_key(ex), o), "not a summary"));
+    CHECK(bits(rigid_run(&store, m, ex, excitation_key(ex), o)) == bits(direct));
+    CHECK(decode_summary(*store.get(rigid_run_key(m, excitation_key(ex), o))));
     // Without a store, or with a series asked for, nothing is read or written.
-    CHECK(rigid_run(nullptr, m, ex, o).slide_max_m == direct.slide_max_m);
+    CHECK(rigid_run(nullptr, m, ex, excitation_key(ex), o).slide_max_m == direct.slide_max_m);
     dynamics::Options series = o;
     series.record_series = true;
-    CHECK(rigid_run(&store, m, ex, series).slide_max_m == direct.slide_max_m);
+    CHECK(rigid_run(&store, m, ex, excitation_key(ex), series).slide_max_m == direct.slide_max_m);
     CHECK(store.info().entries == 1);
     // The biaxial peak and the flexible body alike.
     const dynamics::BiaxialExcitation bi = dynamics::biaxial_sine_excitation(sine_spec(0.5), 90.0);
@@ -145,10 +146,24 @@ TEST_CASE("runs are read from the store when it holds them, simulated and stored
     dynamics::Options bo = dynamics::biaxial_options();
     bo.record_series = false;
     const double peak = dynamics::simulate_biaxial(bm, bi, bo).summary.slide_max_m;
-    CHECK(biaxial_peak_run(&store, bm, bi, bo) == peak);
-    CHECK(biaxial_peak_run(&store, bm, bi, bo) == peak);
+    CHECK(biaxial_peak_run(&store, bm, bi, excitation_key(bi), bo) == peak);
+    CHECK(biaxial_peak_run(&store, bm, bi, excitation_key(bi), bo) == peak);
     const dynamics::FlexibleModel flex = dynamics::make_flexible_model(m, mode_at(8.0));
-    const auto f = flexible_run(&store, flex, ex, o);
-    CHECK(encode_flexible_summary(flexible_run(&store, flex, ex, o)) == encode_flexible_summary(f));
+    const auto f = flexible_run(&store, flex, ex, excitation_key(ex), o);
+    CHECK(encode_flexible_summary(flexible_run(&store, flex, ex, excitation_key(ex), o)) ==
+          encode_flexible_summary(f));
     CHECK(store.info().entries == 3);
+}
+
+TEST_CASE("a bank keeps one key per excitation, the key of its numbers", "[assess][cache][runs]") {
+    ExcitationKeys keys;
+    const dynamics::Excitation a = sine(0.5);
+    const dynamics::Excitation b = sine(0.6);
+    CHECK(keys.of(0, 0, 0.3, a) == excitation_key(a));
+    // The first excitation met under an id keeps its key: the id names one excitation.
+    CHECK(keys.of(0, 0, 0.3, b) == excitation_key(a));
+    CHECK(keys.of(0, 1, 0.3, b) == excitation_key(b));
+    CHECK(keys.of(1, 0, 0.3, b) == excitation_key(b));
+    CHECK(keys.of(0, 0, 0.4, b) == excitation_key(b));
+    CHECK(excitation_key(a) != excitation_key(b));
 }
