@@ -1,9 +1,9 @@
-// Speed of one case's assessment on the machine's cores and with the history cache
+// Speed of one case's assessment on the machine's cores and with the history and run caches
 // (docs/methods.md s.12): the shipped glove box (cases/glovebox-single.toml, every level, the
 // material search) assessed through report::run_case as `freestand assess` does it:
 //  1. without the cache on 1 and 2 threads (the speed-up);
-//  2. with a cold cache (every set generated and stored) and a warm one (every set read), on
-//     every core;
+//  2. with cold caches (every set generated, every run simulated, all stored) and warm ones
+//     (every set and run read), on every core;
 //  3. the history sets alone on 1 thread: generation per set, and reading them back.
 // Each figure is the least of `repeats` runs (default 3); the rendered result.json of every run
 // is compared with the first, byte for byte. Wall times on a shared virtual machine drift:
@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     const fs::path cache_dir =
         fs::temp_directory_path() / ("freestand-bench-cache-" + std::to_string(::getpid()));
     const core::ContentStore cache(cache_dir);
+    const core::ContentStore runs(cache_dir / "runs");
     const auto run = [&](assess::RunSettings s) {
         return report::run_case(case_file, std::nullopt, "bench", s).rendered.json;
     };
@@ -79,8 +80,11 @@ int main(int argc, char** argv) {
     row("no cache, 2 threads", two, one.best_s);
     assess::RunSettings cached;
     cached.cache = &cache;
-    const Timing cold = time_runs(repeats, reference, [&] { return run(cached); },
-                                  [&] { cache.clear(); });
+    cached.run_cache = &runs;
+    const Timing cold = time_runs(repeats, reference, [&] { return run(cached); }, [&] {
+        cache.clear();
+        runs.clear();
+    });
     const Timing warm = time_runs(repeats, reference, [&] { return run(cached); });
     row("cold cache, every core", cold, cold.best_s);
     row("warm cache, every core", warm, cold.best_s);
@@ -109,6 +113,7 @@ int main(int argc, char** argv) {
                 generate_s / static_cast<double>(sets), generate_s / static_cast<double>(3 * sets));
     std::printf("   read from the cache:  %.4f s per set\n", read_s / static_cast<double>(sets));
     cache.clear();
+    runs.clear();
     fs::remove_all(cache_dir);
     return one.same_bytes && two.same_bytes && cold.same_bytes && warm.same_bytes ? 0 : 1;
 }

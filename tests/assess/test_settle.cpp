@@ -130,16 +130,16 @@ TEST_CASE("evaluate_settled grows an unsettled level by batches up to the cap, t
             CHECK(l.verdict.margin_basis.rfind("not settled: ", 0) == 0);
         }
     }
-    // With room to grow, a PGA level unsettled in either direction on 3 sets takes 30 more in
-    // both (the biaxial run joins them).
-    c.options.max_histories_per_level = 33;
+    // With room to grow, a PGA level unsettled in either direction on 3 sets takes a batch more
+    // in both (the biaxial run joins them): 30, or up to the cap, here 6.
+    c.options.max_histories_per_level = 6;
     const AssessmentResult grown = assess(c);
     for (const LevelResult& l : grown.levels) {
-        CHECK(l.settling->n_sets == 33);
+        CHECK(l.settling->n_sets == 6);
         CHECK(l.settling->rounds == 2);
     }
-    // The grown level kept its first 3 sets' runs and simulated the 30 new ones: its peaks are
-    // the bits of a level that ran all 33 sets from the start.
+    // The grown level kept its first 3 sets' runs and simulated the new ones: its peaks are the
+    // bits of a level that ran all 6 sets from the start.
     c.options.histories_per_level = grown.levels[0].settling->n_sets;
     c.options.max_histories_per_level = c.options.histories_per_level;
     const AssessmentResult direct = assess(c);
