@@ -11,6 +11,9 @@
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_biaxial_level {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -80,3 +83,5 @@ TEST_CASE("a rocking level keeps the planar model and says why the biaxial one d
     CHECK(x.verdict.decided_by != Model::simulation_biaxial_slide);
     CHECK(trail_has(x, "biaxial sliding not run: "));
 }
+
+}  // namespace freestand_test_assess_test_biaxial_level

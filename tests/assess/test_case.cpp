@@ -10,6 +10,9 @@
 #include "assess/case.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_case {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -529,3 +532,5 @@ TEST_CASE("site.dbe_pga_g: absent by default, read and echoed, refused outside 0
     CHECK(error_of(base_component + base_site + "dbe_pga_g = \"0.3 g\"\n") ==
           "case.toml:11: site.dbe_pga_g: expected a number in (0, 3], got a string");
 }
+
+}  // namespace freestand_test_assess_test_case

@@ -16,6 +16,9 @@
 #include "support/case_text.hpp"
 #include "support/paths.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_case_inputs {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -309,3 +312,5 @@ TEST_CASE("RG 1.60 levels: the equivalent-linear estimate reads RG 1.60's vertic
     CHECK(*spectrum_f > *ratio_f);
     CHECK_FALSE(bank.generated());
 }
+
+}  // namespace freestand_test_assess_test_case_inputs

@@ -19,6 +19,9 @@
 #include "spectra/design.hpp"
 #include "support/paths.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_history_cache {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -166,3 +169,5 @@ TEST_CASE("the bank reads what the cache holds and generates the rest", "[assess
         CHECK(encode_history(uncached.sets()[k]) == encode_history(more[k]));
     fs::remove_all(dir);
 }
+
+}  // namespace freestand_test_assess_test_history_cache

@@ -10,6 +10,9 @@
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_joined {
+
 using namespace freestand;
 using namespace freestand::assess;
 
@@ -115,3 +118,5 @@ TEST_CASE("joined: the tunnel's decision is settled by a bootstrap of its sets, 
         for (std::size_t k = 0; k < 3; ++k)
             CHECK(grown.directions[i].relative_m.values[k] == capped.directions[i].relative_m.values[k]);
 }
+
+}  // namespace freestand_test_assess_test_joined

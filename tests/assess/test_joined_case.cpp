@@ -8,6 +8,9 @@
 #include "assess/case.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_joined_case {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -102,3 +105,5 @@ TEST_CASE("joined case: a DBE is refused at its line (the goal takes one compone
           "pair.toml:22: site.dbe_pga_g: the performance goal runs the fragility engine, which "
           "takes one component, not two [[unit]] tables");
 }
+
+}  // namespace freestand_test_assess_test_joined_case

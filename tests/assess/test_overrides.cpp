@@ -8,6 +8,9 @@
 #include "assess/overrides.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_overrides {
+
 using namespace freestand;
 using namespace freestand::assess;
 
@@ -154,3 +157,5 @@ TEST_CASE("what depends on the case is checked when the case is read", "[assess]
     s.seed = 5;
     CHECK(parse_case(own_base, "case.toml", s).options.seed == 5);
 }
+
+}  // namespace freestand_test_assess_test_overrides

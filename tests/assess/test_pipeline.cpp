@@ -12,6 +12,9 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_pipeline {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -370,3 +373,5 @@ TEST_CASE("without a fixed-base frequency the flag stays an open condition",
     CHECK(*flexible_model_blocker(never) ==
           "options.simulate = \"never\" forbids the flexible-body simulation");
 }
+
+}  // namespace freestand_test_assess_test_pipeline

@@ -14,6 +14,9 @@
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_policy {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -185,3 +188,5 @@ FREESTAND_SIMULATE_POLICY_TEST("glovebox-pair")
 FREESTAND_SIMULATE_POLICY_TEST("glovebox-single")
 FREESTAND_SIMULATE_POLICY_TEST("glovebox-steel-pads")
 #undef FREESTAND_SIMULATE_POLICY_TEST
+
+}  // namespace freestand_test_assess_test_policy

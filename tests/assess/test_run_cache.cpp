@@ -10,6 +10,9 @@
 #include "assess/run_cache.hpp"
 #include "block/block.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_run_cache {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -167,3 +170,5 @@ TEST_CASE("a bank keeps one key per excitation, the key of its numbers", "[asses
     CHECK(keys.of(0, 0, 0.4, b) == excitation_key(b));
     CHECK(excitation_key(a) != excitation_key(b));
 }
+
+}  // namespace freestand_test_assess_test_run_cache

@@ -17,6 +17,9 @@
 #include "assess/verdict.hpp"
 #include "support/paths.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_settle {
+
 namespace fs = std::filesystem;
 using namespace freestand::assess;
 
@@ -206,3 +209,5 @@ TEST_CASE("the glove box's verdict and material do not follow the seed",
         }
     }
 }
+
+}  // namespace freestand_test_assess_test_settle

@@ -8,6 +8,9 @@
 
 #include "assess/statistics.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_statistics {
+
 using namespace freestand::assess;
 
 namespace {
@@ -63,3 +66,5 @@ TEST_CASE("exceedances count sets beyond the limit, always-counted sets included
     CHECK(zero.k == 0);
     CHECK(zero.ci95[0] == 0.0);
 }
+
+}  // namespace freestand_test_assess_test_statistics

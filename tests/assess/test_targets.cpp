@@ -10,6 +10,9 @@
 #include "assess/pipeline.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_targets {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -193,3 +196,5 @@ TEST_CASE("the pipeline reads the file target: ASCE 4 follows the file", "[asses
     CHECK(*doubled.sliding.slide_asce_m == Approx(doubled.sliding.c_s_mps2 / (w * w)).epsilon(1e-12));
     CHECK(*doubled.sliding.slide_asce_m > 1.5 * *rg.sliding.slide_asce_m);
 }
+
+}  // namespace freestand_test_assess_test_targets

@@ -10,6 +10,9 @@
 #include "assess/pipeline.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_targets_y {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -209,3 +212,5 @@ TEST_CASE("direction y's file sets y's demand; SA_VH combines x and y",
     CHECK(y3.sliding.delta_d_m == Approx(1.5 * y1.sliding.delta_d_m).epsilon(0.05));
     CHECK(y3.pga_g == 0.2);  // levels stay keyed by the level's (direction x's) PGA
 }
+
+}  // namespace freestand_test_assess_test_targets_y

@@ -4,6 +4,9 @@
 
 #include "assess/verdict.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_verdict {
+
 using namespace freestand::assess;
 
 namespace {
@@ -281,3 +284,5 @@ TEST_CASE("verdict and margin text", "[assess][verdict]") {
     v.margin = 0.5;
     CHECK(margin_text(v) == "0.50");
 }
+
+}  // namespace freestand_test_assess_test_verdict

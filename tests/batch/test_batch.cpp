@@ -15,6 +15,9 @@
 #include "report/summary.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_batch_test_batch {
+
 using namespace freestand;
 using namespace freestand::batch;
 namespace fs = std::filesystem;
@@ -310,3 +313,5 @@ TEST_CASE("the summary quotes CSV fields and escapes HTML and Markdown", "[batch
     CHECK(j["counts"]["failed"] == 1);
     CHECK(j["stamp"]["list_sha256"] == "f00");
 }
+
+}  // namespace freestand_test_batch_test_batch

@@ -7,6 +7,9 @@
 #include "core/errors.hpp"
 #include "core/sha256.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_batch_test_list {
+
 using namespace freestand;
 using namespace freestand::batch;
 namespace fs = std::filesystem;
@@ -237,3 +240,5 @@ TEST_CASE("a list path that is no list", "[batch][list]") {
                       (dir / "none.csv").string() + ": no such file or folder");
     fs::remove_all(dir);
 }
+
+}  // namespace freestand_test_batch_test_list

@@ -13,6 +13,9 @@
 #include "core/errors.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_batch_test_shards {
+
 using namespace freestand;
 using namespace freestand::batch;
 namespace fs = std::filesystem;
@@ -213,3 +216,5 @@ TEST_CASE("shard K of N takes every N-th component from the K-th", "[batch][shar
     CHECK(shard_indices(5, 2, 2) == std::vector<std::size_t>{1, 3});
     CHECK(shard_indices(2, 3, 3).empty());
 }
+
+}  // namespace freestand_test_batch_test_shards

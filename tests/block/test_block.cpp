@@ -4,6 +4,9 @@
 #include "block/block.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_block_test_block {
+
 using freestand::block::Block;
 using freestand::block::Edge;
 
@@ -66,3 +69,5 @@ TEST_CASE("restitution of an asymmetric block conserves angular momentum about t
     CHECK(blk.housner_restitution(Edge::right) == Approx(112.0 / 136.0).epsilon(1e-14));
     CHECK(blk.housner_restitution(Edge::left) == Approx(112.0 / (20.0 + 100.0 * 1.04)).epsilon(1e-14));
 }
+
+}  // namespace freestand_test_block_test_block

@@ -13,6 +13,9 @@
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_cli_test_cache_cli {
+
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;
 using freestand::test::run_cli;
@@ -198,3 +201,5 @@ TEST_CASE("an unwritable cache folder is a warning, never a failure", "[cli][cac
     CHECK_THAT(r.err, Contains("warning: runs were not cached in"));
     CHECK(fs::exists(d.path / "o" / "result.json"));
 }
+
+}  // namespace freestand_test_cli_test_cache_cli

@@ -8,6 +8,9 @@
 
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_cli_test_limits {
+
 using freestand::test::run_cli;
 using Catch::Contains;
 
@@ -119,3 +122,5 @@ TEST_CASE("library parameters are shown as the options the user typed", "[cli][h
     CHECK_THAT(run_cli("simulate --block b=0.15,h=0.6,m=38 --mu -0.1 --sine 0.5g,2Hz,10s").err,
                Contains("error: --mu: static friction must be >= 0; got -0.1"));
 }
+
+}  // namespace freestand_test_cli_test_limits

@@ -11,6 +11,9 @@
 #include "support/run_cli.hpp"
 #include "core/version.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_cli_test_main {
+
 using freestand::test::run_cli;
 
 TEST_CASE("freestand without a command prints help and exits 2", "[cli]") {
@@ -107,3 +110,5 @@ TEST_CASE("errors quoting a file's bytes show control characters as \\xNN", "[cl
     CHECK_THAT(u.err, Catch::Contains("unknown command \"\\x1B[2J\""));
     std::filesystem::remove_all(dir);
 }
+
+}  // namespace freestand_test_cli_test_main

@@ -4,6 +4,9 @@
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_cli_test_options {
+
 using namespace freestand;
 
 TEST_CASE("one splitter keeps empty items for the caller to name", "[cli][options]") {
@@ -41,3 +44,5 @@ TEST_CASE("the block options give the same block in both --cg forms", "[cli][opt
     CHECK(u.mass_kg == 1.0);  // per unit mass by default, in every command
     CHECK(u.inertia_cg_kgm2 == Approx(block::uniform_inertia_cg_kgm2(1.0, 0.2, 0.5)));
 }
+
+}  // namespace freestand_test_cli_test_options

@@ -7,6 +7,9 @@
 #include "core/readers.hpp"
 #include "core/units.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_at2 {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -89,3 +92,5 @@ TEST_CASE("AT2 reader refuses an overlong header line instead of overflowing the
         CHECK(std::string(e.what()).find(":4: line is 50021 characters long") != std::string::npos);
     }
 }
+
+}  // namespace freestand_test_core_test_at2

@@ -15,6 +15,9 @@
 #include "core/errors.hpp"
 #include "core/sha256.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_content_store {
+
 namespace fs = std::filesystem;
 using freestand::core::ContentStore;
 
@@ -204,3 +207,5 @@ TEST_CASE("FREESTAND_CACHE_MAX_MB sets the bound; anything but a whole MiB count
     CHECK(freestand::core::cache_max_bytes_from_environment() ==
           freestand::core::default_cache_max_bytes);
 }
+
+}  // namespace freestand_test_core_test_content_store

@@ -10,6 +10,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_contract {
+
 TEST_CASE("a violated contract aborts; a kept one does nothing", "[core][contract]") {
     FREESTAND_EXPECT(1 + 1 == 2, "arithmetic");
     const pid_t child = ::fork();
@@ -24,3 +27,5 @@ TEST_CASE("a violated contract aborts; a kept one does nothing", "[core][contrac
     CHECK(WIFSIGNALED(status));
     CHECK(WTERMSIG(status) == SIGABRT);
 }
+
+}  // namespace freestand_test_core_test_contract

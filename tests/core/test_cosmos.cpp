@@ -8,6 +8,9 @@
 #include "core/readers.hpp"
 #include "core/units.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_cosmos {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using Catch::Contains;
@@ -172,3 +175,5 @@ TEST_CASE("COSMOS V2 reader refuses overlong lines instead of overflowing the st
         CHECK_THAT(e.what(), Contains("characters long; this record format has lines of about 80"));
     }
 }
+
+}  // namespace freestand_test_core_test_cosmos

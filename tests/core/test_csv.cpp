@@ -13,6 +13,9 @@
 #include "core/readers.hpp"
 #include "core/units.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_csv {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using Catch::Contains;
@@ -294,3 +297,5 @@ TEST_CASE("write_csv_g refuses an invalid record", "[core][csv]") {
     CHECK_THROWS_WITH(core::write_csv_g(rec, out), Contains("bad-record: sample 1 is not a finite number"));
     CHECK_FALSE(fs::exists(out));
 }
+
+}  // namespace freestand_test_core_test_csv

@@ -4,6 +4,9 @@
 #include "core/csv_table.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_csv_table {
+
 using namespace freestand;
 using Catch::Contains;
 
@@ -59,3 +62,5 @@ TEST_CASE("csv_field quotes what RFC 4180 requires and round-trips", "[core][csv
     CHECK(back[1].fields == fields);
     CHECK(back[1].line == 3);
 }
+
+}  // namespace freestand_test_core_test_csv_table

@@ -5,6 +5,9 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_file_io {
+
 using namespace freestand;
 
 TEST_CASE("write_file_atomic refuses a file read as an input, under any spelling of its path",
@@ -46,3 +49,5 @@ TEST_CASE("an input beyond 512 MiB is refused: a large file before reading, an e
                                         "README, Limits)"));
     std::filesystem::remove_all(dir);
 }
+
+}  // namespace freestand_test_core_test_file_io

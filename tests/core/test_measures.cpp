@@ -8,6 +8,9 @@
 #include "core/readers.hpp"
 #include "core/units.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_measures {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -171,3 +174,5 @@ TEST_CASE("Measures of the shipped records agree with independent sums", "[core]
         CHECK(gm.d5_95_s < rec.duration_s());
     }
 }
+
+}  // namespace freestand_test_core_test_measures

@@ -11,6 +11,9 @@
 #include <thread>
 #include <vector>
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_parallel {
+
 using freestand::core::parallel_for;
 
 TEST_CASE("parallel_for runs every item once, on as many threads as asked", "[core][parallel]") {
@@ -71,3 +74,5 @@ TEST_CASE("parallel_for reports progress on the caller's thread, ending with all
     CHECK(reports.back() == 20);
     CHECK(std::is_sorted(reports.begin(), reports.end()));
 }
+
+}  // namespace freestand_test_core_test_parallel

@@ -16,6 +16,9 @@
 #include "core/publish.hpp"
 #include "support/special_files.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_publish {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using Catch::Contains;
@@ -271,3 +274,5 @@ TEST_CASE("publish_folder refuses sub-folders it cannot account for",
     CHECK_THROWS_AS(core::publish_folder(dir, {{"../b", "x"}}), std::invalid_argument);
     fs::remove_all(root);
 }
+
+}  // namespace freestand_test_core_test_publish

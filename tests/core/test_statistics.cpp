@@ -6,6 +6,9 @@
 
 #include "core/statistics.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_core_test_statistics {
+
 using namespace freestand::core;
 
 TEST_CASE("quantile interpolates between order statistics (type 7)", "[core][statistics]") {
@@ -39,3 +42,5 @@ TEST_CASE("Clopper-Pearson 95% intervals match the exact binomial tables", "[cor
     CHECK_THROWS_AS(clopper_pearson(3, 2), std::invalid_argument);
     CHECK_THROWS_AS(clopper_pearson(0, 0), std::invalid_argument);
 }
+
+}  // namespace freestand_test_core_test_statistics

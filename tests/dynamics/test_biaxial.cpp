@@ -16,6 +16,9 @@
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_biaxial {
+
 using namespace freestand;
 using dynamics::Integrator;
 
@@ -318,3 +321,5 @@ TEST_CASE("biaxial: a slow slip under El Centro x and y is settled quasi-statica
     CHECK(loose.summary.slide_max_m == Approx(tight.summary.slide_max_m).epsilon(1e-8));
     CHECK(loose.summary.slide_max_m > 0.02);
 }
+
+}  // namespace freestand_test_dynamics_test_biaxial

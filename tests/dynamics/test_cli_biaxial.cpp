@@ -9,6 +9,9 @@
 #include "support/run_cli.hpp"
 #include "support/special_files.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_cli_biaxial {
+
 using freestand::test::run_cli;
 
 TEST_CASE("simulate --sine-y prints the biaxial JSON fields", "[biaxial][cli]") {
@@ -82,3 +85,5 @@ TEST_CASE("simulate --sine-y refuses a block that would rock, and names bad flag
         CHECK(r.err.find(c.expect) != std::string::npos);
     }
 }
+
+}  // namespace freestand_test_dynamics_test_cli_biaxial

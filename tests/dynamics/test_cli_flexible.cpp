@@ -8,6 +8,9 @@
 #include "support/run_cli.hpp"
 #include "support/special_files.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_cli_flexible {
+
 using freestand::test::run_cli;
 
 TEST_CASE("simulate --flexible prints the modal peak, the uplift and its assumptions",
@@ -86,3 +89,5 @@ TEST_CASE("simulate --flexible names bad values", "[flexible][cli][errors]") {
         CHECK(r.err.find(c.expect) != std::string::npos);
     }
 }
+
+}  // namespace freestand_test_dynamics_test_cli_flexible

@@ -5,6 +5,9 @@
 
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_cli_pair {
+
 using freestand::test::run_cli;
 
 namespace {
@@ -71,3 +74,5 @@ TEST_CASE("simulate's second-unit options are refused naming the option", "[dyna
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("--motion-y: not available with a second unit") != std::string::npos);
 }
+
+}  // namespace freestand_test_dynamics_test_cli_pair

@@ -10,6 +10,9 @@
 #include "support/run_cli.hpp"
 #include "support/special_files.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_cli_simulate {
+
 using freestand::test::run_cli;
 namespace test = freestand::test;
 
@@ -157,3 +160,5 @@ TEST_CASE("simulate --out never replaces a FIFO, a device or a symlink", "[dynam
     CHECK(freestand::test::slurp(dir / "kept.csv") == "kept\n");
     fs::remove_all(dir);
 }
+
+}  // namespace freestand_test_dynamics_test_cli_simulate

@@ -6,6 +6,9 @@
 #include "support/paths.hpp"
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_convergence {
+
 using namespace freestand;
 using dynamics::Integrator;
 
@@ -202,3 +205,5 @@ TEST_CASE("event-driven answer unchanged when contact steps are capped below the
         check_same_answer(a, b, 1e-7);
     }
 }
+
+}  // namespace freestand_test_dynamics_test_convergence

@@ -5,6 +5,9 @@
 #include "core/errors.hpp"
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_errors {
+
 using namespace freestand;
 using Catch::Matchers::Message;
 
@@ -56,3 +59,5 @@ TEST_CASE("simulate rejects inconsistent inputs and settings", "[dynamics][error
                          InputError,
                          Message("top_height_m: top height must be >= the CG height 0.6 m; got 0.5"));
 }
+
+}  // namespace freestand_test_dynamics_test_errors

@@ -4,6 +4,9 @@
 
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_exact {
+
 using namespace freestand;
 using dynamics::Integrator;
 
@@ -169,3 +172,5 @@ TEST_CASE("free rocking: output samples from the dense output conserve energy",
     INFO("worst relative energy drift " << worst);
     CHECK(worst < 1e-8);  // measured 8.9e-10 at the default rel_tol 1e-9
 }
+
+}  // namespace freestand_test_dynamics_test_exact

@@ -11,6 +11,9 @@
 #include "helpers.hpp"
 #include "spectra/response.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_flexible {
+
 using namespace freestand;
 using Catch::Matchers::Message;
 
@@ -254,3 +257,5 @@ TEST_CASE("strong rocking of the flexible body converges with the tolerance",
         }
     }
 }
+
+}  // namespace freestand_test_dynamics_test_flexible

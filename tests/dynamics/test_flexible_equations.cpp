@@ -12,6 +12,9 @@
 
 #include "dynamics/flexible_detail.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_flexible_equations {
+
 using namespace freestand;
 using namespace freestand::dynamics::detail;
 
@@ -426,3 +429,5 @@ TEST_CASE("the exact flat slide agrees with Dormand-Prince on the slide's equati
     CHECK(exact.modal_max_m == Approx(stepped.modal_max_m).epsilon(1e-7));
     CHECK(exact.base.mode_changes == stepped.base.mode_changes);
 }
+
+}  // namespace freestand_test_dynamics_test_flexible_equations

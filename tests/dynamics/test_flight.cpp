@@ -6,6 +6,9 @@
 
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_flight {
+
 using namespace freestand;
 using dynamics::Integrator;
 
@@ -89,3 +92,5 @@ TEST_CASE("flight under -1.5 g lands at the closed-form time, whatever the frict
         CHECK(cd.summary.slide_residual_m == Approx(std::abs(x_land)).epsilon(1e-3));
     }
 }
+
+}  // namespace freestand_test_dynamics_test_flight

@@ -9,6 +9,9 @@
 #include "core/errors.hpp"
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_hard {
+
 using namespace freestand;
 using dynamics::Integrator;
 using dynamics::Mode;
@@ -218,3 +221,5 @@ TEST_CASE("a rock onset that only grazes g tan(alpha) settles and time goes on",
     CHECK(r.summary.rock_max_rad < 1e-3);
     CHECK(r.series.back().time_s >= 9.4 - 9.0 - 1e-9);
 }
+
+}  // namespace freestand_test_dynamics_test_hard

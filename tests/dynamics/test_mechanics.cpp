@@ -6,6 +6,9 @@
 #include "dynamics/mechanics.hpp"
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_mechanics {
+
 using namespace freestand;
 using namespace freestand::dynamics::detail;
 using dynamics::Mode;
@@ -159,3 +162,5 @@ TEST_CASE("slide-rock accelerations satisfy the three rows of the contact system
         }
     }
 }
+
+}  // namespace freestand_test_dynamics_test_mechanics

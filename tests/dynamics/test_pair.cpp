@@ -8,6 +8,9 @@
 #include "dynamics/helpers.hpp"
 #include "dynamics/pair.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_pair {
+
 using namespace freestand;
 
 namespace {
@@ -116,3 +119,5 @@ TEST_CASE("pair: bad tunnel height or refinement is refused naming it", "[pair][
     CHECK_THROWS_MATCHES(dynamics::simulate_pair({u, u}, ex, at_height(1.0, 0)), InputError,
                          Catch::Matchers::Message("refine: must be a whole number >= 1; got 0"));
 }
+
+}  // namespace freestand_test_dynamics_test_pair

@@ -10,6 +10,9 @@
 
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_randomized {
+
 using namespace freestand;
 
 namespace {
@@ -61,3 +64,5 @@ TEST_CASE("randomized blocks and inputs complete with finite results", "[dynamic
         }
     }
 }
+
+}  // namespace freestand_test_dynamics_test_randomized

@@ -8,6 +8,9 @@
 #include "support/paths.hpp"
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_records {
+
 using namespace freestand;
 using dynamics::Integrator;
 
@@ -40,3 +43,5 @@ TEST_CASE("shipped records: event-driven and central difference agree", "[dynami
         }
     }
 }
+
+}  // namespace freestand_test_dynamics_test_records

@@ -9,6 +9,9 @@
 #include "dynamics/taylor.hpp"
 #include "helpers.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_taylor {
+
 using namespace freestand;
 using namespace freestand::dynamics::detail;
 using dynamics::Mode;
@@ -227,3 +230,5 @@ TEST_CASE("impact search: a short excursion just off an edge is bracketed on its
     S.th[2] = -1e-30;
     CHECK_FALSE(zero_bracket(S.theta_poly(), 0.005, 1e-14).found);
 }
+
+}  // namespace freestand_test_dynamics_test_taylor

@@ -7,6 +7,9 @@
 #include "core/statistics.hpp"
 #include "fragility/fit.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_fragility_test_fit {
+
 using namespace freestand;
 using fragility::fit_lognormal;
 
@@ -75,3 +78,5 @@ TEST_CASE("no fit without a curve to fit, and the note says why", "[fragility][f
                Catch::Contains("do not increase"));
     CHECK_THAT(fit_lognormal({0.3}, {4}, {10}).note, Catch::Contains("at least two levels"));
 }
+
+}  // namespace freestand_test_fragility_test_fit

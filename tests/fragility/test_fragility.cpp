@@ -9,6 +9,9 @@
 #include "fragility/fragility.hpp"
 #include "support/sliding_sine.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_fragility_test_fragility {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -154,3 +157,5 @@ TEST_CASE("fragility inputs are refused at their field", "[fragility][errors]") 
     cfg.pool = 0;
     CHECK_THROWS_WITH(fragility::validate(cfg), Catch::Contains("pool"));
 }
+
+}  // namespace freestand_test_fragility_test_fragility

@@ -10,6 +10,9 @@
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_fragility_test_fragility_cli {
+
 namespace fs = std::filesystem;
 using freestand::test::run_cli;
 using freestand::test::slurp;
@@ -246,3 +249,5 @@ TEST_CASE("on a terminal, a fragility run longer than a second draws a progress 
                          "' 2>&1").c_str()) == 0);
     CHECK(slurp(pty_text).find("samples") == std::string::npos);
 }
+
+}  // namespace freestand_test_fragility_test_fragility_cli

@@ -5,6 +5,9 @@
 #include "core/errors.hpp"
 #include "fragility/fragility.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_fragility_test_joined_refused {
+
 using namespace freestand;
 
 TEST_CASE("fragility refuses two joined units", "[fragility][joined][errors]") {
@@ -21,3 +24,5 @@ TEST_CASE("fragility refuses two joined units", "[fragility][joined][errors]") {
                          Catch::Matchers::Message("pair.toml: unit: the fragility analysis takes "
                                                   "one component, not two [[unit]] tables"));
 }
+
+}  // namespace freestand_test_fragility_test_joined_refused

@@ -14,6 +14,9 @@
 #include "dynamics/biaxial.hpp"
 #include "fragility/fragility.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_fragility_test_models {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -121,3 +124,5 @@ TEST_CASE("a sample that only slides takes its slide from biaxial sliding", "[fr
     }
     fs::remove_all(dir);
 }
+
+}  // namespace freestand_test_fragility_test_models

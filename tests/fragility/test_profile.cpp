@@ -8,6 +8,9 @@
 #include "core/statistics.hpp"
 #include "fragility/fit.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_fragility_test_profile {
+
 using namespace freestand;
 using fragility::probability_at;
 
@@ -101,3 +104,5 @@ TEST_CASE("probability_at refuses bad arguments", "[fragility][profile][errors]"
     CHECK_THROWS_AS(probability_at({0.1}, {0}, {10}, 0.0), std::invalid_argument);
     CHECK_THROWS_AS(probability_at({0.1}, {0}, {0}, 0.1), std::invalid_argument);
 }
+
+}  // namespace freestand_test_fragility_test_profile

@@ -12,6 +12,9 @@
 #include "support/goal_cases.hpp"
 #include "support/paths.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_goal_test_goal {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using goal::PerformanceGoal;
@@ -200,3 +203,5 @@ TEST_CASE("the goal needs a DBE and one component", "[goal][errors]") {
     joined.site.dbe_pga_g = 0.2;
     CHECK_THROWS_WITH(goal::evaluate_goal(joined), Catch::Contains("one component"));
 }
+
+}  // namespace freestand_test_goal_test_goal

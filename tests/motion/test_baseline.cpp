@@ -11,6 +11,9 @@
 #include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_baseline {
+
 using namespace freestand;
 
 namespace {
@@ -131,3 +134,5 @@ TEST_CASE("a shared corrector corrects as a fresh one, bit for bit, from several
     CHECK(again == fresh);
     for (const auto& a : out) CHECK(a == fresh);
 }
+
+}  // namespace freestand_test_motion_test_baseline

@@ -9,6 +9,9 @@
 #include "core/readers.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_cli_generate {
+
 using freestand::test::run_cli;
 using freestand::test::slurp;
 namespace fs = std::filesystem;
@@ -225,3 +228,5 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
     CHECK_THAT(r.err, Catch::Contains("damping 0.02"));
     fs::remove_all(out);
 }
+
+}  // namespace freestand_test_motion_test_cli_generate

@@ -7,6 +7,9 @@
 #include "motion/motion.hpp"
 #include "spectra/design.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_errors {
+
 using namespace freestand;
 using Catch::Contains;
 
@@ -151,3 +154,5 @@ TEST_CASE("RG 1.60's vertical target: its own spectrum, scaled to a ZPA ratio up
         motion::rg160_vertical_target(0.3, 0.0, f), InputError,
         Catch::Message("vertical_ratio: value 0 is out of range; expected (0, 2]"));
 }
+
+}  // namespace freestand_test_motion_test_errors

@@ -11,6 +11,9 @@
 #include "core/random.hpp"
 #include "motion/fft.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_fft {
+
 using namespace freestand;
 using namespace freestand::motion;
 
@@ -92,3 +95,5 @@ TEST_CASE("RealFft zero-pads, cuts and round-trips as documented", "[motion][fft
     CHECK(fft_size(4001) == 4050);
     CHECK(fft_size(40000) == 40000);
 }
+
+}  // namespace freestand_test_motion_test_fft

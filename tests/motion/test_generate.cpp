@@ -10,6 +10,9 @@
 #include "own_check.hpp"
 #include "spectra/design.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_generate {
+
 using namespace freestand;
 
 namespace {
@@ -231,3 +234,5 @@ TEST_CASE("correlated components are reported failing with the pair named", "[mo
     REQUIRE_FALSE(s.notes.empty());
     CHECK_THAT(s.notes.back(), Catch::Contains("h1-h2: |rho| = ") && Catch::Contains("> 0.16"));
 }
+
+}  // namespace freestand_test_motion_test_generate

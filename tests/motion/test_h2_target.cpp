@@ -5,6 +5,9 @@
 #include "motion/motion.hpp"
 #include "own_check.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_h2_target {
+
 using namespace freestand;
 
 TEST_CASE("h2 matches horizontal_2 when it is set, h1 still matches horizontal",
@@ -37,3 +40,5 @@ TEST_CASE("horizontal_2 equal to horizontal reproduces the unset records byte fo
     for (std::size_t i = 0; i < a.components.size(); ++i)
         CHECK(a.components[i].record.accel_mps2 == b.components[i].record.accel_mps2);
 }
+
+}  // namespace freestand_test_motion_test_h2_target

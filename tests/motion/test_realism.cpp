@@ -9,6 +9,9 @@
 #include "own_check.hpp"
 #include "spectra/design.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_realism {
+
 using namespace freestand;
 using Catch::Contains;
 
@@ -175,3 +178,5 @@ TEST_CASE("the synthetic seed's peaks are clipped into the PGA band before match
         CHECK(pga_over_zpa > 0.9);
     }
 }
+
+}  // namespace freestand_test_motion_test_realism

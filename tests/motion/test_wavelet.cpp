@@ -15,6 +15,9 @@
 #include "motion/internal.hpp"
 #include "motion/wavelet.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_motion_test_wavelet {
+
 using namespace freestand;
 using namespace freestand::motion;
 
@@ -351,3 +354,5 @@ TEST_CASE("record PSD: white noise gives sigma^2 dt / pi per rad/s", "[motion][p
         CHECK(s[i] == Approx(sigma * sigma * r.dt_s / M_PI).epsilon(0.10));
     }
 }
+
+}  // namespace freestand_test_motion_test_wavelet

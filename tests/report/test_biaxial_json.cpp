@@ -8,6 +8,9 @@
 #include "assess/pipeline.hpp"
 #include "report/json.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_report_test_biaxial_json {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
@@ -54,3 +57,5 @@ TEST_CASE("result.json: biaxial is null unsimulated and empty where the block ro
     CHECK(b.at("ratio_to_planar").is_null());
     CHECK(b.at("reason").get<std::string>().find("mode rock") != std::string::npos);
 }
+
+}  // namespace freestand_test_report_test_biaxial_json

@@ -16,6 +16,9 @@
 #include "report/render.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_report_test_citations {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -240,3 +243,5 @@ TEST_CASE("the validation report cites docs/methods.md and the thesis and lists 
         }
     }
 }
+
+}  // namespace freestand_test_report_test_citations

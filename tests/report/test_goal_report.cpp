@@ -8,6 +8,9 @@
 #include "report/render.hpp"
 #include "support/goal_cases.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_report_test_goal_report {
+
 using namespace freestand;
 
 namespace {
@@ -114,3 +117,5 @@ TEST_CASE("the reports carry the goal's section and a goal headline", "[report][
     const report::Rendered plain = report::render(a.result, a.stamp);
     CHECK_THAT(plain.markdown, !Catch::Contains("Performance goal (ASCE"));
 }
+
+}  // namespace freestand_test_report_test_goal_report

@@ -12,6 +12,9 @@
 #include "report/run.hpp"
 #include "core/errors.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_report_test_joined_report {
+
 using namespace freestand;
 
 namespace {
@@ -74,3 +77,5 @@ TEST_CASE("joined report: a batch row and a fragility section are refused for tw
                              "fragility analysis takes one component)"));
     std::filesystem::remove(file);
 }
+
+}  // namespace freestand_test_report_test_joined_report

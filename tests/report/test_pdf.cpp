@@ -15,6 +15,9 @@
 #include "report/pdf.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_report_test_pdf {
+
 namespace fs = std::filesystem;
 using freestand::test::run_cli;
 using freestand::test::slurp;
@@ -174,3 +177,5 @@ TEST_CASE("fragility --pdf writes report.pdf, and with --shard is a usage error"
     CHECK(slurp(out / "report.pdf").rfind("%PDF-", 0) == 0);
     CHECK(fs::exists(out / "fragility.json"));
 }
+
+}  // namespace freestand_test_report_test_pdf

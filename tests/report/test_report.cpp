@@ -22,6 +22,9 @@
 #include "support/run_cli.hpp"
 #include "support/special_files.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_report_test_report {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::report;
@@ -802,3 +805,5 @@ TEST_CASE("a flexible-body simulation appears in result.json and beside the rigi
     CHECK(out.markdown.find("| 0.200 | y | flexible body, 7.5 Hz (decides) |") != std::string::npos);
     CHECK(out.html.find("flexible body, 7.5 Hz (decides)") != std::string::npos);
 }
+
+}  // namespace freestand_test_report_test_report

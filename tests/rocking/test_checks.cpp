@@ -6,6 +6,9 @@
 #include "core/errors.hpp"
 #include "rocking/checks.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_rocking_test_checks {
+
 using freestand::block::Block;
 using freestand::block::Edge;
 using namespace freestand::rocking;
@@ -69,3 +72,5 @@ TEST_CASE("acceleration amplification warnings by mode", "[rocking][checks]") {
     CHECK(amplification_warning(Mode::slide_rock, 0.3, 1.0).find("1.3 to 11") != std::string::npos);
     CHECK(amplification_warning(Mode::slide, 0.15, 0.3).find("mu / A = 0.5") != std::string::npos);
 }
+
+}  // namespace freestand_test_rocking_test_checks

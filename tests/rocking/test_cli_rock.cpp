@@ -8,6 +8,9 @@
 
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_rocking_test_cli_rock {
+
 using freestand::test::run_cli;
 using nlohmann::json;
 
@@ -141,3 +144,5 @@ TEST_CASE("rock: range errors name the option as typed", "[rocking][cli]") {
         CHECK(r.err.find(c.message) != std::string::npos);
     }
 }
+
+}  // namespace freestand_test_rocking_test_cli_rock

@@ -11,6 +11,9 @@
 #include "spectra/design.hpp"
 #include "spectra/response.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_rocking_test_design_targets {
+
 using freestand::block::Block;
 using freestand::block::Edge;
 using namespace freestand;
@@ -77,3 +80,5 @@ TEST_CASE("SA_VH computed from two records combines the larger and 0.4 x the sma
         CHECK(v.psa_g[i] == Approx(std::sqrt(hi * hi + 0.16 * lo * lo)).epsilon(1e-9));
     }
 }
+
+}  // namespace freestand_test_rocking_test_design_targets

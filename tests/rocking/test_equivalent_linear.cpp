@@ -7,6 +7,9 @@
 #include "core/errors.hpp"
 #include "rocking/equivalent_linear.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_rocking_test_equivalent_linear {
+
 using freestand::block::Block;
 using freestand::block::Edge;
 using freestand::spectra::Spectrum;
@@ -253,3 +256,5 @@ TEST_CASE("asymmetric block: each edge estimated, the smaller margin governs", "
     CHECK(*r.right.spectral_margin == Approx(4.0).epsilon(2e-6));
     CHECK(*r.left.theta0_rad > *r.right.theta0_rad);
 }
+
+}  // namespace freestand_test_rocking_test_equivalent_linear

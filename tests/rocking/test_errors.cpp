@@ -7,6 +7,9 @@
 #include "rocking/flexible.hpp"
 #include "rocking/summary.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_rocking_test_errors {
+
 using freestand::block::Block;
 using freestand::block::Edge;
 using freestand::spectra::Spectrum;
@@ -89,3 +92,5 @@ TEST_CASE("the PGA defaults to the spectrum's last point, with a caution below 3
     in.pga_h_g = 0.2;
     CHECK(rocking_checks(blk, in).pga_h_source == "given");
 }
+
+}  // namespace freestand_test_rocking_test_errors

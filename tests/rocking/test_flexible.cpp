@@ -4,6 +4,9 @@
 #include "core/errors.hpp"
 #include "rocking/flexible.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_rocking_test_flexible {
+
 using freestand::spectra::Spectrum;
 using namespace freestand::rocking;
 
@@ -105,3 +108,5 @@ TEST_CASE("rigid bodies and band input errors", "[rocking][flexible]") {
     CHECK_THROWS_WITH(flexible_screen(peaked(), fixed_base(-1.0, 0.25, 0.1)),
                       Catch::Contains("fixed-base frequency"));
 }
+
+}  // namespace freestand_test_rocking_test_flexible

@@ -7,6 +7,9 @@
 #include "sliding/asce.hpp"
 #include "sliding/spectrum_input.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_sliding_test_asce {
+
 using namespace freestand::sliding;
 using freestand::spectra::Spectrum;
 
@@ -180,3 +183,5 @@ TEST_CASE("SA_VH of two components and damping checks", "[sliding][asce]") {
                       Catch::Contains("damping") && Catch::Contains("expected 0.1"));
     CHECK_THROWS_WITH(vector_horizontal({}, 0.10), Catch::Contains("expected 1 or 2"));
 }
+
+}  // namespace freestand_test_sliding_test_asce

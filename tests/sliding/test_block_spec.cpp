@@ -4,6 +4,9 @@
 #include "sliding/asce.hpp"
 #include "sliding/block_spec.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_sliding_test_block_spec {
+
 using freestand::InputError;
 using freestand::block::Edge;
 using namespace freestand::sliding;
@@ -57,3 +60,5 @@ TEST_CASE("sliding helper error paths", "[sliding][asce]") {
     in.pga_h_g = -0.1;
     CHECK_THROWS_WITH(estimate_sliding(in, 1.0), Catch::Contains("pga_h_g"));
 }
+
+}  // namespace freestand_test_sliding_test_block_spec

@@ -7,6 +7,9 @@
 
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_sliding_test_cli_sliding {
+
 using freestand::test::run_cli;
 using nlohmann::json;
 
@@ -165,3 +168,5 @@ TEST_CASE("slide: bad spectra and options are clear errors", "[sliding][cli]") {
     CHECK(r.err.find("--fes-hz: expected a finite number; got \"nan\"") != std::string::npos);
     CHECK(r.out.empty());
 }
+
+}  // namespace freestand_test_sliding_test_cli_sliding

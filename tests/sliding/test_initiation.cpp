@@ -6,6 +6,9 @@
 #include "core/errors.hpp"
 #include "sliding/initiation.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_sliding_test_initiation {
+
 using freestand::block::Block;
 using freestand::block::Edge;
 using namespace freestand::sliding;
@@ -163,3 +166,5 @@ TEST_CASE("mode and criterion names", "[sliding][initiation]") {
     CHECK(describe(Criterion::friction_fails_at_uplift) ==
           "A > tan(alpha) and tan(alpha) < mu_s < mu_crit(A)");
 }
+
+}  // namespace freestand_test_sliding_test_initiation

@@ -8,6 +8,9 @@
 #include "core/errors.hpp"
 #include "sliding/table_displacement.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_sliding_test_table_displacement {
+
 using namespace freestand;
 
 namespace {
@@ -95,3 +98,5 @@ TEST_CASE("a corner outside (0, Nyquist) is an input error naming the key",
         }
     }
 }
+
+}  // namespace freestand_test_sliding_test_table_displacement

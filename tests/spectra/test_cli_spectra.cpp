@@ -15,6 +15,9 @@
 #include "spectra/spectrum.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_spectra_test_cli_spectra {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using test::run_cli;
@@ -213,3 +216,5 @@ TEST_CASE("spectrum and target print help and exit 0", "[spectra][cli]") {
         CHECK_THAT(r.out, Catch::Contains("--damping"));
     }
 }
+
+}  // namespace freestand_test_spectra_test_cli_spectra

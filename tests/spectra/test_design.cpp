@@ -6,6 +6,9 @@
 #include "core/errors.hpp"
 #include "spectra/design.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_spectra_test_design {
+
 using namespace freestand;
 
 namespace {
@@ -183,3 +186,5 @@ TEST_CASE("RG 1.60 target PSD: SRP 3.7.1 App. A branches, PGA^2 scaling, per-Hz 
     CHECK_THROWS_WITH(spectra::rg160_target_psd(0.0, 0.3),
                       Catch::Contains("f_hz: value 0 must be"));
 }
+
+}  // namespace freestand_test_spectra_test_design

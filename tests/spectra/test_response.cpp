@@ -14,6 +14,9 @@
 #include "spectra/response.hpp"
 #include "support/paths.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_spectra_test_response {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 using freestand::units::pi;
@@ -392,3 +395,5 @@ TEST_CASE("an OscillatorSet rejects bad set-up values and a record of another ti
                                       "these oscillators were set up for dt 0.01 s"));
     CHECK_THROWS_WITH(set.sd_m(make_record(0.01, 1, step_load)), Catch::Contains("1 sample"));
 }
+
+}  // namespace freestand_test_spectra_test_response

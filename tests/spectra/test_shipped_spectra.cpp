@@ -13,6 +13,9 @@
 #include "spectra/design.hpp"
 #include "spectra/spectrum.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_spectra_test_shipped_spectra {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -89,3 +92,5 @@ TEST_CASE("every shipped target file equals the library spectrum, 0.1-100 Hz at 
     }
     CHECK(csv_files == expected.size());
 }
+
+}  // namespace freestand_test_spectra_test_shipped_spectra

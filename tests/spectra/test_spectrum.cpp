@@ -10,6 +10,9 @@
 #include "core/file_io.hpp"
 #include "spectra/spectrum.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_spectra_test_spectrum {
+
 namespace fs = std::filesystem;
 using namespace freestand;
 
@@ -190,3 +193,5 @@ TEST_CASE("vector horizontal: sqrt(SA_big^2 + 0.16 SA_small^2) per frequency",
     CHECK_THROWS_WITH(spectra::combine_vector_horizontal(h1, h2),
                       Catch::Contains("damping: cannot combine spectra at dampings 0.05 and 0.1"));
 }
+
+}  // namespace freestand_test_spectra_test_spectrum

@@ -12,6 +12,9 @@
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_validate_test_cli_validate {
+
 namespace fs = std::filesystem;
 using freestand::test::run_cli;
 using freestand::test::slurp;
@@ -149,3 +152,5 @@ TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][
     CHECK_THAT(drift.out, Catch::Contains("MISSING glovebox-pair-unbraced: no golden "));
     fs::remove_all(dir);
 }
+
+}  // namespace freestand_test_validate_test_cli_validate

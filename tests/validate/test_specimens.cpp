@@ -10,6 +10,9 @@
 #include "validate/specimens.hpp"
 #include "validate/thesis.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_validate_test_specimens {
+
 using namespace freestand;
 using namespace freestand::validate;
 
@@ -151,3 +154,5 @@ TEST_CASE("Table 3-4: six runs, X_s and just below, 11 frequencies", "[validate]
     }
     CHECK(rest_frequencies_hz() == std::vector<double>{0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
 }
+
+}  // namespace freestand_test_validate_test_specimens

@@ -12,6 +12,9 @@
 #include "support/paths.hpp"
 #include "validate/thesis.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_validate_test_thesis {
+
 namespace fs = std::filesystem;
 using namespace freestand::validate;
 
@@ -121,3 +124,5 @@ TEST_CASE("the excerpt is the shared thesis's own text", "[.shared]") {
         CHECK(thesis[static_cast<std::size_t>(number) - 1] == text);
     }
 }
+
+}  // namespace freestand_test_validate_test_thesis

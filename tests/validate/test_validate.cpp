@@ -15,6 +15,9 @@
 #include "validate/specimens.hpp"
 #include "validate/validate.hpp"
 
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_validate_test_validate {
+
 namespace fs = std::filesystem;
 using namespace freestand::validate;
 
@@ -343,3 +346,5 @@ TEST_CASE("glove-box sliding: ASCE 4 at 0.1 g, the pair at 0.4 g and the braced 
           low.sources.end());
     CHECK(row("braced-pair-integrity-0.4g").agreement == Agreement::agrees);
 }
+
+}  // namespace freestand_test_validate_test_validate
