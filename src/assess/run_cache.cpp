@@ -25,6 +25,7 @@ void write_head(core::ByteWriter& w, std::string_view kind) {
     w.text("freestand run");
     w.u64(format_version);
     w.text(kind);
+    w.text(engine_version);
     motion::append_build_fingerprint(w);
 }
 

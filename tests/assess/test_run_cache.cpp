@@ -6,9 +6,13 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "assess/run_cache.hpp"
 #include "block/block.hpp"
+#include "core/sha256.hpp"
+#include "core/version.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_assess_test_run_cache {
@@ -169,6 +173,39 @@ TEST_CASE("a bank keeps one key per excitation, the key of its numbers", "[asses
     CHECK(keys.of(1, 0, 0.3, b) == excitation_key(b));
     CHECK(keys.of(0, 0, 0.4, b) == excitation_key(b));
     CHECK(excitation_key(a) != excitation_key(b));
+}
+
+TEST_CASE("the engines' runs of reference scenes are unchanged at this engine_version",
+          "[assess][cache][runs]") {
+    // A change of the digest means a run's summary changed: raise engine_version (so no cache
+    // serves an old engine's run) and update the version and the digests here. One digest per
+    // preset that runs the tests (another compiler rounds differently; the key holds the build).
+    CHECK(std::string(engine_version) == "1");
+    const dynamics::Options o = quiet();
+    const dynamics::Excitation ex = sine(0.5);
+    dynamics::Summary rigid = dynamics::simulate(slender(), ex, o).summary;
+    rigid.wall_s = 0.0;
+    dynamics::FlexibleSummary flex =
+        dynamics::simulate_flexible(dynamics::make_flexible_model(slender(), mode_at(8.0)), ex, o)
+            .summary;
+    flex.base.wall_s = 0.0;
+    dynamics::Options bo = dynamics::biaxial_options();
+    bo.record_series = false;
+    const double peak =
+        dynamics::simulate_biaxial(dynamics::make_biaxial_model(0.3),
+                                   dynamics::biaxial_sine_excitation(sine_spec(0.5), 90.0), bo)
+            .summary.slide_max_m;
+    const std::string digest =
+        core::sha256_hex(encode_summary(rigid) + encode_flexible_summary(flex) +
+                         std::string(reinterpret_cast<const char*>(&peak), sizeof peak));
+    const std::map<std::string, std::string> digests{
+        {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "dc2e34851a4bd51b1b42552392867ee1626aeb83d53a42c9f34c56c2bcd95f50"},
+        {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "dc2e34851a4bd51b1b42552392867ee1626aeb83d53a42c9f34c56c2bcd95f50"},
+    };
+    const std::string build = core::build_identity();
+    INFO("build " << build << ": digest " << digest);
+    REQUIRE(digests.count(build) == 1);  // a new build: add its digest above
+    CHECK(digest == digests.at(build));
 }
 
 }  // namespace freestand_test_assess_test_run_cache
