@@ -208,12 +208,7 @@ TunnelLevel tunnel_level(const Case& c, std::size_t level, HistoryBank& bank) {
     bank.use(first);
     t.text = level_text(t, *c.tunnel);
     if (!t.settling.settled) {
-        const double pass_share =
-            t.passes ? t.settling.settled_fraction : 1.0 - t.settling.settled_fraction;
-        t.text = fmt::format("not settled: {:.0f}% of {} resamples pass at N = {} (cap; {:.0f}% "
-                             "needed either way); on all sets {}",
-                             100.0 * pass_share, t.settling.resamples, t.settling.n_sets,
-                             100.0 * settle_agreement, t.text);
+        t.text = fmt::format("{}; on all sets {}", not_settled_text(t.settling, t.passes), t.text);
         t.passes = false;
     }
     return t;

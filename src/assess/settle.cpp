@@ -49,17 +49,13 @@ std::size_t draw_index(std::uint64_t bits, std::size_t n) {
 
 // The level marked as failing for want of settling, with the agreeing share in words.
 void fail_unsettled(LevelResult& l) {
-    const Settling& s = *l.settling;
     const bool passed = passes(l.verdict);
-    const double pass_share = passed ? s.settled_fraction : 1.0 - s.settled_fraction;
     l.verdict.kind = VerdictKind::anchor;
     l.verdict.failure = Failure::not_settled;
     l.verdict.conditions.clear();
-    l.verdict.margin_basis = fmt::format(
-        "not settled: {:.0f}% of {} resamples pass at N = {} (cap; {:.0f}% needed either way); "
-        "the decision on all sets {} ({})",
-        100.0 * pass_share, s.resamples, s.n_sets, 100.0 * settle_agreement,
-        passed ? "passes" : "fails", l.verdict.margin_basis);
+    l.verdict.margin_basis =
+        fmt::format("{}; the decision on all sets {} ({})", not_settled_text(*l.settling, passed),
+                    passed ? "passes" : "fails", l.verdict.margin_basis);
 }
 
 std::string settling_line(const Settling& s) {
@@ -70,6 +66,13 @@ std::string settling_line(const Settling& s) {
 }
 
 }  // namespace
+
+std::string not_settled_text(const Settling& s, bool passed) {
+    const double pass_share = passed ? s.settled_fraction : 1.0 - s.settled_fraction;
+    return fmt::format("not settled: {:.0f}% of {} resamples pass at N = {} (cap; {:.0f}% needed "
+                       "either way)",
+                       100.0 * pass_share, s.resamples, s.n_sets, 100.0 * settle_agreement);
+}
 
 bool decided_by_sets(const LevelResult& level) {
     return level.flexible_simulation.has_value() ||

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "assess/case.hpp"
@@ -22,6 +23,10 @@ inline constexpr int bootstrap_resamples = 2000;
 inline constexpr double settle_agreement = 0.95;
 /// Sets an unsettled level gets per batch.
 inline constexpr int settle_batch_sets = 30;
+
+/// "not settled: P% of B resamples pass at N = n (cap; 95% needed either way)", P the share
+/// that passes, from a decision that passed or failed on all sets.
+std::string not_settled_text(const Settling& s, bool passed);
 
 /// True when the level's decision rests on its simulation (flexible-body model, or the screen
 /// failed and the rigid simulation ran): the decisions the sets can move.
