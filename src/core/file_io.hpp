@@ -24,7 +24,10 @@ void write_new_file(const std::filesystem::path& path, std::string_view contents
 
 /// Writes text to path atomically: a temporary file of a unique name beside it, then rename, so
 /// a reader never sees a half-written file and concurrent writers do not share a temporary.
-/// Creates missing parent directories. Throws IoError before writing anything if path is a
+/// Creates missing parent directories and removes the temporaries of path whose process died.
+/// A write stopped by the file-size limit (SIGXFSZ is ignored, so write() fails with EFBIG) is
+/// an IoError naming path, like any failed write, and leaves no temporary. Throws IoError
+/// before writing anything if path is a
 /// file read by read_input_file, or exists and is not a regular file (a device, a FIFO, a
 /// symlink, a folder: never replaced).
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
