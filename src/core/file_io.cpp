@@ -130,29 +130,29 @@ void write_new_file(const std::filesystem::path& path, std::string_view contents
 namespace {
 
 // The temporaries write_file_atomic names "<file>.freestand-tmp-<pid>-<n>": one whose process
-// has died (kill(pid, 0) finds none) was left by a killed run and is removed. A live process of
-// that id, another writer or a reused id, keeps its file.
+// has died was left by a killed run and is removed.
 void remove_dead_temporaries(const std::filesystem::path& path) {
     namespace fs = std::filesystem;
     const std::string prefix = path.filename().string() + ".freestand-tmp-";
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(folder, ec)) {
-        const std::string name = entry.path().filename().string();
-        if (name.rfind(prefix, 0) != 0) continue;
-        const std::string rest = name.substr(prefix.size());
-        const std::size_t dash = rest.find('-');
-        if (dash == 0 || dash == std::string::npos ||
-            rest.find_first_not_of("0123456789") != dash)
-            continue;
-        const long pid = std::stol(rest.substr(0, dash));
-        if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 &&
-            errno == ESRCH)
-            fs::remove(entry.path(), ec);
-    }
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+        if (left_by_dead_process(entry.path().filename().string(), prefix)) fs::remove(entry.path(), ec);
 }
 
 }  // namespace
+
+bool left_by_dead_process(std::string_view name, std::string_view prefix) {
+    if (name.substr(0, prefix.size()) != prefix) return false;
+    const std::string_view rest = name.substr(prefix.size());
+    const std::size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string_view::npos || dash > 9 ||
+        rest.find_first_not_of("0123456789") != dash)
+        return false;
+    const auto pid = static_cast<pid_t>(std::stol(std::string(rest.substr(0, dash))));
+    // kill(pid, 0) sends nothing: ESRCH says no process has the id (EPERM: one does).
+    return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
+}
 
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents) {
     namespace fs = std::filesystem;

@@ -32,4 +32,9 @@ void write_new_file(const std::filesystem::path& path, std::string_view contents
 /// symlink, a folder: never replaced).
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
 
+/// True when name is prefix followed by "<pid>-" and no process has that id: a file or folder
+/// named for the process that made it, left by a run that died. A live process of that id (its
+/// maker, or a reused id) and this process keep theirs.
+bool left_by_dead_process(std::string_view name, std::string_view prefix);
+
 }  // namespace freestand::core
