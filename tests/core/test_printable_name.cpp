@@ -11,7 +11,7 @@ namespace freestand_test_core_test_printable_name {
 
 using namespace freestand;
 
-TEST_CASE("a name is shown on one line: CR, LF and tab as \\r, \\n and \\t", "[core][printable]") {
+TEST_CASE("a name is shown on one line: CR, LF and tab escaped", "[core][printable]") {
     CHECK(core::printable_name("Glove box") == "Glove box");
     CHECK(core::printable_name("box\rPASS\nnext\tcol") == "box\\rPASS\\nnext\\tcol");
     CHECK(core::printable_name(std::string("a\x1b[2Jb\0c\x7f", 9)) == "a\\x1B[2Jb\\x00c\\x7F");
@@ -19,7 +19,7 @@ TEST_CASE("a name is shown on one line: CR, LF and tab as \\r, \\n and \\t", "[c
     CHECK(core::printable("line 1\nline 2\tx\ry") == "line 1\nline 2\tx\\x0Dy");
 }
 
-TEST_CASE("bidirectional formatting characters and C1 controls show as \\uXXXX",
+TEST_CASE("bidirectional formatting characters and C1 controls show as their code points",
           "[core][printable]") {
     // U+202E RIGHT-TO-LEFT OVERRIDE, U+2066 LEFT-TO-RIGHT ISOLATE, U+2069 POP DIRECTIONAL
     // ISOLATE, U+200F RIGHT-TO-LEFT MARK, U+061C ARABIC LETTER MARK, U+0085 NEXT LINE,

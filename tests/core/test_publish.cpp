@@ -239,7 +239,7 @@ TEST_CASE("left-overs of killed runs are cleaned by the next publish", "[core][i
     fs::remove_all(root);
 }
 
-TEST_CASE("a trailing slash names the same folder; '.' is the working folder, replaced in place",
+TEST_CASE("a trailing slash names the same folder, and '.' the working folder, replaced in place",
           "[core][io][publish]") {
     const fs::path root = fresh("slash");
     core::publish_folder(root.string() + "/new/", run_files("A"));
