@@ -82,6 +82,18 @@ TEST_CASE("a name's CR, LF and bidirectional override are shown in the headline,
     fs::remove_all(dir);
 }
 
+TEST_CASE("an output folder's CR is shown in the line naming it", "[report][cli][escape]") {
+    const fs::path dir = scratch("generate");
+    const fs::path out = dir / "sets\rDONE";
+    const auto r = freestand::test::run_cli("generate --target rg1.60 --pga 0.2 --out '" +
+                                            out.string() + "'");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("written to " + dir.string() + "/sets\\rDONE: "));
+    CHECK_FALSE(has_raw_line_control(r.out));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("assess --out . publishes into the working folder, --out DIR/ into DIR",
           "[report][cli][publish]") {
     const fs::path dir = scratch("dot");
