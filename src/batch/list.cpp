@@ -7,6 +7,7 @@
 
 #include "batch/list_detail.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/sha256.hpp"
 #include "report/summary.hpp"
 
@@ -67,10 +68,11 @@ void check_name(const std::string& name, const SourceLocation& where) {
                     std::isalnum(static_cast<unsigned char>(name[0])) &&
                     std::all_of(name.begin(), name.end(), name_char);
     if (!ok) {
+        // Quoted on one line: the name's line breaks and bidirectional overrides are shown.
         throw InputError(where, fmt::format("\"{}\" cannot name a report folder: use 1-{} letters, "
                                             "digits, '.', '_', '-' or '+', starting with a "
                                             "letter or digit",
-                                            name, max_name_chars));
+                                            core::printable_name(name), max_name_chars));
     }
     for (const std::string& s : report::summary_file_names()) {
         if (lower(name) == s)

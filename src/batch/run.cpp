@@ -126,14 +126,15 @@ void write_batch(const std::filesystem::path& dir, const BatchRun& run) {
 }
 
 std::string row_line(const report::SummaryRow& row) {
-    if (!row.outcome) return core::printable(fmt::format("{}: error: {}", row.name, row.error));
+    // One line per row: the name's line breaks and bidirectional overrides are shown, not obeyed.
+    if (!row.outcome) return core::printable_name(row.name) + ": error: " + core::printable(row.error);
     const report::SummaryOutcome& o = *row.outcome;
     std::string out = fmt::format("{}: {}: {} (governing {}, margin {}, decided by {})", row.name,
                                   o.component, o.verdict, o.governing_level, o.margin_text,
                                   o.decided_by);
     for (const std::string& c : o.open_conditions) out += "; open condition: " + c;
-    // Case text (a component's name, an error quoting a file) must not drive the terminal.
-    return core::printable(out);
+    // Case text (a component's name) must not drive the terminal.
+    return core::printable_name(out);
 }
 
 }  // namespace freestand::batch

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "core/errors.hpp"
+#include "core/printable.hpp"
 #include "report/summary.hpp"
 
 namespace freestand::cli {
@@ -18,7 +19,8 @@ int write_batch_outputs(const batch::BatchRun& run, const std::filesystem::path&
     } else {
         for (const report::SummaryRow& row : run.summary.rows)
             std::cout << batch::row_line(row) << "\n";
-        std::cout << fmt::format("wrote {}: {} components, {} failed{}\n", out.string(),
+        std::cout << fmt::format("wrote {}: {} components, {} failed{}\n",
+                                 core::printable_name(out.string()),
                                  run.summary.rows.size(), run.failed(), note);
     }
     return run.all_assessed() ? 0 : static_cast<int>(ExitCode::failure);

@@ -10,6 +10,7 @@
 #include "cli/options.hpp"
 #include "cli/run_options.hpp"
 #include "core/publish.hpp"
+#include "core/printable.hpp"
 #include "report/pdf.hpp"
 #include "report/run.hpp"
 
@@ -64,10 +65,10 @@ int run(const std::vector<std::string>& args) {
                                    g.pga_g.size() * static_cast<std::size_t>(g.samples));
     }
     std::cout << fmt::format("wrote {} ({} histories generated, {} simulations{}) in {:.2f} s\n",
-                             out.string(), r.result.histories_generated, r.result.simulations_run,
+                             core::printable_name(out.string()), r.result.histories_generated, r.result.simulations_run,
                              goal_samples, assess_s);
     if (converter) std::cout << fmt::format("report.pdf made by {} in {:.2f} s\n",
-                                            converter->string(), pdf_s);
+                                            core::printable_name(converter->string()), pdf_s);
     return 0;
 }
 

@@ -8,6 +8,7 @@
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "core/publish.hpp"
 #include "motion/motion.hpp"
@@ -40,7 +41,7 @@ int run(const std::vector<std::string>& args) {
     files.push_back({"match.json", j.dump(2) + "\n"});
     core::publish_folder(out, files);
     std::cout << fmt::format("{} component(s) written to {}: {}\n", set.components.size(),
-                             out.string(),
+                             core::printable_name(out.string()),
                              set.passed ? "all pass SRP 3.7.1 and the realism checks"
                                         : "FAILING, see match.json");
     return set.passed ? 0 : static_cast<int>(ExitCode::failure);

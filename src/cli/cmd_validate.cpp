@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "core/errors.hpp"
+#include "core/printable.hpp"
 #include "report/validation.hpp"
 #include "validate/validate.hpp"
 
@@ -49,7 +50,8 @@ int run(const std::vector<std::string>& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << ((*vm)["json"].as<bool>() ? rendered.json : report::validation_text(v));
     // Timing goes to stderr: stdout and the reports are byte-identical for the same inputs.
-    std::cerr << fmt::format("wrote {} ({} rows) in {:.2f} s\n", out.string(), v.rows.size(),
+    std::cerr << fmt::format("wrote {} ({} rows) in {:.2f} s\n", core::printable_name(out.string()),
+                             v.rows.size(),
                              run_s);
     return 0;
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "fragility/serialize.hpp"
 #include "report/fragility_report.hpp"
 #include "report/pdf.hpp"
@@ -29,8 +30,8 @@ void write_fragility_outputs(const fragility::Result& r, const report::Stamp& st
         return;
     }
     std::cout << fmt::format("{}: fragility over {} levels x {} samples written to {}\n",
-                             r.meta.case_name, r.levels.size(), r.meta.config.samples,
-                             out.string());
+                             core::printable_name(r.meta.case_name), r.levels.size(),
+                             r.meta.config.samples, core::printable_name(out.string()));
     for (std::size_t e = 0; e < fragility::all_events.size(); ++e) {
         const auto& f = r.fits[e];
         const char* name = fragility::event_name(fragility::all_events[e]);

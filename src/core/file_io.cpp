@@ -1,6 +1,7 @@
 #include "core/file_io.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -83,7 +84,32 @@ std::string read_input_file(const std::filesystem::path& path) {
     return text;
 }
 
+namespace {
+
+// A write beyond the file-size limit (RLIMIT_FSIZE, ulimit -f) raises SIGXFSZ, whose default
+// action ends the process before it can remove its temporary file. Ignored, the write fails
+// with EFBIG instead (POSIX write()), which is an IoError like any other failed write. A handler
+// the embedding process installed (Python's, say) is left as it is.
+void let_file_size_limit_fail_writes() {
+    static const bool done = [] {
+        struct sigaction current {};
+        if (::sigaction(SIGXFSZ, nullptr, &current) == 0 && current.sa_handler == SIG_DFL)
+            ::signal(SIGXFSZ, SIG_IGN);
+        return true;
+    }();
+    (void)done;
+}
+
+std::string write_failure(int err) {
+    std::string out = std::string("write failed: ") + std::strerror(err);
+    if (err == EFBIG) out += " (the file-size limit, ulimit -f, or the file system's largest file)";
+    return out;
+}
+
+}  // namespace
+
 void write_new_file(const std::filesystem::path& path, std::string_view contents) {
+    let_file_size_limit_fail_writes();
     const int fd =
         ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd < 0) throw IoError(path.string() + ": cannot create: " + std::strerror(errno));
@@ -94,11 +120,38 @@ void write_new_file(const std::filesystem::path& path, std::string_view contents
         if (n <= 0) {
             const int err = errno;
             ::close(fd);
-            throw IoError(path.string() + ": write failed: " + std::strerror(err));
+            throw IoError(path.string() + ": " + write_failure(n < 0 ? err : EIO));
         }
         done += static_cast<std::size_t>(n);
     }
-    if (::close(fd) != 0) throw IoError(path.string() + ": write failed: " + std::strerror(errno));
+    if (::close(fd) != 0) throw IoError(path.string() + ": " + write_failure(errno));
+}
+
+namespace {
+
+// The temporaries write_file_atomic names "<file>.freestand-tmp-<pid>-<n>": one whose process
+// has died was left by a killed run and is removed.
+void remove_dead_temporaries(const std::filesystem::path& path) {
+    namespace fs = std::filesystem;
+    const std::string prefix = path.filename().string() + ".freestand-tmp-";
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+        if (left_by_dead_process(entry.path().filename().string(), prefix)) fs::remove(entry.path(), ec);
+}
+
+}  // namespace
+
+bool left_by_dead_process(std::string_view name, std::string_view prefix) {
+    if (name.substr(0, prefix.size()) != prefix) return false;
+    const std::string_view rest = name.substr(prefix.size());
+    const std::size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string_view::npos || dash > 9 ||
+        rest.find_first_not_of("0123456789") != dash)
+        return false;
+    const auto pid = static_cast<pid_t>(std::stol(std::string(rest.substr(0, dash))));
+    // kill(pid, 0) sends nothing: ESRCH says no process has the id (EPERM: one does).
+    return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
 }
 
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents) {
@@ -116,14 +169,16 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
         fs::create_directories(path.parent_path(), ec);
         if (ec) throw IoError(path.parent_path().string() + ": cannot create directory: " + ec.message());
     }
+    remove_dead_temporaries(path);
     static std::atomic<unsigned> counter{0};
     fs::path tmp = path;
     tmp += fmt::format(".freestand-tmp-{}-{}", ::getpid(), counter++);
     try {
         write_new_file(tmp, contents);
-    } catch (...) {
+    } catch (const IoError& e) {
+        // The temporary's name means nothing to the user: the error names the file.
         fs::remove(tmp, ec);
-        throw;
+        throw IoError(path.string() + std::string(e.what()).substr(tmp.string().size()));
     }
     fs::rename(tmp, path, ec);
     if (ec) {

@@ -1,6 +1,7 @@
 #include "core/publish.hpp"
 
 #include <fcntl.h>
+#include <stdio.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -9,11 +10,13 @@
 #include <cstring>
 #include <fmt/format.h>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <set>
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 
 namespace freestand::core {
 
@@ -153,6 +156,38 @@ void check_target(const fs::path& dir, const Layout& layout) {
     }
 }
 
+// Removing the previous run's files needs write (and search) access to the folder that holds
+// them (POSIX unlink, rmdir): the target and each of its sub-folders. Checked before anything
+// moves, so a read-only previous run is an error that leaves it as it was, not a renamed-aside
+// folder that cannot be removed. faccessat with AT_EACCESS answers for the effective user and
+// reports a read-only file system (EROFS) and an immutable folder (EPERM) too.
+void check_removable(const fs::path& dir) {
+    const auto require_writable = [](const fs::path& folder) {
+        if (::faccessat(AT_FDCWD, folder.c_str(), W_OK | X_OK, AT_EACCESS) != 0) {
+            fail(folder, fmt::format("cannot replace the previous run: {}; make the folder "
+                                     "writable or remove it",
+                                     std::strerror(errno)));
+        }
+    };
+    if (!fs::is_directory(fs::symlink_status(dir))) return;
+    require_writable(dir);
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.symlink_status().type() == fs::file_type::directory) require_writable(entry.path());
+}
+
+// A folder that should go and cannot is named on standard error: the run itself is published
+// (or refused with its own error), so this is not the run's failure, but nothing is left behind
+// unsaid.
+void remove_or_warn(const fs::path& folder, const char* what) {
+    std::error_code ec;
+    fs::remove_all(folder, ec);
+    if (ec) {
+        std::cerr << printable(fmt::format("freestand: warning: {}: cannot remove {}: {}; remove "
+                                           "it by hand\n",
+                                           folder.string(), what, ec.message()));
+    }
+}
+
 fs::path fresh_sibling(const fs::path& dir, const char* kind) {
     static std::atomic<unsigned> counter{0};
     return dir.parent_path() / fmt::format("{}{}-{}-{}", sibling_prefix(dir), kind, ::getpid(),
@@ -247,35 +282,62 @@ void clean_leftovers(const fs::path& dir) {
     for (const auto& entry : fs::directory_iterator(dir.parent_path(), ec)) {
         const std::string name = entry.path().filename().string();
         if (name.rfind(prefix + "stage-", 0) == 0 || name.rfind(prefix + "old-", 0) == 0)
-            fs::remove_all(entry.path(), ec);
+            remove_or_warn(entry.path(), "this left-over of an earlier run");
     }
 }
 
-}  // namespace
+// The folder a path names: absolute, lexically normal and without a trailing separator, so
+// "new/", "new" and "new/x/.." are one folder and "." is the working folder. The root has no
+// parent to stage beside and is refused.
+fs::path target_folder(const fs::path& given) {
+    fs::path dir = fs::absolute(given).lexically_normal();
+    if (!dir.has_filename()) dir = dir.parent_path();
+    if (dir == dir.root_path()) fail(given, "cannot publish into the root folder");
+    return dir;
+}
 
-void check_publish_target(const fs::path& dir) { check_folder(fs::absolute(dir).lexically_normal()); }
-
-void publish_folder(const fs::path& dir_given, const std::vector<OutputFile>& files) {
-    const fs::path dir = fs::absolute(dir_given).lexically_normal();
-    if (!dir.has_filename() || dir == dir.root_path())
-        fail(dir_given, "cannot publish into the root or a path ending in '/..'");
-    const Layout layout = layout_of(files);
-    // Everything below runs under the parent's lock, so no other publish changes the folder
-    // between the checks and the swap. Creating a missing parent cannot hide a refusal: with
-    // no parent there is no folder to refuse.
+// True when dir is the working folder or holds it. Such a folder is not renamed aside: a shell
+// standing in it would be left in a removed folder, seeing none of the run's files.
+bool holds_working_folder(const fs::path& dir) {
     std::error_code ec;
-    fs::create_directories(dir.parent_path(), ec);
-    if (ec) fail(dir.parent_path(), "cannot create folder: " + ec.message());
-    const FolderLock lock(dir.parent_path());
-    clean_leftovers(dir);
-    check_target(dir, layout);
-    const fs::path staging = stage(dir, files, layout);
-    try {
-        carry_over(dir, staging, layout);
-    } catch (...) {
-        fs::remove_all(staging, ec);
-        throw;
+    const fs::path cwd = fs::current_path(ec);
+    if (ec) return false;
+    const fs::path rel = cwd.lexically_relative(dir);
+    return !rel.empty() && *rel.begin() != "..";
+}
+
+// The staged entry replaces target: a file by rename, a folder by an atomic exchange
+// (renameat2 RENAME_EXCHANGE, Linux 3.15) that leaves the old folder in staging's place.
+void replace_entry(const fs::path& staged, const fs::path& target) {
+    const bool folder_over_folder = fs::is_directory(fs::symlink_status(staged)) &&
+                                    fs::is_directory(fs::symlink_status(target));
+    const int rc = folder_over_folder ? ::renameat2(AT_FDCWD, staged.c_str(), AT_FDCWD,
+                                                    target.c_str(), RENAME_EXCHANGE)
+                                      : ::rename(staged.c_str(), target.c_str());
+    if (rc != 0) fail(target, std::string("cannot move the new run into place: ") + std::strerror(errno));
+}
+
+// The working folder's entries replaced one by one (see holds_working_folder): each file whole
+// by a rename, each sub-folder by an exchange, the previous run's other files removed and the
+// marker written last, so a run killed half-way leaves a folder the next run still owns.
+// A reader may briefly see files of both runs.
+void replace_in_place(const fs::path& dir, const fs::path& staging, const Layout& layout) {
+    const std::set<std::string> previous = previous_run_files(dir);
+    for (const std::string& name : layout.top) replace_entry(staging / name, dir / name);
+    std::error_code ec;
+    for (const std::string& name : previous) {
+        if (layout.top.count(name) || !plain_name(name)) continue;
+        fs::remove_all(dir / name, ec);
+        if (ec) fail(dir / name, "cannot remove the previous run's file: " + ec.message());
     }
+    replace_entry(staging / run_marker, dir / run_marker);
+    remove_or_warn(staging, "the previous run's folders");
+}
+
+// The whole folder replaced: the previous run renamed aside, the staging folder renamed into
+// its place, the previous run removed.
+void swap_folder(const fs::path& dir, const fs::path& staging) {
+    std::error_code ec;
     const fs::path aside = fresh_sibling(dir, "old");
     const bool had_old = fs::exists(fs::symlink_status(dir));
     if (had_old) {
@@ -292,7 +354,38 @@ void publish_folder(const fs::path& dir_given, const std::vector<OutputFile>& fi
         fs::remove_all(staging, ec);
         fail(dir, "cannot move the new run into place: " + why);
     }
-    if (had_old) fs::remove_all(aside, ec);
+    if (had_old) remove_or_warn(aside, "the previous run");
+}
+
+}  // namespace
+
+void check_publish_target(const fs::path& dir) { check_folder(target_folder(dir)); }
+
+void publish_folder(const fs::path& dir_given, const std::vector<OutputFile>& files) {
+    const fs::path dir = target_folder(dir_given);
+    const Layout layout = layout_of(files);
+    // Everything below runs under the parent's lock, so no other publish changes the folder
+    // between the checks and the swap. Creating a missing parent cannot hide a refusal: with
+    // no parent there is no folder to refuse.
+    std::error_code ec;
+    fs::create_directories(dir.parent_path(), ec);
+    if (ec) fail(dir.parent_path(), "cannot create folder: " + ec.message());
+    const FolderLock lock(dir.parent_path());
+    clean_leftovers(dir);
+    check_target(dir, layout);
+    check_removable(dir);
+    const fs::path staging = stage(dir, files, layout);
+    try {
+        carry_over(dir, staging, layout);
+        if (holds_working_folder(dir)) {
+            replace_in_place(dir, staging, layout);
+            return;
+        }
+    } catch (...) {
+        fs::remove_all(staging, ec);
+        throw;
+    }
+    swap_folder(dir, staging);
 }
 
 }  // namespace freestand::core

@@ -9,7 +9,16 @@
 /// is briefly absent, never mixed, so a reader that opens the folder once and reads its files
 /// through it sees one run. Files in the target that neither this run nor the previous one
 /// wrote (a user's note, say) are carried over as hard links. Left-overs of killed runs
-/// (staging and renamed-aside folders) are removed by the next publish.
+/// (staging and renamed-aside folders) are removed by the next publish; one that cannot be
+/// removed is named on standard error.
+///
+/// The path is normalised first ("new/" and "new" are one folder); the root is refused. The
+/// working folder (or one holding it, `--out .`) is not renamed aside, which would leave a
+/// shell standing in it in a removed folder: its entries are replaced one by one, the marker
+/// last, so a reader may briefly see files of both runs there.
+///
+/// A previous run that cannot be removed (no write access to the folder or a sub-folder) is an
+/// IoError before anything moves.
 ///
 /// Only a folder freestand owns is replaced: absent, empty, or marked by the file
 /// `.freestand-run` a previous publish left. Anything else is an IoError before anything is

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/printable.hpp"
 #include "core/publish.hpp"
 #include "core/statistics.hpp"
 #include "report/references.hpp"
@@ -93,7 +94,7 @@ Figure fragility_figure(const fragility::Result& r) {
     const double lo = pga.front() / (pga.size() > 1 ? 1.25 : 2.0);
     const double hi = pga.back() * 1.25;
     Plot p;
-    p.title = fmt::format("Fragility: {}", r.meta.case_name);
+    p.title = fmt::format("Fragility: {}", core::printable_name(r.meta.case_name));
     p.x = Axis{"PGA (g)", false, 0.0, hi};
     p.y = Axis{"P(failure | PGA)", false, 0.0, 1.0};
     for (std::size_t e = 0; e < all_events.size(); ++e) {
@@ -180,7 +181,7 @@ RenderedFragility render_fragility(const fragility::Result& r, const Stamp& stam
     RenderedFragility out;
     out.figure = fragility_figure(r);
     mstch::map ctx = fragility_section_context(r, out.figure);
-    ctx.emplace("frag_case", r.meta.case_name);
+    ctx.emplace("frag_case", core::printable_name(r.meta.case_name));  // a title: one line
     ctx.emplace("references", reference_items(fragility_references()));
     ctx.emplace("stamp_version", stamp.tool_version);
     ctx.emplace("stamp_commit", stamp.commit);

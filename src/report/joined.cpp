@@ -5,6 +5,7 @@
 
 #include "assess/joined.hpp"
 #include "assess/verdict.hpp"
+#include "core/printable.hpp"
 #include "core/contract.hpp"
 #include "report/template_render.hpp"
 
@@ -17,8 +18,10 @@ namespace {
 
 std::string mm(double m) { return fmt::format("{:.1f}", m * 1000.0); }
 
+// The pair's names as one line (a title, a headline): their line breaks shown, not obeyed.
 std::string pair_name(const assess::JoinedResult& j) {
-    return j.units[0].input.component.name + " + " + j.units[1].input.component.name;
+    return core::printable_name(j.units[0].input.component.name + " + " +
+                                j.units[1].input.component.name);
 }
 
 std::string between(const std::string& text, const std::string& open, const std::string& close,
@@ -75,7 +78,7 @@ mstch::map context(const assess::JoinedResult& j, const std::array<Rendered, 2>&
     for (std::size_t i = 0; i < 2; ++i) {
         unit_items.push_back(mstch::map{
             {"index", std::to_string(i + 1)},
-            {"name", j.units[i].input.component.name},
+            {"name", core::printable_name(j.units[i].input.component.name)},
             {"verdict", assess::verdict_text(j.units[i].overall.verdict)},
             {"body", html ? between(units[i].html, "<body>", "</body>", false) : std::string()},
         });

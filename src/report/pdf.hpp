@@ -29,10 +29,14 @@ inline constexpr std::chrono::seconds pdf_time_limit{300};
 std::filesystem::path find_pdf_converter();
 
 /// The PDF bytes of html (a self-contained report: inline CSS and SVG, nothing to fetch),
-/// converted by converter in a private temporary folder (its file:// base, removed after) with
-/// SOURCE_DATE_EPOCH=0, standard input from /dev/null and a process group of its own that is
-/// killed after time_limit. Throws IoError with the converter's standard error when it fails,
-/// is killed or writes no PDF.
+/// converted by converter in a private temporary folder (its file:// base, removed after;
+/// folders of runs that died are removed first) with SOURCE_DATE_EPOCH=0, standard input from
+/// /dev/null and a process group of its own that is killed after time_limit, and killed by the
+/// kernel if this thread dies (PR_SET_PDEATHSIG). SIGINT, SIGTERM and SIGHUP during the
+/// conversion kill the converter's group and remove the folder, then take their course (by
+/// default the process ends with the signal: exit status 128 + signal). Throws IoError with
+/// the converter's standard error when it fails, is killed or writes no PDF. One conversion
+/// runs at a time.
 std::string html_to_pdf(const std::filesystem::path& converter, const std::string& html,
                         std::chrono::milliseconds time_limit = pdf_time_limit);
 

@@ -469,7 +469,8 @@ mstch::map context(const AssessmentResult& r, const Stamp& stamp, const std::vec
     for (const Figure& f : figs)
         figures.push_back(mstch::map{{"file", f.file}, {"caption", f.caption}, {"svg", f.svg}});
     return mstch::map{
-        {"component_name", r.input.component.name},
+        // A title and a heading are one line: a name's line breaks are shown, not obeyed.
+        {"component_name", core::printable_name(r.input.component.name)},
         {"description", r.input.component.description},
         {"verdict", verdict_text(v)},
         {"verdict_kind", std::string(to_string(v.kind))},
@@ -523,7 +524,9 @@ std::string headline_level(const AssessmentResult& r) {
     return out;
 }
 
-std::string markdown_escape(const std::string& text) {
+std::string markdown_escape(const std::string& text_given) {
+    // Bidirectional overrides in case text would reorder the report around them.
+    const std::string text = core::visible_unicode_controls(text_given);
     std::string out;
     for (char c : text) {
         switch (c) {
@@ -560,7 +563,9 @@ std::string markdown_escape(const std::string& text) {
     return out;
 }
 
-std::string html_escape(const std::string& text) {
+std::string html_escape(const std::string& text_given) {
+    // Bidirectional overrides in case text would reorder the report around them.
+    const std::string text = core::visible_unicode_controls(text_given);
     std::string out;
     for (char c : text) {
         switch (c) {

@@ -7,6 +7,7 @@
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/printable.hpp"
 #include "report/case_assessment.hpp"
 #include "report/joined.hpp"
 
@@ -44,14 +45,16 @@ CaseRun run_case(const std::string& case_bytes, const std::filesystem::path& cas
 }
 
 std::string verdict_line(const assess::AssessmentResult& r) {
-    if (r.joined) return joined_verdict_line(r);
+    // One line on a terminal: a name's line breaks and bidirectional overrides are shown, not
+    // obeyed (a CR would let the name overwrite the verdict).
+    if (r.joined) return core::printable_name(joined_verdict_line(r));
     const assess::Verdict& v = r.overall.verdict;
     std::string out =
         fmt::format("{}: {} (governing {}, margin {}, decided by {})", r.input.component.name,
                     assess::verdict_text(v), headline_level(r), assess::margin_text(v),
                     assess::to_string(v.decided_by));
     for (const std::string& c : v.conditions) out += "; open condition: " + c;
-    return out;
+    return core::printable_name(out);
 }
 
 }  // namespace freestand::report

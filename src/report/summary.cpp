@@ -7,6 +7,7 @@
 #include <mstch/mstch.hpp>
 
 #include "assess/verdict.hpp"
+#include "core/printable.hpp"
 #include "core/csv_table.hpp"
 #include "report/template_render.hpp"
 #include "report/json.hpp"
@@ -56,9 +57,10 @@ Cells cells(const SummaryRow& r) {
 
 mstch::map row_context(const SummaryRow& r) {
     const Cells c = cells(r);
-    return mstch::map{{"name", r.name},
-                      {"case_file", r.case_file},
-                      {"component", c.component},
+    // Table cells are one line: names' line breaks are shown, not obeyed.
+    return mstch::map{{"name", core::printable_name(r.name)},
+                      {"case_file", core::printable_name(r.case_file)},
+                      {"component", core::printable_name(c.component)},
                       {"verdict", c.verdict},
                       {"verdict_kind", c.verdict_kind},
                       {"governing", c.governing},

@@ -1,6 +1,12 @@
 // Atomic writing and the protection of inputs (core/file_io.hpp).
 #include <catch2/catch.hpp>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
+#include <fstream>
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
@@ -47,6 +53,80 @@ TEST_CASE("an input beyond 512 MiB is refused: a large file before reading, an e
                          Catch::Message("/dev/zero: does not end within 536870912 bytes; an "
                                         "input file is limited to 536870912 bytes (512 MiB; "
                                         "README, Limits)"));
+    std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+// The temporaries of write_file_atomic in dir.
+int temporaries_in(const std::filesystem::path& dir) {
+    int n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.path().filename().string().find(".freestand-tmp-") != std::string::npos) ++n;
+    return n;
+}
+
+// The id of a process that has exited and been reaped.
+pid_t dead_pid() {
+    const pid_t pid = ::fork();
+    if (pid == 0) ::_exit(0);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+    }
+    return pid;
+}
+
+}  // namespace
+
+TEST_CASE("a write stopped by the file-size limit removes its temporary and names the file",
+          "[core][io][limits]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_file_io_fsize";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto target = dir / "series.csv";
+    const auto message = dir / "message.txt";
+    // In a child process: the limit (ulimit -f) would bind the test runner's own writes.
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const rlimit limit{4096, 4096};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        try {
+            core::write_file_atomic(target, std::string(100000, 'x'));
+        } catch (const IoError& e) {
+            std::ofstream(message) << e.what();
+            ::_exit(5);
+        }
+        ::_exit(0);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+    }
+    CHECK_FALSE(WIFSIGNALED(status));
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 5);
+    CHECK(core::read_text_file(message) ==
+          target.string() + ": write failed: File too large (the file-size limit, ulimit -f, or "
+                             "the file system's largest file)");
+    CHECK_FALSE(std::filesystem::exists(target));
+    CHECK(temporaries_in(dir) == 0);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("write_file_atomic removes the temporaries of its file left by processes that died",
+          "[core][io]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_file_io_stale";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string dead = ".freestand-tmp-" + std::to_string(dead_pid()) + "-0";
+    const std::string live = ".freestand-tmp-" + std::to_string(::getppid()) + "-3";
+    std::ofstream(dir / ("out.csv" + dead)) << "half";
+    std::ofstream(dir / ("out.csv" + live)) << "being written";
+    std::ofstream(dir / ("other.csv" + dead)) << "another file's";
+    core::write_file_atomic(dir / "out.csv", "done\n");
+    CHECK(core::read_text_file(dir / "out.csv") == "done\n");
+    CHECK_FALSE(std::filesystem::exists(dir / ("out.csv" + dead)));
+    CHECK(std::filesystem::exists(dir / ("out.csv" + live)));    // its writer may still run
+    CHECK(std::filesystem::exists(dir / ("other.csv" + dead)));  // its own writer cleans it
     std::filesystem::remove_all(dir);
 }
 

@@ -6,9 +6,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <sys/wait.h>
+
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
 #include <thread>
 
 #include "core/errors.hpp"
@@ -53,6 +58,53 @@ std::string read_at(int dir_fd, const char* name) {
 
 std::size_t entries(const fs::path& dir) {
     return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), {}));
+}
+
+// Runs body without root's privileges, where file permissions bind: directly when not root,
+// else in a child process as the user nobody (uid and gid 65534). Returns body's exit status:
+// 0 when it returned, 1 when it threw.
+int unprivileged(const std::function<void()>& body) {
+    const auto guarded = [&body] {
+        try {
+            body();
+            return 0;
+        } catch (const std::exception& e) {
+            std::cerr << "unprivileged: " << e.what() << "\n";
+            return 1;
+        }
+    };
+    if (::geteuid() != 0) return guarded();
+    std::cout.flush();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(2);
+        ::_exit(guarded());
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 3;
+}
+
+// A folder that the user nobody may write into (the tests may run as root).
+fs::path fresh_shared(const std::string& name) {
+    const fs::path dir = fresh(name);
+    fs::permissions(dir, fs::perms::all);
+    return dir;
+}
+
+// What body writes to std::cerr.
+std::string cerr_of(const std::function<void()>& body) {
+    std::ostringstream captured;
+    std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
+    try {
+        body();
+    } catch (...) {
+        std::cerr.rdbuf(old);
+        throw;
+    }
+    std::cerr.rdbuf(old);
+    return captured.str();
 }
 
 }  // namespace
@@ -184,6 +236,83 @@ TEST_CASE("left-overs of killed runs are cleaned by the next publish", "[core][i
     fs::create_directories(root / ".case.freestand-stage-4194305-0");
     core::publish_folder(root / "case", run_files("A"));
     CHECK(entries(root) == 1);
+    fs::remove_all(root);
+}
+
+TEST_CASE("a trailing slash names the same folder, and '.' the working folder, replaced in place",
+          "[core][io][publish]") {
+    const fs::path root = fresh("slash");
+    core::publish_folder(root.string() + "/new/", run_files("A"));
+    CHECK(core::read_text_file(root / "new" / "report.md") == "report A\n");
+    core::publish_folder(root.string() + "/new/x/..", run_files("B"));
+    CHECK(core::read_text_file(root / "new" / "report.md") == "report B\n");
+    CHECK(entries(root) == 1);
+    fs::create_directories(root / "here");
+    const fs::path before = fs::current_path();
+    fs::current_path(root / "here");
+    core::publish_folder(".", run_files("A"));
+    std::ofstream("notes.txt") << "mine\n";
+    core::publish_folder("./", run_files("B", false));
+    // Read through the working folder as it was entered: a shell standing in it sees this run.
+    const bool same_folder = fs::equivalent(".", root / "here");
+    const std::string report = core::read_text_file("report.md");
+    const bool figure_left = fs::exists("figure.svg");
+    const std::string notes = core::read_text_file("notes.txt");
+    const std::size_t count = entries(".");
+    fs::current_path(before);
+    CHECK(same_folder);
+    CHECK(report == "report B\n");
+    CHECK_FALSE(figure_left);  // written by run A only: gone with it
+    CHECK(notes == "mine\n");
+    CHECK(count == 4);
+    CHECK(entries(root) == 2);  // no staging or aside folder left
+    CHECK_THROWS_WITH(core::publish_folder("/", run_files("A")),
+                      Contains("/: cannot publish into the root folder"));
+    CHECK_THROWS_WITH(core::check_publish_target("/.."),
+                      Contains("/..: cannot publish into the root folder"));
+    fs::remove_all(root);
+}
+
+TEST_CASE("a previous run that cannot be removed is refused before the swap, and left-overs "
+          "that cannot be removed are named",
+          "[core][io][publish]") {
+    const fs::path root = fresh_shared("readonly");
+    const fs::path dir = root / "case";
+    const fs::path message = root / "message.txt";
+    // Permissions bind only without root's privileges: the publishes run as nobody.
+    const int status = unprivileged([&] {
+        core::publish_folder(dir, run_files("A"));
+        fs::permissions(dir, fs::perms::owner_write | fs::perms::group_write |
+                                 fs::perms::others_write, fs::perm_options::remove);
+        try {
+            core::publish_folder(dir, run_files("B"));
+        } catch (const IoError& e) {
+            std::ofstream(message) << e.what();
+        }
+    });
+    CHECK(status == 0);
+    CHECK_THAT(core::read_text_file(message),
+               Contains(dir.string() + ": cannot replace the previous run: Permission denied"));
+    CHECK(core::read_text_file(dir / "report.md") == "report A\n");
+    for (const auto& e : fs::directory_iterator(root))
+        CHECK(e.path().filename().string().find(".freestand-") == std::string::npos);
+
+    // A left-over of a killed run that cannot be removed is named on standard error.
+    fs::permissions(dir, fs::perms::owner_write, fs::perm_options::add);
+    const fs::path stale = root / ".case.freestand-old-1-0";
+    const fs::path warning = root / "warning.txt";
+    const int stale_status = unprivileged([&] {
+        fs::create_directories(stale);
+        std::ofstream(stale / "report.md") << "old\n";
+        fs::permissions(stale, fs::perms::owner_write, fs::perm_options::remove);
+        std::ofstream(warning) << cerr_of([&] { core::publish_folder(dir, run_files("C")); });
+    });
+    CHECK(stale_status == 0);
+    CHECK_THAT(core::read_text_file(warning),
+               Contains("warning: " + stale.string() + ": cannot remove this left-over of an "
+                        "earlier run: Permission denied; remove it by hand"));
+    CHECK(core::read_text_file(dir / "report.md") == "report C\n");
+    fs::permissions(stale, fs::perms::owner_all, fs::perm_options::add);
     fs::remove_all(root);
 }
 

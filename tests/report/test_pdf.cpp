@@ -3,13 +3,17 @@
 // tests need weasyprint installed (scripts/setup.sh): without it they fail, they do not skip.
 #include <catch2/catch.hpp>
 
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "core/errors.hpp"
 #include "report/pdf.hpp"
@@ -57,6 +61,36 @@ const char* const kSmallHtml =
     "<h1>PDF test</h1><p>Glove box &mdash; mu_s 0.15 \xc2\xb1 0.03</p>"
     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"100\">"
     "<rect x=\"10\" y=\"10\" width=\"180\" height=\"80\" fill=\"#36c\"/></svg></body></html>";
+
+/// Waits up to 10 s for a file to have contents; returns them.
+std::string await_file(const fs::path& p) {
+    for (int i = 0; i < 500; ++i) {
+        const std::string text = slurp(p);
+        if (!text.empty() && text.back() == '\n') return text;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return "";
+}
+
+/// True when no process of the group remains within 5 s (the killed converter's children are
+/// reaped by init, which may take a moment).
+bool group_gone(pid_t group) {
+    for (int i = 0; i < 250; ++i) {
+        if (::kill(-group, 0) == -1 && errno == ESRCH) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return false;
+}
+
+/// The id of a process that has exited and been reaped.
+pid_t dead_pid() {
+    const pid_t pid = ::fork();
+    if (pid == 0) ::_exit(0);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+    }
+    return pid;
+}
 
 }  // namespace
 
@@ -119,6 +153,67 @@ TEST_CASE("a converter that does not finish is stopped at the time limit", "[rep
             Catch::Contains("started"));
     // The whole process group is killed: the call returns long before the sleep ends.
     CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
+}
+
+TEST_CASE("a run stopped by Ctrl-C or a timeout leaves no converter and no temporary folder",
+          "[report][pdf]") {
+    const Scratch s("stopped");
+    const fs::path pid_file = s.dir / "converter.pid";
+    // A converter that writes its process id and its input (the HTML in the run's temporary
+    // folder: the arguments end with the input and the output) and sleeps in a child process.
+    const fs::path slow =
+        s.script("slow", "for a; do input=$out; out=$a; done; echo \"$$ $input\" > '" +
+                             pid_file.string() + "'; sleep 30");
+    struct Stop {
+        int signal;
+        bool to_group;  ///< Ctrl-C: SIGINT to the terminal's foreground process group
+    };
+    for (const Stop stop : {Stop{SIGINT, true}, Stop{SIGTERM, false}, Stop{SIGHUP, false}}) {
+        INFO("signal " << stop.signal);
+        fs::remove(pid_file);
+        const pid_t run = ::fork();
+        if (run == 0) {
+            ::setpgid(0, 0);  // the run's own group, as a shell gives a foreground job
+            // The signals' dispositions of the freestand executable, not the test runner's.
+            for (const int signal : {SIGINT, SIGTERM, SIGHUP}) ::signal(signal, SIG_DFL);
+            try {
+                (void)freestand::report::html_to_pdf(slow, kSmallHtml);
+            } catch (...) {
+            }
+            ::_exit(0);
+        }
+        const std::string started = await_file(pid_file);
+        REQUIRE_FALSE(started.empty());
+        const pid_t converter = static_cast<pid_t>(std::stol(started));
+        const fs::path folder =
+            fs::path(started.substr(started.find(' ') + 1, started.size() - started.find(' ') - 2))
+                .parent_path();
+        REQUIRE(fs::is_directory(folder));
+        ::kill(stop.to_group ? -run : run, stop.signal);
+        int status = 0;
+        while (::waitpid(run, &status, 0) < 0) {
+        }
+        // The run ends as the signal ends a process (a shell shows 128 + signal)...
+        CHECK(WIFSIGNALED(status));
+        if (WIFSIGNALED(status)) CHECK(WTERMSIG(status) == stop.signal);
+        // ... and leaves neither the converter's process group nor its folder behind.
+        CHECK(group_gone(converter));
+        CHECK_FALSE(fs::exists(folder));
+        ::kill(-converter, SIGKILL);
+        fs::remove_all(folder);
+    }
+}
+
+TEST_CASE("html_to_pdf removes the temporary folders of runs that died", "[report][pdf]") {
+    const Scratch s("stale");
+    const fs::path stale = fs::temp_directory_path() /
+                           ("freestand-pdf-" + std::to_string(dead_pid()) + "-abcdef");
+    fs::create_directories(stale);
+    std::ofstream(stale / "report.html") << kSmallHtml;
+    const fs::path fake = s.script("fake", "for a; do last=$a; done; echo '%PDF-1.4' > \"$last\"");
+    CHECK(freestand::report::html_to_pdf(fake, kSmallHtml).rfind("%PDF-", 0) == 0);
+    CHECK_FALSE(fs::exists(stale));
+    fs::remove_all(stale);
 }
 
 TEST_CASE("assess --pdf publishes report.pdf with the other files, the bytes of the HTML's PDF",
