@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::cli {
 
@@ -91,8 +92,9 @@ std::vector<double> parse_levels(const std::string& text, const std::string& opt
     if (!(step > 0.0) || last < first)
         throw UsageError(fmt::format("{}: \"{}\" needs STEP > 0 and STOP >= START", option, text));
     const double count = std::floor((last - first) / step + 1e-9) + 1.0;
-    if (count > 1000.0)
-        throw UsageError(fmt::format("{}: \"{}\" gives {} levels; at most 1000", option, text, count));
+    if (count > core::limits::max_pga_levels)
+        throw UsageError(fmt::format("{}: \"{}\" gives {} levels; at most {} (README, Limits)",
+                                     option, text, count, core::limits::max_pga_levels));
     std::vector<double> out;
     for (int i = 0; i < static_cast<int>(count); ++i)
         out.push_back(std::round((first + i * step) * 1e12) / 1e12);

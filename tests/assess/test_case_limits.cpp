@@ -1,0 +1,83 @@
+// A case's PGA levels, friction, restitution and mass: the ranges and counts of
+// core/limits.hpp, the same as the command line's (README, Limits).
+#include <catch2/catch.hpp>
+
+#include <fmt/format.h>
+
+#include <string>
+
+#include "support/case_text.hpp"
+#include "assess/case.hpp"
+#include "core/errors.hpp"
+
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_case_limits {
+
+using namespace freestand;
+using namespace freestand::assess;
+
+namespace {
+
+// A valid case whose [site] pga_g is levels (lines 9-10: [site], pga_g).
+std::string with_levels(const std::string& levels) {
+    return test::box_component + "[site]\npga_g = " + levels + "\n";
+}
+
+// n levels 0.001, 0.002, ... g as a TOML array, 100 to a line (a case line holds at most 4096
+// characters).
+std::string levels_text(int n) {
+    std::string out = "[";
+    for (int i = 1; i <= n; ++i)
+        out += fmt::format("{}{:.3f}", i == 1 ? "" : i % 100 == 1 ? ",\n" : ", ", 0.001 * i);
+    return out + "]";
+}
+
+}  // namespace
+
+TEST_CASE("a PGA level near zero is refused at its key", "[assess][case][limits]") {
+    // 1e-300 g wrote a static margin as a 300-digit number; 1e-310 g ended in exit 70 (stod).
+    CHECK(test::case_error(with_levels("[1e-310, 0.1]")) ==
+          "case.toml:10: site.pga_g: value 1e-310 is out of range; expected [0.001, 3]");
+    CHECK(test::case_error(with_levels("[1e-300, 0.1]")) ==
+          "case.toml:10: site.pga_g: value 1e-300 is out of range; expected [0.001, 3]");
+    CHECK(test::case_error(with_levels("[0.0009, 0.1]")) ==
+          "case.toml:10: site.pga_g: value 0.0009 is out of range; expected [0.001, 3]");
+    CHECK(test::case_error(with_levels("[0.001, 0.1]")) == "no error");
+    const std::string dbe = with_levels("[0.1]") + "dbe_pga_g = 1e-300\n";
+    CHECK(test::case_error(dbe) ==
+          "case.toml:11: site.dbe_pga_g: value 1e-300 is out of range; expected [0.001, 3]");
+}
+
+TEST_CASE("a case holds at most 1000 PGA levels, checked as it is read",
+          "[assess][case][limits]") {
+    // 1e5 levels took 70 KB each and ended in bad_alloc after 23 s.
+    CHECK(test::case_error(with_levels(levels_text(1001))) ==
+          "case.toml:10: site.pga_g: PGA levels: 1001 is above the limit 1000 (README, Limits)");
+    // Up to 1 g: a level of 1 g at RG 1.60's vertical ratio of 1 is weightless.
+    const std::string thousand = with_levels(levels_text(1000)) + "vertical_ratio = 0.5\n";
+    CHECK(parse_case(thousand, "case.toml").site.pga_g.size() == 1000);
+}
+
+TEST_CASE("a case's fragility run is bounded as levels x samples", "[assess][case][limits]") {
+    const std::string o = with_levels("[0.1]") + "[options]\nfragility = true\n";
+    CHECK(test::case_error(o + "fragility_pga_g = " + levels_text(11) +
+                           "\nfragility_samples = 100000\n") ==
+          "case.toml:14: options.fragility_samples: the fragility run's samples (levels x "
+          "fragility_samples): 1.1e+06 is above the limit 1e+06 (README, Limits)");
+    CHECK(test::case_error(o + "fragility_pga_g = " + levels_text(10) +
+                           "\nfragility_samples = 100000\n") == "no error");
+}
+
+TEST_CASE("a case's mass is a block's mass: 1 g to 100,000 t", "[assess][case][limits]") {
+    const auto with_mass = [](const std::string& mass) {
+        std::string text = test::box_component + test::box_site;
+        text.replace(text.find("mass_kg = 100.0"), 15, "mass_kg = " + mass);
+        return text;
+    };
+    CHECK(test::case_error(with_mass("5e7")) == "no error");
+    CHECK(test::case_error(with_mass("1e-4")) ==
+          "case.toml:3: component.mass_kg: value 0.0001 is out of range; expected [0.001, "
+          "100000000]");
+}
+
+}  // namespace freestand_test_assess_test_case_limits
