@@ -708,7 +708,11 @@ core::Distribution read_distribution(TableReader& outer, const std::string& key,
 
 Uncertainty read_uncertainty(TableReader& r, const std::string& file) {
     Uncertainty u;
-    if (r.has("mu_s")) u.mu_s = read_distribution(r, "mu_s", Range{0.0, 10.0}, std::nullopt, file);
+    // A drawn friction is a case's friction (core::limits::friction): a lognormal law is
+    // truncated at its top, as restitution's at 1, so no sample leaves the model's range.
+    if (r.has("mu_s"))
+        u.mu_s = read_distribution(r, "mu_s", core::limits::friction, core::limits::friction.hi,
+                                   file);
     if (r.has("restitution"))
         u.restitution = read_distribution(r, "restitution", Range{0.0, 1.0}, 1.0, file);
     r.finish({"mu_s", "restitution"});

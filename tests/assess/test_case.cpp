@@ -432,7 +432,7 @@ TEST_CASE("[uncertainty] laws are read or refused at their key", "[assess][case]
     CHECK(c.uncertainty.restitution->upper == 1.0);  // a restitution above 1 is never drawn
     const std::string u = base_component + base_site + "[uncertainty]\n";
     CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = nan, hi = 0.2 }\n") ==
-          "case.toml:12: uncertainty.mu_s.lo: value nan is out of range; expected [0, 10]");
+          "case.toml:12: uncertainty.mu_s.lo: value nan is out of range; expected [0, 2]");
     CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = 0.3, hi = 0.2 }\n") ==
           "case.toml:12: uncertainty.mu_s.hi: 0.2 is below lo = 0.3; expected lo <= hi");
     CHECK(error_of(u + "mu_s = { lo = 0.1, hi = 0.2 }\n") ==

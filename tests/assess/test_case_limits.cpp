@@ -80,4 +80,16 @@ TEST_CASE("a case's mass is a block's mass: 1 g to 100,000 t", "[assess][case][l
           "100000000]");
 }
 
+TEST_CASE("a drawn friction stays within a case's friction range", "[assess][case][limits]") {
+    // [uncertainty] mu_s took values up to 10 and an untruncated lognormal, which the model
+    // (core::limits::friction, [0, 2]) refuses in the middle of a fragility run.
+    const std::string u = test::box_component + test::box_site + "[uncertainty]\n";
+    CHECK(test::case_error(u + "mu_s = { dist = \"uniform\", lo = 0.5, hi = 3 }\n") ==
+          "case.toml:12: uncertainty.mu_s.hi: value 3 is out of range; expected [0, 2]");
+    const Case c =
+        parse_case(u + "mu_s = { dist = \"lognormal\", median = 0.5, beta = 1 }\n", "case.toml");
+    REQUIRE(c.uncertainty.mu_s.has_value());
+    CHECK(c.uncertainty.mu_s->upper == 2.0);
+}
+
 }  // namespace freestand_test_assess_test_case_limits
