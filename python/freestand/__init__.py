@@ -122,8 +122,9 @@ def _text(value: Any) -> str:
 
 
 def _args(**options: Any) -> list:
-    """Command-line arguments from keyword options: None and False leave an option out, True
-    gives a flag, a sequence a comma list, anything else its text."""
+    """Command-line arguments from keyword options: None leaves an option out; a number option
+    (_NUMBER_OPTIONS) takes a real number or a sequence of them; otherwise False leaves a flag
+    out, True gives it, a sequence gives a comma list and anything else its text."""
     args = []
     for name, value in options.items():
         if value is None:
@@ -154,7 +155,8 @@ def _cg(cg: Union[None, str, Sequence[float], Mapping[str, float]]) -> Optional[
     if cg is None or isinstance(cg, str):
         return cg
     if isinstance(cg, Mapping):
-        return ",".join(f"{key}={_text(_real(value, f'cg[{key!r}]'))}" for key, value in cg.items())
+        return ",".join(f"{key}={_text(_real(value, f'cg[{key!r}]'))}"
+                        for key, value in cg.items())
     return _number_text(list(cg), "cg")
 
 
