@@ -104,6 +104,10 @@ TEST_CASE("friction and restitution: the case's ranges at every command", "[cli]
         {"slide --mu 2.5 --fes-hz 2", "--mu: value 2.5 " + range, 3},
         {"simulate " + block + "--mu 0.5 --restitution 1.5 --sine 0.4g,2Hz,2s",
          "--restitution: value 1.5 is out of range; expected [0, 1]", 3},
+        // The second unit's --mu2 took up to 1e6.
+        {"simulate --block b=1.0,h=0.5,m=400 --mu 0.12 --sine 0.4g,2Hz,2s --tunnel-height 1.2 "
+         "--block2 b=1.0,h=0.5,m=600 --mu2 2.5",
+         "--mu2: value 2.5 " + range, 3},
     });
     // The range's ends are accepted, as in a case.
     CHECK(run_cli("simulate " + block + "--mu 2 --sine 0.1g,2Hz,1s --json").exit_code == 0);
