@@ -38,10 +38,10 @@ inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
 inline constexpr double max_design_level_g = 3.0;
 /// Lowest PGA level of a case or a fragility run, g (1 cm/s^2), far below any design level
 /// (they start near 0.05 g). The static margin grows as 1 / PGA (docs/methods.md s.2): at
-/// 1e-300 g it was 2.5e299, written out as a 300-digit number.
+/// 1e-300 g it is 2.5e299, a 300-digit number in a report.
 inline constexpr double min_pga_level_g = 1e-3;
 /// PGA levels of one case, one override or one fragility run: each level costs a set of
-/// histories and a report row (1e5 levels ended in bad_alloc after 23 s).
+/// histories and a report row (about 70 KB: 1e5 levels exhaust the memory).
 inline constexpr double max_pga_levels = 1000.0;
 /// Samples of one fragility run, levels x samples per level: each sample is a time-history
 /// simulation (a few ms to a second), so 1e6 is already days of CPU.

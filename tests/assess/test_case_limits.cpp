@@ -35,7 +35,7 @@ std::string levels_text(int n) {
 }  // namespace
 
 TEST_CASE("a PGA level near zero is refused at its key", "[assess][case][limits]") {
-    // 1e-300 g wrote a static margin as a 300-digit number; 1e-310 g ended in exit 70 (stod).
+    // The static margin grows as 1 / PGA: a 300-digit number at 1e-300 g.
     CHECK(test::case_error(with_levels("[1e-310, 0.1]")) ==
           "case.toml:10: site.pga_g: value 1e-310 is out of range; expected [0.001, 3]");
     CHECK(test::case_error(with_levels("[1e-300, 0.1]")) ==
@@ -50,7 +50,7 @@ TEST_CASE("a PGA level near zero is refused at its key", "[assess][case][limits]
 
 TEST_CASE("a case holds at most 1000 PGA levels, checked as it is read",
           "[assess][case][limits]") {
-    // 1e5 levels took 70 KB each and ended in bad_alloc after 23 s.
+    // Each level costs about 70 KB of results: 1e5 levels exhaust the memory.
     CHECK(test::case_error(with_levels(levels_text(1001))) ==
           "case.toml:10: site.pga_g: PGA levels: 1001 is above the limit 1000 (README, Limits)");
     // Up to 1 g: a level of 1 g at RG 1.60's vertical ratio of 1 is weightless.
@@ -81,8 +81,8 @@ TEST_CASE("a case's mass is a block's mass: 1 g to 100,000 t", "[assess][case][l
 }
 
 TEST_CASE("a drawn friction stays within a case's friction range", "[assess][case][limits]") {
-    // [uncertainty] mu_s took values up to 10 and an untruncated lognormal, which the model
-    // (core::limits::friction, [0, 2]) refuses in the middle of a fragility run.
+    // The model takes a case's friction range (core::limits::friction, [0, 2]): a drawn value
+    // beyond it would stop a fragility run in its middle.
     const std::string u = test::box_component + test::box_site + "[uncertainty]\n";
     CHECK(test::case_error(u + "mu_s = { dist = \"uniform\", lo = 0.5, hi = 3 }\n") ==
           "case.toml:12: uncertainty.mu_s.hi: value 3 is out of range; expected [0, 2]");

@@ -70,7 +70,7 @@ TEST_CASE("PGA levels near zero are refused at every entry point", "[cli][limits
     const auto tiny = case_with_levels("[1e-310, 0.1]");
     const auto out = std::filesystem::temp_directory_path() / "freestand_entry_limits_out";
     check_probes({
-        // Exit 70 "stod" before; 1e-300 wrote a 300-digit margin.
+        // No level the results' rounding cannot read back, no 300-digit margin.
         {"assess '" + tiny.string() + "' --out '" + out.string() + "'",
          "levels.toml:24: site.pga_g: value 1e-310 is out of range; expected [0.001, 3]", 3},
         {"assess cases/block-ts1.toml --pga 1e-300,0.1 --out '" + out.string() + "'",
@@ -93,7 +93,7 @@ TEST_CASE("fragility bounds levels x samples before it runs", "[cli][limits]") {
 }
 
 TEST_CASE("friction and restitution: the case's ranges at every command", "[cli][limits]") {
-    // simulate took --mu up to 1e300 while a case allows [0, 2].
+    // Every command takes a case's [0, 2] for friction and [0, 1] for restitution.
     const std::string range = "is out of range; expected [0, 2]";
     check_probes({
         {"simulate " + block + "--mu 2.5 --sine 0.4g,2Hz,2s", "--mu: value 2.5 " + range, 3},
@@ -104,7 +104,7 @@ TEST_CASE("friction and restitution: the case's ranges at every command", "[cli]
         {"slide --mu 2.5 --fes-hz 2", "--mu: value 2.5 " + range, 3},
         {"simulate " + block + "--mu 0.5 --restitution 1.5 --sine 0.4g,2Hz,2s",
          "--restitution: value 1.5 is out of range; expected [0, 1]", 3},
-        // The second unit's --mu2 took up to 1e6.
+        // The second unit's too.
         {"simulate --block b=1.0,h=0.5,m=400 --mu 0.12 --sine 0.4g,2Hz,2s --tunnel-height 1.2 "
          "--block2 b=1.0,h=0.5,m=600 --mu2 2.5",
          "--mu2: value 2.5 " + range, 3},

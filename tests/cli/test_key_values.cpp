@@ -35,7 +35,7 @@ void check_probes(const std::vector<Probe>& probes) {
 
 TEST_CASE("a key given twice in a key=value list is refused, in every option",
           "[cli][options]") {
-    // --sine-y ...,phase=90,phase=0 ran with phase 0, the last value.
+    // A repeated key would otherwise silently take its last value.
     check_probes({
         {"simulate " + slider + "--sine-y 0.4g,2Hz,2s,phase=90,phase=0",
          "--sine-y: key \"phase\" given twice", 2},

@@ -48,8 +48,8 @@ std::string levels_message(const std::vector<double>& pga_g) {
 }  // namespace
 
 TEST_CASE("a value just beyond a limit never reads as the limit itself", "[core][limits]") {
-    // 4 significant digits showed "3 is above the limit 3" for 3.0001 and "1e+05 is above the
-    // limit 1e+05" for 100001: as many digits as tell the two apart.
+    // At 4 significant digits 3.0001 reads "3 is above the limit 3" and 100001 "1e+05 is above
+    // the limit 1e+05": as many digits as tell the two apart.
     CHECK(above_message(3.0001, 3.0) ==
           "what: 3.0001 is above the limit 3 (README, Limits)");
     CHECK(above_message(100001.0, 1e5) ==
@@ -70,7 +70,7 @@ TEST_CASE("PGA levels: 1 to 1000 of them, each in [0.001, 3] g, strictly increas
     CHECK(levels_message({0.001, 0.1, 3.0}) == "no error");
     CHECK(levels_message({}) == "case.toml:4: site.pga_g: expected at least one PGA level");
     // A denormal level and one of 1e-300 g are not assessments (a 300-digit margin, and a
-    // value the results' rounding could not read back).
+    // value the results' rounding cannot read back).
     CHECK(levels_message({1e-310, 0.1}) ==
           "case.toml:4: site.pga_g: value 1e-310 is out of range; expected [0.001, 3]");
     CHECK(levels_message({1e-300}) ==

@@ -23,7 +23,7 @@ fragility::Config config_of(std::size_t levels, int samples) {
 }  // namespace
 
 TEST_CASE("levels x samples is bounded, not only each of them", "[fragility][limits]") {
-    // 1000 levels and 1e6 samples per level each passed their own check: 1e9 samples.
+    // 1000 levels and 1e6 samples per level are each within their own limit: 1e9 samples.
     CHECK_THROWS_WITH(fragility::validate(config_of(1000, 1000000)),
                       "samples: the run's samples (levels x samples per level): 1e+09 is above "
                       "the limit 1e+06 (README, Limits)");

@@ -1,9 +1,9 @@
 """The Python module's arguments: only real numbers where numbers are expected.
 
-A complex array lost its imaginary part with only a NumPy warning, bool and text arrays were read
-as numbers, a string or a bool given for a number reached the option parser as option text (its
-messages named a --flag the caller never typed), and a PGA level near zero ended in a bare
-IndexError. Each is now an InputError naming the Python argument.
+A cast to float would drop a complex array's imaginary part with only a NumPy warning and read
+bool and text arrays as numbers; a string or a bool given for a number would reach the option
+parser as option text, whose messages name a --flag the caller never typed. Each is an
+InputError naming the Python argument, as a PGA level near zero is.
 """
 import pathlib
 import re
@@ -75,7 +75,7 @@ def test_a_number_argument_refuses_what_is_not_a_real_number(value, shown):
 
 
 def test_a_list_argument_refuses_a_string():
-    # assess(pga_g="0.1,0.2") failed in float('.'): "could not convert string to float".
+    # A string is not a sequence of levels, even though Python iterates it.
     with pytest.raises(freestand.InputError,
                        match="^pga_g: expected a sequence of real numbers, got str '0.1,0.2'"):
         freestand.assess(CASE, pga_g="0.1,0.2")
@@ -95,7 +95,7 @@ def test_fragility_takes_its_level_range_as_text():
 
 
 def test_a_level_near_zero_is_an_input_error():
-    # It was an IndexError: std::out_of_range from std::stod of the level's 10-digit text.
+    # The library's InputError, not an IndexError from an exception of the C++ runtime.
     with pytest.raises(freestand.InputError,
                        match=r"--pga: value 1e-310 is out of range; expected \[0.001, 3\]"):
         freestand.assess(CASE, pga_g=[1e-310, 0.1])

@@ -37,8 +37,8 @@ Plot plot_of(bool log_x, std::vector<double> x) {
 }  // namespace
 
 TEST_CASE("an axis has a bounded number of ticks whatever its range", "[report][svg][limits]") {
-    // A log axis from a denormal to 1 spans over 300 decades: one tick per decade grew with it,
-    // and from 5e-324 (whose decade rounds to 0) without end.
+    // A log axis from a denormal to 1 spans over 300 decades, and from 5e-324 the decade rounds
+    // to 0, which ten times itself never leaves.
     CHECK(grid_lines(render_svg(plot_of(true, {1e-310, 1.0}))) <= 24);
     CHECK(grid_lines(render_svg(plot_of(true, {1e-300, 1e300}))) <= 24);
     CHECK(grid_lines(render_svg(plot_of(true, {5e-324, 1.0}))) <= 24);
@@ -50,8 +50,8 @@ TEST_CASE("an axis has a bounded number of ticks whatever its range", "[report][
 
 TEST_CASE("result numbers next to the ends of the double range are kept, not an exception",
           "[report][json][limits]") {
-    // The 10-digit text of a denormal or of the largest double does not read back as a double
-    // (std::stod threw out_of_range: exit 70 "stod", an IndexError in Python).
+    // The 10-digit text of a denormal or of the largest double is out of range for std::stod
+    // (out_of_range: an internal error, an IndexError in Python); the value is kept instead.
     CHECK(round10(1.5e-310) == 1.5e-310);
     const double largest = std::numeric_limits<double>::max();
     CHECK(round10(largest) == largest);
