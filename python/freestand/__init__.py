@@ -5,7 +5,9 @@ the same option checks, and returns what that command prints with --json (or wri
 result.json / fragility.json) as a dict; series of numbers come as float64 NumPy arrays. Units
 are SI and in the names (accel_mps2, dt_s, pga_g). Keyword options are the command's options
 with '-' written '_' (`a_g` is `--a-g`); an error names the option as the command line does
-(`--a-g`). Methods: docs/methods.md.
+(`--a-g`). A keyword that takes numbers refuses anything else (a string, a bool, a complex
+number, an array of them) with an InputError naming the keyword (`mu`), before any command runs.
+Methods: docs/methods.md.
 
 Errors are exceptions carrying the command's message, one class per exit-code class:
 UsageError (2), InputError (3), NumericalError (4), IoError (5), all subclasses of Error, each
@@ -61,6 +63,52 @@ class Record:
         return self.accel_mps2 / 9.81
 
 
+# Keyword options that take a number or a list of numbers, in any function. Their values are
+# checked here rather than by the option parser: a string would reach it as option text ("0.1,0.2"
+# for one number), and a bool as a bare flag, whose messages name a --flag the caller never typed.
+_NUMBER_OPTIONS = frozenset({
+    "a_g", "ag", "adv2_range", "av_g", "da_max", "damping", "dt", "duration", "fes_hz", "fmax",
+    "fmin", "fn_hz", "frequencies", "fs_required", "inertia", "inertia2", "mu", "mu2", "mu_k",
+    "mu_k2", "per_decade", "pga", "pga_g", "pgd_m", "pgv_mps", "pool", "restitution",
+    "restitution2", "rock_band_hz", "samples", "scale", "sd1", "sds", "seed", "threads", "tl",
+    "top", "tunnel_height", "v_ratio", "va_range", "vertical_ratio",
+})
+
+# NumPy kinds of real numbers: signed and unsigned integers, floats. Not b (bool), c (complex,
+# whose imaginary part a cast to float drops with only a warning), U/S (text) or O (objects).
+_REAL_KINDS = "iuf"
+
+
+def _real(value: Any, keyword: str) -> Any:
+    """value unchanged when it is a real number; InputError naming keyword otherwise."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (int, float, np.integer, np.floating)):
+        raise InputError(f"{keyword}: expected a real number, got {type(value).__name__} "
+                         f"{value!r}")
+    return value
+
+
+def _reals(values: Any, keyword: str) -> list:
+    """A sequence of real numbers as a list; InputError naming keyword otherwise (a string is
+    not a sequence of numbers here)."""
+    if isinstance(values, np.ndarray):
+        if values.ndim != 1 or values.dtype.kind not in _REAL_KINDS:
+            raise InputError(f"{keyword}: expected a one-dimensional array of real numbers, got "
+                             f"a {values.ndim}-dimensional array of {values.dtype}")
+        return values.tolist()
+    if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
+        raise InputError(f"{keyword}: expected a sequence of real numbers, got "
+                         f"{type(values).__name__} {values!r}")
+    return [_real(v, keyword) for v in values]
+
+
+def _number_text(value: Any, keyword: str) -> str:
+    """The option text of a number or a sequence of numbers (a comma list)."""
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return ",".join(_text(v) for v in _reals(value, keyword))
+    return _text(_real(value, keyword))
+
+
 def _text(value: Any) -> str:
     if isinstance(value, (bool, np.bool_)):
         raise TypeError("a flag takes True or False, not a value")
@@ -74,14 +122,19 @@ def _text(value: Any) -> str:
 
 
 def _args(**options: Any) -> list:
-    """Command-line arguments from keyword options: None and False leave an option out, True
-    gives a flag, a sequence a comma list, anything else its text."""
+    """Command-line arguments from keyword options: None leaves an option out; a number option
+    (_NUMBER_OPTIONS) takes a real number or a sequence of them; otherwise False leaves a flag
+    out, True gives it, a sequence gives a comma list and anything else its text."""
     args = []
     for name, value in options.items():
-        if value is None or value is False:
+        if value is None:
             continue
         flag = "--" + name.replace("_", "-")
-        if value is True:
+        if name in _NUMBER_OPTIONS:
+            args += [flag, _number_text(value, name)]
+        elif value is False:
+            continue
+        elif value is True:
             args.append(flag)
         elif isinstance(value, (list, tuple, np.ndarray)):
             args += [flag, ",".join(_text(v) for v in value)]
@@ -94,24 +147,30 @@ def _block(block: Union[str, Mapping[str, float]]) -> str:
     """{"b": 0.15, "h": 0.6, "m": 38} (or the command line's "b=0.15,h=0.6,m=38")."""
     if isinstance(block, str):
         return block
-    return ",".join(f"{key}={_text(value)}" for key, value in block.items())
+    return ",".join(f"{key}={_text(_real(value, f'block[{key!r}]'))}"
+                    for key, value in block.items())
 
 
 def _cg(cg: Union[None, str, Sequence[float], Mapping[str, float]]) -> Optional[str]:
     if cg is None or isinstance(cg, str):
         return cg
     if isinstance(cg, Mapping):
-        return _block(cg)
-    return ",".join(_text(v) for v in cg)
+        return ",".join(f"{key}={_text(_real(value, f'cg[{key!r}]'))}"
+                        for key, value in cg.items())
+    return _number_text(list(cg), "cg")
 
 
 def _samples(values: Any, what: str) -> np.ndarray:
     """values as float64 samples; InputError naming `what`, as the module does, when they are
-    not numbers (its shape is checked there)."""
+    not real numbers (its shape is checked there)."""
     try:
-        return np.asarray(values, dtype=float)
+        array = np.asarray(values)
     except (TypeError, ValueError) as e:
         raise InputError(f"{what}: expected a one-dimensional array of numbers ({e})") from None
+    if array.dtype.kind not in _REAL_KINDS:
+        raise InputError(f"{what}: expected a one-dimensional array of real numbers, got an "
+                         f"array of {array.dtype}")
+    return array.astype(float)
 
 
 def read_record(path: PathLike) -> Record:
@@ -197,14 +256,16 @@ def simulate(block: Union[str, Mapping[str, float]], motion: Union[Record, np.nd
         accel, label = motion, "python array"
     vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
     return _fs.simulate(_args(block=_block(block), cg=_cg(cg), mu=mu, **options),
-                        _samples(accel, "accel_mps2"), float(dt_s), vertical, float(scale),
+                        _samples(accel, "accel_mps2"), float(_real(dt_s, "dt_s")), vertical,
+                        float(_real(scale, "scale")),
                         label, series)
 
 
 def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:
     """Assesses a case file (`freestand assess`): result.json as a dict; pga_g replaces the
     case's levels. The reports (HTML, Markdown, figures) are the command line's to write."""
-    return _fs.assess(os.fspath(case_file), None if pga_g is None else [float(p) for p in pga_g])
+    levels = None if pga_g is None else [float(p) for p in _reals(pga_g, "pga_g")]
+    return _fs.assess(os.fspath(case_file), levels)
 
 
 def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.0:0.1",
@@ -212,7 +273,9 @@ def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.
     """P(overturn), P(slide), P(rock) against PGA (`freestand fragility`): fragility.json as a
     dict. pga as "START:STOP:STEP" or a list; samples=, pool=, seed=, threads= (0: all cores;
     the result does not depend on it); records=[files] a user suite."""
-    args = _args(pga=pga, **options)
+    # "START:STOP:STEP" is the one text a number keyword takes; a list goes as numbers.
+    args = ["--pga", pga] if isinstance(pga, str) else _args(pga=pga)
+    args += _args(**options)
     if records:
         args += ["--records"] + [os.fspath(r) for r in records]
     return _fs.fragility(os.fspath(case_file), args)

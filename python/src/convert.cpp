@@ -53,13 +53,21 @@ py::array_t<double> to_numpy(const std::vector<double>& values) {
 }
 
 std::vector<double> from_numpy(const py::handle& values, const std::string& what) {
-    // ensure() leaves a Python error (ValueError for strings) where it cannot convert: that is
-    // the same bad input as a 2-D array, so it is reported the same way.
-    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-    if (!a) PyErr_Clear();
-    if (!a || a.ndim() != 1)
-        throw InputError(SourceLocation{"", 0, what},
-                         "expected a one-dimensional array of numbers");
+    // ensure() leaves a Python error where it cannot make an array: that is the same bad input
+    // as a 2-D array, so it is reported the same way.
+    const SourceLocation where{"", 0, what};
+    const std::string expected = "expected a one-dimensional array of real numbers";
+    const py::array given = py::array::ensure(values);
+    if (!given) PyErr_Clear();
+    if (!given || given.ndim() != 1) throw InputError(where, expected);
+    // Integers and floats only: the cast to double would drop a complex sample's imaginary part
+    // with no more than a NumPy warning, and read bools and numeric text as numbers.
+    const char kind = given.dtype().kind();
+    if (kind != 'i' && kind != 'u' && kind != 'f')
+        throw InputError(where, fmt::format("{}, got an array of {}", expected,
+                                            py::str(given.dtype()).cast<std::string>()));
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+    if (!a) throw py::error_already_set();
     return {a.data(), a.data() + a.size()};
 }
 

@@ -208,7 +208,7 @@ std::optional<std::array<double, 2>> read_bounds(TableReader& r, const std::stri
 // docs/methods.md s.7's default around the single measurement, stated as an assumption.
 void read_friction_bounds(TableReader& r, BaseContact& base, bool mu_given, bool table_range,
                           std::vector<std::string>& assumptions) {
-    const auto range = read_bounds(r, "mu_s_range", Range{0.0, 2.0});
+    const auto range = read_bounds(r, "mu_s_range", core::limits::friction);
     if (!range && table_range) {
         assumptions.push_back(fmt::format(
             "Friction bounds of {}: mu_s in [{:.3g}, {:.3g}] ({}); sliding demands use the lower "
@@ -239,8 +239,8 @@ void read_friction_bounds(TableReader& r, BaseContact& base, bool mu_given, bool
 }
 
 void read_base(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
-    const Range mu_range{0.0, 2.0};
-    const Range r_range{0.0, 1.0};
+    const Range mu_range = core::limits::friction;
+    const Range r_range = core::limits::restitution;
     const bool named = r.has("base_material");
     if (const auto name = r.string("base_material")) {
         const Material* m = find_material(*name);
@@ -363,7 +363,7 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
     }
     c.name = r.required_string("name");
     c.description = r.string("description").value_or("");
-    c.mass_kg = r.required_number("mass_kg", Range{0.0, 1e7, false, true});
+    c.mass_kg = r.required_number("mass_kg", core::limits::mass_kg);
     read_geometry(r, c);
     if (!c.height_m) {
         assumptions.push_back(fmt::format(
@@ -550,14 +550,11 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
         }
         s.design = *design;
     }
-    const auto pga = r.numbers("pga_g", Range{0.0, max_pga_g, false, true});
-    if (!pga) r.fail("pga_g", "missing required key (a non-empty array of numbers in (0, 3])");
-    for (std::size_t i = 1; i < pga->size(); ++i) {
-        if ((*pga)[i] <= (*pga)[i - 1]) {
-            r.fail("pga_g", fmt::format("levels must be strictly increasing; {} follows {}",
-                                        (*pga)[i], (*pga)[i - 1]));
-        }
-    }
+    const auto pga = r.numbers("pga_g", core::limits::pga_level_g);
+    if (!pga)
+        r.fail("pga_g", fmt::format("missing required key (a non-empty array of numbers in {})",
+                                    describe(core::limits::pga_level_g)));
+    core::limits::require_pga_levels(*pga, r.where("pga_g"));
     s.pga_g = *pga;
     // (0, 1.5]: the vertical history is matched to a target scaled by the ratio, so 0 leaves it
     // nothing to match.
@@ -590,7 +587,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
     s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
     read_energy_displacement(r, s, assumptions);
     read_realism(r, s, assumptions);
-    s.dbe_pga_g = r.number("dbe_pga_g", Range{0.0, max_pga_g, false, true});
+    s.dbe_pga_g = r.number("dbe_pga_g", core::limits::pga_level_g);
     if (s.dbe_pga_g)
         assumptions.push_back(fmt::format(
             "Design-basis earthquake (DBE) PGA {:g} g (site.dbe_pga_g): the ASCE 43-05 s.1.3 "
@@ -631,14 +628,16 @@ Options read_options(TableReader& r, const std::filesystem::path& case_dir) {
         }
     }
     o.fragility.enabled = r.boolean("fragility").value_or(false);
-    o.fragility.pga_g = r.numbers("fragility_pga_g", Range{0.0, 3.0, false, true})
+    o.fragility.pga_g = r.numbers("fragility_pga_g", core::limits::pga_level_g)
                             .value_or(std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7,
                                                           0.8, 0.9, 1.0});
-    for (std::size_t i = 1; i < o.fragility.pga_g.size(); ++i)
-        if (o.fragility.pga_g[i] <= o.fragility.pga_g[i - 1])
-            r.fail("fragility_pga_g", "levels must be strictly increasing");
+    core::limits::require_pga_levels(o.fragility.pga_g, r.where("fragility_pga_g"));
     o.fragility.samples =
         static_cast<int>(r.integer("fragility_samples", 1, 100000).value_or(100));
+    core::limits::require_within(
+        static_cast<double>(o.fragility.pga_g.size()) * o.fragility.samples,
+        core::limits::max_fragility_samples, r.where("fragility_samples"),
+        "the fragility run's samples (levels x fragility_samples)");
     if (!o.fragility.enabled && (r.has("fragility_pga_g") || r.has("fragility_samples")))
         r.fail(r.has("fragility_pga_g") ? "fragility_pga_g" : "fragility_samples",
                "applies only with fragility = true");
@@ -709,7 +708,11 @@ core::Distribution read_distribution(TableReader& outer, const std::string& key,
 
 Uncertainty read_uncertainty(TableReader& r, const std::string& file) {
     Uncertainty u;
-    if (r.has("mu_s")) u.mu_s = read_distribution(r, "mu_s", Range{0.0, 10.0}, std::nullopt, file);
+    // A drawn friction is a case's friction (core::limits::friction): a lognormal law is
+    // truncated at its top, as restitution's at 1, so no sample leaves the model's range.
+    if (r.has("mu_s"))
+        u.mu_s = read_distribution(r, "mu_s", core::limits::friction, core::limits::friction.hi,
+                                   file);
     if (r.has("restitution"))
         u.restitution = read_distribution(r, "restitution", Range{0.0, 1.0}, 1.0, file);
     r.finish({"mu_s", "restitution"});

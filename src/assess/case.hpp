@@ -123,7 +123,7 @@ struct Site {
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy
     /// method's DeltaD (docs/methods.md s.4: the thesis's test band started at 0.5 Hz), Hz.
     double energy_highpass_hz = 0.5;
-    /// PGA of the design-basis earthquake, g ([site] dbe_pga_g, in (0, 3]): given, the ASCE
+    /// PGA of the design-basis earthquake, g ([site] dbe_pga_g, in [0.001, 3]): given, the ASCE
     /// 43-05 s.1.3 performance goal is checked at it and at 1.5 x DBE (docs/methods.md s.6
     /// step 5, src/goal/).
     std::optional<double> dbe_pga_g;

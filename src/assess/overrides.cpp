@@ -5,6 +5,7 @@
 
 #include "assess/materials.hpp"
 #include "assess/toml_reader.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::assess {
 
@@ -34,20 +35,7 @@ void check_integer(long long v, long long lo, long long hi, const SourceLocation
 void check_overrides(const CaseOverrides& o,
                      const std::function<SourceLocation(const std::string& key)>& where) {
     if (o.pga_g) {
-        const std::vector<double>& p = *o.pga_g;
-        if (p.empty()) throw InputError(where("pga_g"), "expected at least one PGA level");
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            if (!(p[i] > 0.0 && p[i] <= max_pga_g)) {
-                throw InputError(where("pga_g"), fmt::format("value {} is out of range; "
-                                                             "expected (0, {}]",
-                                                             p[i], max_pga_g));
-            }
-            if (i > 0 && p[i] <= p[i - 1]) {
-                throw InputError(where("pga_g"),
-                                 fmt::format("levels must be strictly increasing; {} follows {}",
-                                             p[i], p[i - 1]));
-            }
-        }
+        core::limits::require_pga_levels(*o.pga_g, where("pga_g"));
     }
     if (o.base_material && find_material(*o.base_material) == nullptr) {
         throw InputError(where("base_material"),

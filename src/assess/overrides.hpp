@@ -11,8 +11,8 @@
 
 namespace freestand::assess {
 
-/// Limits of the overridable values; the case reader applies the same ones.
-inline constexpr double max_pga_g = 3.0;                    ///< [site] pga_g levels in (0, 3] g
+/// Limits of the overridable values; the case reader applies the same ones (PGA levels:
+/// core::limits::require_pga_levels).
 inline constexpr long long histories_limit = 1000;  ///< [options] histories_per_level and max_histories_per_level
 /// [options] seed in [0, 2^53 - 1]: every seed is exact as a JSON number.
 inline constexpr long long max_seed = 9007199254740991LL;
@@ -37,7 +37,7 @@ inline const std::vector<std::string>& override_keys() {
     return keys;
 }
 
-/// Checks each value on its own (levels in (0, 3] and strictly increasing, a material of the
+/// Checks each value on its own (levels as core::limits::require_pga_levels takes them, a material of the
 /// table, seed and histories within the case reader's ranges); where(key) locates a key for the
 /// InputError. What depends on the case (a level weightless at its vertical ratio, a DeltaD
 /// table of another length) is checked when the case is read.

@@ -13,6 +13,7 @@
 #include "assess/settle.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::assess {
 
@@ -366,14 +367,7 @@ Upgrade search_materials(const Case& c, const RunSettings& run) {
 
 Case with_pga_levels(Case c, const std::vector<double>& pga_g) {
     const SourceLocation where{"", 0, "pga_levels"};
-    if (pga_g.empty()) throw InputError(where, "expected at least one PGA level");
-    for (std::size_t i = 0; i < pga_g.size(); ++i) {
-        require_in_range(pga_g[i], 0.0, 3.0, where, false, true);
-        if (i > 0 && pga_g[i] <= pga_g[i - 1]) {
-            throw InputError(where, fmt::format("levels must be strictly increasing; {} follows {}",
-                                                pga_g[i], pga_g[i - 1]));
-        }
-    }
+    core::limits::require_pga_levels(pga_g, where);
     if (c.site.energy_table_displacement_m && c.site.energy_table_displacement_m->size() != pga_g.size()) {
         throw InputError(where, fmt::format("the case gives site.energy_table_displacement_m for "
                                             "{} levels, the override {}: the table cannot follow",

@@ -21,8 +21,9 @@ AssessmentResult assess(const Case& c, const RunSettings& run = {});
 /// fails, and by tests for every case).
 Upgrade search_materials(const Case& c, const RunSettings& run = {});
 
-/// Returns the case with its PGA levels replaced (the command line's --pga). Levels must be in
-/// (0, 3] g, strictly increasing, with a vertical PGA below 1 g, and as many as the case's
+/// Returns the case with its PGA levels replaced (the command line's --pga). Levels must be as
+/// core::limits::require_pga_levels takes them (1 to 1000, in [0.001, 3] g, strictly
+/// increasing), with a vertical PGA below 1 g, and as many as the case's
 /// energy_table_displacement_m: InputError with field "pga_levels" otherwise.
 Case with_pga_levels(Case c, const std::vector<double>& pga_g);
 

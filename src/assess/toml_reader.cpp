@@ -49,11 +49,6 @@ int line_of(const toml::node& node) { return static_cast<int>(node.source().begi
 
 }  // namespace
 
-std::string describe(Range range) {
-    return fmt::format("{}{}, {}{}", range.lo_inclusive ? '[' : '(', range.lo, range.hi,
-                       range.hi_inclusive ? ']' : ')');
-}
-
 TableReader::TableReader(const toml::table* table, std::string file, std::string table_name)
     : table_(table), file_(std::move(file)), name_(std::move(table_name)) {}
 
@@ -96,9 +91,7 @@ double TableReader::as_number(const std::string& key, const toml::node& node, Ra
         fail(key, fmt::format("expected a number in {}, got {}", describe(range),
                               type_name(node.type())));
     }
-    const bool above = range.lo_inclusive ? value >= range.lo : value > range.lo;
-    const bool below = range.hi_inclusive ? value <= range.hi : value < range.hi;
-    if (!std::isfinite(value) || !above || !below) {
+    if (!core::limits::within(value, range)) {
         fail(key, fmt::format("value {} is out of range; expected {}", value, describe(range)));
     }
     return value;

@@ -10,19 +10,17 @@
 
 #include "assess/overrides.hpp"
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::assess {
 
 /// The TOML document; a syntax error is an InputError at file_label and its line.
 toml::table parse_toml(const std::string& text, const std::string& file_label);
 
-/// Allowed interval of a number; bounds inclusive unless stated.
-struct Range {
-    double lo;
-    double hi;
-    bool lo_inclusive = true;
-    bool hi_inclusive = true;
-};
+/// Allowed interval of a number; bounds inclusive unless stated (the limits' own type, so that
+/// a case key and a command-line option can share one range of core/limits.hpp).
+using Range = core::limits::Range;
+using core::limits::describe;
 
 /// Reads keys of one table. Errors name "file:line: table.key: ..." and the allowed range.
 class TableReader {
@@ -71,9 +69,6 @@ class TableReader {
     std::string name_;
     std::set<std::string> read_;
 };
-
-/// "[lo, hi]" / "(lo, hi]" etc., for messages.
-std::string describe(Range range);
 
 /// Writes a batch list's overrides (assess/overrides.hpp) into a parsed case document, creating
 /// [site] or [options] when absent; declared here, with the TOML reader, so that the overrides'

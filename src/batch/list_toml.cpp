@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "assess/toml_reader.hpp"
+#include "core/limits.hpp"
 #include "batch/list.hpp"
 #include "batch/list_detail.hpp"
 
@@ -19,7 +20,7 @@ BatchEntry read_case_table(const toml::table& t, const std::string& file) {
     e.case_file = detail::resolve_case(r.required_string("file"), file);
     e.name = r.string("name").value_or(e.case_file.stem().string());
     assess::CaseOverrides& o = e.overrides;
-    o.pga_g = r.numbers("pga_g", assess::Range{0.0, assess::max_pga_g, false, true});
+    o.pga_g = r.numbers("pga_g", core::limits::pga_level_g);
     o.base_material = r.string("base_material");
     o.seed = r.integer("seed", 0, assess::max_seed);
     o.histories_per_level =

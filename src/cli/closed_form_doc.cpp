@@ -6,6 +6,7 @@
 #include "cli/documents.hpp"
 #include "cli/spectra_cli.hpp"
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "rocking/checks.hpp"
 #include "sliding/block_spec.hpp"
 #include "sliding/spectrum_input.hpp"
@@ -114,6 +115,15 @@ std::optional<double> opt_number(const po::variables_map& vm, const char* option
     return parse_double(vm[option].as<std::string>(), std::string("--") + option);
 }
 
+// An optional number within a range a case file applies too (core/limits.hpp), named as the
+// option the user typed.
+std::optional<double> opt_limited(const po::variables_map& vm, const char* option,
+                                  const core::limits::Range& range) {
+    const std::optional<double> v = opt_number(vm, option);
+    if (v) core::limits::require_in(*v, range, SourceLocation{"", 0, std::string("--") + option});
+    return v;
+}
+
 // An optional number in [lo, hi) (hi = inf: [lo, inf)); range errors name the option the user
 // typed rather than the library's field.
 std::optional<double> opt_in_range(const po::variables_map& vm, const char* option, double lo,
@@ -133,11 +143,8 @@ rocking::RockingInput read_input(const po::variables_map& vm) {
     in.pga_h_g = opt_in_range(vm, "pga-g", 0.0, HUGE_VAL, true);
     in.pga_v_g = opt_in_range(vm, "av-g", 0.0, 1.0, true);
     in.pgv_mps = opt_in_range(vm, "pgv-mps", 0.0, HUGE_VAL, true);
-    in.mu_s = opt_in_range(vm, "mu", 0.0, HUGE_VAL, true);
-    in.restitution = opt_number(vm, "restitution");
-    if (in.restitution)
-        require_in_range(*in.restitution, 0.0, 1.0, SourceLocation{"", 0, "--restitution"}, false,
-                         true);
+    in.mu_s = opt_limited(vm, "mu", core::limits::friction);
+    in.restitution = opt_limited(vm, "restitution", core::limits::restitution);
     // FS = alpha / theta0 >= 1 whenever theta0 < alpha, so a requirement below 1 checks nothing.
     in.fs_required = opt_in_range(vm, "fs-required", 1.0, HUGE_VAL, true).value_or(1.5);
     in.fixed_base_hz = opt_in_range(vm, "fn-hz", 0.0, HUGE_VAL, false);
@@ -160,7 +167,7 @@ const char* edge_name(block::Edge e) { return e == block::Edge::left ? "left" : 
 po::options_description slide_options() {
     po::options_description desc("slide options");
     desc.add_options()
-        ("mu", po::value<std::string>()->required(), "static friction coefficient mu >= 0")
+        ("mu", po::value<std::string>()->required(), "static friction coefficient mu in [0, 2]")
         ("av-g", po::value<std::string>()->default_value("0"), "peak vertical acceleration A_v, g")
         ("pgd-m", po::value<std::string>(), "peak ground displacement, m (energy method)")
         ("pga-g", po::value<std::string>(),
@@ -176,7 +183,7 @@ SlideRun slide_run(const po::variables_map& vm) {
         throw UsageError("give exactly one of --fes-hz and --spectrum10 (see freestand slide --help)");
     sliding::SlidingInput in;
     in.mu_s = parse_double(vm["mu"].as<std::string>(), "--mu");
-    require_in_range(in.mu_s, 0.0, HUGE_VAL, SourceLocation{"", 0, "--mu"}, true, false);
+    core::limits::require_in(in.mu_s, core::limits::friction, SourceLocation{"", 0, "--mu"});
     in.av_g = parse_double(vm["av-g"].as<std::string>(), "--av-g");
     require_in_range(in.av_g, 0.0, 2.5, SourceLocation{"", 0, "--av-g"}, true, false);
     // Range checks here so the message names the option the user typed, not the library field.
@@ -229,7 +236,7 @@ po::options_description classify_options() {
         ("block", po::value<std::string>()->required(), "box b=HALF_WIDTH,h=HALF_HEIGHT[,m=KG] (m)")
         ("cg", po::value<std::string>(), "CG x=OFFSET_TO_RIGHT,h=HEIGHT (m); needs --inertia")
         ("inertia", po::value<std::string>(), "I_c about the CG, kg m^2 (needs m=)")
-        ("mu", po::value<std::string>()->required(), "static friction coefficient mu_s >= 0")
+        ("mu", po::value<std::string>()->required(), "static friction coefficient mu_s in [0, 2]")
         ("a-g", po::value<std::string>()->required(), "peak horizontal acceleration, g")
         ("av-g", po::value<std::string>()->default_value("0"),
          "peak vertical acceleration, g, applied downward (worst case)");
@@ -244,7 +251,7 @@ ClassifyRun classify_run(const po::variables_map& vm) {
     const double mu = parse_double(vm["mu"].as<std::string>(), "--mu");
     const double a_g = parse_double(vm["a-g"].as<std::string>(), "--a-g");
     const double av_g = parse_double(vm["av-g"].as<std::string>(), "--av-g");
-    require_in_range(mu, 0.0, HUGE_VAL, SourceLocation{"", 0, "--mu"}, true, false);
+    core::limits::require_in(mu, core::limits::friction, SourceLocation{"", 0, "--mu"});
     require_in_range(a_g, 0.0, HUGE_VAL, SourceLocation{"", 0, "--a-g"}, true, false);
     require_in_range(av_g, 0.0, 1.0, SourceLocation{"", 0, "--av-g"}, true, false);
     const sliding::PeakInitiation p = sliding::classify_peak(blk, mu, a_g, av_g);

@@ -22,12 +22,20 @@ inline const std::map<std::string, std::string>& flag_names() {
         {"sine.dt_s", "--sine dt (s)"},
         {"cd_dt_s", "--dt"},
         {"pga_levels", "--pga"},
+        // fragility::Config, behind fragility's options; spectra's design levels, behind --pga
+        {"pga_g", "--pga"},
+        {"samples", "--samples"},
+        {"pool", "--pool"},
         // motion::GenerateOptions, behind generate's options
         {"dt_s", "--dt"},
         {"duration_s", "--duration"},
         {"components", "--components"},
         {"seed_records", "--seed-record"},
         {"frequency_hz", "--frequencies"},
+        // spectra::log_frequencies, behind --fmin, --fmax and --per-decade
+        {"fmin_hz", "--fmin"},
+        {"fmax_hz", "--fmax"},
+        {"per_decade", "--per-decade"},
         // block::Block and sliding::box_spec, behind --block, --cg and --inertia
         {"b (half-width, m)", "--block b (half-width, m)"},
         {"h (half-height, m)", "--block h (half-height, m)"},

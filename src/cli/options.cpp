@@ -2,12 +2,14 @@
 
 #include "sliding/block_spec.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::cli {
 
@@ -91,8 +93,9 @@ std::vector<double> parse_levels(const std::string& text, const std::string& opt
     if (!(step > 0.0) || last < first)
         throw UsageError(fmt::format("{}: \"{}\" needs STEP > 0 and STOP >= START", option, text));
     const double count = std::floor((last - first) / step + 1e-9) + 1.0;
-    if (count > 1000.0)
-        throw UsageError(fmt::format("{}: \"{}\" gives {} levels; at most 1000", option, text, count));
+    if (count > core::limits::max_pga_levels)
+        throw UsageError(fmt::format("{}: \"{}\" gives {} levels; at most {} (README, Limits)",
+                                     option, text, count, core::limits::max_pga_levels));
     std::vector<double> out;
     for (int i = 0; i < static_cast<int>(count); ++i)
         out.push_back(std::round((first + i * step) * 1e12) / 1e12);
@@ -113,23 +116,30 @@ std::array<int, 2> parse_shard(const std::string& text, const std::string& optio
     return {k, n};
 }
 
-std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,
-                                               const std::vector<std::string>& allowed) {
-    std::map<std::string, double> out;
-    if (text.empty()) return out;
-    for (const std::string& item : split_list(text)) {
+std::map<std::string, std::string> parse_key_texts(const std::vector<std::string>& items,
+                                                   const std::string& option,
+                                                   const std::vector<std::string>& allowed) {
+    std::map<std::string, std::string> out;
+    for (const std::string& item : items) {
         const std::size_t eq = item.find('=');
         if (eq == std::string::npos)
             throw UsageError(fmt::format("{}: expected key=value; got \"{}\"", option, item));
         const std::string key = item.substr(0, eq);
-        bool known = false;
-        for (const auto& a : allowed) known = known || a == key;
-        if (!known)
+        if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
             throw UsageError(fmt::format("{}: unknown key \"{}\"; allowed: {}", option, key,
                                          fmt::join(allowed, ", ")));
-        if (out.count(key)) throw UsageError(fmt::format("{}: key \"{}\" given twice", option, key));
-        out[key] = parse_double(item.substr(eq + 1), option + " " + key);
+        if (!out.emplace(key, item.substr(eq + 1)).second)
+            throw UsageError(fmt::format("{}: key \"{}\" given twice", option, key));
     }
+    return out;
+}
+
+std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,
+                                               const std::vector<std::string>& allowed) {
+    std::map<std::string, double> out;
+    if (text.empty()) return out;
+    for (const auto& [key, value] : parse_key_texts(split_list(text), option, allowed))
+        out[key] = parse_double(value, option + " " + key);
     return out;
 }
 

@@ -45,7 +45,15 @@ double parse_double(const std::string& text, const std::string& option);
 /// option otherwise, so that "2.5" is never truncated to 2.
 std::uint64_t parse_whole(const std::string& text, const std::string& option, double lo, double hi);
 
-/// "b=0.15,h=0.6,m=38" -> {{"b",0.15},{"h",0.6},{"m",38}}; keys must be in allowed.
+/// {"ramp=1s", "phase=90"} -> {{"ramp","1s"},{"phase","90"}}: the one key=value parser of
+/// option values. UsageError naming option for an item without '=', a key not in allowed, or a
+/// key given twice (a repeated key would otherwise silently take its last value).
+std::map<std::string, std::string> parse_key_texts(const std::vector<std::string>& items,
+                                                   const std::string& option,
+                                                   const std::vector<std::string>& allowed);
+
+/// "b=0.15,h=0.6,m=38" -> {{"b",0.15},{"h",0.6},{"m",38}}: parse_key_texts of the comma items,
+/// each value a number.
 std::map<std::string, double> parse_key_values(const std::string& text, const std::string& option,
                                                const std::vector<std::string>& allowed);
 

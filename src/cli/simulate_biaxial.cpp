@@ -111,17 +111,14 @@ dynamics::SineSpec parse_sine_spec(const std::string& text, const std::string& o
     spec.amplitude_g = with_suffix(parts[0], "g", option + " amplitude (g)");
     spec.frequency_hz = with_suffix(parts[1], "Hz", option + " frequency (Hz)");
     spec.duration_s = with_suffix(parts[2], "s", option + " duration (s)");
-    for (std::size_t i = 3; i < parts.size(); ++i) {
-        if (parts[i].rfind("ramp=", 0) == 0) {
-            spec.ramp_s = with_suffix(parts[i].substr(5), "s", option + " ramp (s)");
-        } else if (allow_phase && parts[i].rfind("phase=", 0) == 0) {
-            spec.phase_deg = parse_double(parts[i].substr(6), option + " phase (degrees)");
-        } else {
-            throw UsageError(fmt::format("{}: expected {} as item {}; got \"{}\"", option,
-                                         allow_phase ? "ramp=<s> or phase=<deg>" : "ramp=<s>",
-                                         i + 1, parts[i]));
-        }
-    }
+    const std::vector<std::string> tail(parts.begin() + 3, parts.end());
+    const auto named = parse_key_texts(
+        tail, option,
+        allow_phase ? std::vector<std::string>{"ramp", "phase"} : std::vector<std::string>{"ramp"});
+    if (const auto ramp = named.find("ramp"); ramp != named.end())
+        spec.ramp_s = with_suffix(ramp->second, "s", option + " ramp (s)");
+    if (const auto phase = named.find("phase"); phase != named.end())
+        spec.phase_deg = parse_double(phase->second, option + " phase (degrees)");
     return spec;
 }
 

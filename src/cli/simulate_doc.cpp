@@ -16,7 +16,7 @@ po::options_description simulate_model_options() {
          "of the base's centre, as classify and rock take it")
         ("inertia", po::value<double>(), "I_c about the CG (kg m^2)")
         ("top", po::value<double>(), "height of the top corners for top_accel (m; default 2 h)")
-        ("mu", po::value<double>()->required(), "static friction coefficient")
+        ("mu", po::value<double>()->required(), "static friction coefficient, in [0, 2]")
         ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
         ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
         ("integrator", po::value<std::string>()->default_value("event"), "event | cd")

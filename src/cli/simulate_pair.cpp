@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "dynamics/pair.hpp"
 
 namespace freestand::cli {
@@ -29,11 +30,12 @@ dynamics::BlockModel unit2_model(const po::variables_map& vm) {
     } catch (const InputError& e) {
         throw InputError({"", 0, "--block2"}, e.what());
     }
+    // The first unit's ranges, which are a case's (core/limits.hpp), named as these options.
     const double mu = vm["mu2"].as<double>();
-    require_in_range(mu, 0.0, 1e6, {"", 0, "--mu2"});
+    core::limits::require_in(mu, core::limits::friction, {"", 0, "--mu2"});
     const std::optional<double> mu_k = opt_double(vm, "mu-k2"), r = opt_double(vm, "restitution2");
     if (mu_k) require_in_range(*mu_k, 0.0, mu, {"", 0, "--mu-k2 (at most --mu2)"});
-    if (r) require_in_range(*r, 0.0, 1.0, {"", 0, "--restitution2"});
+    if (r) core::limits::require_in(*r, core::limits::restitution, {"", 0, "--restitution2"});
     return dynamics::make_block_model(blk, mu, mu_k, r);
 }
 

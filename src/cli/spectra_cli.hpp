@@ -12,6 +12,7 @@
 
 #include "cli/options.hpp"
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "spectra/spectrum.hpp"
 
 namespace freestand::cli {
@@ -67,6 +68,13 @@ inline std::vector<double> frequencies_from(const po::variables_map& vm) {
     const double per = parse_double(vm["per-decade"].as<std::string>(), "--per-decade");
     require_positive(fmin, SourceLocation{"", 0, "--fmin"});
     require_positive(fmax, SourceLocation{"", 0, "--fmax"});
+    // The grid's ends are checked as the options they came from, not as its frequencies.
+    core::limits::require_at_least(fmin, core::limits::min_frequency_hz,
+                                   SourceLocation{"", 0, "--fmin"},
+                                   "a response-spectrum frequency (Hz)");
+    core::limits::require_within(fmax, core::limits::max_frequency_hz,
+                                 SourceLocation{"", 0, "--fmax"},
+                                 "a response-spectrum frequency (Hz)");
     if (!(fmax > fmin))
         throw InputError(SourceLocation{"", 0, "--fmax"},
                          fmt::format("{} Hz must be greater than --fmin {} Hz", fmax, fmin));

@@ -3,6 +3,7 @@
 /// Each is documented in the README's "Limits" table; exceeding one is an InputError (exit 3)
 /// naming the parameter, what the request needs and the limit.
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +36,16 @@ inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
 /// --ag), the upper end of a case's pga_g levels: 'target --design rg1.60 --pga 1e300' printed
 /// spectral accelerations of 7.5e298 g with exit 0.
 inline constexpr double max_design_level_g = 3.0;
+/// Lowest PGA level of a case or a fragility run, g (1 cm/s^2), far below any design level
+/// (they start near 0.05 g). The static margin grows as 1 / PGA (docs/methods.md s.2): at
+/// 1e-300 g it is 2.5e299, a 300-digit number in a report.
+inline constexpr double min_pga_level_g = 1e-3;
+/// PGA levels of one case, one override or one fragility run: each level costs a set of
+/// histories and a report row (about 70 KB: 1e5 levels exhaust the memory).
+inline constexpr double max_pga_levels = 1000.0;
+/// Samples of one fragility run, levels x samples per level: each sample is a time-history
+/// simulation (a few ms to a second), so 1e6 is already days of CPU.
+inline constexpr double max_fragility_samples = 1e6;
 /// A block's lengths (half-widths, CG height), m: above 100 m it is not equipment standing on
 /// a floor. No lower limit: a CG over an edge (CG to edge -> 0) is a needle that topples at
 /// once, and is assessed as one (issue 16).
@@ -49,8 +60,44 @@ inline constexpr double max_fixed_steps = 1e8;
 /// and its table header's on another, so the cap bounds the depth to about this many tables.
 inline constexpr std::size_t max_case_line_chars = 4096;
 
+/// An allowed interval of a physical value; bounds inclusive unless stated.
+struct Range {
+    double lo;
+    double hi;
+    bool lo_inclusive = true;
+    bool hi_inclusive = true;
+};
+
+/// True when value lies in range (a NaN never does).
+bool within(double value, const Range& range);
+
+/// "[lo, hi]", "(lo, hi]" etc., for messages.
+std::string describe(const Range& range);
+
+/// The ranges of the physical values that both a case file and the command line accept, so
+/// that every entry point refuses the same values (docs/methods.md s.1 and s.7).
+/// Static and kinetic friction, mu_s and mu_k: measured bases span 0.1 to 0.8 (s.7); above 2
+/// a base is no longer a friction contact.
+inline constexpr Range friction{0.0, 2.0};
+/// Restitution on angular velocity, r (s.1).
+inline constexpr Range restitution{0.0, 1.0};
+/// One PGA level, g: a case's pga_g, dbe_pga_g and fragility_pga_g, assess's and fragility's
+/// --pga, a batch list's pga_g.
+inline constexpr Range pga_level_g{min_pga_level_g, max_design_level_g};
+/// A block's mass, kg.
+inline constexpr Range mass_kg{min_mass_kg, max_mass_kg};
+
+/// Throws InputError at where unless value lies in range:
+/// "value <value> is out of range; expected <range>".
+void require_in(double value, const Range& range, const SourceLocation& where);
+
+/// Throws InputError at where unless pga_g holds 1 to max_pga_levels levels, each within
+/// pga_level_g, strictly increasing. The count is checked first, before any level is used.
+void require_pga_levels(const std::vector<double>& pga_g, const SourceLocation& where);
+
 /// Throws InputError at where unless needed <= limit (a NaN need counts as too large):
-/// "<what>: <needed> is above the limit <limit> (README, Limits)".
+/// "<what>: <needed> is above the limit <limit> (README, Limits)", both numbers at 4
+/// significant digits or as many more as it takes to tell them apart.
 void require_within(double needed, double limit, const SourceLocation& where,
                     std::string_view what);
 

@@ -13,8 +13,8 @@
 namespace freestand::dynamics {
 
 BiaxialModel make_biaxial_model(double mu_s, std::optional<double> mu_k) {
-    if (!std::isfinite(mu_s) || mu_s < 0.0)
-        throw InputError({"", 0, "mu_s"}, fmt::format("static friction must be >= 0; got {}", mu_s));
+    // The case's range (core::limits::friction), whichever entry point built the model.
+    core::limits::require_in(mu_s, core::limits::friction, {"", 0, "mu_s"});
     BiaxialModel m{mu_s, mu_k.value_or(mu_s)};
     if (!std::isfinite(m.mu_k) || m.mu_k < 0.0 || m.mu_k > mu_s)
         throw InputError({"", 0, "mu_k"},

@@ -36,8 +36,8 @@ const char* overturn_criterion_name(OverturnCriterion criterion) {
 
 BlockModel make_block_model(const block::Block& block, double mu_s, std::optional<double> mu_k,
                             std::optional<double> restitution, std::optional<double> top_height_m) {
-    if (!std::isfinite(mu_s) || mu_s < 0.0)
-        throw InputError({"", 0, "mu_s"}, fmt::format("static friction must be >= 0; got {}", mu_s));
+    // The case's range (core::limits::friction), whichever entry point built the model.
+    core::limits::require_in(mu_s, core::limits::friction, {"", 0, "mu_s"});
     BlockModel m;
     m.block = block;
     m.mu_s = mu_s;
@@ -47,10 +47,7 @@ BlockModel make_block_model(const block::Block& block, double mu_s, std::optiona
                          fmt::format("kinetic friction must be in [0, mu_s = {}]; got {}", mu_s,
                                      m.mu_k));
     if (restitution) {
-        const double r = *restitution;
-        if (!std::isfinite(r) || r < 0.0 || r > 1.0)
-            throw InputError({"", 0, "restitution"},
-                             fmt::format("restitution must be in [0, 1]; got {}", r));
+        core::limits::require_in(*restitution, core::limits::restitution, {"", 0, "restitution"});
     }
     m.restitution = restitution;
     m.top_height_m = top_height_m.value_or(2.0 * block.h_m);

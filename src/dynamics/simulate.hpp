@@ -34,7 +34,8 @@ struct BlockModel {
 
 /// Validated model. mu_k defaults to mu_s, top height to 2 h (a uniform block). Throws
 /// InputError naming the parameter (mu_s, mu_k, restitution, top_height_m) when
-/// mu_s < 0, mu_k outside [0, mu_s], r outside [0, 1] or the top below the CG.
+/// mu_s is outside core::limits::friction ([0, 2], as a case), mu_k outside [0, mu_s], r
+/// outside core::limits::restitution ([0, 1]) or the top below the CG.
 BlockModel make_block_model(const block::Block& block, double mu_s,
                             std::optional<double> mu_k = std::nullopt,
                             std::optional<double> restitution = std::nullopt,

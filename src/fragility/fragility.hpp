@@ -42,7 +42,8 @@ struct Models {
     bool biaxial_slide = false;
 };
 
-/// What to run. Levels strictly increasing in (0, 3] g, at least one; samples >= 1.
+/// What to run. 1 to 1000 levels strictly increasing in [0.001, 3] g; samples >= 1, at most
+/// core::limits::max_fragility_samples over all levels.
 struct Config {
     std::vector<double> pga_g;
     int samples = 100;       ///< per level

@@ -9,6 +9,7 @@
 #include "assess/histories.hpp"
 #include "assess/level.hpp"
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/random.hpp"
 #include "core/readers.hpp"
 #include "dynamics/flexible.hpp"
@@ -33,19 +34,14 @@ const char* event_name(Event e) {
 }
 
 void validate(const Config& c) {
-    const SourceLocation levels{"", 0, "pga_g"};
-    if (c.pga_g.empty()) throw InputError(levels, "expected at least one PGA level");
-    for (std::size_t i = 0; i < c.pga_g.size(); ++i) {
-        require_in_range(c.pga_g[i], 0.0, 3.0, levels, false, true);
-        if (i > 0 && c.pga_g[i] <= c.pga_g[i - 1])
-            throw InputError(levels, fmt::format("levels must be strictly increasing; {} follows {}",
-                                                 c.pga_g[i], c.pga_g[i - 1]));
-    }
-    if (c.pga_g.size() > 1000)
-        throw InputError(levels, fmt::format("{} levels; at most 1000", c.pga_g.size()));
+    core::limits::require_pga_levels(c.pga_g, SourceLocation{"", 0, "pga_g"});
+    const SourceLocation samples{"", 0, "samples"};
     if (c.samples < 1 || c.samples > 1000000)
-        throw InputError(SourceLocation{"", 0, "samples"},
-                         fmt::format("{}; expected 1 to 1000000 per level", c.samples));
+        throw InputError(samples, fmt::format("{}; expected 1 to 1000000 per level", c.samples));
+    // The whole run, before the samples' list and results are allocated.
+    core::limits::require_within(static_cast<double>(c.pga_g.size()) * c.samples,
+                                 core::limits::max_fragility_samples, samples,
+                                 "the run's samples (levels x samples per level)");
     if (c.record_files.empty() && (c.pool < 1 || c.pool > 1000))
         throw InputError(SourceLocation{"", 0, "pool"},
                          fmt::format("{}; expected 1 to 1000 history sets", c.pool));

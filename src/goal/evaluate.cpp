@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "goal/goal.hpp"
 #include "goal/models_detail.hpp"
 
@@ -12,7 +13,7 @@ namespace freestand::goal {
 namespace {
 
 // The engine's highest level (fragility::validate), g.
-constexpr double kMaxPga_g = 3.0;
+constexpr double kMaxPga_g = core::limits::max_design_level_g;
 
 double margin_of(double target, double p) {
     return p > 0.0 ? target / p : std::numeric_limits<double>::infinity();
@@ -64,8 +65,10 @@ std::vector<std::string> estimate_notes(const PerformanceGoal& g) {
     const std::size_t levels = g.meta.config.pga_g.size();
     if (levels < dbe_multiples.size()) {
         const bool extrapolated = 1.5 * g.dbe_pga_g > kMaxPga_g;
+        const bool below = 0.5 * g.dbe_pga_g < core::limits::min_pga_level_g;
         out.push_back(fmt::format(
-            "Levels above {:g} g, the engine's range, are left out ({} of {}){}.", kMaxPga_g,
+            "Levels {} {:g} g, the engine's range, are left out ({} of {}){}.",
+            below ? "below" : "above", below ? core::limits::min_pga_level_g : kMaxPga_g,
             dbe_multiples.size() - levels, dbe_multiples.size(),
             extrapolated ? ": P at 1.5 x DBE is read off the curve fitted below it" : ""));
     }
@@ -84,7 +87,8 @@ PerformanceGoal evaluate_goal(const assess::Case& c, const assess::RunSettings& 
     g.dbe_pga_g = *c.site.dbe_pga_g;
     fragility::Config config;
     for (const double m : dbe_multiples)
-        if (m * g.dbe_pga_g <= kMaxPga_g) config.pga_g.push_back(m * g.dbe_pga_g);
+        if (core::limits::within(m * g.dbe_pga_g, core::limits::pga_level_g))
+            config.pga_g.push_back(m * g.dbe_pga_g);
     config.samples = samples_per_level;
     config.seed = c.options.seed;
     config.pool = c.options.histories_per_level;

@@ -13,6 +13,7 @@
 #include "report/history_json.hpp"
 #include "report/references.hpp"
 #include "core/sha256.hpp"
+#include "core/text_parse.hpp"
 #include "core/version.hpp"
 
 namespace freestand::report {
@@ -22,7 +23,10 @@ using namespace freestand::assess;
 
 double round10(double v) {
     if (!std::isfinite(v) || v == 0.0) return v;
-    return std::stod(fmt::format("{:.10g}", v));
+    // The 10-digit text of a value next to the ends of the double range reads back out of range
+    // (1.797693135e+308 overflows); such a value is kept as it is.
+    double rounded = v;
+    return core::text::parse_double(fmt::format("{:.10g}", v), rounded) ? rounded : v;
 }
 
 ordered_json json_number(double v) {

@@ -71,18 +71,35 @@ Scale make_scale(const Axis& axis, std::vector<double> values, double px0, doubl
     return s;
 }
 
-std::vector<double> ticks(const Scale& s) {
+// Ticks on one axis, at most: a log axis from a denormal to 1 spans over 300 decades, and a
+// linear step below the values' rounding never advances, so the loops are bounded by count.
+constexpr std::size_t max_ticks = 12;
+
+// Powers of ten from lo (every stride-th decade when there are more than max_ticks).
+std::vector<double> log_ticks(const Scale& s) {
     std::vector<double> out;
-    if (s.log) {
-        for (double v = s.lo; v <= s.hi * 1.0000001; v *= 10.0) out.push_back(v);
-        return out;
+    if (!(s.lo > 0.0 && s.hi >= s.lo && std::isfinite(s.hi))) return out;
+    const double decades = std::floor(std::log10(s.hi) - std::log10(s.lo) + 1e-7) + 1.0;
+    const int stride = static_cast<int>(std::ceil(decades / static_cast<double>(max_ticks)));
+    for (double v = s.lo; v <= s.hi * 1.0000001 && out.size() < max_ticks;) {
+        out.push_back(v);
+        for (int k = 0; k < stride; ++k) v *= 10.0;
     }
+    return out;
+}
+
+std::vector<double> linear_ticks(const Scale& s) {
+    std::vector<double> out;
     const double step = nice_step(s.hi - s.lo, 5);
-    for (double v = std::ceil(s.lo / step - 1e-9) * step; v <= s.hi + step * 1e-9; v += step) {
+    if (!(step > 0.0 && std::isfinite(step))) return out;
+    for (double v = std::ceil(s.lo / step - 1e-9) * step;
+         v <= s.hi + step * 1e-9 && out.size() < max_ticks; v += step) {
         out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
     }
     return out;
 }
+
+std::vector<double> ticks(const Scale& s) { return s.log ? log_ticks(s) : linear_ticks(s); }
 
 std::string tick_label(double v) {
     if (v == 0.0) return "0";

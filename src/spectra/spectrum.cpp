@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/errors.hpp"
+#include "core/limits.hpp"
 #include "core/file_io.hpp"
 #include "core/text_parse.hpp"
 
@@ -49,8 +50,13 @@ std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_deca
     // Equal log spacing with at least per_decade points per decade and both ends exact; the
     // tolerance keeps an exact number of decades (0.1-100 Hz: 300 intervals) from rounding up.
     const double decades = std::log10(fmax_hz / fmin_hz);
-    const auto intervals = static_cast<std::size_t>(
-        std::max(1.0, std::ceil(decades * static_cast<double>(per_decade) - 1e-9)));
+    const double intervals_wanted =
+        std::max(1.0, std::ceil(decades * static_cast<double>(per_decade) - 1e-9));
+    // The grid's size is per_decade's doing: the limit names it, before the grid is allocated.
+    core::limits::require_within(intervals_wanted + 1.0, core::limits::max_frequencies,
+                                 SourceLocation{"", 0, "per_decade"},
+                                 "the spectrum's frequencies (decades x per decade + 1)");
+    const auto intervals = static_cast<std::size_t>(intervals_wanted);
     // Exponents on log10 so that whole decades come out exact (10^0 = 1, 10^1 = 10).
     const double lo = std::log10(fmin_hz);
     const double step = (std::log10(fmax_hz) - lo) / static_cast<double>(intervals);

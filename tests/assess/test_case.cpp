@@ -189,7 +189,7 @@ TEST_CASE("case errors name file, line, key and the allowed range", "[assess][ca
     }
     SECTION("missing key") {
         CHECK(error_of("[component]\nname = \"a\"\n" + base_site) ==
-              "case.toml:1: component.mass_kg: missing required key (a number in (0, 10000000])");
+              "case.toml:1: component.mass_kg: missing required key (a number in [0.001, 100000000])");
     }
     SECTION("wrong type") {
         CHECK(error_of(base_component + base_site + "vertical_ratio = \"high\"\n") ==
@@ -324,7 +324,7 @@ TEST_CASE("a level the vertical PGA makes weightless, a zero vertical ratio: ref
           "case.toml:10: site.pga_g: PGA 1.5 g with a vertical/horizontal ratio of 0.6667 gives a "
           "vertical PGA of 1 g; at 1 g or more, taken downward as the static checks take it, the "
           "block is weightless: each level needs pga_g x ratio < 1");
-    // The documented range (0, 3] holds with a smaller ratio.
+    // The documented range [0.001, 3] holds with a smaller ratio.
     const Case c = parse_case(base_component + "[site]\npga_g = [1.5, 3.0]\nvertical_ratio = 0.3\n",
                               "case.toml");
     CHECK(c.site.pga_g == std::vector<double>{1.5, 3.0});
@@ -432,7 +432,7 @@ TEST_CASE("[uncertainty] laws are read or refused at their key", "[assess][case]
     CHECK(c.uncertainty.restitution->upper == 1.0);  // a restitution above 1 is never drawn
     const std::string u = base_component + base_site + "[uncertainty]\n";
     CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = nan, hi = 0.2 }\n") ==
-          "case.toml:12: uncertainty.mu_s.lo: value nan is out of range; expected [0, 10]");
+          "case.toml:12: uncertainty.mu_s.lo: value nan is out of range; expected [0, 2]");
     CHECK(error_of(u + "mu_s = { dist = \"uniform\", lo = 0.3, hi = 0.2 }\n") ==
           "case.toml:12: uncertainty.mu_s.hi: 0.2 is below lo = 0.3; expected lo <= hi");
     CHECK(error_of(u + "mu_s = { lo = 0.1, hi = 0.2 }\n") ==
@@ -524,13 +524,13 @@ TEST_CASE("site.dbe_pga_g: absent by default, read and echoed, refused outside 0
     CHECK(parse_case(base_component + base_site + "dbe_pga_g = 3\n", "case.toml").site.dbe_pga_g ==
           3.0);
     CHECK(error_of(base_component + base_site + "dbe_pga_g = 0\n") ==
-          "case.toml:11: site.dbe_pga_g: value 0 is out of range; expected (0, 3]");
+          "case.toml:11: site.dbe_pga_g: value 0 is out of range; expected [0.001, 3]");
     CHECK(error_of(base_component + base_site + "dbe_pga_g = -0.2\n") ==
-          "case.toml:11: site.dbe_pga_g: value -0.2 is out of range; expected (0, 3]");
+          "case.toml:11: site.dbe_pga_g: value -0.2 is out of range; expected [0.001, 3]");
     CHECK(error_of(base_component + base_site + "dbe_pga_g = 3.5\n") ==
-          "case.toml:11: site.dbe_pga_g: value 3.5 is out of range; expected (0, 3]");
+          "case.toml:11: site.dbe_pga_g: value 3.5 is out of range; expected [0.001, 3]");
     CHECK(error_of(base_component + base_site + "dbe_pga_g = \"0.3 g\"\n") ==
-          "case.toml:11: site.dbe_pga_g: expected a number in (0, 3], got a string");
+          "case.toml:11: site.dbe_pga_g: expected a number in [0.001, 3], got a string");
 }
 
 }  // namespace freestand_test_assess_test_case

@@ -115,9 +115,9 @@ TEST_CASE("override checks name the key and the allowed values", "[assess][overr
     o.pga_g = std::vector<double>{};
     CHECK(check_error(o) == "list.csv:4: pga_g: expected at least one PGA level");
     o.pga_g = std::vector<double>{0.0};
-    CHECK(check_error(o) == "list.csv:4: pga_g: value 0 is out of range; expected (0, 3]");
+    CHECK(check_error(o) == "list.csv:4: pga_g: value 0 is out of range; expected [0.001, 3]");
     o.pga_g = std::vector<double>{0.3, 3.5};
-    CHECK(check_error(o) == "list.csv:4: pga_g: value 3.5 is out of range; expected (0, 3]");
+    CHECK(check_error(o) == "list.csv:4: pga_g: value 3.5 is out of range; expected [0.001, 3]");
     o.pga_g = std::vector<double>{0.3, 0.2};
     CHECK(check_error(o) ==
           "list.csv:4: pga_g: levels must be strictly increasing; 0.2 follows 0.3");

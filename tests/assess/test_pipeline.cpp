@@ -100,7 +100,7 @@ TEST_CASE("PGA override is validated", "[assess][pipeline]") {
         with_pga_levels(c, {0.0});
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()) == "pga_levels: value 0 is out of range; expected (0, 3]");
+        CHECK(std::string(e.what()) == "pga_levels: value 0 is out of range; expected [0.001, 3]");
     }
     CHECK_THROWS_AS(with_pga_levels(c, {}), InputError);
 }

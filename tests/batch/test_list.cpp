@@ -138,7 +138,7 @@ TEST_CASE("a CSV list's errors name list:line and the column", "[batch][list][cs
     CHECK(csv_error("file,pga_g\na.toml,0.3;0.2\n") ==
           "plant/list.csv:2: pga_g: levels must be strictly increasing; 0.2 follows 0.3");
     CHECK(csv_error("file,pga_g\na.toml,4\n") ==
-          "plant/list.csv:2: pga_g: value 4 is out of range; expected (0, 3]");
+          "plant/list.csv:2: pga_g: value 4 is out of range; expected [0.001, 3]");
     CHECK(csv_error("file,seed\na.toml,1.5\n") ==
           "plant/list.csv:2: seed: \"1.5\" is not a whole number");
     CHECK(csv_error("file,seed\na.toml,-3\n") ==
@@ -202,7 +202,7 @@ TEST_CASE("a TOML list's errors name list:line and the key", "[batch][list][toml
     CHECK(toml_error("[[case]]\nfile = \"a.toml\"\npga_g = [0.3, 0.2]\n") ==
           "plant/list.toml:3: case.pga_g: levels must be strictly increasing; 0.2 follows 0.3");
     CHECK(toml_error("[[case]]\nfile = \"a.toml\"\npga_g = \"0.1;0.2\"\n") ==
-          "plant/list.toml:3: case.pga_g: expected a non-empty array of numbers in (0, 3], got "
+          "plant/list.toml:3: case.pga_g: expected a non-empty array of numbers in [0.001, 3], got "
           "a string");
     CHECK(toml_error("[[case]]\nfile = \"a.toml\"\nseed = -1\n") ==
           "plant/list.toml:3: case.seed: value -1 is out of range; expected an integer in [0, "

@@ -120,7 +120,7 @@ TEST_CASE("library parameters are shown as the options the user typed", "[cli][h
     CHECK_THAT(run_cli("simulate " + block + "--sine 0.5g,2Hz,10s --integrator cd --dt -1").err,
                Contains("simulate: error: --dt: value -1 must be a finite number > 0"));
     CHECK_THAT(run_cli("simulate --block b=0.15,h=0.6,m=38 --mu -0.1 --sine 0.5g,2Hz,10s").err,
-               Contains("error: --mu: static friction must be >= 0; got -0.1"));
+               Contains("error: --mu: value -0.1 is out of range; expected [0, 2]"));
 }
 
 }  // namespace freestand_test_cli_test_limits

@@ -149,11 +149,11 @@ TEST_CASE("vertical acceleration beyond g for an instant: free flight and landin
 TEST_CASE("bad model values name the option", "[dynamics][errors]") {
     const auto blk = block::Block::uniform(0.15, 0.6, 38.0);
     CHECK_THROWS_MATCHES(dynamics::make_block_model(blk, -0.1), InputError,
-                         Catch::Matchers::Message("mu_s: static friction must be >= 0; got -0.1"));
+                         Catch::Matchers::Message("mu_s: value -0.1 is out of range; expected [0, 2]"));
     CHECK_THROWS_MATCHES(dynamics::make_block_model(blk, 0.3, 0.4), InputError,
                          Catch::Matchers::Message("mu_k: kinetic friction must be in [0, mu_s = 0.3]; got 0.4"));
     CHECK_THROWS_MATCHES(dynamics::make_block_model(blk, 0.3, std::nullopt, 1.2), InputError,
-                         Catch::Matchers::Message("restitution: restitution must be in [0, 1]; got 1.2"));
+                         Catch::Matchers::Message("restitution: value 1.2 is out of range; expected [0, 1]"));
     CHECK_THROWS_AS(dynamics::sine_excitation({0.5, 0.0, 5.0, 0.0, 0.0}), InputError);
     CHECK_THROWS_WITH(dynamics::sine_excitation({0.5, 2.0, 5.0, -1.0, 0.0}),
                       Catch::Matchers::Contains("sine.ramp_s"));

@@ -193,6 +193,18 @@ TEST_CASE("levels above the engine's 3 g are left out and the note says so", "[g
     CHECK_THAT(high.notes.back(), Catch::Contains("(5 of 8)") && Catch::Contains("read off"));
 }
 
+TEST_CASE("levels below the engine's 0.001 g are left out and the note says so", "[goal][limits]") {
+    // A DBE of 0.001 g is a PGA level; 0.5 and 0.75 x DBE are not, and the engine refused the
+    // whole run at them.
+    assess::Case c = assess::parse_case(test::squat_goal_toml, "squat.toml");
+    c.site.dbe_pga_g = 0.001;
+    const PerformanceGoal g = goal::evaluate_goal(c, settings(0));
+    CHECK(g.meta.config.pga_g.size() == 6);
+    CHECK(g.meta.config.pga_g.front() == 0.001);
+    CHECK_THAT(g.notes.back(), Catch::Contains("Levels below 0.001 g") &&
+                                   Catch::Contains("(2 of 8)") && !Catch::Contains("read off"));
+}
+
 TEST_CASE("the goal needs a DBE and one component", "[goal][errors]") {
     assess::Case c = assess::parse_case(test::squat_goal_toml, "squat.toml");
     c.site.dbe_pga_g.reset();

@@ -130,7 +130,7 @@ TEST_CASE("rock: range errors name the option as typed", "[rocking][cli]") {
         {"--av-g 1", "--av-g: value 1 is out of range; expected [0, 1)"},
         {"--pgv-mps -1", "--pgv-mps: value -1 is out of range; expected [0, inf)"},
         {"--v-ratio -0.1", "--v-ratio: value -0.1 is out of range; expected [0, inf)"},
-        {"--restitution 0", "--restitution: value 0 is out of range; expected (0, 1]"},
+        {"--restitution 1.2", "--restitution: value 1.2 is out of range; expected [0, 1]"},
         {"--fs-required 0.5", "--fs-required: value 0.5 is out of range; expected [1, inf)"},
         {"--fn-hz 0", "--fn-hz: value 0 is out of range; expected (0, inf)"},
         {"--rock-band-hz 5,1", "--rock-band-hz: 5,1 Hz; expected 0 < LO < HI"},
