@@ -27,6 +27,16 @@ Case shipped(const char* name, const std::vector<double>& pga, int histories) {
     return with_pga_levels(c, pga);
 }
 
+// The shipped glove box carries its fixed-base frequency and free-rocking bands, which raise the
+// flexible-body flag, and the flexible model then decides its levels; without them it is the
+// rigid body whose sliding the biaxial model decides.
+Case rigid(Case c) {
+    c.component.fixed_base_frequency_hz.reset();
+    c.component.x.free_rocking_band_hz.reset();
+    c.component.y.free_rocking_band_hz.reset();
+    return c;
+}
+
 bool trail_has(const LevelResult& l, const std::string& start) {
     return std::any_of(l.trail.begin(), l.trail.end(),
                        [&](const std::string& t) { return t.rfind(start, 0) == 0; });
@@ -34,10 +44,10 @@ bool trail_has(const LevelResult& l, const std::string& start) {
 
 }  // namespace
 
-TEST_CASE("a sliding level's verdict uses the biaxial peak; the planar stays for comparison",
+TEST_CASE("a sliding level's verdict uses the biaxial peak, the planar stays for comparison",
           "[assess][biaxial]") {
     // The glove box slides at 0.2 g (mu_s 0.12 at the lower bound, tan(alpha) well above).
-    const AssessmentResult r = assess::assess(shipped("glovebox-single.toml", {0.2}, 2));
+    const AssessmentResult r = assess::assess(rigid(shipped("glovebox-single.toml", {0.2}, 2)));
     REQUIRE(r.levels.size() == 2);
     const LevelResult& x = r.levels.at(0);
     const LevelResult& y = r.levels.at(1);

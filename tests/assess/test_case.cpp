@@ -148,7 +148,7 @@ TEST_CASE("a material trial case reads as a case naming only that material",
     CHECK(a.restitution_range == b.restitution_range);
 }
 
-TEST_CASE("materials take the literature friction range; a case's own bounds for its own base stay",
+TEST_CASE("materials take the literature friction range, a case's own bounds for its own base stay",
           "[assess][case][bounds]") {
     std::string named = base_component;
     named.replace(named.find("mu_s = 0.3"), 10, "base_material = \"HDPE\"");

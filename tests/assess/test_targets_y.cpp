@@ -159,7 +159,7 @@ target_y_file = "rg160-h-5pct-1g.csv"
     }
 }
 
-TEST_CASE("direction y's file sets y's demand; SA_VH combines x and y",
+TEST_CASE("direction y's file sets y's demand, SA_VH combines x and y",
           "[assess][targets][targets_y]") {
     const std::string h10 = "target_h10_file = \"rg160-h-10pct-1g.csv\"\n";
     const Case single = glovebox(h10);

@@ -165,7 +165,7 @@ TEST_CASE("rocking screen: equivalent-linear FS, overturning, disagreeing gate",
     CHECK(simulation_need(gate.screen, SimulatePolicy::automatic).run);
 }
 
-TEST_CASE("simulated rocking: any overturn fails; theta/alpha against 1/FS; no motion",
+TEST_CASE("simulated rocking: any overturn fails, theta/alpha against 1/FS, no motion",
           "[assess][verdict]") {
     LevelResult l = rocking(1.2);
     l = decided(l, sim(7, same(0.0), Stats{0.1, 0.2, 0.3}, 1));
@@ -230,7 +230,7 @@ TEST_CASE("a flexible-body simulation decides its level, pass or fail", "[assess
     CHECK(std::string(to_string(Model::simulation_flexible)).find("s.10") != std::string::npos);
 }
 
-TEST_CASE("severity: failures first, then the smaller margin; no motion is least severe",
+TEST_CASE("severity: failures first, then the smaller margin, no motion is least severe",
           "[assess][verdict]") {
     Verdict pass_small;
     pass_small.margin = 1.1;

@@ -206,7 +206,7 @@ TEST_CASE("a failing case gets its row and exit 1 while the others' reports are 
     fs::remove_all(dir);
 }
 
-TEST_CASE("batch --json prints the summary that summary.json holds; the default folder is "
+TEST_CASE("batch --json prints the summary that summary.json holds, the default folder is "
           "out/batch/",
           "[batch][cli]") {
     const fs::path dir = test::batch_dir("json");

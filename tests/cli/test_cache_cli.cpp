@@ -142,7 +142,7 @@ TEST_CASE("batch writes the same bytes with and without the cache", "[cli][cache
     }
 }
 
-TEST_CASE("freestand cache info and clear report the folder; clear leaves other files",
+TEST_CASE("freestand cache info and clear report the folder, clear leaves other files",
           "[cli][cache]") {
     const Dir d("info");
     const std::string cache = " --cache '" + (d.path / "cache").string() + "'";

@@ -93,7 +93,7 @@ TEST_CASE("report stamps carry a commit of this repository", "[cli]") {
     CHECK(dirty == tree_dirty);
 }
 
-TEST_CASE("errors quoting a file's bytes show control characters as \\xNN", "[cli][hardening]") {
+TEST_CASE("errors quoting a file's bytes show control characters as hexadecimal escapes", "[cli][hardening]") {
     // Issue 16 defect 10 audit: a record value "ESC]0;pwned BEL" (a terminal's set-title
     // sequence) was quoted raw in "expected a number; got ...".
     const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_controls";

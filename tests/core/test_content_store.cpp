@@ -39,7 +39,7 @@ std::string slurp(const fs::path& p) {
 
 }  // namespace
 
-TEST_CASE("a stored entry is found whole; an unknown key is absent", "[core][cache]") {
+TEST_CASE("a stored entry is found whole, an unknown key is absent", "[core][cache]") {
     const fs::path dir = fresh_dir("basic");
     const ContentStore store(dir);
     std::string content(100000, '\0');
@@ -148,7 +148,7 @@ TEST_CASE("prune keeps the store within its bound, least recently used first", "
     fs::remove_all(dir);
 }
 
-TEST_CASE("prune removes temporary files of killed writers; clear removes only the store's files",
+TEST_CASE("prune removes temporary files of killed writers, clear removes only the store's files",
           "[core][cache]") {
     const fs::path dir = fresh_dir("clear");
     const ContentStore store(dir);
@@ -195,7 +195,7 @@ TEST_CASE("the default folder follows XDG_CACHE_HOME, then HOME", "[core][cache]
     if (home) ::setenv("HOME", saved_home.c_str(), 1);
 }
 
-TEST_CASE("FREESTAND_CACHE_MAX_MB sets the bound; anything but a whole MiB count is refused",
+TEST_CASE("FREESTAND_CACHE_MAX_MB sets the bound, anything but a whole MiB count is refused",
           "[core][cache]") {
     ::setenv("FREESTAND_CACHE_MAX_MB", "12", 1);
     CHECK(freestand::core::cache_max_bytes_from_environment() == 12ULL * 1024 * 1024);

@@ -13,7 +13,7 @@
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_core_test_contract {
 
-TEST_CASE("a violated contract aborts; a kept one does nothing", "[core][contract]") {
+TEST_CASE("a violated contract aborts, a kept one does nothing", "[core][contract]") {
     FREESTAND_EXPECT(1 + 1 == 2, "arithmetic");
     const pid_t child = ::fork();
     REQUIRE(child >= 0);

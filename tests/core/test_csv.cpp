@@ -160,7 +160,7 @@ TEST_CASE("CSV reader takes the columns in either order", "[core][csv]") {
     CHECK_THROWS_WITH(core::read_csv(p), Contains(":4: column 2 (t (s)): non-uniform time step"));
 }
 
-TEST_CASE("CSV reader accepts a BOM, CRLF, ';' and tab separators and a decimal comma after ';'", "[core][csv]") {
+TEST_CASE("CSV reader accepts a BOM, CRLF, semicolon and tab separators and a decimal comma after semicolon", "[core][csv]") {
     const auto bom = core::read_csv(write_temp("bom.csv", "\xEF\xBB\xBFtime_s,accel_g\r\n0,0.1\r\n0.01,0.2\r\n"));
     CHECK(bom.size() == 2);
     CHECK(bom.accel_mps2[1] == Approx(0.2 * units::g_mps2).epsilon(1e-15));
@@ -270,7 +270,7 @@ TEST_CASE("write_csv_g round-trips values to 1e-12 and keeps the labels", "[core
     CHECK(worst <= 1e-12);
 }
 
-TEST_CASE("write_csv_g shows control characters in its labels as \\xNN", "[core][csv][hardening]") {
+TEST_CASE("write_csv_g shows control characters in its labels as hexadecimal escapes", "[core][csv][hardening]") {
     // Issue 16 defect 10: write_csv_g (generate's h1/h2/v.csv) copied a label's ESC, BEL or
     // DEL (a seed record's file name is in its source) raw into its comment lines.
     core::Record rec;

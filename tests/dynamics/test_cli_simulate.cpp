@@ -110,7 +110,7 @@ TEST_CASE("simulate --out naming the --motion file is refused and the input kept
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("simulate --out shows control characters of the motion's name as \\xNN",
+TEST_CASE("simulate --out shows control characters of the motion's name as hexadecimal escapes",
           "[dynamics][cli][hardening]") {
     // Issue 16 defect 10: a motion file named with ESC and BEL put them raw into the CSV's
     // comment line (the terminal title changed on `head series.csv`).

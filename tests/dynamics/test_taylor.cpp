@@ -90,7 +90,7 @@ TEST_CASE("Taylor rock step matches an RK4 reference and its own derivatives",
     }
 }
 
-TEST_CASE("fixed-degree and adaptive rock kernels agree; the degree follows the tolerance",
+TEST_CASE("fixed-degree and adaptive rock kernels agree, the degree follows the tolerance",
           "[dynamics][taylor]") {
     const Geometry g = make_geometry(dynamics::make_block_model(block::Block::uniform(0.3, 0.6, 38.0), 0.8));
     const ContactStart x0 = start(g, Mode::rock, 1, 0.05, 0.4);

@@ -83,7 +83,7 @@ void check_same_outputs(const fs::path& a, const fs::path& b) {
 
 }  // namespace
 
-TEST_CASE("fragility writes fragility.json, samples.csv and the reports; --json prints the file",
+TEST_CASE("fragility writes fragility.json, samples.csv and the reports, --json prints the file",
           "[fragility][cli]") {
     const Scene s("outputs");
     const auto r = run_cli(s.args("one", "--threads 1"));

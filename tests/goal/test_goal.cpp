@@ -143,7 +143,7 @@ TEST_CASE("the samples run the flexible body where the case's levels would, and 
     CHECK(goal::detail::goal_models(rigid, {0.25, 0.5}).models.flexible.empty());
 }
 
-TEST_CASE("a slender block at a high DBE fails the goal; a squat one at a low DBE meets it",
+TEST_CASE("a slender block at a high DBE fails the goal, a squat one at a low DBE meets it",
           "[goal]") {
     const PerformanceGoal slender = goal::evaluate_goal(
         assess::parse_case(test::slender_goal_toml, "slender.toml"), settings(0));

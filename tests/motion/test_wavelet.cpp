@@ -249,7 +249,7 @@ TEST_CASE("wavelets sampled together keep each one's samples and sums", "[motion
     }
 }
 
-TEST_CASE("own wavelet peaks at its peak time; its drift is the closed-form residual",
+TEST_CASE("own wavelet peaks at its peak time, its drift is the closed-form residual",
           "[motion][wavelet]") {
     for (double f : {0.5, 2.0, 10.0}) {
         const Wavelet w = Wavelet::at(f, 0.05, 10.0);

@@ -659,7 +659,7 @@ TEST_CASE("assess refuses outputs that would replace an input or a special file,
     fs::remove_all(dir);
 }
 
-TEST_CASE("control characters show as \\xNN in Markdown and HTML", "[report][escape][hardening]") {
+TEST_CASE("control characters show as hexadecimal escapes in Markdown and HTML", "[report][escape][hardening]") {
     CHECK(markdown_escape("a\x1b[31mb\x07") == "a\\x1B\\[31mb\\x07");
     CHECK(html_escape(std::string("a\x1b<b>\0c", 7)) == "a\\x1B&lt;b&gt;\\x00c");
     CHECK(html_escape("line\nbreak") == "line\nbreak");

@@ -109,7 +109,7 @@ TEST_CASE("issue 4 example: b=0.15, h=0.6, mu 0.32, 0.8 g slide-rocks", "[slidin
     CHECK(*p.governing().mu_crit == Approx(1.75 / 4.6625).epsilon(1e-12));
 }
 
-TEST_CASE("vertical acceleration changes the effective gravity; downward is the worst case",
+TEST_CASE("vertical acceleration changes the effective gravity, downward is the worst case",
           "[sliding][initiation]") {
     // a_v = -0.5 g: A = a_h / 0.5. a_h = 0.125 -> A = 0.25 = tan(alpha): rest on the boundary.
     CHECK(load_ratio(0.125, -0.5) == 0.25);
@@ -128,7 +128,7 @@ TEST_CASE("mu_s = 0 slides under any horizontal acceleration", "[sliding][initia
               .mode == Mode::slide);
 }
 
-TEST_CASE("asymmetric block classifies each edge; the slenderer edge governs",
+TEST_CASE("asymmetric block classifies each edge, the slenderer edge governs",
           "[sliding][initiation]") {
     // tan(alpha_L) = 0.2, tan(alpha_R) = 0.4; mu 0.3, A 0.5.
     const Block blk = Block::general(0.2, 0.4, 1.0, 100.0, 20.0);

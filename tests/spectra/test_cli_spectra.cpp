@@ -69,7 +69,7 @@ TEST_CASE("spectrum prints CSV: frequency_hz then psa_g_<damping> per damping", 
     CHECK(lines(u.out).size() == 4);
 }
 
-TEST_CASE("target rg1.60 prints the RG 1.60 spectrum; --output writes the spectrum file format",
+TEST_CASE("target rg1.60 prints the RG 1.60 spectrum, --output writes the spectrum file format",
           "[spectra][cli]") {
     const auto r = run_cli(
         "target --design rg1.60 --pga 0.3 --damping 0.05 --frequencies 0.25,2.5,9,33 --json");

@@ -123,7 +123,7 @@ TEST_CASE("EC8 Type 1 ground C: every branch of EN 1998-1 eqs. 3.2-3.5", "[spect
     CHECK(s.psa_g[4] == Approx(0.2875 * (1.0 + 0.05 * 1.5)).epsilon(1e-13));  // T = 0.01 s
 }
 
-TEST_CASE("EC8 damping correction eta and its 0.55 floor; Type 2 table", "[spectra][design]") {
+TEST_CASE("EC8 damping correction eta and its 0.55 floor, Type 2 table", "[spectra][design]") {
     // 2%: eta = sqrt(10/7) = 1.1952286; 30%: sqrt(10/35) = 0.5345 -> 0.55.
     const auto s2 = spectra::ec8(0.25, spectra::Ec8Type::type1, 'C', 0.02, {2.5});
     CHECK(s2.psa_g[0] == Approx(0.71875 * 1.1952286).epsilon(1e-7));

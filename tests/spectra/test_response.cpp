@@ -222,7 +222,7 @@ TEST_CASE("sub-stepping to T/20 catches peaks between samples", "[spectra][respo
     CHECK(err_none < 1.0 - std::cos(pi / 10.0));
 }
 
-TEST_CASE("psa_g, response_spectra and peak_responses agree; SD, PSV, PSA are consistent",
+TEST_CASE("psa_g, response_spectra and peak_responses agree, SD, PSV, PSA are consistent",
           "[spectra][response]") {
     const auto rec = shipped(shipped_records[1]);
     const std::vector<double> f{0.2, 1.0, 5.0, 25.0, 60.0, 3.0};  // any order is accepted

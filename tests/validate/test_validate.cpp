@@ -86,7 +86,7 @@ TEST_CASE("every row has the thesis, the prediction, the difference and a reason
     CHECK(v.case_files.size() == case_names().size());
 }
 
-TEST_CASE("the thesis's own arithmetic is reproduced; its TS3 bound is not", "[validate][slow]") {
+TEST_CASE("the thesis's own arithmetic is reproduced, its TS3 bound is not", "[validate][slow]") {
     // s.5.5: 47 and 56 mm; s.6.4: 56 and 58 mm, all to the thesis's millimetre.
     for (const char* id : {"gb-asce-0.2g-thesis-inputs", "gb-energy-0.2g-thesis-inputs",
                            "pair-asce-0.2g-thesis-inputs", "pair-energy-0.2g-thesis-inputs"}) {
