@@ -149,10 +149,8 @@ private:
         }
         advance(dx, h);
         const double t1 = t + h;
-        if (x_[2] >= half_pi) {
-            rec_.overturn(t1);
-            return;
-        }
+        rec_.check_overturn(m_, x_, t1, t1 >= bm_.quiet_from_s());
+        if (rec_.overturned()) return;
         const Base b1 = bm_.at(k, t1);
         if (x_[2] < 0.0) {
             impact(b1, t1);
@@ -214,7 +212,7 @@ private:
         advance(dx, h);
         const double t1 = t + h;
         if (std::abs(x_[4]) >= half_pi) {
-            rec_.overturn(t1);
+            rec_.overturn(t1, OverturnCriterion::angle_half_pi);
             return;
         }
         // The lowest corner and its vertical rate: it lands on reaching the base from above,
@@ -281,6 +279,9 @@ FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, cons
             break;
         }
     }
+    // The run ends with the body as it is: the rule applies to that state too.
+    if (!rec.overturned()) rec.check_overturn(stepper.mode(), stepper.state(), t_end, t_end >= bm.quiet_from_s());
+    if (rec.overturned()) t_end = out.summary.base.overturn_time_s.value_or(t_end);
     rec.finish("cd", t_end, bm.pga_mps2(), std::abs(stepper.state()[0]), 0.0);
     return out;
 }
