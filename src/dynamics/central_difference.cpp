@@ -184,8 +184,8 @@ private:
 SimulationResult run_central_difference(const Geometry& g, const BaseMotion& bm,
                                         const Options& o) {
     Recorder rec(g, o, bm.pga_mps2());
-    const auto n_sub = static_cast<std::size_t>(std::max(1.0, std::ceil(bm.dt() / o.cd_dt_s - 1e-9)));
-    const double h = bm.dt() / static_cast<double>(n_sub);
+    const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
+    const auto n_sub = static_cast<std::size_t>(std::lround(bm.dt() / h));
     const std::size_t n_seg = bm.segments(o.tail_s);
     const Base b0 = bm.at(0, 0.0);
     BlockState st = initial_state(g, o, b0, b0);

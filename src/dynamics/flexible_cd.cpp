@@ -255,9 +255,8 @@ private:
 FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, const Options& o) {
     FlexibleResult out;
     FlexRecorder rec(g, o, out);
-    const auto n_sub =
-        static_cast<std::size_t>(std::max(1.0, std::ceil(bm.dt() / o.cd_dt_s - 1e-9)));
-    const double h = bm.dt() / static_cast<double>(n_sub);
+    const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
+    const auto n_sub = static_cast<std::size_t>(std::lround(bm.dt() / h));
     const std::size_t n_seg = bm.segments(o.tail_s);
     FlexCdStepper stepper(g, bm, o, rec);
     stepper.start(bm.at(0, 0.0));

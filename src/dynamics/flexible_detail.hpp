@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "dynamics/flexible.hpp"
 #include "dynamics/integrators.hpp"
@@ -357,7 +358,18 @@ double ridge_energy_J(const FlexGeometry& g, int s, double g_mps2);
 /// amplitude bounds q and omega q, so the rest inequalities hold for good.
 bool settled_for_good(const FlexGeometry& g, double q, double qd, double g_mps2);
 
-FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o);
+/// Throws NumericalError once steps (Dormand-Prince, accepted and rejected) exceed
+/// core::limits::max_adaptive_steps, naming the time t_s reached, the mode's frequency and
+/// the rigid limit above which the rigid block would run.
+void require_step_budget(std::size_t steps, double t_s, double f_hz, double rigid_limit_hz);
+
+/// cd_stable_step_s (flexible.hpp) of the split body.
+double cd_stable_step_s(const FlexGeometry& g, double g_mps2);
+
+/// The event-driven run; rigid_limit_hz (flexible.hpp) names where the rigid block would take
+/// over when the step budget runs out.
+FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o,
+                                  double rigid_limit_hz = std::numeric_limits<double>::infinity());
 FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, const Options& o);
 
 }  // namespace freestand::dynamics::detail

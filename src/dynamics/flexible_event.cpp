@@ -53,9 +53,10 @@ struct StepExtension {
 
 class FlexEngine {
 public:
-    FlexEngine(const FlexGeometry& g, const Options& o, const BaseMotion& bm, FlexRecorder& rec)
+    FlexEngine(const FlexGeometry& g, const Options& o, const BaseMotion& bm, FlexRecorder& rec,
+               double rigid_limit_hz)
         : g_(g), o_(o), rec_(rec), full_step_(g.held, bm.dt()), g_mps2_(o.g_mps2),
-          quiet_from_s_(bm.quiet_from_s()) {}
+          quiet_from_s_(bm.quiet_from_s()), rigid_limit_hz_(rigid_limit_hz) {}
 
     const FlexState& state() const { return x_; }
     const FlexMode& mode() const { return m_; }
@@ -369,6 +370,8 @@ private:
             double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
             if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
             const bool clipped = h < h_next_;
+            // The steps a stiff mode needs grow with its frequency: bounded, not run for ever.
+            require_step_budget(++dp_steps_, t, g_.omega / (2.0 * std::numbers::pi), rigid_limit_hz_);
             const double err = dp_step(f, t, x_, h);
             if (!(err <= 1.0)) {
                 rec_.rejected();
@@ -557,6 +560,8 @@ private:
     const OscillatorStep full_step_;  // the rest phase's whole input step
     const double g_mps2_;
     const double quiet_from_s_;  // the input has ended from here (BaseMotion::quiet_from_s)
+    const double rigid_limit_hz_;  // rigid_limit_hz of the model and the input
+    std::size_t dp_steps_ = 0;     // Dormand-Prince steps tried
     Stepper dp_;
     Segment seg_;
     double tb_ = 0.0;
@@ -577,10 +582,11 @@ private:
 
 }  // namespace
 
-FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o) {
+FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o,
+                                  double rigid_limit_hz) {
     FlexibleResult out;
     FlexRecorder rec(g, o, out);
-    FlexEngine engine(g, o, bm, rec);
+    FlexEngine engine(g, o, bm, rec, rigid_limit_hz);
     const std::size_t n_seg = bm.segments(o.tail_s);
     auto segment = [&](std::size_t k) {
         Segment s;
