@@ -28,8 +28,8 @@ FlexibleResult rigid_run(const FlexibleModel& model, const Excitation& excitatio
     return out;
 }
 
-// Central difference diverges once its step exceeds the elastic mode's stability limit: the
-// issue's 500 Hz mode at 1e-4 s "overturned" at 0.43 s where the body rocks to 0.49 alpha.
+// Central difference diverges once its step exceeds the elastic mode's stability limit: a
+// 500 Hz mode at 1e-4 s "overturned" at 0.43 s where the body rocks to 0.49 alpha.
 void require_stable_cd(const FlexibleModel& model, const Excitation& excitation,
                        const Options& options) {
     const double h_s = central_difference_step_s(excitation.dt_s, options.cd_dt_s);

@@ -3,6 +3,7 @@
 /// asks it (the planar block's two integrators, and through them the pair of units; the flexible
 /// body's two), after each contact step and on the state a run ends with.
 #include <limits>
+#include <numbers>
 
 #include "dynamics/simulate.hpp"
 
@@ -36,8 +37,7 @@ OverturnCriterion overturn_criterion(const Tilt& tilt, bool input_ended);
 /// test before a Tilt's energies are computed).
 inline bool overturn_possible(double theta_rad, double omega_radps, double alpha_rad,
                               bool input_ended) {
-    constexpr double half_pi = 1.5707963267948966;
-    return theta_rad >= half_pi || (input_ended && theta_rad > alpha_rad && omega_radps > 0.0);
+    return theta_rad >= std::numbers::pi / 2.0 || (input_ended && theta_rad > alpha_rad && omega_radps > 0.0);
 }
 
 }  // namespace freestand::dynamics::detail

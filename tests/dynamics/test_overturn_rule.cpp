@@ -99,8 +99,8 @@ TEST_CASE("a unit of a pair past alpha and rising when the run ends has overturn
 TEST_CASE("a flexible body toppling after the input is reported overturned, both integrators",
           "[dynamics][overturn][flexible]") {
     // `simulate --block b=0.15,h=0.6,m=38 --mu 0.3 --sine 0.5g,2Hz,5s --flexible f=0.01`: a mode
-    // so soft that the modal mass drifts away; the base tipped past alpha after the input
-    // and was still rotating outward (theta 1.5666 rad) when the 10 s tail ran out.
+    // so soft that the modal mass drifts away; the base is past alpha when the input ends and
+    // turns outward so slowly that theta is still 1.5666 rad, short of pi/2, after a 10 s tail.
     const auto sine = dynamics::sine_excitation({0.5, 2.0, 5.0, 0.0, 0.0});
     dynamics::FlexibleMode mode;
     mode.frequency_hz = 0.01;
