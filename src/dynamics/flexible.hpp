@@ -112,16 +112,17 @@ struct FlexibleResult {
 FlexibleResult simulate_flexible(const FlexibleModel& model, const Excitation& excitation,
                                  const Options& options = {});
 
-/// Share of an impact's velocity change a mode may keep, and the ratio of the input's highest
-/// frequency to the mode's, for the mode to count as moving with the base (1%: a response
+/// Share of an impact's velocity change a mode may keep, and excess of its dynamic
+/// amplification of the input, for the mode to count as moving with the base (1%: a response
 /// within 1% of the base's, docs/methods.md s.10).
 inline constexpr double rigid_mode_share = 0.01;
 /// The frequency from which the mode moves with the base, Hz, so the model is the rigid block:
-/// the higher of where an impact's contact pulse (FlexibleModel::impact_duration_s, T) leaves
-/// the mode at most rigid_mode_share of its velocity change (the envelope of
-/// impact_modal_share, 1 / ((2 f T)^2 - 1): f = sqrt(1 + 1 / share) / (2 T), 50 kHz at 0.1 ms)
-/// and 1 / rigid_mode_share times the input's Nyquist frequency 1 / (2 dt) (its dynamic
-/// amplification below 1 + share). simulate_flexible runs the rigid block from there.
+/// where an impact's contact pulse (FlexibleModel::impact_duration_s, T) leaves the mode at most
+/// rigid_mode_share of its velocity change (the envelope of impact_modal_share,
+/// 1 / ((2 f T)^2 - 1)) and the input, up to its Nyquist frequency 1 / (2 dt), is amplified by
+/// at most 1 + rigid_mode_share (1 / (1 - (f_in / f)^2)): sqrt(1 + 1 / share) / (2 min(T, dt)),
+/// 50 kHz at T = 0.1 ms and any coarser sampling. simulate_flexible runs the rigid block from
+/// there.
 double rigid_limit_hz(const FlexibleModel& model, const Excitation& excitation);
 
 /// Longest step, s, with which central difference (Options::cd_dt_s) integrates the model's

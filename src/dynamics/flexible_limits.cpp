@@ -14,11 +14,11 @@
 namespace freestand::dynamics {
 
 double rigid_limit_hz(const FlexibleModel& model, const Excitation& excitation) {
-    // impact_modal_share(x) has the envelope 1 / ((x / pi)^2 - 1), x / pi = 2 f T.
-    const double impact_hz =
-        std::sqrt(1.0 + 1.0 / rigid_mode_share) / (2.0 * model.impact_duration_s);
-    const double input_hz = 1.0 / (2.0 * excitation.dt_s) / rigid_mode_share;
-    return std::max(impact_hz, input_hz);
+    // impact_modal_share(x) has the envelope 1 / ((x / pi)^2 - 1), x / pi = 2 f T; the input's
+    // amplification 1 / (1 - (f_in / f)^2) with f_in = 1 / (2 dt). Both are 1 + share or less
+    // from f = sqrt(1 + 1 / share) / (2 tau), tau the shorter of T and dt.
+    const double tau_s = std::min(model.impact_duration_s, excitation.dt_s);
+    return std::sqrt(1.0 + 1.0 / rigid_mode_share) / (2.0 * tau_s);
 }
 
 double cd_stable_step_s(const FlexibleModel& model, double g_mps2) {
