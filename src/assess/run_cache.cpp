@@ -9,7 +9,7 @@ namespace freestand::assess {
 namespace {
 
 // Raised when a key's or an encoding's layout below changes (old entries are then unused).
-constexpr std::uint64_t format_version = 1;
+constexpr std::uint64_t format_version = 2;
 
 // A field added to one of these must join its key or its encoding below: the sizes catch it.
 static_assert(sizeof(block::Block) == 40, "block::Block changed: update write_model");
@@ -182,6 +182,7 @@ std::string encode_flexible_summary(const dynamics::FlexibleSummary& s) {
     write_summary(w, s.base);
     for (double v : {s.modal_max_m, s.modal_drift_max, s.modal_accel_max_g}) w.f64(v);
     w.flag(s.uplifted);
+    w.flag(s.rigid_handover);
     w.u64(s.rejected_steps);
     return w.take();
 }
@@ -193,6 +194,7 @@ std::optional<dynamics::FlexibleSummary> decode_flexible_summary(std::string_vie
     s.base = read_summary(r);
     for (double* v : {&s.modal_max_m, &s.modal_drift_max, &s.modal_accel_max_g}) *v = r.f64();
     s.uplifted = r.flag();
+    s.rigid_handover = r.flag();
     s.rejected_steps = static_cast<std::size_t>(r.u64());
     if (r.failed() || !r.at_end()) return std::nullopt;
     return s;

@@ -55,6 +55,11 @@ inline constexpr double min_mass_kg = 1e-3;
 inline constexpr double max_mass_kg = 1e8;
 /// Steps of one fixed-step integration (central difference: duration / dt).
 inline constexpr double max_fixed_steps = 1e8;
+/// Dormand-Prince steps (accepted and rejected) of one flexible-body run. Their number grows
+/// with the mode's frequency (a step is bounded by the explicit method's stability, ~3 /
+/// omega); 2e7 is about 20 s of work, over 1000 s of rocking at 1000 Hz. Only the run finds it
+/// out, so exceeding it is a NumericalError (exit 4), not an InputError.
+inline constexpr double max_adaptive_steps = 2e7;
 /// Characters of one line of a TOML case file. toml++ builds the tables of a dotted key
 /// (a.b.c...) recursively: 60,000 parts overflowed the stack. A key's parts stand on one line
 /// and its table header's on another, so the cap bounds the depth to about this many tables.

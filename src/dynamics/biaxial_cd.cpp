@@ -104,9 +104,8 @@ private:
 BiaxialResult run_biaxial_cd(const BiaxialModel& m, const BiaxialBase& base, const Options& o) {
     constexpr const char* name = "cd";
     BiaxialRecorder rec(o, 0.0);
-    const auto n_sub =
-        static_cast<std::size_t>(std::max(1.0, std::ceil(base.dt() / o.cd_dt_s - 1e-9)));
-    const double h = base.dt() / static_cast<double>(n_sub);
+    const double h = central_difference_step_s(base.dt(), o.cd_dt_s);
+    const auto n_sub = static_cast<std::size_t>(std::lround(base.dt() / h));
     const std::size_t n_seg = base.segments(o.tail_s);
     BiaxialState st;
     rec.sample(0.0, st);

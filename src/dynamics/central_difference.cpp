@@ -96,16 +96,8 @@ private:
         st_.th += h * st_.om;
         th_dd_prev_ = a.th_dd;
         const double t1 = t + h;
-        const std::size_t ia = static_cast<std::size_t>(Geometry::index(st_.s));
-        if (st_.th >= half_pi) {
-            rec_.overturn(t1, OverturnCriterion::angle_half_pi);
-            return;
-        }
-        if (st_.mode == Mode::rock && t1 >= bm_.quiet_from_s() && st_.th > g_.alpha[ia] &&
-            st_.om > 0.0) {
-            rec_.overturn(t1, OverturnCriterion::past_alpha_after_excitation);
-            return;
-        }
+        rec_.check_overturn(st_, t1, t1 >= bm_.quiet_from_s());
+        if (rec_.overturned()) return;
         const Base b1 = bm_.at(k, t1);
         if (st_.th < 0.0) {
             impact(b1, t1);
@@ -192,8 +184,8 @@ private:
 SimulationResult run_central_difference(const Geometry& g, const BaseMotion& bm,
                                         const Options& o) {
     Recorder rec(g, o, bm.pga_mps2());
-    const auto n_sub = static_cast<std::size_t>(std::max(1.0, std::ceil(bm.dt() / o.cd_dt_s - 1e-9)));
-    const double h = bm.dt() / static_cast<double>(n_sub);
+    const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
+    const auto n_sub = static_cast<std::size_t>(std::lround(bm.dt() / h));
     const std::size_t n_seg = bm.segments(o.tail_s);
     const Base b0 = bm.at(0, 0.0);
     BlockState st = initial_state(g, o, b0, b0);
@@ -213,7 +205,10 @@ SimulationResult run_central_difference(const Geometry& g, const BaseMotion& bm,
         if (st.mode == Mode::rest && tb >= bm.min_end_s())
             return rec.finish(st, tb, integrator_name(Integrator::central_difference));
     }
-    return rec.finish(st, bm.t_k(n_seg), integrator_name(Integrator::central_difference));
+    // The run ends with the body as it is: the rule applies to that state too.
+    const double t_end = bm.t_k(n_seg);
+    rec.check_overturn(st, t_end, t_end >= bm.quiet_from_s());
+    return rec.finish(st, t_end, integrator_name(Integrator::central_difference));
 }
 
 }  // namespace freestand::dynamics::detail

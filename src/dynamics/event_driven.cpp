@@ -377,10 +377,8 @@ public:
         next_sample_ = k + 1;
         const bool tail = t >= bm_.quiet_from_s();
         const std::size_t ia = static_cast<std::size_t>(Geometry::index(st_.s));
-        if (tail && st_.mode == Mode::rock && st_.th > g_.alpha[ia] && st_.om > 0.0) {
-            rec_.overturn(t, OverturnCriterion::past_alpha_after_excitation);
-            return t;
-        }
+        rec_.check_overturn(st_, t, tail);
+        if (rec_.overturned()) return t;
         const std::array<Ev, 5> events = contact_events(tail);
         const double alpha = g_.alpha[ia];
         double phi0 = alpha - st_.th;
@@ -444,6 +442,10 @@ public:
             rec_.time_in(st_.mode, t1 - t);
             set_contact(xn);
             rec_.observe(st_);
+            // Rock's pass beyond alpha is located as an event; a slide-rock's energy is only
+            // checked at step ends.
+            if (tail) rec_.check_overturn(st_, t1, true);
+            if (rec_.overturned()) return t1;
             t = t1;
             x0.sn = sn1;
             x0.c = c1;
@@ -791,7 +793,9 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
         if (st.mode == Mode::rest && tb >= bm.min_end_s())
             return rec.finish(st, tb, integrator_name(Integrator::event));
     }
-    return rec.finish(st, bm.t_k(n_seg), integrator_name(Integrator::event));
+    // The run ends with the body as it is: the rule applies to that state too.
+    rec.check_overturn(st, t_end, t_end >= bm.quiet_from_s());
+    return rec.finish(st, t_end, integrator_name(Integrator::event));
 }
 
 }  // namespace freestand::dynamics::detail

@@ -71,6 +71,9 @@ struct FlexibleSummary {
     double modal_drift_max = 0.0;     ///< peak |q| / h_s
     double modal_accel_max_g = 0.0;   ///< peak |absolute horizontal acceleration| of m_s, g
     bool uplifted = false;            ///< the base left flat contact (rock, slide-rock, flight)
+    /// The mode is at or above rigid_limit_hz, where it moves with the base: the rigid block
+    /// ran (simulate()), the modal peaks are 0.
+    bool rigid_handover = false;
     std::size_t rejected_steps = 0;   ///< Dormand-Prince steps the error control rejected (event)
 };
 
@@ -101,8 +104,35 @@ struct FlexibleResult {
 /// momentum (flexible_detail.hpp). Uses of Options: integrator, cd_dt_s, rel_tol, abs_tol,
 /// max_contact_step_s, settle_rebound_rad, settle_interval_s, flat_landing_window_s, tail_s,
 /// record_series, g_mps2 (initial_rotation_rad and initial_slide_velocity_mps must be 0).
-/// Throws InputError for those, NumericalError when the step collapses.
+/// A mode at or above rigid_limit_hz runs the rigid block instead (FlexibleSummary::
+/// rigid_handover). Throws InputError for those, NumericalError when the step collapses, when
+/// the Dormand-Prince steps exceed core::limits::max_adaptive_steps, or when central
+/// difference's step (cd_dt_s, rounded down to divide the input's step) exceeds
+/// cd_stable_step_s.
 FlexibleResult simulate_flexible(const FlexibleModel& model, const Excitation& excitation,
                                  const Options& options = {});
+
+/// Share of an impact's velocity change a mode may keep, and excess of its dynamic
+/// amplification of the input, for the mode to count as moving with the base (1%: a response
+/// within 1% of the base's, docs/methods.md s.10).
+inline constexpr double rigid_mode_share = 0.01;
+/// The frequency from which the mode moves with the base, Hz, so the model is the rigid block:
+/// where an impact's contact pulse (FlexibleModel::impact_duration_s, T) leaves the mode at most
+/// rigid_mode_share of its velocity change (the envelope of impact_modal_share,
+/// 1 / ((2 f T)^2 - 1)) and the input, up to its Nyquist frequency 1 / (2 dt), is amplified by
+/// at most 1 + rigid_mode_share (1 / (1 - (f_in / f)^2)): sqrt(1 + 1 / share) / (2 min(T, dt)),
+/// 50 kHz at T = 0.1 ms and any coarser sampling. simulate_flexible runs the rigid block from
+/// there.
+double rigid_limit_hz(const FlexibleModel& model, const Excitation& excitation);
+
+/// Longest step, s, with which central difference (Options::cd_dt_s) integrates the model's
+/// elastic mode stably: 2 (sqrt(1 + 4 zeta^2) - 2 zeta) / omega, the scheme's own limit (rates
+/// at half steps, x'_n extrapolated as x'_{n-1/2} + dt/2 x''_{n-1}: the root -1 of its
+/// characteristic polynomial), with omega and zeta the mode's frequency and damping in the
+/// contact state and pose where they are highest (read off the equations of motion: the mode
+/// against the free base in flight, ~5.5 x the fixed-base frequency for a uniform block carrying
+/// the cantilever's 0.613 M). The rigid block has no stiffness of its own (rigid contacts), so
+/// the elastic mode is the only limit. g_mps2: the gravity the run uses.
+double cd_stable_step_s(const FlexibleModel& model, double g_mps2 = 9.81);
 
 }  // namespace freestand::dynamics

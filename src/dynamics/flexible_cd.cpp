@@ -149,10 +149,8 @@ private:
         }
         advance(dx, h);
         const double t1 = t + h;
-        if (x_[2] >= half_pi) {
-            rec_.overturn(t1);
-            return;
-        }
+        rec_.check_overturn(m_, x_, t1, t1 >= bm_.quiet_from_s());
+        if (rec_.overturned()) return;
         const Base b1 = bm_.at(k, t1);
         if (x_[2] < 0.0) {
             impact(b1, t1);
@@ -214,7 +212,7 @@ private:
         advance(dx, h);
         const double t1 = t + h;
         if (std::abs(x_[4]) >= half_pi) {
-            rec_.overturn(t1);
+            rec_.overturn(t1, OverturnCriterion::angle_half_pi);
             return;
         }
         // The lowest corner and its vertical rate: it lands on reaching the base from above,
@@ -257,9 +255,8 @@ private:
 FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, const Options& o) {
     FlexibleResult out;
     FlexRecorder rec(g, o, out);
-    const auto n_sub =
-        static_cast<std::size_t>(std::max(1.0, std::ceil(bm.dt() / o.cd_dt_s - 1e-9)));
-    const double h = bm.dt() / static_cast<double>(n_sub);
+    const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
+    const auto n_sub = static_cast<std::size_t>(std::lround(bm.dt() / h));
     const std::size_t n_seg = bm.segments(o.tail_s);
     FlexCdStepper stepper(g, bm, o, rec);
     stepper.start(bm.at(0, 0.0));
@@ -281,6 +278,9 @@ FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, cons
             break;
         }
     }
+    // The run ends with the body as it is: the rule applies to that state too.
+    if (!rec.overturned()) rec.check_overturn(stepper.mode(), stepper.state(), t_end, t_end >= bm.quiet_from_s());
+    if (rec.overturned()) t_end = out.summary.base.overturn_time_s.value_or(t_end);
     rec.finish("cd", t_end, bm.pga_mps2(), std::abs(stepper.state()[0]), 0.0);
     return out;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "dynamics/flexible.hpp"
 #include "dynamics/integrators.hpp"
@@ -289,19 +290,21 @@ void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base
 /// Summary bookkeeping and the output series of both integrators.
 class FlexRecorder {
 public:
-    FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out)
-        : g_(g), o_(o), out_(out) {}
+    FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out);
     /// Peaks of slip, uplift and |q| at the state x in mode m (inline: once per step and
-    /// sample).
+    /// sample). The tilt in flight counts as a rotation (phi < 0 leans over the right edge).
     void observe(const FlexMode& m, const FlexState& x) {
         Summary& s = out_.summary.base;
         modal_peak(modal_of(m.mode, x));
         s.slide_max_m = std::max(s.slide_max_m, std::abs(x[0]));
-        if (is_flight(m.mode) || x[2] <= 0.0) return;
-        s.rock_max_rad = std::max(s.rock_max_rad, x[2]);
-        const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(m.s))];
-        s.rock_max_over_alpha = std::max(s.rock_max_over_alpha, x[2] / alpha);
+        if (is_flight(m.mode)) {
+            rotation_peak(std::abs(x[4]), x[4] < 0.0 ? 1 : -1);
+            return;
+        }
+        if (x[2] > 0.0) rotation_peak(x[2], m.s);
     }
+    /// Applies the overturning rule (overturn.hpp) to a rock / slide-rock state x at t_s.
+    void check_overturn(const FlexMode& m, const FlexState& x, double t_s, bool input_ended);
     /// A peak of |q| found between the integrator's points.
     void modal_peak(double q) {
         out_.summary.modal_max_m = std::max(out_.summary.modal_max_m, std::abs(q));
@@ -321,7 +324,7 @@ public:
     void rejected() { ++out_.summary.rejected_steps; }
     void impact(double t_s, double omega_before, double omega_after, bool settled);
     void settlement() { ++out_.summary.base.settlements; }
-    void overturn(double t_s);
+    void overturn(double t_s, OverturnCriterion criterion);
     bool overturned() const { return out_.summary.base.overturned; }
     /// Fills the summary's totals; slide_residual_m from the final state.
     void finish(const char* integrator, double end_time_s, double pga_mps2, double residual_m,
@@ -329,18 +332,44 @@ public:
 
 private:
     void record(double t, const FlexMode& m, const FlexState& x);
+    void rotation_peak(double theta_rad, int s) {
+        Summary& b = out_.summary.base;
+        b.rock_max_rad = std::max(b.rock_max_rad, theta_rad);
+        const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(s))];
+        b.rock_max_over_alpha = std::max(b.rock_max_over_alpha, theta_rad / alpha);
+    }
 
     const FlexGeometry& g_;
     const Options& o_;
     FlexibleResult& out_;
     double accel_peak_ = 0.0;
+    /// Least potential energy of a pose with the CG over edge [i] (left, right), J.
+    std::array<double, 2> ridge_energy_J_{};
 };
+
+/// Least potential energy (gravity g_mps2 above the base plane and the mode's strain energy) of
+/// a pose of the body on edge s with its CG over the pivot, J: the barrier the body must climb
+/// to bring a CG beyond the pivot back inside. The CG sits at R(q) above the pivot, R(q) the
+/// distance from the edge to the CG of the body deflected by q: min over q of
+/// M g R(q) + k q^2 / 2, a convex function of q.
+double ridge_energy_J(const FlexGeometry& g, int s, double g_mps2);
 
 /// At rest with a mode too small ever to unsettle the base again: the free vibration's
 /// amplitude bounds q and omega q, so the rest inequalities hold for good.
 bool settled_for_good(const FlexGeometry& g, double q, double qd, double g_mps2);
 
-FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o);
+/// Throws NumericalError once steps (Dormand-Prince, accepted and rejected) exceed
+/// core::limits::max_adaptive_steps, naming the time t_s reached, the mode's frequency and
+/// the rigid limit above which the rigid block would run.
+void require_step_budget(std::size_t steps, double t_s, double f_hz, double rigid_limit_hz);
+
+/// cd_stable_step_s (flexible.hpp) of the split body.
+double cd_stable_step_s(const FlexGeometry& g, double g_mps2);
+
+/// The event-driven run; rigid_limit_hz (flexible.hpp) names where the rigid block would take
+/// over when the step budget runs out.
+FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o,
+                                  double rigid_limit_hz = std::numeric_limits<double>::infinity());
 FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, const Options& o);
 
 }  // namespace freestand::dynamics::detail

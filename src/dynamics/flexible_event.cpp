@@ -53,8 +53,10 @@ struct StepExtension {
 
 class FlexEngine {
 public:
-    FlexEngine(const FlexGeometry& g, const Options& o, double dt_s, FlexRecorder& rec)
-        : g_(g), o_(o), rec_(rec), full_step_(g.held, dt_s), g_mps2_(o.g_mps2) {}
+    FlexEngine(const FlexGeometry& g, const Options& o, const BaseMotion& bm, FlexRecorder& rec,
+               double rigid_limit_hz)
+        : g_(g), o_(o), rec_(rec), full_step_(g.held, bm.dt()), g_mps2_(o.g_mps2),
+          quiet_from_s_(bm.quiet_from_s()), rigid_limit_hz_(rigid_limit_hz) {}
 
     const FlexState& state() const { return x_; }
     const FlexMode& mode() const { return m_; }
@@ -368,6 +370,8 @@ private:
             double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
             if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
             const bool clipped = h < h_next_;
+            // The steps a stiff mode needs grow with its frequency: bounded, not run for ever.
+            require_step_budget(++dp_steps_, t, g_.omega / (2.0 * std::numbers::pi), rigid_limit_hz_);
             const double err = dp_step(f, t, x_, h);
             if (!(err <= 1.0)) {
                 rec_.rejected();
@@ -395,6 +399,8 @@ private:
                 end_valid_ = true;
                 end_t_ = t1;
                 t = t1;
+                rec_.check_overturn(m_, x_, t1, t1 >= quiet_from_s_);
+                if (rec_.overturned()) return t1;
                 continue;
             }
             handle(first, t_ev);
@@ -464,10 +470,11 @@ private:
     // Peaks of theta and |q| inside a step: where theta' or q' changes sign.
     void observe_peaks(const StepExtension& dense, const FlexState& x0, const FlexState& xe,
                        double t, double te) {
+        // theta' and q' in contact, phi' and q' in flight (the tilt in flight is a rotation
+        // the peak counts, and phi'' does not vanish there: the mode pulls on it).
         const bool fl = is_flight(m_.mode);
-        const std::size_t iq = fl ? 7 : 5;
-        for (std::size_t i : {std::size_t{3}, iq}) {
-            if (fl && i == 3) continue;
+        const std::size_t ith = fl ? 5 : 3, iq = fl ? 7 : 5;
+        for (std::size_t i : {ith, iq}) {
             const double f0 = x0[i], f1 = xe[i];
             if (f0 == 0.0 || (f0 > 0.0) == (f1 > 0.0) || !(te > t)) continue;
             auto f = [&](double tq) { return dense.at(tq, i); };
@@ -479,7 +486,7 @@ private:
     void handle(Ev e, double t) {
         const Base base = seg_.at(t);
         switch (e) {
-            case Ev::overturn: rec_.overturn(t); return;
+            case Ev::overturn: rec_.overturn(t, OverturnCriterion::angle_half_pi); return;
             case Ev::impact: impact(t, base); return;
             case Ev::lift: set_mode({Mode::flight, m_.s, m_.sigma}, t); return;
             case Ev::friction: {
@@ -552,6 +559,9 @@ private:
     FlexRecorder& rec_;
     const OscillatorStep full_step_;  // the rest phase's whole input step
     const double g_mps2_;
+    const double quiet_from_s_;  // the input has ended from here (BaseMotion::quiet_from_s)
+    const double rigid_limit_hz_;  // rigid_limit_hz of the model and the input
+    std::size_t dp_steps_ = 0;     // Dormand-Prince steps tried
     Stepper dp_;
     Segment seg_;
     double tb_ = 0.0;
@@ -572,10 +582,11 @@ private:
 
 }  // namespace
 
-FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o) {
+FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o,
+                                  double rigid_limit_hz) {
     FlexibleResult out;
     FlexRecorder rec(g, o, out);
-    FlexEngine engine(g, o, bm.dt(), rec);
+    FlexEngine engine(g, o, bm, rec, rigid_limit_hz);
     const std::size_t n_seg = bm.segments(o.tail_s);
     auto segment = [&](std::size_t k) {
         Segment s;
@@ -607,6 +618,9 @@ FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, c
             break;
         }
     }
+    // The run ends with the body as it is: the rule applies to that state too.
+    if (!rec.overturned()) rec.check_overturn(engine.mode(), engine.state(), t_end, t_end >= bm.quiet_from_s());
+    if (rec.overturned()) t_end = out.summary.base.overturn_time_s.value_or(t_end);
     rec.finish("event", t_end, bm.pga_mps2(), std::abs(engine.state()[0]), 0.0);
     return out;
 }

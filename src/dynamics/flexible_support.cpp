@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dynamics/flexible_detail.hpp"
+#include "dynamics/overturn.hpp"
 
 namespace freestand::dynamics::detail {
 
@@ -90,12 +91,53 @@ void FlexRecorder::impact(double t_s, double omega_before, double omega_after, b
     out_.impact_log.push_back({t_s, omega_before, omega_after, settled});
 }
 
-void FlexRecorder::overturn(double t_s) {
+void FlexRecorder::overturn(double t_s, OverturnCriterion criterion) {
     Summary& s = out_.summary.base;
     s.overturned = true;
     s.overturn_time_s = t_s;
     s.overturn_mode = s.impacts > 0 ? 1 : 2;
-    s.overturn_criterion = OverturnCriterion::angle_half_pi;
+    s.overturn_criterion = criterion;
+}
+
+FlexRecorder::FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out)
+    : g_(g), o_(o), out_(out),
+      ridge_energy_J_{ridge_energy_J(g, -1, o.g_mps2), ridge_energy_J(g, 1, o.g_mps2)} {}
+
+void FlexRecorder::check_overturn(const FlexMode& m, const FlexState& x, double t_s,
+                                  bool input_ended) {
+    if (m.mode != Mode::rock && m.mode != Mode::slide_rock) return;
+    const auto i = static_cast<std::size_t>(Geometry::index(m.s));
+    if (!overturn_possible(x[2], x[3], g_.rigid.alpha[i], input_ended)) return;
+    const Pose p = pose_of(g_, m, x);
+    // The mode moves the CG along the body's axis by m_s q / M: beyond the pivot is the CG's
+    // own position, not theta > alpha.
+    const double x_cg = p.X + (g_.ms * p.cphi * p.q - p.sphi * g_.Mh) / g_.M;
+    const double height_J = o_.g_mps2 * (g_.M * p.Y + p.cphi * g_.Mh + p.sphi * g_.ms * p.q);
+    Tilt tilt;
+    tilt.theta_rad = x[2];
+    tilt.omega_radps = x[3];
+    tilt.alpha_rad = g_.rigid.alpha[i];
+    tilt.cg_beyond_pivot_m = static_cast<double>(m.s) * (x_cg - (x[0] + edge_x(g_, m.s)));
+    tilt.energy_J = kinetic_energy(g_, p) + 0.5 * g_.k * p.q * p.q + height_J;
+    tilt.ridge_energy_J = ridge_energy_J_[i];
+    const OverturnCriterion c = overturn_criterion(tilt, input_ended);
+    if (c != OverturnCriterion::none) overturn(t_s, c);
+}
+
+double ridge_energy_J(const FlexGeometry& g, int s, double g_mps2) {
+    // z = s q moves the CG towards the pivot: R(z)^2 = (b - c z)^2 + h^2 with c = m_s / M.
+    const double b = g.b[static_cast<std::size_t>(Geometry::index(s))];
+    const double c = g.ms / g.M, h = g.Mh / g.M, Mg = g.M * g_mps2;
+    auto energy = [&](double z) { return Mg * std::hypot(b - c * z, h) + 0.5 * g.k * z * z; };
+    auto slope = [&](double z) { return -Mg * c * (b - c * z) / std::hypot(b - c * z, h) + g.k * z; };
+    // The slope is < 0 at z = 0 and > 0 at z = b / c (the CG over the pivot at theta = 0):
+    // bisection to the minimum.
+    double lo = 0.0, hi = b / c;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * (b / c); ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (slope(mid) < 0.0 ? lo : hi) = mid;
+    }
+    return energy(0.5 * (lo + hi));
 }
 
 void FlexRecorder::finish(const char* integrator, double end_time_s, double pga_mps2,

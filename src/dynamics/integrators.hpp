@@ -107,14 +107,17 @@ public:
                          "a block at rest does not move");
         if (st.mode == Mode::flight) {
             summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.fl.X));
+            // The tilt in flight is a rotation like any other: phi < 0 leans over the right
+            // edge (Sample::rotation_rad = -phi).
+            rotation_peak(std::abs(st.fl.phi), st.fl.phi < 0.0 ? 1 : -1);
             return;
         }
         summary_.slide_max_m = std::max(summary_.slide_max_m, std::abs(st.u));
         if (st.th <= 0.0) return;
-        summary_.rock_max_rad = std::max(summary_.rock_max_rad, st.th);
-        const double ratio = st.th / g_.alpha[static_cast<std::size_t>(Geometry::index(st.s))];
-        summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
+        rotation_peak(st.th, st.s);
     }
+    /// Applies the overturning rule (overturn.hpp) to a rock / slide-rock state at t_s.
+    void check_overturn(const BlockState& st, double t_s, bool input_ended);
     /// A mode change at a transition (counts only changes of Mode).
     void transition(Mode from, Mode to) {
         if (from != to) ++summary_.mode_changes;
@@ -152,6 +155,11 @@ public:
     SimulationResult finish(const BlockState& st, double end_time_s, const char* integrator);
 
 private:
+    void rotation_peak(double theta_rad, int s) {
+        summary_.rock_max_rad = std::max(summary_.rock_max_rad, theta_rad);
+        const double ratio = theta_rad / g_.alpha[static_cast<std::size_t>(Geometry::index(s))];
+        summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
+    }
     void push(double t_s, const BlockState& st, const Accel& a, double top);
     const Geometry& g_;
     double g_mps2_ = 9.81;

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "dynamics/integrators.hpp"
+#include "dynamics/overturn.hpp"
 
 namespace freestand::dynamics::detail {
 
@@ -81,6 +82,30 @@ void Recorder::overturn(double t_s, OverturnCriterion c) {
     summary_.overturn_time_s = t_s;
     summary_.overturn_mode = summary_.impacts > 0 ? 1 : 2;
     summary_.overturn_criterion = c;
+}
+
+void Recorder::check_overturn(const BlockState& st, double t_s, bool input_ended) {
+    if (st.mode != Mode::rock && st.mode != Mode::slide_rock) return;
+    const auto i = static_cast<std::size_t>(Geometry::index(st.s));
+    if (!overturn_possible(st.th, st.om, g_.alpha[i], input_ended)) return;
+    Tilt tilt;
+    tilt.theta_rad = st.th;
+    tilt.omega_radps = st.om;
+    tilt.alpha_rad = g_.alpha[i];
+    tilt.cg_beyond_pivot_m = g_.R[i] * std::sin(st.th - g_.alpha[i]);
+    if (st.mode == Mode::slide_rock) {
+        // A slipping pivot: friction acts on the base, its moment about the CG can turn theta'
+        // back, so the energy decides. The CG relative to the contact point is
+        // (-s R sin(alpha - theta), R cos(alpha - theta)) (docs/methods.md s.3).
+        const double ph = g_.alpha[i] - st.th, ds = static_cast<double>(st.s);
+        const double vx = st.v + ds * g_.R[i] * std::cos(ph) * st.om;
+        const double vy = g_.R[i] * std::sin(ph) * st.om;
+        tilt.energy_J = 0.5 * g_.M * (vx * vx + vy * vy) + 0.5 * g_.Ic * st.om * st.om +
+                        g_.M * g_mps2_ * g_.R[i] * std::cos(ph);
+        tilt.ridge_energy_J = g_.M * g_mps2_ * g_.R[i];
+    }
+    const OverturnCriterion c = overturn_criterion(tilt, input_ended);
+    if (c != OverturnCriterion::none) overturn(t_s, c);
 }
 
 void Recorder::sample(double t_s, const BlockState& st, Base base, const Known* known) {

@@ -3,7 +3,9 @@
 /// rest, slide, rock about either edge, slide-rock and free flight, with impacts and overturning.
 /// Two integrators: event-driven with exact event location (the reference) and the classic
 /// fixed-step central-difference scheme (the baseline).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -121,6 +123,13 @@ struct Options {
     double initial_slide_velocity_mps = 0.0;
     double g_mps2 = 9.81;        ///< gravity (docs/methods.md, Conventions: 9.81)
 };
+
+/// Central difference's step on an input sampled at sample_dt_s: cd_dt_s rounded down to
+/// divide it (steps end at every sample), s.
+inline double central_difference_step_s(double sample_dt_s, double cd_dt_s) {
+    const double n_sub = std::max(1.0, std::ceil(sample_dt_s / cd_dt_s - 1e-9));
+    return sample_dt_s / n_sub;
+}
 
 /// How overturning was decided.
 enum class OverturnCriterion {

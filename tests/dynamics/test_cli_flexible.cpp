@@ -90,4 +90,53 @@ TEST_CASE("simulate --flexible names bad values", "[flexible][cli][errors]") {
     }
 }
 
+TEST_CASE("simulate --flexible names the model that ran and why", "[flexible][cli]") {
+    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.3 --sine 0.5g,2Hz,5s "
+                           "--flexible f=1000 --json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::ordered_json::parse(r.out);
+    CHECK(j["model"] == "flexible");
+    // The mode moves with the base from 50 kHz (a 0.1 ms impact leaves it 1% of its velocity
+    // change), far above the 1000 Hz a case or --flexible may give.
+    CHECK(j["rigid_above_hz"].get<double>() == Approx(50249.4).epsilon(1e-5));
+    CHECK(j["model_reason"] == "the mode at 1000 Hz is below 5.025e+04 Hz, where it would move "
+                               "with the base: the flexible body ran");
+}
+
+TEST_CASE("simulate --flexible reports a body toppling after the input as overturned",
+          "[flexible][cli][overturn]") {
+    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.3 --sine 0.5g,2Hz,5s "
+                           "--flexible f=0.01 --json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::ordered_json::parse(r.out);
+    CHECK(j["overturned"] == true);
+    CHECK(j["overturn_criterion"] != "none");
+    CHECK(j["overturn_time_s"].get<double>() >= 5.0);
+}
+
+TEST_CASE("simulate --flexible refuses a mode above the case key's limit and an unstable cd step",
+          "[flexible][cli][errors]") {
+    const std::string common = "simulate --block b=0.15,h=0.6,m=38 --mu 0.3 --sine 0.5g,2Hz,5s ";
+    for (const char* f : {"1001", "1e6", "1e8"}) {
+        INFO("f = " << f);
+        const auto r = run_cli(common + "--flexible f=" + f);
+        CHECK(r.exit_code == 3);
+        CHECK(r.err.find("--flexible f: fixed-base frequency (Hz): ") != std::string::npos);
+        CHECK(r.err.find("is above the limit 1000 (README, Limits)") != std::string::npos);
+        CHECK(r.out.empty());
+    }
+    for (const char* f : {"500", "1000"}) {
+        INFO("f = " << f);
+        const auto r = run_cli(common + "--flexible f=" + f + " --integrator cd --json");
+        CHECK(r.exit_code == 4);
+        CHECK(r.err.find("--integrator cd: --dt 0.0001 s (a step of 9.62e-05 s on the input's "
+                         "samples) exceeds the stability limit ") != std::string::npos);
+        CHECK(r.err.find(std::string("of the elastic mode at f = ") + f + " Hz") !=
+              std::string::npos);
+        CHECK(r.out.empty());
+    }
+    // Within the limit it runs.
+    CHECK(run_cli(common + "--flexible f=500 --integrator cd --dt 1e-5 --json").exit_code == 0);
+}
+
 }  // namespace freestand_test_dynamics_test_cli_flexible
