@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -76,7 +75,7 @@ void check_outcome(const report::SummaryOutcome& o, const Fields& f) {
                                   o.margin_text));
         return;
     }
-    require_in_range(*o.margin, 0.0, std::numeric_limits<double>::max(), f.at("margin"));
+    require_non_negative(*o.margin, f.at("margin"));
     const std::string shown = fmt::format("{:.2f}", *o.margin);
     if (o.margin_text != shown && o.margin_text != shown + " (no motion)")
         malformed(f.at("margin_text"), fmt::format("\"{}\" for the margin {}; expected \"{}\"",

@@ -83,5 +83,7 @@ void require_in_range(double value, double lo, double hi, const SourceLocation& 
                       bool lo_inclusive = true, bool hi_inclusive = true);
 /// Always-on check that value > 0 and finite.
 void require_positive(double value, const SourceLocation& where);
+/// Always-on check that value >= 0 and finite.
+void require_non_negative(double value, const SourceLocation& where);
 
 }  // namespace freestand

@@ -160,7 +160,7 @@ TEST_CASE("merge_shards checks a row's margin, direction and PGA against what a 
     };
     CHECK(merged([](json&) {}).summary.rows.size() == 1);
     CHECK_THROWS_WITH(merged([](json& j) { j["row"]["outcome"]["margin"] = -1.0; }),
-                      Contains("s.jsonl:2: row.outcome.margin: value -1 is out of range"));
+                      Contains("s.jsonl:2: row.outcome.margin: value -1 must be a finite number >= 0"));
     CHECK_THROWS_WITH(merged([](json& j) { j["row"]["outcome"]["margin_text"] = "9.99"; }),
                       Contains("s.jsonl:2: row.outcome.margin_text: malformed batch shard: "
                                "\"9.99\" for the margin 1.25; expected \"1.25\""));
