@@ -73,7 +73,7 @@ class JsonFields {
             return std::is_unsigned_v<T> ? "a whole number >= 0" : "a whole number";
         else if constexpr (std::is_same_v<T, double>) return "a finite number";
         else if constexpr (std::is_same_v<T, std::string>) return "a string";
-        else return "a list of " + expected<typename T::value_type>() + " values";
+        else return "a list, each " + expected<typename T::value_type>();
     }
     /// n as JSON text, at most 80 characters of it.
     static std::string shown(const nlohmann::json& n);
