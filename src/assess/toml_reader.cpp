@@ -5,12 +5,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+
+#include "core/text_parse.hpp"
 
 namespace freestand::assess {
 
 toml::table parse_toml(const std::string& text, const std::string& file_label) {
+    // UTF-16 is refused as such (toml++ would say "invalid utf-8 sequence"); a BOM is dropped
+    // as every reader drops it.
+    const std::string_view body = core::text::utf8_text(text, file_label);
     try {
-        return toml::parse(text, file_label);
+        return toml::parse(body, file_label);
     } catch (const toml::parse_error& e) {
         throw InputError(SourceLocation{file_label, static_cast<int>(e.source().begin.line), ""},
                          fmt::format("TOML syntax error: {}", e.description()));

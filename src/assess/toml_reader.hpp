@@ -14,7 +14,8 @@
 
 namespace freestand::assess {
 
-/// The TOML document; a syntax error is an InputError at file_label and its line.
+/// The TOML document (UTF-8, a BOM dropped, UTF-16 refused: core::text::utf8_text); a syntax
+/// error is an InputError at file_label and its line.
 toml::table parse_toml(const std::string& text, const std::string& file_label);
 
 /// Allowed interval of a number; bounds inclusive unless stated (the limits' own type, so that

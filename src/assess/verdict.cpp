@@ -549,6 +549,30 @@ std::string verdict_text(const Verdict& v) {
     return "";
 }
 
+bool verdict_text_fits(VerdictKind kind, std::string_view text) {
+    Verdict v;
+    v.kind = kind;
+    switch (kind) {
+        case VerdictKind::acceptable:
+        case VerdictKind::anchor:
+            return text == verdict_text(v);
+        case VerdictKind::acceptable_with_clearance: {
+            constexpr std::string_view head = "acceptable with clearance >= ";
+            constexpr std::string_view tail = " mm";
+            if (text.size() <= head.size() + tail.size() || text.substr(0, head.size()) != head ||
+                text.substr(text.size() - tail.size()) != tail)
+                return false;
+            const std::string_view mm = text.substr(head.size(), text.size() - head.size() - tail.size());
+            return std::all_of(mm.begin(), mm.end(), [](char c) { return c >= '0' && c <= '9'; });
+        }
+        case VerdictKind::change_material: {
+            const std::string head = verdict_text(v);  // "change base material", no material
+            return text.substr(0, head.size()) == head;
+        }
+    }
+    return false;
+}
+
 std::string margin_text(const Verdict& v) {
     if (v.no_motion) return v.margin ? fmt::format("{:.2f} (no motion)", *v.margin) : "no motion";
     return v.margin ? fmt::format("{:.2f}", *v.margin) : "n/a";

@@ -8,6 +8,7 @@
 /// or fail; only `simulate = "never"` lets the screen decide a failure. The energy-conservation
 /// estimate is informational: it neither decides nor triggers anything.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "assess/result.hpp"
@@ -67,6 +68,10 @@ std::vector<std::string> open_conditions(const std::vector<LevelResult>& levels)
 /// "change base material to steel (higher friction: ...)" or "anchor". The clearance is rounded
 /// up to whole mm.
 std::string verdict_text(const Verdict& v);
+
+/// True when text is a verdict line verdict_text can write for a verdict of this kind (the
+/// clearance, the material and the mechanism free): how a summary row read back is checked.
+bool verdict_text_fits(VerdictKind kind, std::string_view text);
 
 /// "1.15", or "4.02 (no motion)" when the demand is negligible.
 std::string margin_text(const Verdict& v);

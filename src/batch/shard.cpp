@@ -3,9 +3,15 @@
 #include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
+#include <type_traits>
 
+#include "assess/verdict.hpp"
+#include "batch/list_detail.hpp"
 #include "core/errors.hpp"
+#include "core/json_fields.hpp"
+#include "core/limits.hpp"
 
 namespace freestand::batch {
 
@@ -14,9 +20,11 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-[[noreturn]] void malformed(const std::string& what) {
-    throw InputError(SourceLocation{"", 0, "shards"},
-                     fmt::format("a batch shard's contents are malformed ({})", what));
+using Fields = core::JsonFields;
+constexpr const char* kMalformed = "malformed batch shard";
+
+[[noreturn]] void malformed(const SourceLocation& where, const std::string& what) {
+    throw InputError(where, std::string(kMalformed) + ": " + what);
 }
 
 ordered_json outcome_json(const report::SummaryOutcome& o) {
@@ -34,20 +42,61 @@ ordered_json outcome_json(const report::SummaryOutcome& o) {
                         {"open_conditions", o.open_conditions}};
 }
 
-report::SummaryOutcome outcome_from_json(const json& j) {
+std::optional<assess::VerdictKind> verdict_kind(const std::string& name) {
+    for (const auto k : {assess::VerdictKind::acceptable,
+                         assess::VerdictKind::acceptable_with_clearance,
+                         assess::VerdictKind::change_material, assess::VerdictKind::anchor})
+        if (name == assess::to_string(k)) return k;
+    return std::nullopt;
+}
+
+// The verdict's kind, its text and its margin agree as assess::verdict_text and
+// assess::margin_text write them; the governing level is a design level in one direction.
+void check_outcome(const report::SummaryOutcome& o, const Fields& f) {
+    const auto kind = verdict_kind(o.verdict_kind);
+    if (!kind)
+        malformed(f.at("verdict_kind"),
+                  fmt::format("\"{}\"; expected acceptable, acceptable_with_clearance, "
+                              "change_material or anchor",
+                              o.verdict_kind));
+    if (!assess::verdict_text_fits(*kind, o.verdict))
+        malformed(f.at("verdict"), fmt::format("\"{}\" is not the text of a verdict of kind {}",
+                                               o.verdict, o.verdict_kind));
+    require_in_range(o.governing_pga_g, 0.0, core::limits::max_design_level_g,
+                     f.at("governing_pga_g"), false, true);
+    if (o.governing_direction != "x" && o.governing_direction != "y")
+        malformed(f.at("governing_direction"),
+                  fmt::format("\"{}\"; expected \"x\" or \"y\"", o.governing_direction));
+    const bool text_without_margin = o.margin_text == "no motion" || o.margin_text == "n/a";
+    if (!o.margin) {
+        if (!text_without_margin)
+            malformed(f.at("margin_text"),
+                      fmt::format("\"{}\" with no margin; expected \"no motion\" or \"n/a\"",
+                                  o.margin_text));
+        return;
+    }
+    require_non_negative(*o.margin, f.at("margin"));
+    const std::string shown = fmt::format("{:.2f}", *o.margin);
+    if (o.margin_text != shown && o.margin_text != shown + " (no motion)")
+        malformed(f.at("margin_text"), fmt::format("\"{}\" for the margin {}; expected \"{}\"",
+                                                   o.margin_text, *o.margin, shown));
+}
+
+report::SummaryOutcome outcome_from_json(const Fields& f) {
     report::SummaryOutcome o;
-    o.component = j.at("component").get<std::string>();
-    o.verdict_kind = j.at("verdict_kind").get<std::string>();
-    o.verdict = j.at("verdict").get<std::string>();
-    o.governing_level = j.at("governing_level").get<std::string>();
-    o.governing_pga_g = j.at("governing_pga_g").get<double>();
-    o.governing_direction = j.at("governing_direction").get<std::string>();
-    o.governing_material = j.at("governing_material").get<std::string>();
-    if (!j.at("margin").is_null()) o.margin = j.at("margin").get<double>();
-    o.margin_text = j.at("margin_text").get<std::string>();
-    o.decided_by = j.at("decided_by").get<std::string>();
-    o.recommended_material = j.at("recommended_material").get<std::string>();
-    o.open_conditions = j.at("open_conditions").get<std::vector<std::string>>();
+    o.component = f.get<std::string>("component");
+    o.verdict_kind = f.get<std::string>("verdict_kind");
+    o.verdict = f.get<std::string>("verdict");
+    o.governing_level = f.get<std::string>("governing_level");
+    o.governing_pga_g = f.get<double>("governing_pga_g");
+    o.governing_direction = f.get<std::string>("governing_direction");
+    o.governing_material = f.get<std::string>("governing_material");
+    if (!f.is_null("margin")) o.margin = f.get<double>("margin");
+    o.margin_text = f.get<std::string>("margin_text");
+    o.decided_by = f.get<std::string>("decided_by");
+    o.recommended_material = f.get<std::string>("recommended_material");
+    o.open_conditions = f.get<std::vector<std::string>>("open_conditions");
+    check_outcome(o, f);
     return o;
 }
 
@@ -61,34 +110,85 @@ ordered_json row_json(const report::SummaryRow& r) {
                         {"exit_code", r.exit_code}};
 }
 
-report::SummaryRow row_from_json(const json& j) {
+bool is_sha256_hex(const std::string& s) {
+    return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) {
+               return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+           });
+}
+
+// A row is assessed (an outcome, no error, exit code 0) or failed (an error and the exit code of
+// its class: 3 input, 4 numerical, 5 I/O, 70 internal), as run_rows makes it.
+void check_status(const report::SummaryRow& r, const Fields& f) {
+    if (r.outcome) {
+        if (r.exit_code != 0)
+            malformed(f.at("exit_code"), fmt::format("{} for an assessed component; expected 0",
+                                                     r.exit_code));
+        if (!r.error.empty())
+            malformed(f.at("error"), "an error beside an outcome; expected \"\" for an assessed "
+                                     "component");
+        if (!is_sha256_hex(r.case_sha256))
+            malformed(f.at("case_sha256"),
+                      fmt::format("\"{}\"; expected the 64 hex digits of the case's SHA-256",
+                                  r.case_sha256));
+        return;
+    }
+    const auto code = static_cast<ExitCode>(r.exit_code);
+    if (code != ExitCode::input && code != ExitCode::numerical && code != ExitCode::io &&
+        code != ExitCode::internal)
+        malformed(f.at("exit_code"),
+                  fmt::format("{} for a component that failed; expected 3, 4, 5 or 70",
+                              r.exit_code));
+    if (r.error.empty()) malformed(f.at("error"), "empty for a component that failed");
+    if (!r.case_sha256.empty() && !is_sha256_hex(r.case_sha256))
+        malformed(f.at("case_sha256"),
+                  fmt::format("\"{}\"; expected \"\" or 64 hex digits", r.case_sha256));
+}
+
+report::SummaryRow row_from_json(const Fields& f) {
     report::SummaryRow r;
-    r.name = j.at("name").get<std::string>();
-    r.case_file = j.at("case_file").get<std::string>();
-    r.case_sha256 = j.at("case_sha256").get<std::string>();
-    r.overrides = j.at("overrides").get<std::string>();
-    if (!j.at("outcome").is_null()) r.outcome = outcome_from_json(j.at("outcome"));
-    r.error = j.at("error").get<std::string>();
-    r.exit_code = j.at("exit_code").get<int>();
+    r.name = f.get<std::string>("name");
+    r.case_file = f.get<std::string>("case_file");
+    r.case_sha256 = f.get<std::string>("case_sha256");
+    r.overrides = f.get<std::string>("overrides");
+    if (!f.is_null("outcome")) r.outcome = outcome_from_json(f.object("outcome"));
+    r.error = f.get<std::string>("error");
+    r.exit_code = f.get<int>("exit_code");
+    check_status(r, f);
     return r;
 }
 
 // A report file's name as report_files gives it: a plain name, never a path that would
-// publish outside the component's folder.
-void check_file_name(const std::string& name) {
+// publish outside the component's folder, and each once.
+void check_file_name(const std::string& name, const std::vector<core::OutputFile>& before,
+                     const SourceLocation& where) {
     if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos ||
         name.find('\0') != std::string::npos || name == core::run_marker)
-        malformed(fmt::format("\"{}\" cannot name a report file", name));
+        malformed(where, fmt::format("\"{}\" cannot name a report file", name));
+    for (const core::OutputFile& f : before)
+        if (f.name == name) malformed(where, fmt::format("the report file \"{}\" is listed twice", name));
 }
 
-BatchRow batch_row_from_json(const json& j) {
-    BatchRow out;
-    out.row = row_from_json(j.at("row"));
-    for (const json& f : j.at("files")) {
-        if (!f.is_array() || f.size() != 2) malformed("a file is not [name, contents]");
-        out.files.push_back({f[0].get<std::string>(), f[1].get<std::string>()});
-        check_file_name(out.files.back().name);
+std::vector<core::OutputFile> files_from_json(const Fields& record, bool assessed) {
+    const json& files = record.node("files");
+    const SourceLocation where = record.at("files");
+    if (!files.is_array()) malformed(where, "expected a list of [name, contents]");
+    if (assessed == files.empty())
+        malformed(where, assessed ? "none for an assessed component; expected its report's files"
+                                  : "report files for a component that failed; expected none");
+    std::vector<core::OutputFile> out;
+    for (const json& f : files) {
+        if (!f.is_array() || f.size() != 2 || !f[0].is_string() || !f[1].is_string())
+            malformed(where, "an entry that is not [name, contents]");
+        check_file_name(f[0].get<std::string>(), out, where);
+        out.push_back({f[0].get<std::string>(), f[1].get<std::string>()});
     }
+    return out;
+}
+
+BatchRow batch_row_from_json(const Fields& record) {
+    BatchRow out;
+    out.row = row_from_json(record.object("row"));
+    out.files = files_from_json(record, out.row.outcome.has_value());
     return out;
 }
 
@@ -111,38 +211,46 @@ ordered_json shard_record(std::size_t index, const BatchRow& row) {
     return ordered_json{{"index", index}, {"row", row_json(row.row)}, {"files", files}};
 }
 
-BatchRun merge_shards(const json& run, const std::vector<json>& records) {
-    report::SummaryStamp stamp;
-    std::vector<std::string> names;
-    std::vector<std::optional<BatchRow>> rows;
-    try {
-        const json& s = run.at("stamp");
-        stamp = {s.at("tool_version").get<std::string>(), s.at("commit").get<std::string>(),
-                 s.at("list").get<std::string>(), s.at("list_sha256").get<std::string>()};
-        names = run.at("names").get<std::vector<std::string>>();
-        // The names become folders: a header that was edited must not publish elsewhere.
-        for (const std::string& n : names) check_name(n, SourceLocation{"", 0, "shards"});
-        rows.resize(names.size());
-        for (const json& rec : records) {
-            const auto index = rec.at("index").get<std::size_t>();
-            if (index >= names.size())
-                malformed(fmt::format("component {} of a list of {}", index + 1, names.size()));
-            if (rows[index])
-                malformed(fmt::format("component {} ({}) is in two records", index + 1,
-                                      names[index]));
-            BatchRow row = batch_row_from_json(rec);
-            if (row.row.name != names[index])
-                malformed(fmt::format("component {} is named \"{}\" in the header and \"{}\" in "
-                                      "its record",
-                                      index + 1, names[index], row.row.name));
-            rows[index] = std::move(row);
-        }
-    } catch (const json::exception& e) {
-        malformed(e.what());
+BatchRun merge_shards(const json& run, const std::vector<json>& records,
+                      const SourceLocation& run_at, const std::vector<SourceLocation>& record_at) {
+    const Fields header(run, run_at, "run.", kMalformed);
+    const Fields s = header.object("stamp");
+    const report::SummaryStamp stamp{s.get<std::string>("tool_version"), s.get<std::string>("commit"),
+                                     s.get<std::string>("list"), s.get<std::string>("list_sha256")};
+    // The names become folders: a header that was edited must not publish elsewhere, nor two
+    // components into one folder.
+    BatchList names_checked;
+    detail::EntryCollector collect(names_checked);
+    for (const std::string& n : header.get<std::vector<std::string>>("names")) {
+        BatchEntry e;
+        e.name = n;
+        collect.add(std::move(e), header.at("names"));
+    }
+    const std::vector<BatchEntry>& names = names_checked.entries;
+    std::vector<std::optional<BatchRow>> rows(names.size());
+    for (std::size_t r = 0; r < records.size(); ++r) {
+        const Fields rec(records[r], r < record_at.size() ? record_at[r] : SourceLocation{}, "",
+                         kMalformed);
+        const auto index = rec.get<std::size_t>("index");
+        if (index >= names.size())
+            malformed(rec.at("index"),
+                      fmt::format("component {} of a list of {}", index + 1, names.size()));
+        if (rows[index])
+            malformed(rec.at("index"), fmt::format("component {} ({}) is in two records", index + 1,
+                                                   names[index].name));
+        BatchRow row = batch_row_from_json(rec);
+        if (row.row.name != names[index].name)
+            malformed(rec.at("row.name"),
+                      fmt::format("component {} is named \"{}\" in the header and \"{}\" in its "
+                                  "record",
+                                  index + 1, names[index].name, row.row.name));
+        rows[index] = std::move(row);
     }
     std::vector<BatchRow> ordered;
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        if (!rows[i]) malformed(fmt::format("component {} ({}) is in no shard", i + 1, names[i]));
+        if (!rows[i])
+            malformed(SourceLocation{"", 0, "shards"},
+                      fmt::format("component {} ({}) is in no shard", i + 1, names[i].name));
         ordered.push_back(std::move(*rows[i]));
     }
     return assemble(stamp, std::move(ordered));

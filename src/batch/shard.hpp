@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "batch/run.hpp"
+#include "core/errors.hpp"
 
 namespace freestand::batch {
 
@@ -20,11 +21,21 @@ nlohmann::ordered_json shard_run_json(const report::SummaryStamp& stamp, const B
 /// contents], ...]}.
 nlohmann::ordered_json shard_record(std::size_t index, const BatchRow& row);
 
-/// The run the shards of a batch make. records: every shard's records, in any order. Throws
-/// InputError (field "shards") when the header or a record is malformed, a record's index is
-/// outside the list or given twice, its name is not the list's name at that index, or a
-/// component is in no record.
-BatchRun merge_shards(const nlohmann::json& run, const std::vector<nlohmann::json>& records);
+/// The run the shards of a batch make. records: every shard's records, in any order; run_at and
+/// record_at (one per record) say where the header and each record stand (file and line), for
+/// the messages. Checks every value before anything is built, and throws InputError "malformed
+/// batch shard" naming the file, line and field when the header or a record is malformed: a
+/// missing key or a wrong type, a component name that cannot name a folder or is given twice,
+/// a record's index outside the list or given twice, its name not the list's name at that
+/// index, a component in no record; a row whose status and exit code disagree (assessed: exit
+/// code 0, no error, the case's SHA-256; failed: an error and exit code 3, 4, 5 or 70), whose
+/// verdict kind, verdict text and margin text disagree (assess::verdict_text_fits), whose
+/// governing PGA is outside (0, 3] g or direction not x or y, whose margin is negative; report
+/// files for a failed row or none for an assessed one, a file name that is not a plain name or
+/// is listed twice.
+BatchRun merge_shards(const nlohmann::json& run, const std::vector<nlohmann::json>& records,
+                      const SourceLocation& run_at = {},
+                      const std::vector<SourceLocation>& record_at = {});
 
 /// The indices of a list of count entries that shard k of n computes: i with i % n == k - 1
 /// (every n-th component, so slow ones spread over the shards).

@@ -20,17 +20,21 @@ namespace {
 const char* const usage = "DIR_OR_SHARD... --out DIR [--json]";
 
 void merge_fragility(const ShardSet& set, const std::filesystem::path& out, bool json) {
-    fragility::Meta meta;
+    const SourceLocation header_at{set.run_at.file, set.run_at.line, "run.meta"};
+    if (!set.run.is_object() || !set.run.contains("meta") || !set.run.contains("stamp"))
+        throw InputError(SourceLocation{set.run_at.file, set.run_at.line, "run"},
+                         "malformed fragility shard: expected {\"meta\", \"stamp\"}");
+    const fragility::Meta meta = fragility::meta_from_json(set.run.at("meta"), header_at);
     report::Stamp stamp;
-    std::vector<fragility::SampleResult> samples;
     try {
-        meta = fragility::meta_from_json(set.run.at("meta"));
         stamp = report::stamp_from_json(set.run.at("stamp"));
-        for (const auto& r : set.records) samples.push_back(fragility::sample_from_json(r));
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(SourceLocation{"", 0, "shards"},
-                         fmt::format("a fragility shard's contents are malformed ({})", e.what()));
+        throw InputError(SourceLocation{set.run_at.file, set.run_at.line, "run.stamp"},
+                         fmt::format("malformed fragility shard ({})", e.what()));
     }
+    // Every sample is checked against the run before anything is aggregated or written.
+    std::vector<fragility::SampleResult> samples =
+        fragility::samples_from_json(set.records, set.record_at, meta);
     fragility::Result r;
     try {
         r = fragility::aggregate(meta, std::move(samples));
@@ -58,7 +62,9 @@ int run(const std::vector<std::string>& args) {
     }
     // A batch merges to the single run's folder and exit code (1 when a component failed).
     if (set.kind == "batch")
-        return write_batch_outputs(batch::merge_shards(set.run, set.records), out,
+        return write_batch_outputs(batch::merge_shards(set.run, set.records, set.run_at,
+                                                       set.record_at),
+                                   out,
                                    (*vm)["json"].as<bool>(), "");
     throw InputError(SourceLocation{"", 0, "shards"},
                      fmt::format("shards of kind \"{}\"; this build merges \"fragility\" and "

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/text_parse.hpp"
 
 namespace freestand::cli {
 
@@ -39,12 +40,14 @@ struct Shard {
     int k = 0, n = 0;
     nlohmann::json run;
     std::vector<nlohmann::json> records;
+    std::vector<int> record_lines;
 };
 
 Shard read_one(const fs::path& file) {
     Shard s;
     s.file = file;
-    std::istringstream in(core::read_text_file(file));
+    const std::string text = core::read_text_file(file);
+    std::istringstream in(std::string(core::text::utf8_text(text, file.string())));
     std::string line;
     int number = 0;
     while (std::getline(in, line)) {
@@ -58,6 +61,7 @@ Shard read_one(const fs::path& file) {
         }
         if (number > 1) {
             s.records.push_back(std::move(j));
+            s.record_lines.push_back(number);
             continue;
         }
         try {
@@ -131,8 +135,13 @@ ShardSet read_shards(const std::vector<fs::path>& paths) {
     ShardSet out;
     out.kind = by_index.begin()->second.kind;
     out.run = by_index.begin()->second.run;
-    for (auto& [k, s] : by_index)
-        for (auto& r : s.records) out.records.push_back(std::move(r));
+    out.run_at = SourceLocation{by_index.begin()->second.file.string(), 1, ""};
+    for (auto& [k, s] : by_index) {
+        for (std::size_t i = 0; i < s.records.size(); ++i) {
+            out.records.push_back(std::move(s.records[i]));
+            out.record_at.push_back(SourceLocation{s.file.string(), s.record_lines[i], ""});
+        }
+    }
     return out;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.hpp"
+
 namespace freestand::cli {
 
 /// DIR/shard-K-of-N.jsonl, written atomically.
@@ -17,11 +19,13 @@ std::filesystem::path write_shard(const std::filesystem::path& dir, const std::s
 struct ShardSet {
     std::string kind;
     nlohmann::json run;
+    SourceLocation run_at;                 ///< the first shard's header: file, line 1
     std::vector<nlohmann::json> records;  ///< in shard order, then file order
+    std::vector<SourceLocation> record_at;  ///< each record's file and line
 };
 
-/// Every shard-*.jsonl in the given folders (or the files given). InputError naming file:line
-/// for a malformed line; InputError when the shards mix kinds or runs, or do not cover 1..N
+/// Every shard-*.jsonl in the given folders (or the files given), UTF-8 (a BOM dropped, UTF-16
+/// refused: core::text::utf8_text). InputError naming file:line for a malformed line; InputError when the shards mix kinds or runs, or do not cover 1..N
 /// exactly once (naming the missing or repeated shard); IoError for an unreadable path.
 ShardSet read_shards(const std::vector<std::filesystem::path>& paths);
 

@@ -1,6 +1,7 @@
 #include "core/csv_table.hpp"
 
 #include "core/errors.hpp"
+#include "core/text_parse.hpp"
 
 namespace freestand::core {
 
@@ -10,9 +11,8 @@ namespace {
 // record's line is where it starts in the file.
 class CsvScanner {
   public:
-    CsvScanner(std::string_view text, const std::string& file) : text_(text), file_(file) {
-        if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
-    }
+    CsvScanner(std::string_view text, const std::string& file)
+        : text_(text::utf8_text(text, file)), file_(file) {}
 
     std::vector<CsvRecord> records() {
         std::vector<CsvRecord> out;

@@ -16,8 +16,8 @@ struct CsvRecord {
     std::vector<std::string> fields;
 };
 
-/// Parses text as RFC 4180 records. A leading UTF-8 BOM is dropped; empty lines are skipped
-/// (an empty record carries nothing). Fields are returned as written, without their quotes and
+/// Parses text as RFC 4180 records. A leading UTF-8 BOM is dropped and UTF-16 refused
+/// (text::utf8_text); empty lines are skipped (an empty record carries nothing). Fields are returned as written, without their quotes and
 /// not trimmed. Throws InputError at file:line on a double quote inside an unquoted field, text
 /// after a closing quote, or a quoted field that never closes.
 std::vector<CsvRecord> parse_csv_table(std::string_view text, const std::string& file);

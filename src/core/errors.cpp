@@ -31,4 +31,9 @@ void require_positive(double value, const SourceLocation& where) {
     throw InputError(where, fmt::format("value {} must be a finite number > 0", value));
 }
 
+void require_non_negative(double value, const SourceLocation& where) {
+    if (std::isfinite(value) && value >= 0.0) return;
+    throw InputError(where, fmt::format("value {} must be a finite number >= 0", value));
+}
+
 }  // namespace freestand

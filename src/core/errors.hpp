@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/printable.hpp"
+
 namespace freestand {
 
 /// Exit codes of the `freestand` executable.
@@ -16,10 +18,13 @@ enum class ExitCode : int {
     internal = 70,  ///< a bug: an invariant did not hold
 };
 
-/// Base of every freestand error; carries the exit code it maps to.
+/// Base of every freestand error; carries the exit code it maps to. The message is kept with its
+/// control characters shown as \xNN (core::printable): it quotes fields and file names from
+/// input, and what() is a C string that a NUL among them would cut short.
 class Error : public std::runtime_error {
 public:
-    Error(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+    Error(ExitCode code, const std::string& message)
+        : std::runtime_error(core::printable(message)), code_(code) {}
     ExitCode code() const noexcept { return code_; }
 
 private:
@@ -42,9 +47,9 @@ public:
     InputError(SourceLocation where, const std::string& message)
         : Error(ExitCode::input, format_location(where, message)),
           where_(std::move(where)),
-          message_(message) {}
+          message_(core::printable(message)) {}
     explicit InputError(const std::string& message)
-        : Error(ExitCode::input, message), message_(message) {}
+        : Error(ExitCode::input, message), message_(core::printable(message)) {}
     const SourceLocation& where() const noexcept { return where_; }
     /// The message without its location.
     const std::string& message() const noexcept { return message_; }
@@ -78,5 +83,7 @@ void require_in_range(double value, double lo, double hi, const SourceLocation& 
                       bool lo_inclusive = true, bool hi_inclusive = true);
 /// Always-on check that value > 0 and finite.
 void require_positive(double value, const SourceLocation& where);
+/// Always-on check that value >= 0 and finite.
+void require_non_negative(double value, const SourceLocation& where);
 
 }  // namespace freestand

@@ -19,7 +19,7 @@ Record read_at2(const std::filesystem::path& path) {
 
 Record parse_at2(const std::string& text, const std::string& file) {
     const std::filesystem::path path(file);
-    std::istringstream in(text);
+    std::istringstream in(std::string(text::utf8_text(text, file)));
     std::string line;
     std::string header[4];
     for (int i = 0; i < 4; ++i) {
@@ -70,6 +70,13 @@ Record parse_at2(const std::string& text, const std::string& file) {
                 throw InputError({file, line_no, "acceleration"},
                                  "value \"" + token + "\" is not finite");
             rec.accel_mps2.push_back(units::g_to_mps2(a_g));
+            // NPTS bounds the reading, not only the check after it: the values beyond it are
+            // never stored (a 512 MiB file holds 2.5e8 of them).
+            if (static_cast<long>(rec.accel_mps2.size()) > npts)
+                throw InputError({file, line_no, "acceleration"},
+                                 fmt::format("more values than the header's NPTS= {} (line 4); "
+                                             "expected {} values",
+                                             npts, npts));
         }
     }
     if (rec.accel_mps2.empty()) throw InputError({file, line_no, ""}, "no acceleration values after the header");

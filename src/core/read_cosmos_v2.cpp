@@ -304,7 +304,7 @@ Record CosmosParser::parse() {
 }  // namespace
 
 Record parse_cosmos_v2(const std::string& text, const std::string& file_label) {
-    return CosmosParser(file_label, text::split_lines(text)).parse();
+    return CosmosParser(file_label, text::split_lines(text, file_label)).parse();
 }
 
 Record read_cosmos_v2(const std::filesystem::path& path) {

@@ -55,6 +55,7 @@ std::string decimal_point(std::string_view field, char separator) {
 
 struct CsvHeader {
     std::size_t line_index = 0;
+    std::string text;  ///< the header line as written, for messages
     char separator = ',';
     std::size_t columns = 0;
     std::optional<std::size_t> time_column;  ///< 0-based
@@ -65,18 +66,22 @@ struct CsvHeader {
     double accel_to_mps2 = 1.0;
 };
 
+/// Reads the text line by line as it goes, so that a file's size (up to 512 MiB of one-digit
+/// rows) costs no more than the samples it is allowed (limits::max_samples), and refuses the
+/// first row beyond them.
 class CsvParser {
 public:
-    CsvParser(std::string file, std::vector<std::string> lines)
-        : file_(std::move(file)), lines_(std::move(lines)) {}
+    CsvParser(std::string file, std::string_view text, double max_samples)
+        : file_(std::move(file)), text_(text), max_samples_(max_samples) {}
     Record parse();
 
 private:
     SourceLocation at(std::size_t index, std::string field) const {
         return {file_, static_cast<int>(index + 1), std::move(field)};
     }
-    void read_comment(std::size_t index, Record& rec);
-    CsvHeader read_header(std::size_t index) const;
+    void read_comment(std::size_t index, std::string_view line, Record& rec);
+    void read_dt_comment(std::size_t index, std::string_view value);
+    CsvHeader read_header(std::size_t index, std::string_view line) const;
     void place_column(CsvHeader& h, std::size_t column, std::string_view name) const;
     double number(std::size_t index, std::string_view field, std::size_t column, const std::string& name,
                   char separator) const;
@@ -84,32 +89,44 @@ private:
     void check_step(std::size_t index, const std::string& where, double t_prev, double t);
 
     std::string file_;
-    std::vector<std::string> lines_;
+    std::string_view text_;
+    double max_samples_;
     std::optional<double> comment_dt_s_;
     std::size_t comment_dt_index_ = 0;
     double first_step_s_ = 0.0;
     std::size_t first_step_index_ = 0;
 };
 
-void CsvParser::read_comment(std::size_t index, Record& rec) {
-    const std::string_view body = text::trim(std::string_view(lines_[index]).substr(1));
+void CsvParser::read_comment(std::size_t index, std::string_view line, Record& rec) {
+    const std::string_view body = text::trim(line.substr(1));
     const std::size_t colon = body.find(':');
     if (colon == std::string_view::npos) return;
     const std::string key = text::lower(text::trim(body.substr(0, colon)));
     const std::string_view value = text::trim(body.substr(colon + 1));
     if (key == "name") rec.name = std::string(value);
     if (key == "component") rec.component = std::string(value);
-    if (key != "dt_s") return;
+    if (key == "dt_s") read_dt_comment(index, value);
+}
+
+// A repeated "# dt_s" line that states the same step is harmless (a file written in parts);
+// one that disagrees leaves the record's time axis ambiguous, so neither is taken.
+void CsvParser::read_dt_comment(std::size_t index, std::string_view value) {
     double dt_s = 0.0;
     if (!text::parse_double(value, dt_s) || !std::isfinite(dt_s) || dt_s <= 0.0)
         throw InputError(at(index, "dt_s"), fmt::format("expected a time step > 0 s; got \"{}\"", value));
+    if (comment_dt_s_ && *comment_dt_s_ != dt_s)
+        throw InputError(at(index, "dt_s"),
+                         fmt::format("{} s here but {} s at line {}; expected one time step, stated "
+                                     "once (or repeated unchanged)",
+                                     dt_s, *comment_dt_s_, comment_dt_index_ + 1));
+    if (comment_dt_s_) return;
     comment_dt_s_ = dt_s;
     comment_dt_index_ = index;
 }
 
 void CsvParser::place_column(CsvHeader& h, std::size_t column, std::string_view name) const {
     const csv::NameReading reading = csv::read_column_name(name);
-    const std::string& header = lines_[h.line_index];
+    const std::string& header = h.text;
     if (!reading.quantity)
         throw InputError(at(h.line_index, "header"),
                          fmt::format("column {} \"{}\" of \"{}\" is not a recognised name; accepted names: {}",
@@ -137,10 +154,10 @@ void CsvParser::place_column(CsvHeader& h, std::size_t column, std::string_view 
     }
 }
 
-CsvHeader CsvParser::read_header(std::size_t index) const {
+CsvHeader CsvParser::read_header(std::size_t index, std::string_view line) const {
     CsvHeader h;
     h.line_index = index;
-    const std::string_view line = text::trim(lines_[index]);
+    h.text = std::string(line);
     h.separator = header_separator(line);
     const std::vector<std::string_view> cols = split_fields(line, h.separator);
     h.columns = cols.size();
@@ -148,12 +165,12 @@ CsvHeader CsvParser::read_header(std::size_t index) const {
         throw InputError(at(index, "header"),
                          fmt::format("expected \"time_s,accel_<unit>\" or \"accel_<unit>\" (a time and an acceleration "
                                      "column, or one acceleration column); got {} columns in \"{}\"",
-                                     cols.size(), lines_[index]));
+                                     cols.size(), h.text));
     for (std::size_t c = 0; c < cols.size(); ++c) place_column(h, c, cols[c]);
     if (h.accel_name.empty())
         throw InputError(at(index, "header"),
                          fmt::format("no acceleration column in \"{}\"; expected \"time_s,accel_<unit>\" or "
-                                     "\"accel_<unit>\"", lines_[index]));
+                                     "\"accel_<unit>\"", h.text));
     return h;
 }
 
@@ -200,6 +217,10 @@ void CsvParser::read_row(std::size_t index, std::string_view line, const CsvHead
     }
     rec.accel_mps2.push_back(number(index, fields[h.accel_column], h.accel_column, h.accel_name, h.separator) *
                              h.accel_to_mps2);
+    if (static_cast<double>(rec.accel_mps2.size()) > max_samples_)
+        throw InputError(at(index, ""), fmt::format("more than {:.0f} samples, the limit of a record "
+                                                    "(README, Limits); the reading stops at this row",
+                                                    max_samples_));
 }
 
 Record CsvParser::parse() {
@@ -209,22 +230,25 @@ Record CsvParser::parse() {
     std::optional<CsvHeader> header;
     std::vector<double> times_s;
     std::size_t last_row = 0;
-    for (std::size_t i = 0; i < lines_.size(); ++i) {
-        const std::string_view line = text::trim(lines_[i]);
+    std::size_t i = 0;  // 0-based index of the line being read
+    for (std::size_t start = 0; start < text_.size(); ++i) {
+        const std::size_t end = std::min(text_.find('\n', start), text_.size());
+        const std::string_view line = text::trim(text_.substr(start, end - start));
+        start = end + 1;
         if (line.empty()) continue;
         if (line.front() == '#') {
-            read_comment(i, rec);
+            read_comment(i, line, rec);
             continue;
         }
         if (!header) {
-            header = read_header(i);
+            header = read_header(i, line);
             continue;
         }
         read_row(i, line, *header, rec, times_s);
         last_row = i;
     }
     if (!header)
-        throw InputError(at(lines_.empty() ? 0 : lines_.size() - 1, ""),
+        throw InputError(at(i == 0 ? 0 : i - 1, ""),
                          "empty file; expected a header \"time_s,accel_<unit>\" or \"accel_<unit>\"");
     if (rec.accel_mps2.empty()) throw InputError(at(header->line_index, ""), "no data rows after the header");
     if (header->time_column) {
@@ -248,8 +272,8 @@ Record CsvParser::parse() {
 
 }  // namespace
 
-Record parse_csv(const std::string& text, const std::string& file_label) {
-    return CsvParser(file_label, text::split_lines(text)).parse();
+Record parse_csv(const std::string& text, const std::string& file_label, double max_samples) {
+    return CsvParser(file_label, text::utf8_text(text, file_label), max_samples).parse();
 }
 
 Record read_csv(const std::filesystem::path& path) {

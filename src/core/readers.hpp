@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/limits.hpp"
 #include "core/record.hpp"
 
 namespace freestand::core {
@@ -25,7 +26,9 @@ Record read_cosmos_v2(const std::filesystem::path& path);
 /// an unknown name is an InputError listing the accepted ones. The separator is the header's:
 /// ';', else a tab, else ','; with ';' or a tab a number may use a decimal comma. A UTF-8 BOM
 /// and CRLF line ends are accepted. '#' lines are comments; blank lines are skipped. Time steps
-/// must agree to 1e-6 relative; dt is their mean, and the first row becomes t = 0. Optional
+/// must agree to 1e-6 relative; dt is their mean, and the first row becomes t = 0. A second
+/// "# dt_s" line must state the same step. Rows are counted as they are read: the first beyond
+/// limits::max_samples is an InputError at its line. Optional
 /// "# name:" and "# component:" comments set those labels.
 Record read_csv(const std::filesystem::path& path);
 
@@ -33,7 +36,10 @@ Record read_csv(const std::filesystem::path& path);
 /// its stem names the record). The fuzz targets drive these.
 Record parse_at2(const std::string& text, const std::string& file_label);
 Record parse_cosmos_v2(const std::string& text, const std::string& file_label);
-Record parse_csv(const std::string& text, const std::string& file_label);
+/// parse_csv refuses the first row beyond max_samples (the README's limit; a test passes a
+/// small one) without reading further.
+Record parse_csv(const std::string& text, const std::string& file_label,
+                 double max_samples = limits::max_samples);
 
 /// Picks the reader from the extension, ignoring case: .AT2, .V2 or .V2C, .csv. Throws
 /// InputError (field "extension") otherwise.

@@ -32,13 +32,28 @@ std::string lower(std::string_view s) {
     return out;
 }
 
-std::vector<std::string> split_lines(const std::string& text) {
+std::string_view strip_bom(std::string_view text) {
+    constexpr std::string_view bom = "\xEF\xBB\xBF";
+    return text.substr(0, bom.size()) == bom ? text.substr(bom.size()) : text;
+}
+
+std::string_view utf8_text(std::string_view text, const std::string& file) {
+    const bool utf16_bom = text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF";
+    const bool utf16_ascii = text.size() >= 2 && (text[0] == '\0') != (text[1] == '\0');
+    if (utf16_bom || utf16_ascii)
+        throw InputError(SourceLocation{file, 1, ""},
+                         "UTF-16 text; save it as UTF-8 (the encoding freestand reads)");
+    return strip_bom(text);
+}
+
+std::vector<std::string> split_lines(const std::string& whole, const std::string& file) {
+    const std::string_view text = utf8_text(whole, file);
     std::vector<std::string> lines;
-    std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+    std::size_t start = 0;
     while (start < text.size()) {
         std::size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
-        std::string line = text.substr(start, end - start);
+        std::string line(text.substr(start, end - start));
         if (!line.empty() && line.back() == '\r') line.pop_back();
         lines.push_back(std::move(line));
         start = end + 1;

@@ -25,9 +25,18 @@ inline constexpr std::size_t max_record_line_chars = 1024;
 /// Throws InputError at file:line_no unless line has at most max_record_line_chars characters.
 void check_record_line_length(const std::string& line, const std::string& file, int line_no);
 
-/// Splits text into lines without their '\n' or "\r\n" and drops a leading UTF-8 BOM.
+/// text without a leading UTF-8 byte order mark (EF BB BF), which Windows editors write first.
+std::string_view strip_bom(std::string_view text);
+
+/// The text of a UTF-8 input file as its readers take it: without a leading BOM (strip_bom).
+/// Throws InputError at file when the text is UTF-16 (a UTF-16 BOM, FF FE or FE FF, or a NUL
+/// as the first or second byte: ASCII in UTF-16 is every other byte NUL), which no reader can
+/// parse and whose NULs would otherwise reach the messages: "UTF-16 text; save it as UTF-8".
+std::string_view utf8_text(std::string_view text, const std::string& file);
+
+/// Splits utf8_text(text, file) into lines without their '\n' or "\r\n".
 /// Line i of the result is line i + 1 of the file.
-std::vector<std::string> split_lines(const std::string& text);
+std::vector<std::string> split_lines(const std::string& text, const std::string& file);
 
 /// True when s starts with prefix, ignoring ASCII case.
 bool istarts_with(std::string_view s, std::string_view prefix);

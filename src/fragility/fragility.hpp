@@ -15,6 +15,7 @@
 #include "assess/case.hpp"
 #include "assess/run_settings.hpp"
 #include "core/parallel.hpp"
+#include "core/statistics.hpp"
 #include "core/record.hpp"
 
 namespace freestand::fragility {
@@ -74,11 +75,23 @@ struct SampleResult {
     bool overturned = false;           ///< in x or y
 };
 
+/// The laws a sample's friction and restitution are drawn from (docs/methods.md s.9): the case's
+/// [uncertainty], else uniform over the case's bounds; restitution drawn at one quantile for
+/// both directions, over each direction's own bounds (Housner's value to the measured r).
+struct Laws {
+    core::Distribution mu_s;
+    std::optional<core::Distribution> restitution;  ///< none: per-direction bounds
+    std::array<std::array<double, 2>, 2> restitution_bounds{};  ///< [x, y][lower, upper]
+    double kinetic_ratio = 1.0;  ///< mu_k / mu_s
+};
+
 /// What the report states besides the numbers: the case and the laws the samples were drawn
-/// from. Everything here is text or numbers from the case, so a merged run reproduces it.
+/// from. Everything here is text or numbers from the case, so a merged run reproduces it (and
+/// can redraw every sample's motion, friction and restitution to check a shard's).
 struct Meta {
     std::string case_name;
     Config config;
+    Laws laws;
     double allowable_slide_m = 0.0;
     double required_overturn_fs = 1.5;
     std::string mu_s_law;           ///< e.g. "uniform [0.12, 0.18] (the case's friction bounds)"

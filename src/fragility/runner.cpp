@@ -57,16 +57,6 @@ void validate(const Config& c) {
 
 namespace {
 
-// The friction and restitution laws of a sample (docs/methods.md s.9): the case's
-// [uncertainty], else uniform over the case's bounds; restitution drawn at one quantile for
-// both directions, over each direction's own bounds (Housner's value to the measured r).
-struct Laws {
-    core::Distribution mu_s;
-    std::optional<core::Distribution> restitution;  // none: per-direction bounds
-    std::array<std::array<double, 2>, 2> restitution_bounds{};  // [x, y][lower, upper]
-    double kinetic_ratio = 1.0;
-};
-
 Laws laws_of(const assess::Case& c) {
     Laws l;
     const assess::BaseContact& base = c.component.base;
@@ -91,6 +81,7 @@ Meta make_meta(const assess::Case& c, const Config& config) {
     Meta m;
     m.case_name = c.component.name;
     m.config = config;
+    m.laws = l;
     m.allowable_slide_m = c.component.allowable_slide_m;
     m.required_overturn_fs = c.component.required_overturn_fs;
     m.mu_s_law = l.mu_s.describe() + (c.uncertainty.mu_s ? " ([uncertainty] mu_s)"
@@ -176,15 +167,6 @@ void Runner::prepare(const assess::RunSettings& run) {
     m.prepared = true;
 }
 
-namespace {
-
-// The draws of one sample from its own stream: they depend on (seed, level, sample) alone.
-struct Draw {
-    std::size_t pick = 0;  // index into the pool or the suite
-    double mu_s = 0.0;
-    std::array<double, 2> restitution{};  // x, y
-};
-
 Draw draw(const Laws& laws, std::uint64_t seed, int level, int sample, std::size_t pool) {
     std::mt19937_64 rng(core::stream_seed(seed, static_cast<std::uint64_t>(level),
                                           static_cast<std::uint64_t>(sample)));
@@ -201,6 +183,8 @@ Draw draw(const Laws& laws, std::uint64_t seed, int level, int sample, std::size
     }
     return d;
 }
+
+namespace {
 
 // The rigid block's run, or the flexible body's base when the level asks for it.
 dynamics::Summary simulate_direction(const assess::Component& comp,

@@ -132,7 +132,8 @@ Spectrum read_spectrum_csv(const std::filesystem::path& path) {
     return parse_spectrum_csv(core::read_input_file(path), path.string());
 }
 
-Spectrum parse_spectrum_csv(const std::string& text, const std::string& file) {
+Spectrum parse_spectrum_csv(const std::string& whole, const std::string& file) {
+    const std::string_view text = core::text::utf8_text(whole, file);
     ReadState st;
     st.s.label = std::filesystem::path(file).stem().string();
     int line = 0;
@@ -140,7 +141,7 @@ Spectrum parse_spectrum_csv(const std::string& text, const std::string& file) {
     while (pos < text.size()) {
         const auto nl = text.find('\n', pos);
         const std::size_t end = nl == std::string::npos ? text.size() : nl;
-        const std::string_view raw = trim(std::string_view(text).substr(pos, end - pos));
+        const std::string_view raw = trim(text.substr(pos, end - pos));
         pos = end + 1;
         ++line;
         if (raw.empty()) continue;

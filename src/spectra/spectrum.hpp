@@ -22,7 +22,8 @@ struct Spectrum {
 std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_decade);
 
 /// Reads the spectrum file format: '#' comment lines, one "# damping: 0.05", then the header
-/// "frequency_hz,psa_g", then rows in strictly increasing frequency with PSA > 0.
+/// "frequency_hz,psa_g", then rows in strictly increasing frequency with PSA > 0. A UTF-8 BOM
+/// is accepted, UTF-16 refused, as by the record readers (core::text::utf8_text).
 /// Throws InputError naming file and line.
 Spectrum read_spectrum_csv(const std::filesystem::path& path);
 /// The same on text in memory; file names the file in messages and its stem is the label.

@@ -167,7 +167,7 @@ TEST_CASE("merge_shards rebuilds rows exactly and refuses records that do not fi
     BatchRow ok;
     ok.row.name = "pump";
     ok.row.case_file = "cases/pump.toml";
-    ok.row.case_sha256 = "ab";
+    ok.row.case_sha256 = std::string(64, 'a');
     ok.row.overrides = "seed = 4";
     // Not representable in 10 digits: the record keeps every bit for the summary to round.
     ok.row.outcome = report::SummaryOutcome{"Pump", "anchor", "anchor", "PGA 0.300 g, direction y",
@@ -200,12 +200,12 @@ TEST_CASE("merge_shards rebuilds rows exactly and refuses records that do not fi
     refused({a_record(0, "pump"), a_record(2, "rack")}, "component 3 of a list of 2");
     refused({a_record(0, "rack"), a_record(1, "pump")},
             "component 1 is named \"pump\" in the header and \"rack\" in its record");
-    nlohmann::json evil = a_record(0, "pump");
+    nlohmann::json evil = nlohmann::json::parse(shard_record(0, ok).dump());
     evil["files"] = nlohmann::json::array({nlohmann::json::array({"../../x", "y"})});
     refused({evil, a_record(1, "rack")}, "\"../../x\" cannot name a report file");
     nlohmann::json no_row = a_record(0, "pump");
     no_row.erase("row");
-    refused({no_row, a_record(1, "rack")}, "a batch shard's contents are malformed");
+    refused({no_row, a_record(1, "rack")}, "row: malformed batch shard: missing");
     nlohmann::json bad_header = a_run();
     bad_header["names"][1] = "../etc";
     CHECK_THROWS_AS(merge_shards(bad_header, {a_record(0, "pump")}), InputError);
