@@ -42,7 +42,7 @@ std::string utf16le(const std::string& ascii) {
 
 }  // namespace
 
-TEST_CASE("an error message shows a NUL of its field as \\x00 and keeps what follows",
+TEST_CASE("an error message shows a NUL of its field as a hexadecimal escape and keeps what follows",
           "[core][errors]") {
     const InputError direct({"list\0.csv"s, 2, "na\0me"s}, "bad \0 value, expected a name"s);
     CHECK(std::string(direct.what()) ==
