@@ -13,6 +13,8 @@ namespace freestand::core::limits {
 
 /// Samples of any record, read or generated (10 million: 28 h at 0.01 s, 80 MB of doubles).
 inline constexpr double max_samples = 1e7;
+/// Lines of a COSMOS V2 file: at least one value per data line, plus headers and comments.
+inline constexpr std::size_t max_cosmos_lines = 10'100'000;
 /// Highest frequency of a response spectrum or a sine input, Hz. Above a record's Nyquist
 /// frequency its pseudo-acceleration is its PGA; sub-stepping to T / 20 there costs without end.
 inline constexpr double max_frequency_hz = 1000.0;

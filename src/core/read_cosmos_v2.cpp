@@ -80,7 +80,8 @@ private:
     void read_unknown_sentinel(std::size_t n_text);
     Unit data_unit(std::size_t data_index, const std::vector<double>& ints) const;
     double time_step_s(std::size_t real_index, const std::vector<double>& reals) const;
-    std::vector<double> data_values(std::size_t data_index, const FortranFormat& format) const;
+    std::vector<double> data_values(std::size_t data_index, const FortranFormat& format,
+                                    std::size_t npts) const;
     std::size_t count(const std::string& digits, std::size_t index, const std::string& field) const;
     bool known(double v) const { return v != unknown_real_; }
     bool known_int(double v) const { return v != unknown_int_; }
@@ -237,12 +238,20 @@ double CosmosParser::time_step_s(std::size_t real_index, const std::vector<doubl
                      "hold the unknown value");
 }
 
-std::vector<double> CosmosParser::data_values(std::size_t data_index, const FortranFormat& format) const {
+// Reading stops at the first line that takes the count past the header's NPTS (itself at most
+// the sample limit), so a data block longer than its header says costs no more than NPTS values.
+std::vector<double> CosmosParser::data_values(std::size_t data_index, const FortranFormat& format,
+                                              std::size_t npts) const {
     static const std::regex next_block(R"(^\s*\d+\s+[a-z]+\s+(pts|points)\b)", std::regex::icase);
     std::vector<double> values;
     for (std::size_t i = data_index + 1; i < lines_.size(); ++i) {
         if (text::icontains(lines_[i], "end-of-data") || std::regex_search(lines_[i], next_block)) break;
         cut_fields(lines_[i], format, at(i, "acceleration"), values);
+        if (values.size() > npts)
+            throw InputError(at(data_index, "NPTS"),
+                             fmt::format("data header says {} acceleration pts but the data block "
+                                         "holds more (line {} reaches {})",
+                                         npts, i + 1, values.size()));
     }
     return values;
 }
@@ -291,7 +300,7 @@ Record CosmosParser::parse() {
         if (text::istarts_with(lines_[i], "Sta Chan")) rec.component = std::string(text::trim(lines_[i]));
     rec.dt_s = time_step_s(real_index, reals);
     const Unit unit = data_unit(data_index, ints);
-    rec.accel_mps2 = data_values(data_index, format_of(data_index));
+    rec.accel_mps2 = data_values(data_index, format_of(data_index), npts);
     if (rec.accel_mps2.empty())
         throw InputError(at(data_index, ""), "no acceleration values after the data header");
     if (rec.accel_mps2.size() != npts)
@@ -303,8 +312,9 @@ Record CosmosParser::parse() {
 
 }  // namespace
 
-Record parse_cosmos_v2(const std::string& text, const std::string& file_label) {
-    return CosmosParser(file_label, text::split_lines(text, file_label)).parse();
+Record parse_cosmos_v2(const std::string& text, const std::string& file_label,
+                       std::size_t max_lines) {
+    return CosmosParser(file_label, text::split_lines(text, file_label, max_lines)).parse();
 }
 
 Record read_cosmos_v2(const std::filesystem::path& path) {

@@ -35,7 +35,11 @@ Record read_csv(const std::filesystem::path& path);
 /// The same readers on text already in memory; file_label names the file in messages (and
 /// its stem names the record). The fuzz targets drive these.
 Record parse_at2(const std::string& text, const std::string& file_label);
-Record parse_cosmos_v2(const std::string& text, const std::string& file_label);
+/// A COSMOS file is refused at line max_lines + 1 as soon as it is that long (the default: one
+/// line per sample of the limit, and room for the headers and comments), and its data block at
+/// the first line that passes the header's NPTS.
+Record parse_cosmos_v2(const std::string& text, const std::string& file_label,
+                       std::size_t max_lines = limits::max_cosmos_lines);
 /// parse_csv refuses the first row beyond max_samples (the README's limit; a test passes a
 /// small one) without reading further.
 Record parse_csv(const std::string& text, const std::string& file_label,

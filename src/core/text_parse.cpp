@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <charconv>
 
 #include <fmt/format.h>
@@ -46,11 +47,17 @@ std::string_view utf8_text(std::string_view text, const std::string& file) {
     return strip_bom(text);
 }
 
-std::vector<std::string> split_lines(const std::string& whole, const std::string& file) {
+std::vector<std::string> split_lines(const std::string& whole, const std::string& file,
+                                     std::size_t max_lines) {
     const std::string_view text = utf8_text(whole, file);
     std::vector<std::string> lines;
     std::size_t start = 0;
     while (start < text.size()) {
+        if (lines.size() == max_lines)
+            throw InputError({file, static_cast<int>(std::min<std::size_t>(max_lines + 1, INT_MAX)), ""},
+                             fmt::format("more than {} lines; a record this reader accepts has "
+                                         "fewer",
+                                         max_lines));
         std::size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         std::string line(text.substr(start, end - start));

@@ -35,8 +35,11 @@ std::string_view strip_bom(std::string_view text);
 std::string_view utf8_text(std::string_view text, const std::string& file);
 
 /// Splits utf8_text(text, file) into lines without their '\n' or "\r\n".
-/// Line i of the result is line i + 1 of the file.
-std::vector<std::string> split_lines(const std::string& text, const std::string& file);
+/// Line i of the result is line i + 1 of the file. Throws InputError at file:max_lines + 1 as
+/// soon as the text holds more than max_lines lines: a file of empty lines would otherwise
+/// cost a string per byte.
+std::vector<std::string> split_lines(const std::string& text, const std::string& file,
+                                     std::size_t max_lines);
 
 /// True when s starts with prefix, ignoring ASCII case.
 bool istarts_with(std::string_view s, std::string_view prefix);

@@ -93,6 +93,20 @@ TEST_CASE("COSMOS V2 reader rejects a point count that disagrees with the data",
                       Contains(":46: NPTS: data header says 21 acceleration pts but the data block holds 20 values"));
 }
 
+TEST_CASE("COSMOS V2 reader stops reading at NPTS and at its line limit", "[core][cosmos]") {
+    // Line 47 holds values 1-8, line 48 values 9-16: the reader stops at line 48, not at the
+    // end of the block.
+    const auto p = variant("npts_short", "      20 acceleration pts", "       9 acceleration pts");
+    CHECK_THROWS_WITH(core::read_cosmos_v2(p),
+                      Contains(":46: NPTS: data header says 9 acceleration pts but the data block "
+                               "holds more (line 48 reaches 16)"));
+    // A file of blank lines past the limit is refused at the first line beyond it.
+    const std::string text = core::read_text_file(fixture) + std::string(1000, '\n');
+    CHECK_NOTHROW(core::parse_cosmos_v2(text, "long.V2", 1050));
+    CHECK_THROWS_WITH(core::parse_cosmos_v2(text, "long.V2", 60),
+                      Contains("long.V2:61: more than 60 lines"));
+}
+
 TEST_CASE("COSMOS V2 reader rejects an empty and a truncated file", "[core][cosmos]") {
     const fs::path empty = fs::temp_directory_path() / "freestand_cosmos_empty.V2";
     std::ofstream(empty) << "";
