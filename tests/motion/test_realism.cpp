@@ -1,4 +1,4 @@
-// Realism of generated histories (issue 13 s.1, docs/methods.md s.8 "Realism"): PGA / ZPA,
+// Realism of generated histories (docs/methods.md s.8 "Realism"): PGA / ZPA,
 // V/A, AD/V^2, D/A, D5-75 reported for every history, checked in acceptance, met by generation.
 #include <catch2/catch.hpp>
 #include <cmath>
