@@ -1,4 +1,4 @@
-// Speed of `freestand batch` (issue 14): the shipped cases (cases/*.toml, a folder list) run
+// Speed of `freestand batch` (README "Batch"): the shipped cases (cases/*.toml, a folder list) run
 // as one batch on 1 and 2 worker threads; wall time per case from each component's own time
 // on 1 thread, and the batch's wall time and speed-up on 2. The outputs of both runs are
 // compared byte for byte (the batch's promise), and the folder is rendered but not written,

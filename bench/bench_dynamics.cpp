@@ -9,8 +9,8 @@
 // units joined by a tunnel (dynamics::simulate_pair): time against the two planar runs and the
 // peak relative displacement's error at 1, 4 and 16 samples per input step against 64, and of
 // the pair of central-difference runs at 1e-4 and 1e-5 s.
-// The flexible body (issue 15; flexible_rows.hpp): event-driven and central difference against
-// the model's own converged reference and the planar run. Last, biaxial sliding (issue 15;
+// The flexible body (docs/methods.md s.10; flexible_rows.hpp): event-driven and central difference
+// against the model's own converged reference and the planar run. Last, biaxial sliding (s.10;
 // biaxial_rows.hpp): El Centro 140 as x and 230 as y, and the histories of
 // cases/glovebox-single.toml, each against the planar run of its x component.
 // `bench_dynamics flexible` runs the flexible rows alone.

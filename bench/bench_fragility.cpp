@@ -1,9 +1,9 @@
-// Speed against error of fragility analysis (issue 14, docs/methods.md s.9). Four parts:
+// Speed against error of fragility analysis (docs/methods.md s.9). Four parts:
 //  1. Throughput: 5,000 samples (two simulations each, x and y: 10,000 block simulations of
 //     20 s generated histories) of the glove box on PVC, block-ts3 and block-ts1 at levels where
 //     they rest, slide, rock and overturn, on 1 and 2 threads; wall time, simulations/s/core,
 //     the mix of modes. Overturned runs stop early, so the mix is printed beside the speed.
-//  2. The issue's run: block-ts1, 10 levels x 100 samples with its generated histories, on 2
+//  2. The reference run: block-ts1, 10 levels x 100 samples with its generated histories, on 2
 //     threads, split into history generation, simulations and aggregation + rendering.
 //  3. Error against an exact answer: a pure-sliding block under a 2 Hz sine with friction
 //     uniform on [0.1, 0.2]; P(slide > 30 mm) = P(mu < mu*) from Newmark's closed-form slip

@@ -1,7 +1,7 @@
-// Speed and accuracy of spectrum-compatible generation (issue 3): wall time and iterations to pass
-// SRP 3.7.1 for one 20 s component at dt = 0.005 s and for the three-component set, from the
-// synthetic method and from seed records, with the achieved min / max 5% ratios; then the
-// generation cost per set and per component-second of history (this thread's CPU time, steadier
+// Speed and accuracy of spectrum-compatible generation (docs/methods.md s.8): wall time and
+// iterations to pass SRP 3.7.1 for one 20 s component at dt = 0.005 s and for the three-component
+// set, from the synthetic method and from seed records, with the achieved min / max 5% ratios; then
+// the generation cost per set and per component-second of history (this thread's CPU time, steadier
 // than wall time on a shared machine) against REQPY's 0.54 s for one 39 s component.
 // Run: build/<dir>/bench/bench_motion [repeats]
 #include <algorithm>
@@ -80,8 +80,8 @@ int main(int argc, char** argv) {
                           core::read_at2(data + "/RSN1546_CHICHI_TCU122-N.AT2")};
         return motion::generate_set(ts, o);
     });
-    // The issue's acceptance run (issue 13): seeds 1-10, three components each; ranges of the
-    // realism measures over the 20 horizontals and the time per component and per set.
+    // The realism acceptance run (docs/methods.md s.8): seeds 1-10, three components each; ranges
+    // of the realism measures over the 20 horizontals and the time per component and per set.
     {
         struct Span {
             double lo = 1e300, hi = -1e300, sum = 0.0;

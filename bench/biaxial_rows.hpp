@@ -1,11 +1,11 @@
 #pragma once
-// Biaxial sliding rows of bench_dynamics (issue 15): time and error of the biaxial slide against
-// its own converged reference (event-driven at rel_tol 1e-12) and against central difference
-// at 1e-4 and 1e-5 s, with the ratio to the planar event-driven run of the x component alone
-// (the issue asks for at most 10x). Two inputs: the first 20 s of El Centro #12, 140 as x and
-// 230 as y, scaled so that x peaks at 0.5 g, on a block with mu = 0.2 (tan(alpha) = 0.5: it
-// only slides); and the seven histories of cases/glovebox-single.toml at its PGA levels, at the
-// case's lower friction bound, as assess runs them.
+// Biaxial sliding rows of bench_dynamics (docs/methods.md s.10): time and error of the biaxial
+// slide against its own converged reference (event-driven at rel_tol 1e-12) and against central
+// difference at 1e-4 and 1e-5 s, with the ratio to the planar event-driven run of the x component
+// alone (the aim is at most 10x). Two inputs: the first 20 s of El Centro #12, 140 as x and 230 as
+// y, scaled so that x peaks at 0.5 g, on a block with mu = 0.2 (tan(alpha) = 0.5: it only slides);
+// and the seven histories of cases/glovebox-single.toml at its PGA levels, at the case's lower
+// friction bound, as assess runs them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -1,9 +1,9 @@
 #pragma once
-// Flexible-body rows of bench_dynamics (issue 15; docs/methods.md s.10): each bench block
+// Flexible-body rows of bench_dynamics (docs/methods.md s.10): each bench block
 // carrying a 7.5 Hz mode (damping 0.02, cantilever defaults) on the first 20 s of El Centro #12
 // (140), plus the rock block at 0.2 g (below g tan(alpha) = 0.5 g: only the flexible body
 // uplifts). Time: best thread CPU time over interleaved rounds (timing.hpp), against the planar
-// rigid event-driven run of the same block and record (the issue asks for at most 10x). Error:
+// rigid event-driven run of the same block and record (the aim is at most 10x). Error:
 // relative, against the model's own reference (event-driven at rel_tol 1e-12), of the peak
 // slip, rotation and modal displacement, each shown; the event-driven runs at rel_tol 1e-9 (the
 // default) and 1e-6, central difference at 1e-4 and 1e-5 s.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What calling `simulate` from Python costs against the C++ call (issue 17: < 2x on a 20 s record).
+"""What calling `simulate` from Python costs against the C++ call (the aim: < 2x on a 20 s record).
 
 For each row, the same block, friction and the first 20 s of El Centro (RSN 175, 140) scaled to
 a PGA: the least thread CPU time of `freestand.simulate` over the repeats (options to arguments,

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The MPI build's check (issue 14; ctest in preset mpi): `mpirun -n 2 freestand fragility`
-# must write the same bytes as the same executable run as one process, for generated histories
-# (block-ts1, a pool of 2 sets) and for a user suite of records.
+# The MPI build's check (docs/methods.md s.12; ctest in preset mpi):
+# `mpirun -n 2 freestand fragility` must write the same bytes as the same executable run as one
+# process, for generated histories (block-ts1, a pool of 2 sets) and for a user suite of records.
 # Usage: scripts/mpi_check.sh PATH/TO/freestand
 set -euo pipefail
 exe="$1"

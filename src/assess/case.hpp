@@ -1,6 +1,6 @@
 #pragma once
 /// An assessment case: the component, the site and the run options, read from a TOML file
-/// (issue 6 "Case files"). Values are SI and validated when read; every problem is an
+/// (README "Case files"). Values are SI and validated when read; every problem is an
 /// InputError naming file:line:key and the allowed range.
 #include <array>
 #include <cstdint>
@@ -56,7 +56,7 @@ struct BaseContact {
 /// Default friction bounds of docs/methods.md s.7: 0.8 and 1.2 times the single measurement.
 std::array<double, 2> default_mu_s_range(double mu_s);
 
-/// The free-standing component (issue 6, [component]).
+/// The free-standing component ([component]; docs/methods.md s.1).
 struct Component {
     std::string name;
     std::string description;
@@ -109,7 +109,7 @@ struct UserTargets {
     double zpa_h_g = 1.0;           ///< PSA of h5 at its highest frequency, g
 };
 
-/// The site's design motion (issue 6, [site]).
+/// The site's design motion ([site]; docs/methods.md s.8).
 struct Site {
     std::string design = "rg1.60";      ///< "rg1.60", or "user target files" when targets is set
     std::optional<UserTargets> targets; ///< user target files instead of RG 1.60
@@ -135,7 +135,7 @@ struct Site {
     motion::RealismLimits realism;
 };
 
-/// When to run the time-history simulation (issue 6, [options] simulate).
+/// When to run the time-history simulation ([options] simulate; docs/methods.md s.6).
 enum class SimulatePolicy { automatic, always, never };
 const char* to_string(SimulatePolicy p);
 
@@ -154,7 +154,7 @@ struct FragilitySection {
     int samples = 100;          ///< per level
 };
 
-/// Run options (issue 6, [options]).
+/// Run options ([options]; README "Case files").
 struct Options {
     /// Sets per simulated level, and the batch an unsettled level grows by (docs/methods.md s.6
     /// steps 3-4: percentiles of about 30 sets, ASCE 4-16 and ASCE 43-05 practice).

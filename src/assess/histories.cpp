@@ -74,8 +74,8 @@ motion::TargetSet unit_targets(const Site& site) {
 }
 
 // A set that fails SRP 3.7.1 or the realism checks is not used: the assessment stops and says
-// which history, which component and why (issue 13 s.1: a history that cannot meet them is
-// rejected with the reason).
+// which history, which component and why (docs/methods.md s.8: a history that cannot meet
+// them is rejected with the reason).
 void reject_failing(const Case& c, const std::vector<HistorySet>& sets, std::size_t first) {
     const std::array<const char*, 3> names{"h1", "h2", "v"};
     for (std::size_t k = first; k < sets.size(); ++k) {

@@ -1,5 +1,5 @@
 #pragma once
-/// Values given to a case from outside its file (a batch list's columns, issue 14). They are
+/// Values given to a case from outside its file (a batch list's columns, README "Batch"). They are
 /// written into the case's TOML document before it is read, so an overridden case reads exactly
 /// as a case file carrying those values: the same checks, defaults and echoed assumptions.
 #include <functional>

@@ -1,5 +1,5 @@
 #pragma once
-/// The assessment pipeline (docs/methods.md s.6, issue 6 "model only what the scene needs"):
+/// The assessment pipeline (docs/methods.md s.6; model only what the scene needs):
 /// per PGA level and direction, classify; stop at rest; else closed-form sliding and rocking;
 /// generate histories and simulate only where the closed forms leave the verdict open; then the
 /// base-material search and the overall verdict.

@@ -1,5 +1,5 @@
 #pragma once
-/// What an assessment found: the pipeline fills it, the report only reads it (issue 6).
+/// What an assessment found: the pipeline fills it, the report only reads it.
 /// Absent numbers are std::nullopt with a reason, never a sentinel value.
 #include <array>
 #include <cstdint>
@@ -88,7 +88,7 @@ struct Initiation {
     std::optional<double> mu_crit;  ///< Shenton's critical friction at A, when A > tan(alpha)
 };
 
-/// Flexible-body screen (issue 6): shown beside the mode, never changes it.
+/// Flexible-body screen (docs/methods.md s.10): shown beside the mode, never changes it.
 struct FlexibleFlag {
     bool raised = false;
     std::string basis;                ///< e.g. "fixed-base 7.5 Hz; free-rocking band 1.7-4.9 Hz"

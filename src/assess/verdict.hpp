@@ -22,7 +22,8 @@ inline constexpr double no_motion_rock_rad = 0.003;
 /// The screen of one level from its initiation (both bounds), sliding and rocking results.
 Screen screen_level(const LevelResult& closed, double allowable_slide_m, double required_fs);
 
-/// Whether to simulate a level, and why (issue 12: "auto" and "always" give the same verdict).
+/// Whether to simulate a level, and why. "auto" simulates wherever the closed forms leave the
+/// verdict open, so "auto" and "always" give the same verdict.
 struct SimulationNeed {
     bool run = false;
     std::string reason;

@@ -1,5 +1,5 @@
 #pragma once
-/// A facility's equipment list for `freestand batch` (issue 14): a folder of case files, or a
+/// A facility's equipment list for `freestand batch` (README "Batch"): a folder of case files, or a
 /// CSV or TOML list of case files with values replacing each case's own (assess/overrides.hpp).
 ///
 /// - A folder: every `*.toml` in it (not in sub-folders; hidden files skipped), sorted by file

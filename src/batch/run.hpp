@@ -1,5 +1,5 @@
 #pragma once
-/// Running a batch (issue 14): every component of a list assessed as `freestand assess`
+/// Running a batch (README "Batch"): every component of a list assessed as `freestand assess`
 /// assesses it (report::run_case), on worker threads, each failure kept in its row; then one
 /// output folder with the summary and every assessed component's report folder, published as a
 /// whole (core::publish_folder).

@@ -1,9 +1,9 @@
 #pragma once
-/// A batch's shard lines (`batch --shard K/N`, issue 14) and their merge: the run's header and
-/// one record per component carrying its whole summary row and its report folder's files
-/// (names and bytes), so `freestand merge` rebuilds the single run's folder byte for byte
-/// without assessing anything. Doubles are written in shortest round-trip form: the merged
-/// summary rounds the very numbers the single run rounds.
+/// A batch's shard lines (`batch --shard K/N`, docs/methods.md s.12) and their merge: the run's
+/// header and one record per component carrying its whole summary row and its report folder's files
+/// (names and bytes), so `freestand merge` rebuilds the single run's folder byte for byte without
+/// assessing anything. Doubles are written in shortest round-trip form: the merged summary rounds
+/// the very numbers the single run rounds.
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// `freestand batch`: a facility's equipment list assessed in one run (issue 14).
+// `freestand batch`: a facility's equipment list assessed in one run (README "Batch").
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // `freestand fragility`: P(overturn), P(slide > allowable), P(theta/alpha > 1/FS) against PGA
-// (issue 14, docs/methods.md s.9); one machine, a shard of a run, or MPI ranks.
+// (docs/methods.md s.9); one machine, a shard of a run, or MPI ranks.
 #include <fmt/format.h>
 
 #include <cmath>

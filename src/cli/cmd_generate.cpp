@@ -31,9 +31,9 @@ int run(const std::vector<std::string>& args) {
     const GenerateRequest request = generate_request(*vm);
     const motion::GeneratedSet set = motion::generate_set(request.targets, request.options);
     const std::filesystem::path out = (*vm)["out"].as<std::string>();
-    // The folder is published whole (issue 16 defects 4 and 5): each CSV was written in turn,
-    // so h1.csv was replaced before h2.csv was found to be an input of the run, and two runs
-    // into one folder mixed their files.
+    // The folder is published whole (core/publish.hpp): writing each CSV in turn would replace
+    // h1.csv before finding that h2.csv is an input of the run, and would let two runs into
+    // one folder mix their files.
     std::vector<core::OutputFile> files;
     for (const motion::GeneratedComponent& c : set.components)
         files.push_back({c.record.component + ".csv", core::csv_g_text(c.record)});

@@ -1,5 +1,5 @@
 // `freestand merge DIR...`: the shards of a `--shard K/N` run (fragility or batch) into the
-// outputs the single run writes, byte for byte (issue 14).
+// outputs the single run writes, byte for byte (docs/methods.md s.12).
 #include <fmt/format.h>
 
 #include <iostream>

@@ -45,8 +45,8 @@ dynamics::Excitation parse_motion(const std::string& text, double scale) {
 
 
 /// The excitation's label (from a file name) on the CSV's comment line: control characters as
-/// \xNN, a line break as a blank (issue 16 defect 10: a file named with ESC and BEL put them
-/// raw into the CSV).
+/// \xNN, a line break as a blank, so a file named with ESC or BEL cannot put them raw into the
+/// CSV.
 std::string one_line_label(const std::string& label) {
     std::string s = core::printable(label);
     for (char& c : s)

@@ -1,5 +1,5 @@
 // `freestand validate`: the thesis's tests and worked examples against freestand's models
-// (issue 13 s.3), printed as a table and written as report.md, report.html, result.json.
+// (docs/methods.md s.13), printed as a table and written as report.md, report.html, result.json.
 #include <fmt/format.h>
 
 #include <chrono>

@@ -1,6 +1,6 @@
 #pragma once
 /// The one place that maps a library parameter named in an InputError to the command-line
-/// option a user typed (issue 16: libraries name parameters, not flags).
+/// option a user typed, so that the libraries name parameters and never command-line flags.
 #include <map>
 #include <string>
 

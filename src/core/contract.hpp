@@ -1,5 +1,5 @@
 #pragma once
-/// Debug-only invariant checks at the solvers' contracts (issue 16), in the manner of MFEM's
+/// Debug-only invariant checks at the solvers' contracts, in the manner of MFEM's
 /// MFEM_ASSERT: a condition that must hold whatever the input, checked when
 /// FREESTAND_CHECK_CONTRACTS is defined (the asan preset and Debug builds) and compiled out
 /// otherwise, so release timings are unaffected. A violation is a bug: it aborts with the

@@ -1,5 +1,5 @@
 #pragma once
-/// Sizes every stage bounds before it allocates or loops (issue 16: nothing runs unbounded).
+/// Sizes every stage bounds before it allocates or loops, so that nothing runs unbounded.
 /// Each is documented in the README's "Limits" table; exceeding one is an InputError (exit 3)
 /// naming the parameter, what the request needs and the limit.
 #include <cstddef>
@@ -50,7 +50,7 @@ inline constexpr double max_pga_levels = 1000.0;
 inline constexpr double max_fragility_samples = 1e6;
 /// A block's lengths (half-widths, CG height), m: above 100 m it is not equipment standing on
 /// a floor. No lower limit: a CG over an edge (CG to edge -> 0) is a needle that topples at
-/// once, and is assessed as one (issue 16).
+/// once, and is assessed as one.
 inline constexpr double max_length_m = 100.0;
 /// A block's mass, kg: from a gram to 100,000 t.
 inline constexpr double min_mass_kg = 1e-3;

@@ -1,5 +1,5 @@
 #pragma once
-/// Publishing a run's output folder as a whole (issue 16): a reader of the folder sees all of
+/// Publishing a run's output folder as a whole: a reader of the folder sees all of
 /// the previous run's files or all of this run's, never a mix, and two runs into one folder do
 /// not interleave.
 ///
@@ -26,7 +26,7 @@
 /// regular file nor a sub-folder of this run or the previous one, and a file of the run that
 /// would replace an input the process read (core::read_input_file).
 ///
-/// A run may write one level of sub-folders (a batch's component reports, issue 14): each gets
+/// A run may write one level of sub-folders (a batch's component reports): each gets
 /// its own `.freestand-run` listing its files, so it reads exactly as a folder published on its
 /// own, and the top marker lists it as "name/". A sub-folder is replaced with the folder; files
 /// added to it by hand are carried over when the run writes it again, and a sub-folder the run

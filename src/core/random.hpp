@@ -2,7 +2,8 @@
 /// The one seed mixer of the project: every random stream (history sets, synthetic components
 /// and their retries, and later fragility samples) is seeded from a splitmix64 mix of the
 /// numbers that identify it, so a result depends on those numbers alone, never on threads,
-/// order or machines (issue 14's reproducibility rests on it).
+/// order or machines (the reproducibility of fragility runs and shards, docs/methods.md s.9 and
+/// s.12, rests on it).
 #include <cstdint>
 
 namespace freestand::core {

@@ -17,7 +17,8 @@ namespace freestand::core {
 
 namespace {
 
-/// Relative tolerance on the time step of a two-column file (issue 2).
+/// Relative tolerance on the time step of a two-column file: every step must equal the first
+/// within it, or the file is rejected as having a non-uniform time step.
 constexpr double dt_rel_tol = 1e-6;
 
 std::vector<std::string_view> split_fields(std::string_view line, char separator) {

@@ -25,7 +25,7 @@ Record read_record(const std::filesystem::path& path) {
 namespace {
 
 /// A label on one comment line: line breaks would start a data line, and other control
-/// characters (ESC, BEL from a file name) are shown as \xNN (issue 16 defect 10).
+/// characters (ESC, BEL from a file name) are shown as \xNN, so none reaches the file raw.
 std::string one_line(const std::string& label) {
     std::string s = printable(label);
     for (char& c : s)

@@ -8,7 +8,8 @@
 namespace freestand::dynamics {
 
 namespace {
-// Out-of-range physics is an input error (issue 16): --scale 1e308 reported 8e304 m.
+// Out-of-range physics is an input error (README "Limits"): an acceleration past the limit,
+// e.g. from --scale 1e308, would otherwise integrate to a displacement of 8e304 m.
 void require_accelerations(const Excitation& e) {
     for (const auto* series : {&e.horizontal_mps2, &e.vertical_mps2})
         core::limits::require_accelerations(*series, {"", 0, "excitation"});

@@ -1,5 +1,5 @@
 #pragma once
-/// Fragility of a free-standing component (issue 14, docs/methods.md s.9): the probability of
+/// Fragility of a free-standing component (docs/methods.md s.9): the probability of
 /// each failure event against PGA, from N samples per level, each drawing a ground motion and
 /// the uncertain friction and restitution from its own random stream (seed, level, sample), so
 /// that the result does not depend on threads, shards or machines.

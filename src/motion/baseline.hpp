@@ -1,6 +1,6 @@
 #pragma once
-/// Displacement-aware baseline correction of a generated or matched history (issue 13,
-/// docs/methods.md s.8 "Realism"). A history must end at rest (final velocity and displacement
+/// Displacement-aware baseline correction of a generated or matched history
+/// (docs/methods.md s.8 "Realism"). A history must end at rest (final velocity and displacement
 /// zero, SRP 3.7.1); how it is brought to rest decides its displacement. Two velocity-step
 /// pulses alone (the classic correction) add a displacement bump of (velocity offset) x (time
 /// between them), which on matched 20 s records was the largest part of PGD (D/A 1-4 m/g). Here

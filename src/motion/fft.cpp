@@ -15,9 +15,9 @@ enum class Direction { forward, inverse };
 
 /// The r2c and c2r plans by length, made on first use and kept for the process: planning (even
 /// FFTW_ESTIMATE's, which hashes every sub-problem) costs as much as tens of transforms of the
-/// length, and a generated set used to plan ten times. Planning is serialised (FFTW's planner is
-/// not thread-safe); executing one plan on different arrays from several threads at once is safe
-/// with the new-array execute functions, given arrays of the planning arrays' alignment
+/// length, and a generated set would otherwise plan ten times. Planning is serialised (FFTW's
+/// planner is not thread-safe); executing one plan on different arrays from several threads at once
+/// is safe with the new-array execute functions, given arrays of the planning arrays' alignment
 /// (fftw_alloc_*).
 class PlanCache {
   public:

@@ -74,8 +74,8 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
             throw InputError(SourceLocation{"", 0, "duration_s"},
                              fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s",
                                          o.duration_s, criteria::min_duration_s));
-        // Before synthesize allocates duration / dt samples: --duration 1e7 took 24 GB and
-        // --dt 1e-7 ran without end (issue 16 defect 3).
+        // Before synthesize allocates duration / dt samples: unchecked, --duration 1e7 would
+        // take 24 GB and --dt 1e-7 would run without end (README "Limits").
         core::limits::require_within(o.duration_s / o.dt_s + 1.0, core::limits::max_samples,
                                      SourceLocation{"", 0, "duration_s"},
                                      "the synthetic record's sampling (duration / dt)");
@@ -88,8 +88,8 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
                         o.seed_records.size(), o.components.size()));
     for (const core::Record& r : o.seed_records) {
         core::validate(r);
-        // An all-zero record has no spectrum to scale to the target: the scale factor was
-        // infinite and the error "sample 0 is not a finite number" (issue 16 defect 9).
+        // An all-zero record has no spectrum to scale to the target: the scale factor would be
+        // infinite and the error a misleading "sample 0 is not a finite number".
         bool moves = false;
         for (double a : r.accel_mps2) moves = moves || a != 0.0;
         if (!moves)

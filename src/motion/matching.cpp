@@ -5,7 +5,7 @@
 // holds the record's peak acceleration near the target's zero-period acceleration (rows on the
 // samples of the largest peaks), and after every pass the displacement-aware baseline correction
 // (baseline.hpp) brings the record to rest with the smallest peak displacement it can, so the
-// match converges on a record that is realistic as well as compatible (issue 13).
+// match converges on a record that is realistic as well as compatible (docs/methods.md s.8).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>

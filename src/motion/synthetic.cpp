@@ -1,12 +1,12 @@
-// Random-phase stationary process shaped by an envelope and iterated on the spectral ratio in
-// the frequency domain (Gasparini & Vanmarcke 1976, SIMQKE): Fourier amplitudes of the
-// stationary process multiplied by target / computed PSA, envelope re-applied each pass. Two
-// additions keep the seed realistic (issue 13): each iterate is brought to rest with the least
-// displacement (baseline.hpp), so long-period amplitudes are sized on motion the final record
-// keeps rather than on a drift; and the peaks above the target's zero-period acceleration are
-// clipped and the phases taken from the clipped process (iterative clipping and filtering, the
-// crest-factor reduction of signal processing), which brings a Gaussian process's PGA of
-// 1.1-1.35 x ZPA into the realism band without changing its Fourier amplitudes.
+// Random-phase stationary process shaped by an envelope and iterated on the spectral ratio in the
+// frequency domain (Gasparini & Vanmarcke 1976, SIMQKE): Fourier amplitudes of the stationary
+// process multiplied by target / computed PSA, envelope re-applied each pass. Two additions keep
+// the seed realistic (docs/methods.md s.8): each iterate is brought to rest with the least
+// displacement (baseline.hpp), so long-period amplitudes are sized on motion the final record keeps
+// rather than on a drift; and the peaks above the target's zero-period acceleration are clipped and
+// the phases taken from the clipped process (iterative clipping and filtering, the crest-factor
+// reduction of signal processing), which brings a Gaussian process's PGA of 1.1-1.35 x ZPA into the
+// realism band without changing its Fourier amplitudes.
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
-/// The fragility outputs (issue 14): fragility.json, samples.csv, report.md and a self-contained
-/// report.html with the fragility curves as SVG; and the same section inside an assessment's
-/// report when the case asks for it ([options] fragility = true).
+/// The fragility outputs (docs/methods.md s.9): fragility.json, samples.csv, report.md and a
+/// self-contained report.html with the fragility curves as SVG; and the same section inside an
+/// assessment's report when the case asks for it ([options] fragility = true).
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

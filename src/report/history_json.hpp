@@ -1,6 +1,6 @@
 #pragma once
 /// One history's ground-motion measures and realism checks as JSON, the same block in
-/// `generate`'s match.json and in `assess`'s result.json (issue 13 s.1).
+/// `generate`'s match.json and in `assess`'s result.json (docs/methods.md s.8).
 #include <nlohmann/json_fwd.hpp>
 
 #include "motion/motion.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-/// result.json: every number of the assessment, with the stamp under "stamp" (issue 6).
+/// result.json: every number of the assessment, with the stamp under "stamp" (README "Outputs").
 #include <cstdint>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-/// A paginated PDF of an HTML report (issue 17, `assess --pdf`, `fragility --pdf`), made by
-/// WeasyPrint (Debian package weasyprint) run as a subprocess on the rendered HTML.
+/// A paginated PDF of an HTML report (`assess --pdf`, `fragility --pdf`; README "PDF reports"),
+/// made by WeasyPrint (Debian package weasyprint) run as a subprocess on the rendered HTML.
 ///
 /// WeasyPrint is a layout engine for paged media: the reports' print CSS (templates/
 /// print_style.html.mustache: @page margin boxes with "page N of M", table headers repeated on

@@ -1,6 +1,6 @@
 #pragma once
 /// The sources the reports cite: the project's methods document and the standards and papers
-/// behind each model (issue 13 s.4). One list, so every report cites the same text.
+/// behind each model (docs/methods.md "Sources"). One list, so every report cites the same text.
 #include <string>
 #include <vector>
 

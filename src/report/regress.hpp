@@ -1,5 +1,5 @@
 #pragma once
-/// Golden comparison of result.json files (issue 6 `freestand regress`; STYLE.md: goldens
+/// Golden comparison of result.json files (`freestand regress`; STYLE.md: goldens
 /// compared numerically with an epsilon, refreshed by one command).
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-/// A batch's summary (issue 14): one row per component in list order, rendered as
+/// A batch's summary (README "Batch"): one row per component in list order, rendered as
 /// summary.md, self-contained summary.html (templates/summary.{md,html}.mustache, compiled in),
 /// summary.csv (RFC 4180) and summary.json. The summary only reads what each row carries.
 #include <nlohmann/json_fwd.hpp>

@@ -1,6 +1,6 @@
 #pragma once
-/// The validation report (issue 13 s.3): a validate::Validation as Markdown, self-contained HTML
-/// and result.json (templates/validation.{md,html}.mustache, compiled in), and the plain-text
+/// The validation report (docs/methods.md s.13): a validate::Validation as Markdown, self-contained
+/// HTML and result.json (templates/validation.{md,html}.mustache, compiled in), and the plain-text
 /// table `freestand validate` prints. Reports only read the validation.
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>

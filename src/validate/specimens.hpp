@@ -31,7 +31,7 @@ inline constexpr double thesis_g_mps2 = 9.81;
 double sine_amplitude_g();
 /// Duration of every sine, s (s.3.3.5.1: 5 s, "similar to the case of pure rocking").
 double sine_duration_s();
-/// The frequencies compared, Hz (issue 13 s.3): 0.5, 1, 2, 3, 5, 10.
+/// The frequencies compared, Hz (docs/methods.md s.13): 0.5, 1, 2, 3, 5, 10.
 const std::vector<double>& sine_frequencies_hz();
 /// Half-stroke of the thesis's shake table, m (Table 3-1).
 double table_stroke_m();

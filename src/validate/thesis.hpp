@@ -1,6 +1,6 @@
 #pragma once
-/// The thesis values the validation compares with (issue 13 s.3), each with where it stands in
-/// the thesis text: S. (A.) Saraswat, "Response Evaluation of Freestanding Systems subjected to
+/// The thesis values the validation compares with (docs/methods.md s.13), each with where it stands
+/// in the thesis text: S. (A.) Saraswat, "Response Evaluation of Freestanding Systems subjected to
 /// Seismic Loading", PhD thesis, HBNI / BARC, 2017, in the text extraction
 /// ../shared/thesis/000_da2bef6b73563e7f.txt (figures lost; tables and conclusions present).
 /// tests/data/thesis/values.tsv is a copy of this table (key, value, unit, section, line, quote)

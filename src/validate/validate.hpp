@@ -1,8 +1,8 @@
 #pragma once
-/// Validation against the thesis (issue 13 s.3): its shake-table tests and worked examples run
-/// through freestand's own models with the thesis's stated inputs, side by side with what the
-/// thesis measured or computed. Nothing here is tuned to agree: where the two differ, the row
-/// says so and gives the likely reason.
+/// Validation against the thesis (docs/methods.md s.13): its shake-table tests and worked examples
+/// run through freestand's own models with the thesis's stated inputs, side by side with what the
+/// thesis measured or computed. Nothing here is tuned to agree: where the two differ, the row says
+/// so and gives the likely reason.
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-// Biaxial sliding in assess (issue 15, docs/methods.md s.10): a simulated level whose block
+// Biaxial sliding in assess (docs/methods.md s.10): a simulated level whose block
 // slides without rocking takes its sliding demand from both horizontal components at once; a
 // rocking level keeps the planar model and says why. The JSON: tests/report/test_biaxial_json.cpp.
 #include <catch2/catch.hpp>

@@ -41,7 +41,7 @@ TEST_CASE("the shipped cases parse", "[assess][case]") {
 TEST_CASE("glove box inertia derived from p reproduces p", "[assess][case]") {
     const Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
     const block::Block b = c.component.block(Direction::x);
-    // p = 1.97 rad/s is the published value the inertia was derived from (issue 6).
+    // p = 1.97 rad/s is the published value the inertia is derived from (the case file).
     CHECK(b.p_radps(block::Edge::right) == Approx(1.97).epsilon(1e-12));
     // Hand calculation: R = sqrt(0.526^2 + 1.22^2) = 1.32856 m, I_O = 382 * 9.81 * R / 1.97^2
     // = 1282.9 kg m^2, I_c = I_O - M R^2 = 608.6 kg m^2.
@@ -316,9 +316,10 @@ TEST_CASE("energy DeltaD keys: a corner or a table with one value per level",
 
 TEST_CASE("a level the vertical PGA makes weightless, a zero vertical ratio: refused at the key",
           "[assess][case][hardening]") {
-    // Issue 16 defect 6: pga_g = [1.5, 3.0] was read, then refused by the pipeline as "peak_v_g:
-    // value 1 is out of range; expected [0, 1)"; vertical_ratio = 0 (read as [0, 1.5]) as
-    // "vertical_ratio: value 0 is out of range; expected (0, 2]". Both without file:line.
+    // Read without these checks, pga_g = [1.5, 3.0] is refused later by the pipeline as
+    // "peak_v_g: value 1 is out of range; expected [0, 1)", and vertical_ratio = 0 (read as
+    // [0, 1.5]) as "vertical_ratio: value 0 is out of range; expected (0, 2]", both without
+    // file:line.
     CHECK(error_of(base_component +
                    "[site]\npga_g = [1.5, 3.0]\nvertical_ratio = 0.6666666666666666\n") ==
           "case.toml:10: site.pga_g: PGA 1.5 g with a vertical/horizontal ratio of 0.6667 gives a "
@@ -333,7 +334,7 @@ TEST_CASE("a level the vertical PGA makes weightless, a zero vertical ratio: ref
 }
 
 TEST_CASE("control characters in case text are refused at their key", "[assess][case][hardening]") {
-    // Issue 16 defect 10: ESC and BEL in a name passed raw into stdout and the reports.
+    // ESC and BEL in a name would otherwise pass raw into stdout and the reports.
     std::string with_esc = base_component;
     with_esc.replace(with_esc.find("\"Box\""), 5, "\"Box\\u001b[31m\"");
     CHECK(error_of(with_esc + base_site) ==
@@ -400,8 +401,8 @@ TEST_CASE("target files carry no V/A, AD/V^2, D/A range unless the case gives on
 
 TEST_CASE("a case line beyond 4096 characters is refused before the TOML parser sees it",
           "[assess][case][limits][hardening]") {
-    // Issue 16 audit: a dotted key of 100,000 parts (a.a.a...) overflowed toml++'s recursion
-    // (exit 139); the fuzzer's 16 KiB inputs cannot reach that depth.
+    // A dotted key of 100,000 parts (a.a.a...) overflows toml++'s recursion (exit 139); the
+    // fuzzer's 16 KiB inputs cannot reach that depth.
     std::string deep = "a";
     for (int i = 0; i < 100000; ++i) deep += ".a";
     CHECK(error_of(base_component + base_site + deep + " = 1\n") ==

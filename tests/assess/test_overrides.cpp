@@ -1,4 +1,4 @@
-// Overrides (issue 14 batch lists): an overridden case reads exactly as a case file carrying
+// Overrides (batch lists, README "Batch"): an overridden case reads exactly as a case file carrying
 // the values, and every bad value is an InputError naming the key.
 #include <catch2/catch.hpp>
 

@@ -163,7 +163,7 @@ TEST_CASE("a --pga override cannot drop the per-level table", "[assess][pipeline
 
 TEST_CASE("documented values are assessed or refused at their key, never by an internal name",
           "[assess][pipeline][hardening]") {
-    // Issue 16 defect 6.
+    // A value the case file documents is either assessed or refused at its own key.
     Case c = glovebox({0.2}, 1);
     SECTION("mu_s = 0: ASCE 4 does not apply, the simulation decides") {
         c.component.base.mu_s = 0.0;
@@ -220,7 +220,7 @@ TEST_CASE("a level whose vertical PGA reaches 1 g is refused at pga_g", "[assess
 
 TEST_CASE("an extreme footprint is assessed, not refused with an internal damping",
           "[assess][pipeline][hardening]") {
-    // Issue 16 defect 6: cg_to_edge_x_m = [100, 1e-9] gave "damping 2.57 out of range".
+    // cg_to_edge_x_m = [100, 1e-9] must not end in an internal "damping 2.57 out of range".
     const Case c = parse_case(R"([component]
 name = "Needle"
 mass_kg = 100.0
@@ -296,9 +296,10 @@ TEST_CASE("every history's measures and realism checks travel into the result",
 
 TEST_CASE("the reported extreme footprint (glove box, p_radps kept) is assessed",
           "[assess][pipeline][hardening]") {
-    // Issue 16 defect 6 as reported: glovebox-single.toml with cg_to_edge_x_m = [100, 1e-9] and
-    // its p_radps kept threw "damping: value 2.5733644010246386 is out of range; expected
-    // (0, 1)" at 0.1 g (the case without p_radps above never reached that check).
+    // glovebox-single.toml with cg_to_edge_x_m = [100, 1e-9] and its p_radps kept reaches the
+    // equivalent-linear damping at 0.1 g, where an unguarded check throws "damping: value
+    // 2.5733644010246386 is out of range; expected (0, 1)" (the case without p_radps above never
+    // reaches that check).
     const fs::path file = fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml";
     std::string text = core::read_text_file(file);
     const std::string edges = "cg_to_edge_x_m = [0.526, 0.526]";

@@ -1,4 +1,4 @@
-// Issue 12's consistency checks on every shipped case: a material trial is the assessment of
+// Consistency checks on every shipped case: a material trial is the assessment of
 // the case edited to name that material, and the verdict does not depend on simulate = "auto"
 // or "always" (docs/methods.md s.6 steps 4 and 7).
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// User target files in [site] (issue 6: "design spectrum or target file(s)"): parsing, errors,
+// User target files in [site] (a target file in place of the design spectrum): parsing, errors,
 // and the pipeline reading them where it reads RG 1.60 otherwise.
 #include <catch2/catch.hpp>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Per-direction target files (issue 6): target_h_file is direction x (and y unless
+// Per-direction target files (README "Case files"): target_h_file is direction x (and y unless
 // target_y_file is given); target_y_file / target_y10_file are direction y's 5% / 10% targets.
 #include <catch2/catch.hpp>
 #include <filesystem>

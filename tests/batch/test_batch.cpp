@@ -1,4 +1,4 @@
-// Running a batch (issue 14): each component assessed and written as `assess` does, failures
+// Running a batch (README "Batch"): each component assessed and written as `assess` does, failures
 // kept in their rows, the same bytes whatever the thread count, and a summary in four formats.
 #include <catch2/catch.hpp>
 

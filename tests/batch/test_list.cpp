@@ -1,4 +1,4 @@
-// Batch lists (issue 14): a folder, a CSV list, a TOML list; every problem of a list an
+// Batch lists (README "Batch"): a folder, a CSV list, a TOML list; every problem of a list an
 // InputError naming list:line and the field, before anything runs.
 #include <catch2/catch.hpp>
 

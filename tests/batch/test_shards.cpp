@@ -1,6 +1,6 @@
-// `batch --shard K/N` and `freestand merge` of batch shards (issue 14): the merged folder is the
-// single run's, byte for byte and with its exit code; shards that do not make one run are
-// refused, naming the file.
+// `batch --shard K/N` and `freestand merge` of batch shards (docs/methods.md s.12): the merged
+// folder is the single run's, byte for byte and with its exit code; shards that do not make one run
+// are refused, naming the file.
 #include <catch2/catch.hpp>
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-"""The HTML reports in a real browser and their PDFs on paper (issue 17).
+"""The HTML reports in a real browser and their PDFs on paper (README "PDF reports").
 
 The built CLI (FREESTAND_EXE) writes, into a temporary folder, the assess report of a shipped
 case and a small fragility report, both with --pdf. Headless Chromium (Debian chromium and

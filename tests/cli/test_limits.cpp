@@ -1,6 +1,6 @@
-// Issue 16 defect 3: every size is bounded before allocation (exit 3 naming the limit), and
-// defect 9: a folder given as an input file is an I/O error. Each command here hung, ran out
-// of memory or crashed before.
+// Every size is bounded before allocation (exit 3 naming the limit; README "Limits"), and a
+// folder given as an input file is an I/O error. Unbounded, each command here hangs, runs out of
+// memory or crashes.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -36,9 +36,9 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
          "a response-spectrum frequency (Hz): 1e+08 is above the limit 1000"},
         {"spectrum " + record + "--frequencies 1e300",
          "a response-spectrum frequency (Hz): 1e+300 is above the limit 1000"},
-        // Defect 8: out-of-range physics printed NaN or 8e304 m with exit 0 (a frequency
-        // of 1e-300 Hz still printed -nan; 1e-6 Hz a PSA 480 times the exact one).
-        // A design level of 1e300 g printed spectral accelerations of 7.5e298 g.
+        // Out-of-range physics is an input error, not NaN or 8e304 m with exit 0 (a frequency
+        // of 1e-300 Hz gives -nan; 1e-6 Hz a PSA 480 times the exact one).
+        // A design level of 1e300 g would give spectral accelerations of 7.5e298 g.
         {"target --design rg1.60 --pga 1e300", "--pga: a design level (g): 1e+300 is above the limit 3"},
         {"target --design asce7 --sds 1 --sd1 4 --tl 8", "--sd1: a design level (g): 4 is above the limit 3"},
         {"generate --target ec8 --ag 5 --type 1 --ground A --out /nonexistent/never",
@@ -61,10 +61,10 @@ TEST_CASE("sizes beyond the documented limits are input errors, not hangs",
 
 TEST_CASE("generate bounds a synthetic record's samples before it allocates them",
           "[cli][limits][hardening]") {
-    // Defect 3 for generate: --duration 1e7 took 24 GB until the kernel killed it, --dt 1e-7 ran
-    // for minutes at 20 GB, --duration 1e300 looped without end (6 MB), and --duration 1e5
-    // allocated 2.8 GB to end in "sample 367 is 994.9 m/s^2, beyond the limit" of the record
-    // it had made. The probes here are the two a regressed build survives: under `timeout` it
+    // Unbounded, generate's --duration 1e7 takes 24 GB until the kernel kills it, --dt 1e-7 runs
+    // for minutes at 20 GB, --duration 1e300 loops without end (6 MB), and --duration 1e5
+    // allocates 2.8 GB to end in "sample 367 is 994.9 m/s^2, beyond the limit" of the record
+    // it has made. The probes here are the two a regressed build survives: under `timeout` it
     // fails (exit 124 or the wrong message) instead of exhausting the machine.
     const std::filesystem::path out =
         std::filesystem::temp_directory_path() / "freestand_limits_generate";
@@ -102,7 +102,7 @@ TEST_CASE("a folder where a file is expected is an I/O error", "[cli][hardening]
 }
 
 TEST_CASE("a record time step outside [1e-6, 1] s is an input error", "[cli][limits][hardening]") {
-    // Defect 8: DT= 1e300 gave "pgd_m": null with exit 0.
+    // Unchecked, DT= 1e300 gives "pgd_m": null with exit 0.
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / "freestand_limits_dt";
     std::filesystem::create_directories(dir);
@@ -115,7 +115,7 @@ TEST_CASE("a record time step outside [1e-6, 1] s is an input error", "[cli][lim
 }
 
 TEST_CASE("library parameters are shown as the options the user typed", "[cli][hardening]") {
-    // Issue 16: the dynamics library names cd_dt_s, sine.ramp_s and mu_s; the command line maps
+    // The dynamics library names cd_dt_s, sine.ramp_s and mu_s; the command line maps
     // them to --dt, --sine and --mu in one place (cli/flag_names.hpp).
     CHECK_THAT(run_cli("simulate " + block + "--sine 0.5g,2Hz,10s --integrator cd --dt -1").err,
                Contains("simulate: error: --dt: value -1 must be a finite number > 0"));

@@ -94,8 +94,8 @@ TEST_CASE("report stamps carry a commit of this repository", "[cli]") {
 }
 
 TEST_CASE("errors quoting a file's bytes show control characters as hexadecimal escapes", "[cli][hardening]") {
-    // Issue 16 defect 10 audit: a record value "ESC]0;pwned BEL" (a terminal's set-title
-    // sequence) was quoted raw in "expected a number; got ...".
+    // A record value "ESC]0;pwned BEL" (a terminal's set-title sequence) must not be quoted raw
+    // in "expected a number; got ...".
     const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_controls";
     std::filesystem::create_directories(dir);
     std::ofstream(dir / "esc.csv") << "time_s,accel_g\n0,\x1b]0;pwned\x07\n";

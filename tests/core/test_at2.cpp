@@ -82,7 +82,7 @@ TEST_CASE("AT2 reader rejects an absurd NPTS as an input error", "[core][at2]") 
 
 TEST_CASE("AT2 reader refuses an overlong header line instead of overflowing the stack",
           "[core][at2][hardening]") {
-    // Issue 16: NPTS= with 50,000 digits crashed the header pattern (exit 139).
+    // NPTS= with 50,000 digits would overflow the header pattern's recursion (exit 139).
     const auto p = write_temp("long.AT2", header + "NPTS= " + std::string(50000, '1') +
                                               ", DT= .0100 SEC\n 0.1 -0.2\n 0.3\n");
     try {

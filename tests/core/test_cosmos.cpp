@@ -169,8 +169,8 @@ TEST_CASE("COSMOS V2 reader checks block counts and field widths", "[core][cosmo
 
 TEST_CASE("COSMOS V2 reader refuses overlong lines instead of overflowing the stack",
           "[core][cosmos][hardening]") {
-    // Issue 16: a 50,000-blank data line and a 300,000-character units field crashed the
-    // reader (std::regex recurses per character). Both are now an error naming the line.
+    // A 50,000-blank data line and a 300,000-character units field would overflow std::regex,
+    // which recurses per character; both are an error naming the line.
     std::string long_line(50000, ' ');
     long_line.append("\n      20 acceleration pts");
     const fs::path blanks = variant("long_blanks", "      20 acceleration pts", long_line);

@@ -271,8 +271,8 @@ TEST_CASE("write_csv_g round-trips values to 1e-12 and keeps the labels", "[core
 }
 
 TEST_CASE("write_csv_g shows control characters in its labels as hexadecimal escapes", "[core][csv][hardening]") {
-    // Issue 16 defect 10: write_csv_g (generate's h1/h2/v.csv) copied a label's ESC, BEL or
-    // DEL (a seed record's file name is in its source) raw into its comment lines.
+    // write_csv_g (generate's h1/h2/v.csv) must not copy a label's ESC, BEL or DEL (a seed
+    // record's file name is in its source) raw into its comment lines.
     core::Record rec;
     rec.name = "a\x1b]0;pwned\x07" "b";
     rec.source = "x\x7f" "y";  // DEL

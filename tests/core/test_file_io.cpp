@@ -39,7 +39,8 @@ TEST_CASE("write_file_atomic refuses a file read as an input, under any spelling
 TEST_CASE("an input beyond 512 MiB is refused: a large file before reading, an endless device "
           "as it is read",
           "[core][io][limits][hardening]") {
-    // Issue 16 "nothing runs unbounded": `assess /dev/zero` read until memory ran out.
+    // Nothing runs unbounded (README "Limits"): unbounded, `assess /dev/zero` reads until
+    // memory runs out.
     const auto dir = std::filesystem::temp_directory_path() / "freestand_file_io_limit";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);

@@ -1,4 +1,4 @@
-// Output safety (issue 16 defects 1, 4, 5): no special file is replaced, a run's folder is
+// Output safety (core/publish.hpp): no special file is replaced, a run's folder is
 // published whole, concurrent runs do not mix, and inputs are checked before anything is written.
 #include <catch2/catch.hpp>
 

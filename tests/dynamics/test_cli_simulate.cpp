@@ -75,7 +75,7 @@ TEST_CASE("simulate rejects bad blocks naming the option", "[dynamics][cli][erro
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --restitution 1.5 --sine 0.5g,2Hz,1s", "--restitution", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --inertia -1 --sine 0.5g,2Hz,1s", "--inertia", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --top 0.3 --sine 0.5g,2Hz,1s", "--top", 3},
-        // One parser with classify and rock (issue 16): the same names and exit codes.
+        // One parser with classify and rock: the same names and exit codes.
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg x=0.15,h=0.5 --inertia 1 --sine 0.5g,2Hz,1s", "--cg x (right of the base's centre", 3},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg 0.1 --sine 0.5g,2Hz,1s", "--cg: expected x,y or x=OFFSET,h=HEIGHT", 2},
         {"--block b=0.1,h=0.6,m=3 --mu 0.2 --cg 0.12,0.5 --sine 0.5g,2Hz,1s", "--inertia: a CG position away from the box centre needs", 3},
@@ -112,8 +112,8 @@ TEST_CASE("simulate --out naming the --motion file is refused and the input kept
 
 TEST_CASE("simulate --out shows control characters of the motion's name as hexadecimal escapes",
           "[dynamics][cli][hardening]") {
-    // Issue 16 defect 10: a motion file named with ESC and BEL put them raw into the CSV's
-    // comment line (the terminal title changed on `head series.csv`).
+    // A motion file named with ESC and BEL must not put them raw into the CSV's comment line,
+    // where `head series.csv` would change the terminal's title.
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / "freestand_sim_control_name";
     fs::remove_all(dir);
@@ -131,7 +131,7 @@ TEST_CASE("simulate --out shows control characters of the motion's name as hexad
 }
 
 TEST_CASE("simulate --out never replaces a FIFO, a device or a symlink", "[dynamics][cli][hardening]") {
-    // Issue 16 defect 1: each was replaced by a regular file with exit 0.
+    // Replacing any of them with a regular file, and exiting 0, would be the failure.
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / "freestand_sim_special_out";
     fs::remove_all(dir);

@@ -1,4 +1,4 @@
-// Exactness of the event-driven integrator against closed forms (issue 5, "Exactness").
+// Exactness of the event-driven integrator against closed forms (docs/methods.md s.3).
 #include <catch2/catch.hpp>
 #include <cmath>
 

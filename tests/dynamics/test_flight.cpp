@@ -1,4 +1,4 @@
-// Issue 16 defect 7: free flight under strong downward base motion lands when the closed-form
+// Free flight under strong downward base motion lands when the closed-form
 // ballistic motion says, whatever the friction, in both integrators.
 #include <catch2/catch.hpp>
 

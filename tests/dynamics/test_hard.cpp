@@ -1,5 +1,5 @@
-// Hard cases of issue 5: thresholds hit exactly, Zeno impacts, extreme slenderness, strong
-// shaking, a long record, and free flight.
+// Hard cases of the integrators (docs/methods.md s.3): thresholds hit exactly, Zeno impacts,
+// extreme slenderness, strong shaking, a long record, and free flight.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -73,7 +73,7 @@ TEST_CASE("alpha = 0.05 and alpha = 1.2 blocks under El Centro", "[dynamics][har
     const auto a = dynamics::simulate(slender, e, test::opts());
     const auto ac = dynamics::simulate(slender, e, test::opts(Integrator::central_difference));
     CHECK(a.summary.time_in_mode_s[static_cast<std::size_t>(Mode::rock)] > 0.0);
-    CHECK(a.summary.overturned);  // issue 16: assert the overturn itself, not only agreement
+    CHECK(a.summary.overturned);  // the overturn itself, not only agreement of the integrators
     CHECK(ac.summary.overturned);
     // Squat: tan(1.2) = 2.57 > mu: only slides; Housner's r would be negative: clamped to 0.
     const auto squat = dynamics::make_block_model(block::Block::uniform(std::tan(1.2), 1.0, 10.0), 0.2);
@@ -195,10 +195,10 @@ TEST_CASE("coarse records (dt 0.02 s and 0.04 s) run to the end and agree with c
 
 TEST_CASE("a rock onset that only grazes g tan(alpha) settles and time goes on",
           "[dynamics][hard]") {
-    // Issue 14 (bench_fragility): a generated history brought block-ts3 (y, mu 0.608738,
-    // r 0.810838) to a rock onset whose excursion was below the impact search's resolution: the
-    // onset, an impact at the same instant and the settling repeated at one t until 100000
-    // events threw "events accumulate". The window 9.0-9.4 s starts at rest, as in the run.
+    // A generated history of bench_fragility brings block-ts3 (y, mu 0.608738, r 0.810838) to a
+    // rock onset whose excursion is below the impact search's resolution: unless the onset
+    // settles, the onset, an impact at the same instant and the settling repeat at one t until
+    // 100000 events throw "events accumulate". The window 9.0-9.4 s starts at rest, as in the run.
     std::ifstream in(freestand::test::data_dir() + "/grazing_rock_onset.csv");
     REQUIRE(in);
     dynamics::Excitation e;

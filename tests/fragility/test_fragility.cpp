@@ -1,4 +1,5 @@
-// Fragility end to end on scenes with an exact answer, and its reproducibility (issue 14).
+// Fragility end to end on scenes with an exact answer, and its reproducibility (docs/methods.md
+// s.9).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>

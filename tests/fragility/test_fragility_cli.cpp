@@ -1,5 +1,6 @@
-// `freestand fragility` and `freestand merge` at the command line (issue 14): the outputs, their
-// byte identity across threads and shards, the progress bar's silence off a terminal, and errors.
+// `freestand fragility` and `freestand merge` at the command line (README "Fragility"): the
+// outputs, their byte identity across threads and shards, the progress bar's silence off a
+// terminal, and errors.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>

@@ -43,7 +43,7 @@ TEST_CASE("generate writes one CSV per component and match.json with the issue's
         CHECK(j["components"][0].contains(key));
     CHECK(j["components"][1]["component"] == "v");
     CHECK(j["correlations"].size() == 1);
-    // Every history reports its ground-motion measures and realism checks (issue 13 s.1).
+    // Every history reports its ground-motion measures and realism checks (docs/methods.md s.8).
     const auto& h1 = j["components"][0];
     for (const char* key : {"pga_g", "pgv_mps", "pgd_m", "va_mps_per_g", "adv2", "da_m_per_g",
                             "arias_mps", "d5_75_s", "d5_95_s", "zpa_g", "pga_over_zpa"})
@@ -133,8 +133,8 @@ TEST_CASE("generate matches a seed record given on the command line", "[motion][
 
 TEST_CASE("generate refuses an output that is an input of the run before writing any file",
           "[motion][cli][hardening]") {
-    // Issue 16 defect 5: with --seed-record A.AT2,gdir/h2.csv --out gdir, h1.csv was replaced
-    // before h2.csv was found to be an input (exit 5 with a changed folder).
+    // With --seed-record A.AT2,gdir/h2.csv --out gdir, writing file by file would replace h1.csv
+    // before finding h2.csv is an input (exit 5 with a changed folder).
     const fs::path dir = scratch("input_out");
     fs::create_directories(dir);
     // A folder a previous run wrote (its marker lists its files), holding a seed record.
@@ -196,7 +196,7 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
         std::ofstream(p) << text;
         return p.string();
     };
-    // Issue 16 defect 9: an all-zero seed record said "sample 0 is not a finite number".
+    // An all-zero seed record is refused as such, not as "sample 0 is not a finite number".
     std::string zeros = "# dt_s: 0.005\naccel_g\n";
     for (int i = 0; i < 5000; ++i) zeros += "0\n";
     const std::string zero_file = write("zero.csv", zeros);

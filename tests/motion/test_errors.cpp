@@ -83,8 +83,8 @@ TEST_CASE("impossible requests are InputErrors saying what SRP 3.7.1 needs", "[m
     CHECK_THROWS_MATCHES(
         motion::generate_set(targets(), o), InputError,
         Catch::Message("short.AT2: duration: seed record lasts 9.995 s; SRP 3.7.1 needs >= 20 s"));
-    // Issue 16 defect 9: an all-zero seed record said "sample 0 is not a finite number" (its
-    // scale factor to the target was infinite); match_record alone said the same.
+    // An all-zero seed record has an infinite scale factor to the target: unchecked, both
+    // generate_set and match_record alone say a misleading "sample 0 is not a finite number".
     core::Record zero = short_rec;
     zero.accel_mps2.assign(5000, 0.0);  // 25 s
     zero.source = "zero.csv";

@@ -1,5 +1,5 @@
 // Generation and matching against design targets, checked with the tests' own spectrum call
-// (own_check.hpp), plus the hard cases of issue 3.
+// (own_check.hpp), plus the hard cases of generation (docs/methods.md s.8).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>

@@ -1,5 +1,5 @@
-// TargetSet::horizontal_2: component h2 matched to its own target (per-direction targets of
-// issue 6); absent, h2 follows the common horizontal target exactly as before.
+// TargetSet::horizontal_2: component h2 matched to its own target (per-direction targets,
+// README "Case files"); absent, h2 follows the common horizontal target exactly.
 #include <catch2/catch.hpp>
 
 #include "motion/motion.hpp"

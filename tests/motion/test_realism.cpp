@@ -1,4 +1,4 @@
-// Realism of generated histories (issue 13 s.1, docs/methods.md s.8 "Realism"): PGA / ZPA,
+// Realism of generated histories (docs/methods.md s.8 "Realism"): PGA / ZPA,
 // V/A, AD/V^2, D/A, D5-75 reported for every history, checked in acceptance, met by generation.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -39,7 +39,8 @@ std::vector<double> slow_bump(std::size_t n, double dt_s, double amplitude_m) {
 
 TEST_CASE("ten seeds of RG 1.60 at 0.3 g: every component passes SRP 3.7.1 and realism",
           "[motion][realism]") {
-    // The issue's acceptance run: before this change PGA was 1.10-1.35 x ZPA, D/A 0.93-4.85 m/g.
+    // The realism acceptance run (docs/methods.md s.8): without clipping and the displacement-aware
+    // baseline correction, PGA is 1.10-1.35 x ZPA and D/A 0.93-4.85 m/g.
     const motion::TargetSet ts = motion::rg160_targets(0.3);
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
         INFO("seed " << seed);

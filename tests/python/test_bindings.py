@@ -1,4 +1,4 @@
-"""The Python module `freestand` against the command line (issue 17).
+"""The Python module `freestand` against the command line (README "Python").
 
 Every binding runs on the same input as the built CLI (FREESTAND_EXE) and must return what the
 command prints with --json or writes as JSON: the same keys in the same order and the same

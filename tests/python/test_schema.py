@@ -1,4 +1,4 @@
-"""The JSON Schemas in docs/schema/ against what freestand writes (issue 17).
+"""The JSON Schemas in docs/schema/ against what freestand writes.
 
 Validates every shipped golden reports/<case>/result.json against result.schema.json, a
 fragility.json the built CLI writes (FREESTAND_EXE) against fragility.schema.json, and checks

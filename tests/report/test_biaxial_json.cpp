@@ -1,5 +1,5 @@
-// result.json's biaxial object per level (issue 15): statistics, ratio to the planar peak and
-// the reason; null where the level was not simulated, slide_m null where the model did not
+// result.json's biaxial object per level (docs/methods.md s.10): statistics, ratio to the planar
+// peak and the reason; null where the level was not simulated, slide_m null where the model did not
 // apply.
 #include <catch2/catch.hpp>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The methods document ships with the project (issue 13 s.4): every "docs/methods.md s.N"
+// The methods document ships with the project: every "docs/methods.md s.N"
 // citation in the sources names a section (and a step of s.6) that exists, nothing cites the
 // former methods note outside the repository, and the committed reports cite docs/methods.md
 // and the standards and end with the references list.

@@ -1,6 +1,6 @@
-// The PDF report (issue 17): `assess --pdf` and `fragility --pdf` through WeasyPrint, the same
-// bytes for the same HTML, and the errors of a missing, failing or hanging converter. These
-// tests need weasyprint installed (scripts/setup.sh): without it they fail, they do not skip.
+// The PDF report (README "PDF reports"): `assess --pdf` and `fragility --pdf` through WeasyPrint,
+// the same bytes for the same HTML, and the errors of a missing, failing or hanging converter.
+// These tests need weasyprint installed (scripts/setup.sh): without it they fail, they do not skip.
 #include <catch2/catch.hpp>
 
 #include <signal.h>

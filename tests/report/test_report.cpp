@@ -618,7 +618,8 @@ TEST_CASE("assess refuses outputs that would replace an input or a special file,
           "[report][cli][hardening]") {
     const fs::path dir = temp_dir("refuse_outputs");
     const fs::path c = small_case(dir, "small");
-    // Issue 16 defect 5: the case file is named like an output of the run, in the output folder.
+    // The case file is named like an output of the run, in the output folder: it is an input,
+    // so the run must refuse to replace it.
     REQUIRE(test::run_cli("assess '" + c.string() + "' --out '" + (dir / "out").string() + "'")
                 .exit_code == 0);
     fs::copy_file(c, dir / "out" / "report.md", fs::copy_options::overwrite_existing);
@@ -628,7 +629,8 @@ TEST_CASE("assess refuses outputs that would replace an input or a special file,
         before[e.path().filename().string()] = test::slurp(e.path());
     REQUIRE(before.count("spectra.svg") == 1);
     // At another PGA every figure would differ: one written before the refusal shows. The
-    // figures were written first, then report.md was refused (9 SVGs replaced, exit 5).
+    // figures, written file by file, would go first and report.md be refused after them (9 SVGs
+    // replaced, exit 5).
     const auto self = test::run_cli("assess '" + (dir / "out" / "report.md").string() +
                                     "' --pga 0.3 --out '" + (dir / "out").string() + "'");
     CHECK(self.exit_code == 5);
@@ -641,7 +643,7 @@ TEST_CASE("assess refuses outputs that would replace an input or a special file,
         INFO(name);
         CHECK(after[name] == text);  // nothing was written
     }
-    // Issue 16 defect 1: a device, a symlink are never replaced.
+    // A device, a symlink are never replaced.
     if (const auto dev = test::make_null_device(dir)) {
         const auto device = test::run_cli("assess '" + c.string() + "' --out '" + dev->string() + "'");
         CHECK(device.exit_code == 5);
@@ -666,7 +668,7 @@ TEST_CASE("control characters show as hexadecimal escapes in Markdown and HTML",
 }
 
 TEST_CASE("the stamp hashes every input file, not only the case", "[report][cli][stamp]") {
-    // Issue 16: target spectra and seed records change a result as much as the case does.
+    // Target spectra and seed records change a result as much as the case does.
     const fs::path dir = temp_dir("stamp_inputs");
     const auto r =
         test::run_cli("assess cases/cabinet-user-target.toml --pga 0.1 --out '" + dir.string() + "'");

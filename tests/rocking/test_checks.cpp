@@ -18,7 +18,7 @@ constexpr double g = 9.81;
 }
 
 TEST_CASE("Ishiyama bound of the 0.3 x 1.2 m steel block", "[rocking][checks]") {
-    // Issue 4 / docs/methods.md s.5: R = 0.6185 m, alpha = 0.2450 rad, cos(alpha) = 0.970143:
+    // docs/methods.md s.5: R = 0.6185 m, alpha = 0.2450 rad, cos(alpha) = 0.970143:
     // V = 0.4 sqrt(8 * 9.81 * 0.6185 * 0.029857 / (3 * 0.970143)) = 0.4 * 0.70566 = 0.2823 m/s.
     const Block blk = Block::uniform(0.15, 0.6, 38.0);
     const double v = ishiyama_velocity_mps(blk, Edge::left);

@@ -227,8 +227,8 @@ TEST_CASE("restitution: Housner's by default, a measured one overrides it", "[ro
     CHECK(quiet.fs_ok);
     CHECK(quiet.theta0_reason.find("no rocking: PGA 0.2 g <= gate") == 0);
     CHECK(quiet.spectral_margin_reason.find("not applicable") != std::string::npos);
-    // Issue 16 defect 6: r = 0 (the case reader's and the simulator's range is [0, 1]) was
-    // refused as "restitution ... expected (0, 1]"; the estimate is not applicable instead.
+    // r = 0 is within the case reader's and the simulator's range [0, 1], so it must not be
+    // refused as "restitution ... expected (0, 1]": the estimate is not applicable instead.
     o.restitution = 0.0;
     const ElResult plastic = equivalent_linear_rocking(steel, Edge::left, demand, {}, o);
     CHECK_FALSE(plastic.beta_e);

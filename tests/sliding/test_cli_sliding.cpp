@@ -40,7 +40,7 @@ std::string power_law_file() {
 
 }  // namespace
 
-TEST_CASE("classify: issue 4 example in JSON", "[sliding][cli]") {
+TEST_CASE("classify: the b=0.15, h=0.6, mu 0.32, 0.8 g example in JSON", "[sliding][cli]") {
     const auto r = run_cli("classify --block b=0.15,h=0.6 --mu 0.32 --a-g 0.8 --av-g 0 --json");
     REQUIRE(r.exit_code == 0);
     const json j = json::parse(r.out);

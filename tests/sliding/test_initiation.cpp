@@ -29,7 +29,7 @@ double shenton(double A, double gamma) {
 
 TEST_CASE("mu_crit of a uniform block is Shenton's formula and equals tan(alpha) at uplift",
           "[sliding][initiation]") {
-    // Hand calculation, issue 4 example: gamma = 0.25, A = 0.8:
+    // Hand calculation, the b=0.15, h=0.6, mu 0.32, 0.8 g example: gamma = 0.25, A = 0.8:
     // (0.8 * 1.25 + 0.75) / (4.0625 + 0.6) = 1.75 / 4.6625 = 0.375335...
     const Block blk = Block::uniform(0.15, 0.6);
     CHECK(mu_crit(blk, Edge::right, 0.8) == Approx(1.75 / 4.6625).epsilon(1e-12));
@@ -102,7 +102,7 @@ TEST_CASE("rock / slide-rock boundary at mu_s = mu_crit(A)", "[sliding][initiati
     CHECK(classify_edge(quarter, Edge::left, 0.3, A, 0.0).mode == Mode::slide_rock);
 }
 
-TEST_CASE("issue 4 example: b=0.15, h=0.6, mu 0.32, 0.8 g slide-rocks", "[sliding][initiation]") {
+TEST_CASE("the example b=0.15, h=0.6, mu 0.32 at 0.8 g slide-rocks", "[sliding][initiation]") {
     const PeakInitiation p = classify_peak(Block::uniform(0.15, 0.6), 0.32, 0.8, 0.0);
     CHECK(p.governing().mode == Mode::slide_rock);
     CHECK(p.governing().tan_alpha == Approx(0.25).epsilon(1e-15));

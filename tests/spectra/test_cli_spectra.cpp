@@ -169,7 +169,7 @@ TEST_CASE("bad options exit 2 (usage) or 3 (value) and name the option", "[spect
 
 TEST_CASE("spectrum on a bad record exits 3 naming file, line and what was expected",
           "[spectra][cli]") {
-    // Issue 2: each bad-input case is a clear error with a non-zero exit code through the CLI,
+    // Each bad-input case is a clear error with a non-zero exit code through the CLI,
     // not only in the reader (the reader tests in tests/core check the same cases in detail).
     const fs::path dir = fs::temp_directory_path() / "freestand_cli_bad_records";
     fs::create_directories(dir);

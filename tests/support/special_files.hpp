@@ -1,5 +1,5 @@
 #pragma once
-/// Special files for the tests that check an output never replaces one (issue 16 defect 1).
+/// Special files for the tests that check an output never replaces one (core/publish.hpp).
 /// The device is a fresh null device in the test's own folder, never /dev/null: the CI runs as
 /// root, so a regression would otherwise replace the machine's /dev/null with a regular file.
 #include <sys/stat.h>

@@ -1,5 +1,5 @@
 // The rigid specimens TS1-TS3: geometry from Table 3-2, hand-checkable sine runs and the
-// Ishiyama bound against its formula (issue 13 s.3).
+// Ishiyama bound against its formula (docs/methods.md s.13).
 #include <catch2/catch.hpp>
 
 #include <algorithm>

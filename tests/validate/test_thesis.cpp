@@ -1,4 +1,4 @@
-// The thesis values validate uses: each quote stands on its line (issue 13 s.3).
+// The thesis values validate uses: each quote stands on its line (docs/methods.md s.13).
 #include <catch2/catch.hpp>
 
 #include <filesystem>

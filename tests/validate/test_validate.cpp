@@ -1,4 +1,4 @@
-// The validation table: every row the issue asks for, each complete (issue 13 s.3).
+// The validation table: every row of docs/methods.md s.13, each complete.
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
@@ -37,7 +37,7 @@ const Row& row(const std::string& id) {
 
 }  // namespace
 
-TEST_CASE("the validation has every row of issue 13 s.3", "[validate][slow]") {
+TEST_CASE("the validation has every row of the thesis comparison", "[validate][slow]") {
     for (const char* ts : {"ts1", "ts2", "ts3"}) {
         for (const char* f : {"0.5", "1", "2", "3", "5", "10"})
             CHECK_NOTHROW(row(std::string(ts) + "-" + f + "hz"));
