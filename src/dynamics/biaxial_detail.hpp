@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "dynamics/biaxial.hpp"
+#include "core/steps.hpp"
 
 namespace freestand::dynamics::detail {
 
@@ -89,7 +90,7 @@ public:
     /// the ramp to rest after its last non-zero sample (as the planar BaseMotion::min_end_s).
     double quiet_from_s() const { return quiet_from_; }
     std::size_t segments(double tail_s) const {
-        return e_.x_mps2.size() + static_cast<std::size_t>(std::ceil(tail_s * inv_dt_ - 1e-9));
+        return e_.x_mps2.size() + static_cast<std::size_t>(core::steps_covering(tail_s * inv_dt_));
     }
     BiaxialSegment segment(std::size_t k) const {
         BiaxialSegment s;

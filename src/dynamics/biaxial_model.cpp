@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "core/limits.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/resample.hpp"
@@ -54,7 +55,7 @@ BiaxialExcitation biaxial_excitation_from_records(const core::Record& x, const c
     core::validate(y);
     Excitation planar = excitation_from_record(x, scale, vertical, scale);
     // Extend x with zeros (and the vertical with its record) to cover a longer y.
-    const auto n_y = static_cast<std::size_t>(std::ceil(y.duration_s() / x.dt_s - 1e-9)) + 1;
+    const auto n_y = static_cast<std::size_t>(core::steps_covering(y.duration_s() / x.dt_s)) + 1;
     if (n_y > planar.horizontal_mps2.size()) {
         const std::size_t n_x = planar.horizontal_mps2.size();
         planar.horizontal_mps2.resize(n_y, 0.0);

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/integrators.hpp"
 #include "dynamics/taylor.hpp"
@@ -760,7 +761,7 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
         if (st.mode == Mode::rest && rest_holds(g, bm.sample(k))) {
             // Last segment end the run may reach: the first sample at or after min_end.
             const auto j_max = std::min<std::size_t>(
-                n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(std::ceil(min_end / dt - 1e-9))));
+                n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(core::steps_covering(min_end / dt))));
             double peak = 0.0;
             // Segments k..j-1 stay at rest: samples k+1..j hold.
             const std::size_t j = bm.rest_until(k + 1, j_max + 1, g, peak) - 1;

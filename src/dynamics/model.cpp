@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
 #include "dynamics/resample.hpp"
@@ -121,7 +122,7 @@ Excitation sine_excitation(const SineSpec& spec) {
         spec.dt_s > 0.0 ? spec.dt_s : std::min(0.005, 1.0 / (400.0 * spec.frequency_hz));
     core::limits::require_within(spec.frequency_hz, core::limits::max_frequency_hz,
                                  {"", 0, "sine.frequency_hz"}, "the sine's frequency");
-    const double steps = std::ceil(spec.duration_s / dt_target - 1e-9);
+    const double steps = core::steps_covering(spec.duration_s / dt_target);
     core::limits::require_within(steps + 1.0, core::limits::max_samples,
                                  {"", 0, "sine.duration_s"},
                                  "the sine's sampling (duration / step)");

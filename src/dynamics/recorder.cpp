@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "dynamics/integrators.hpp"
+#include "core/steps.hpp"
 #include "dynamics/overturn.hpp"
 
 namespace freestand::dynamics::detail {
@@ -49,7 +50,7 @@ std::size_t BaseMotion::rest_until(std::size_t i0, std::size_t i1, const Geometr
 
 std::size_t BaseMotion::segments(double tail_s) const {
     const double end = std::max(duration_, quiet_from_) + std::max(0.0, tail_s);
-    return static_cast<std::size_t>(std::ceil(end / dt_ - 1e-9));
+    return static_cast<std::size_t>(core::steps_covering(end / dt_));
 }
 
 Accel accel_of(const Geometry& g, const BlockState& st, Base base) {

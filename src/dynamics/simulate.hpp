@@ -13,6 +13,7 @@
 
 #include "block/block.hpp"
 #include "core/record.hpp"
+#include "core/steps.hpp"
 
 namespace freestand::dynamics {
 
@@ -127,7 +128,7 @@ struct Options {
 /// Central difference's step on an input sampled at sample_dt_s: cd_dt_s rounded down to
 /// divide it (steps end at every sample), s.
 inline double central_difference_step_s(double sample_dt_s, double cd_dt_s) {
-    const double n_sub = std::max(1.0, std::ceil(sample_dt_s / cd_dt_s - 1e-9));
+    const double n_sub = std::max(1.0, core::steps_covering(sample_dt_s / cd_dt_s));
     return sample_dt_s / n_sub;
 }
 
