@@ -5,33 +5,22 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/cli_probes.hpp"
 #include "support/run_cli.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_cli_test_entry_limits {
 
 using freestand::test::run_cli;
-using Catch::Contains;
 
 namespace {
 
 const std::string record = "tests/data/RSN175_IMPVALL.H_H-E12140.AT2 ";
 const std::string block = "--block b=0.15,h=0.6,m=38 ";
 
-struct Probe {
-    std::string args;
-    std::string message;
-    int exit_code;
-};
-
-void check_probes(const std::vector<Probe>& probes) {
-    for (const Probe& p : probes) {
-        INFO(p.args);
-        // timeout: a regressed build fails instead of running the unbounded work.
-        const auto r = run_cli(p.args, "timeout 120 ");
-        CHECK(r.exit_code == p.exit_code);
-        CHECK_THAT(r.err, Contains(p.message));
-    }
+// timeout: a regressed build fails instead of running the unbounded work.
+void check_probes(const std::vector<freestand::test::CliProbe>& probes) {
+    freestand::test::check_cli_probes(probes, "timeout 120 ");
 }
 
 // cases/block-ts1.toml with its pga_g line replaced, in a scratch folder.

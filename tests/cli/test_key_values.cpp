@@ -2,13 +2,10 @@
 // and phase): one parser, which refuses an unknown key and a key given twice.
 #include <catch2/catch.hpp>
 
-#include "support/run_cli.hpp"
+#include "support/cli_probes.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_cli_test_key_values {
-
-using freestand::test::run_cli;
-using Catch::Contains;
 
 namespace {
 
@@ -16,27 +13,14 @@ const std::string block = "--block b=0.15,h=0.6,m=38 ";
 // A block that only slides (tan alpha = 0.5 > mu), as the biaxial model needs.
 const std::string slider = "--block b=0.3,h=0.6,m=38 --mu 0.2 ";
 
-struct Probe {
-    std::string args;
-    std::string message;
-    int exit_code;
-};
-
-void check_probes(const std::vector<Probe>& probes) {
-    for (const Probe& p : probes) {
-        INFO(p.args);
-        const auto r = run_cli(p.args);
-        CHECK(r.exit_code == p.exit_code);
-        CHECK_THAT(r.err, Contains(p.message));
-    }
-}
+using freestand::test::check_cli_probes;
 
 }  // namespace
 
 TEST_CASE("a key given twice in a key=value list is refused, in every option",
           "[cli][options]") {
     // A repeated key would otherwise silently take its last value.
-    check_probes({
+    check_cli_probes({
         {"simulate " + slider + "--sine-y 0.4g,2Hz,2s,phase=90,phase=0",
          "--sine-y: key \"phase\" given twice", 2},
         {"simulate " + slider + "--sine-y 0.4g,2Hz,2s,ramp=1s,ramp=0.5s",
