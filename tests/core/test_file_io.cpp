@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "support/dead_pid.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_core_test_file_io {
@@ -57,6 +58,8 @@ TEST_CASE("an input beyond 512 MiB is refused: a large file before reading, an e
     std::filesystem::remove_all(dir);
 }
 
+using freestand::test::dead_pid;
+
 namespace {
 
 // The temporaries of write_file_atomic in dir.
@@ -65,16 +68,6 @@ int temporaries_in(const std::filesystem::path& dir) {
     for (const auto& e : std::filesystem::directory_iterator(dir))
         if (e.path().filename().string().find(".freestand-tmp-") != std::string::npos) ++n;
     return n;
-}
-
-// The id of a process that has exited and been reaped.
-pid_t dead_pid() {
-    const pid_t pid = ::fork();
-    if (pid == 0) ::_exit(0);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-    }
-    return pid;
 }
 
 }  // namespace

@@ -17,12 +17,14 @@
 
 #include "core/errors.hpp"
 #include "report/pdf.hpp"
+#include "support/dead_pid.hpp"
 #include "support/run_cli.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_report_test_pdf {
 
 namespace fs = std::filesystem;
+using freestand::test::dead_pid;
 using freestand::test::run_cli;
 using freestand::test::slurp;
 
@@ -80,16 +82,6 @@ bool group_gone(pid_t group) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     return false;
-}
-
-/// The id of a process that has exited and been reaped.
-pid_t dead_pid() {
-    const pid_t pid = ::fork();
-    if (pid == 0) ::_exit(0);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-    }
-    return pid;
 }
 
 }  // namespace
