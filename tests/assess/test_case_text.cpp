@@ -6,6 +6,7 @@
 
 #include "assess/case.hpp"
 #include "core/errors.hpp"
+#include "support/case_text.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_assess_test_case_text {
@@ -13,22 +14,11 @@ namespace freestand_test_assess_test_case_text {
 using namespace freestand;
 
 namespace {
-const std::string kCase = R"([component]
-name = "Rest"
-mass_kg = 500.0
-width_m = 1.2
-depth_m = 1.0
-height_m = 0.8
-base_material = "steel"
-allowable_slide_m = 0.050
-
-[site]
-pga_g = [0.05]
-)";
+const std::string kCase = test::box_component + test::box_site;
 }  // namespace
 
 TEST_CASE("a case file with a UTF-8 BOM reads as without it", "[assess][case]") {
-    CHECK(assess::parse_case("\xEF\xBB\xBF" + kCase, "bom.toml").component.name == "Rest");
+    CHECK(assess::parse_case("\xEF\xBB\xBF" + kCase, "bom.toml").component.name == "Box");
 }
 
 TEST_CASE("a UTF-16 case file is refused as UTF-16", "[assess][case]") {
