@@ -173,6 +173,58 @@ def _samples(values: Any, what: str) -> np.ndarray:
     return array.astype(float)
 
 
+def _number(value: Any, keyword: str) -> float:
+    """value as a float when it is a real number; TypeError naming keyword otherwise."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{keyword}: expected a real number, got {type(value).__name__} "
+                        f"{value!r}")
+    return float(value)
+
+
+_BOX_KEYS = {"b": "half_width_m", "h": "half_height_m", "m": "mass_kg"}
+_CG_KEYS = {"x": "cg_offset_m", "h": "cg_height_m"}
+
+
+def _keyed_numbers(values: Mapping[str, Any], keys: Mapping[str, str], keyword: str) -> dict:
+    """{keys[k]: float} of a mapping; TypeError naming keyword[k] for an unknown key or a value
+    that is not a real number."""
+    if not isinstance(values, Mapping):
+        raise TypeError(f"{keyword}: expected a mapping of {', '.join(keys)} to numbers, got "
+                        f"{type(values).__name__} {values!r}")
+    out = {}
+    for key, value in values.items():
+        if key not in keys:
+            raise TypeError(f"{keyword}: unknown key {key!r}; expected one of "
+                            f"{', '.join(keys)}")
+        out[keys[key]] = _number(value, f"{keyword}[{key!r}]")
+    return out
+
+
+def _box(block: Mapping[str, float], cg: Any, inertia: Optional[float]) -> dict:
+    """The block, CG and inertia as the module's box fields (sliding::BoxSpec): block {"b", "h"
+    [, "m"]}; cg {"x", "h"} (x right of the box centre) or (x, y) (x from the left edge, y up)."""
+    box = _keyed_numbers(block, _BOX_KEYS, "block")
+    for key in ("b", "h"):
+        if _BOX_KEYS[key] not in box:
+            raise TypeError(f"block: missing {key!r}")
+    if cg is not None:
+        if isinstance(cg, Mapping):
+            box.update(_keyed_numbers(cg, _CG_KEYS, "cg"))
+        else:
+            if isinstance(cg, (str, bytes)) or not isinstance(cg, Iterable):
+                raise TypeError(f"cg: expected {{'x': .., 'h': ..}} or (x, y), got "
+                                f"{type(cg).__name__} {cg!r}")
+            xy = [_number(v, "cg") for v in cg]
+            if len(xy) != 2:
+                raise TypeError(f"cg: expected (x, y), got {len(xy)} numbers")
+            box["cg_offset_m"] = xy[0] - box["half_width_m"]
+            box["cg_height_m"] = xy[1]
+    if inertia is not None:
+        box["inertia_cg_kgm2"] = _number(inertia, "inertia")
+    return box
+
+
 def read_record(path: PathLike) -> Record:
     """Reads a PEER .AT2, COSMOS .V2 or CSV record (docs/methods.md s.8 for the CSV headers)."""
     r = _fs.read_record(os.fspath(path))
@@ -223,11 +275,14 @@ def slide(mu: float, **options: Any) -> dict:
     return _fs.slide(_args(mu=mu, **options))
 
 
-def classify(block: Union[str, Mapping[str, float]], mu: float, a_g: float, *, cg=None,
-             **options: Any) -> dict:
+def classify(block: Mapping[str, float], mu: float, a_g: float, *, cg=None, av_g: float = 0.0,
+             inertia: Optional[float] = None) -> dict:
     """Initiating mode of a block at rest (`freestand classify --json`): block {"b": half-width,
-    "h": half-height[, "m": kg]} in m; av_g=, inertia=."""
-    return _fs.classify(_args(block=_block(block), cg=_cg(cg), mu=mu, a_g=a_g, **options))
+    "h": half-height[, "m": kg]} in m; cg {"x": offset right of the centre, "h": height} or
+    (x from the left edge, y up), which needs inertia (I_c about the CG, kg m^2) and m; av_g
+    the peak vertical acceleration (g), taken downward."""
+    return _fs.classify(_box(block, cg, inertia), _number(mu, "mu"), _number(a_g, "a_g"),
+                        _number(av_g, "av_g"))
 
 
 def rock(block: Union[str, Mapping[str, float]], *, cg=None, **options: Any) -> dict:

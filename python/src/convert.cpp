@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "core/errors.hpp"
 
@@ -69,6 +70,26 @@ std::vector<double> from_numpy(const py::handle& values, const std::string& what
     const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
     if (!a) throw py::error_already_set();
     return {a.data(), a.data() + a.size()};
+}
+
+namespace {
+
+std::optional<double> optional_number(const py::dict& d, const char* key) {
+    if (!d.contains(key) || d[key].is_none()) return std::nullopt;
+    return d[key].cast<double>();
+}
+
+}  // namespace
+
+sliding::BoxSpec box_spec(const py::dict& box) {
+    sliding::BoxSpec s;
+    s.half_width_m = box["half_width_m"].cast<double>();
+    s.half_height_m = box["half_height_m"].cast<double>();
+    s.mass_kg = optional_number(box, "mass_kg");
+    s.cg_offset_m = optional_number(box, "cg_offset_m");
+    s.cg_height_m = optional_number(box, "cg_height_m");
+    s.inertia_cg_kgm2 = optional_number(box, "inertia_cg_kgm2");
+    return s;
 }
 
 }  // namespace freestand::python

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "sliding/block_spec.hpp"
+
 namespace freestand::python {
 
 namespace py = pybind11;
@@ -26,5 +28,10 @@ py::array_t<double> to_numpy(const std::vector<double>& values);
 /// The samples of a 1-D array-like of numbers (a NumPy array or a sequence), as doubles;
 /// InputError naming `what` if it is not one-dimensional.
 std::vector<double> from_numpy(const py::handle& values, const std::string& what);
+
+/// The box the package passes as a dict with BoxSpec's field names (half_width_m and
+/// half_height_m; mass_kg, cg_offset_m, cg_height_m and inertia_cg_kgm2 when given). The package
+/// has checked each value is a real number.
+sliding::BoxSpec box_spec(const py::dict& box);
 
 }  // namespace freestand::python

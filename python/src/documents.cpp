@@ -1,4 +1,4 @@
-// target, slide, classify, rock and generate: the commands' documents from their options.
+// target, slide, rock and generate: the commands' documents from their options.
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
@@ -35,7 +35,6 @@ void bind_documents(py::module_& m) {
         },
         py::arg("args"));
     bind_closed_form(m, "slide", cli::slide_options, cli::slide_run, cli::slide_json);
-    bind_closed_form(m, "classify", cli::classify_options, cli::classify_run, cli::classify_json);
     bind_closed_form(m, "rock", cli::rock_options, cli::rock_run, cli::rock_json);
     m.def(
         "generate",

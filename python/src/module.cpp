@@ -8,6 +8,7 @@
 #include "cli/flag_names.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "parameter_names.hpp"
 
 namespace py = pybind11;
 
@@ -40,8 +41,10 @@ PYBIND11_MODULE(_freestand, m) {
     errors.base = make_class(m, "Error", PyExc_Exception, 1, "Base of every freestand error.");
     errors.usage = make_class(m, "UsageError", errors.base, 2,
                               "A call the command line would refuse as usage (exit code 2).");
-    errors.input = make_class(m, "InputError", errors.base, 3,
-                              "Bad input data or value (exit code 3).");
+    // Also a ValueError: a value out of its range is what Python callers catch as one.
+    const py::tuple input_bases = py::make_tuple(errors.base, py::handle(PyExc_ValueError));
+    errors.input = make_class(m, "InputError", input_bases, 3,
+                              "Bad input data or value (exit code 3); also a ValueError.");
     errors.numerical = make_class(m, "NumericalError", errors.base, 4,
                                   "A solver could not reach its tolerance or limit (exit code 4).");
     errors.io = make_class(m, "IoError", errors.base, 5,
@@ -51,7 +54,12 @@ PYBIND11_MODULE(_freestand, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const InputError& e) {
-            PyErr_SetString(errors.input.ptr(), cli::on_command_line(e).what());
+            // A field the Python table names is renamed to its keyword; the commands still parsed
+            // from option text name their option.
+            const InputError named = freestand::python::in_python(e);
+            const bool renamed = named.where().field != e.where().field;
+            PyErr_SetString(errors.input.ptr(),
+                            (renamed ? named : cli::on_command_line(e)).what());
         } catch (const UsageError& e) {
             PyErr_SetString(errors.usage.ptr(), e.what());
         } catch (const NumericalError& e) {
@@ -65,6 +73,7 @@ PYBIND11_MODULE(_freestand, m) {
     m.attr("version") = freestand::core::version();
     m.attr("commit") = freestand::cli::build_commit;
     freestand::python::bind_records(m);
+    freestand::python::bind_closed_forms(m);
     freestand::python::bind_documents(m);
     freestand::python::bind_runs(m);
 }

@@ -1,9 +1,10 @@
-// `slide`, `classify` and `rock`: their options, runs and JSON documents (cli/documents.hpp).
+// `slide` and `rock`: their options, runs and JSON documents (cli/documents.hpp).
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "cli/documents.hpp"
+#include "api/classify.hpp"
 #include "cli/spectra_cli.hpp"
 #include "core/errors.hpp"
 #include "core/limits.hpp"
@@ -12,6 +13,9 @@
 #include "sliding/spectrum_input.hpp"
 
 namespace freestand::cli {
+
+using api::edge_name;
+
 namespace {
 
 json num(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
@@ -90,18 +94,6 @@ json report_json(const rocking::RockingChecks& r, const rocking::RockingInput& i
     return j;
 }
 
-json to_json(const sliding::Initiation& i) {
-    json j;
-    j["mode"] = sliding::to_string(i.mode);
-    j["edge"] = edge_name(i.edge);
-    j["tan_alpha"] = i.tan_alpha;
-    j["A"] = i.A;
-    j["mu_crit"] = i.mu_crit ? json(*i.mu_crit) : json(nullptr);
-    if (!i.mu_crit) j["mu_crit_reason"] = i.mu_crit_reason;
-    j["decided_by"] = sliding::describe(i.decided_by);
-    return j;
-}
-
 std::optional<rocking::DampedSpectra> read_set(const po::variables_map& vm, const char* option) {
     if (!vm.count(option)) return std::nullopt;
     std::vector<spectra::Spectrum> set;
@@ -161,8 +153,6 @@ rocking::RockingInput read_input(const po::variables_map& vm) {
 }
 
 }  // namespace
-
-const char* edge_name(block::Edge e) { return e == block::Edge::left ? "left" : "right"; }
 
 po::options_description slide_options() {
     po::options_description desc("slide options");
@@ -227,47 +217,6 @@ json slide_json(const SlideRun& run) {
     put(j, "slide_asce_m", e.slide_asce_m, e.slide_asce_reason);
     j["pgd_m"] = in.pgd_m ? json(*in.pgd_m) : json(nullptr);
     put(j, "slide_energy_m", e.slide_energy_m, e.slide_energy_reason);
-    return j;
-}
-
-po::options_description classify_options() {
-    po::options_description desc("classify options");
-    desc.add_options()
-        ("block", po::value<std::string>()->required(), "box b=HALF_WIDTH,h=HALF_HEIGHT[,m=KG] (m)")
-        ("cg", po::value<std::string>(), "CG x=OFFSET_TO_RIGHT,h=HEIGHT (m); needs --inertia")
-        ("inertia", po::value<std::string>(), "I_c about the CG, kg m^2 (needs m=)")
-        ("mu", po::value<std::string>()->required(), "static friction coefficient mu_s in [0, 2]")
-        ("a-g", po::value<std::string>()->required(), "peak horizontal acceleration, g")
-        ("av-g", po::value<std::string>()->default_value("0"),
-         "peak vertical acceleration, g, applied downward (worst case)");
-    return desc;
-}
-
-ClassifyRun classify_run(const po::variables_map& vm) {
-    std::optional<double> inertia;
-    if (vm.count("inertia")) inertia = parse_double(vm["inertia"].as<std::string>(), "--inertia");
-    const block::Block blk = block_from_options(vm["block"].as<std::string>(),
-                                                opt_string(vm, "cg"), inertia);
-    const double mu = parse_double(vm["mu"].as<std::string>(), "--mu");
-    const double a_g = parse_double(vm["a-g"].as<std::string>(), "--a-g");
-    const double av_g = parse_double(vm["av-g"].as<std::string>(), "--av-g");
-    core::limits::require_in(mu, core::limits::friction, SourceLocation{"", 0, "--mu"});
-    require_in_range(a_g, 0.0, HUGE_VAL, SourceLocation{"", 0, "--a-g"}, true, false);
-    require_in_range(av_g, 0.0, 1.0, SourceLocation{"", 0, "--av-g"}, true, false);
-    const sliding::PeakInitiation p = sliding::classify_peak(blk, mu, a_g, av_g);
-    return {mu, a_g, av_g, p};
-}
-
-json classify_json(const ClassifyRun& run) {
-    const sliding::PeakInitiation& p = run.initiation;
-    const double mu = run.mu_s, a_g = run.a_h_g, av_g = run.av_g;
-    json j = to_json(p.governing());
-    j["mu_s"] = mu;
-    j["a_h_g"] = a_g;
-    j["av_g"] = av_g;
-    j["vertical"] = "peak applied downward (worst case)";
-    j["amplification_warning"] = rocking::amplification_warning(p.governing().mode, mu, p.governing().A);
-    j["edges"] = json{{"left", to_json(p.left)}, {"right", to_json(p.right)}};
     return j;
 }
 

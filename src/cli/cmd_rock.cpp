@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "api/classify.hpp"
 #include "cli/documents.hpp"
 #include "cli/options.hpp"
 #include "rocking/summary.hpp"
@@ -19,7 +20,7 @@ std::string opt_text(const std::optional<double>& v, const std::string& fmt_spec
 void print_text(const rocking::RockingChecks& r) {
     const auto& c = r.governing();
     std::cout << fmt::format("edge {}: alpha = {:.4g} rad, R = {:.4g} m, p = {:.4g} rad/s, r = {:.4g}\n",
-                             edge_name(c.edge), c.alpha_rad, c.R_m, c.p_radps, c.restitution);
+                             api::edge_name(c.edge), c.alpha_rad, c.R_m, c.p_radps, c.restitution);
     std::cout << fmt::format("uplift threshold: {:.4g} g\n", c.uplift_a_g);
     std::cout << fmt::format("Ishiyama velocity bound: {:.4g} m/s{}\n", c.ishiyama_v_mps,
                              r.pgv_below_ishiyama ? (*r.pgv_below_ishiyama ? " (PGV below: cannot overturn)"

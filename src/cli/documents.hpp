@@ -47,9 +47,6 @@ json target_document(const po::variables_map& vm, const std::vector<spectra::Spe
 
 // --- closed forms -----------------------------------------------------------------------------
 
-/// "left" or "right".
-const char* edge_name(block::Edge e);
-
 po::options_description slide_options();
 struct SlideRun {
     sliding::SlidingInput input;
@@ -57,14 +54,6 @@ struct SlideRun {
 };
 SlideRun slide_run(const po::variables_map& vm);
 json slide_json(const SlideRun& run);
-
-po::options_description classify_options();
-struct ClassifyRun {
-    double mu_s = 0.0, a_h_g = 0.0, av_g = 0.0;
-    sliding::PeakInitiation initiation;
-};
-ClassifyRun classify_run(const po::variables_map& vm);
-json classify_json(const ClassifyRun& run);
 
 po::options_description rock_options();
 struct RockRun {

@@ -12,6 +12,8 @@ namespace freestand::cli {
 inline const std::map<std::string, std::string>& flag_names() {
     static const std::map<std::string, std::string> names{
         {"mu_s", "--mu"},
+        {"a_h_g", "--a-g"},
+        {"av_g", "--av-g"},
         {"mu_k", "--mu-k"},
         {"restitution", "--restitution"},
         {"top_height_m", "--top"},

@@ -143,8 +143,8 @@ std::map<std::string, double> parse_key_values(const std::string& text, const st
     return out;
 }
 
-block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
-                                std::optional<double> inertia_cg_kgm2, const std::string& suffix) {
+sliding::BoxSpec box_from_options(const std::string& block, const std::optional<std::string>& cg,
+                                  std::optional<double> inertia_cg_kgm2, const std::string& suffix) {
     const std::string block_option = "--block" + suffix, cg_option = "--cg" + suffix;
     const auto box = parse_key_values(block, block_option, {"b", "h", "m"});
     std::map<std::string, double> cg_kv;
@@ -159,7 +159,12 @@ block::Block block_from_options(const std::string& block, const std::optional<st
         cg_kv["x"] = xy[0] - box.at("b");
         cg_kv["h"] = xy[1];
     }
-    return sliding::make_block(sliding::box_spec(box, cg_kv, inertia_cg_kgm2));
+    return sliding::box_spec(box, cg_kv, inertia_cg_kgm2);
+}
+
+block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
+                                std::optional<double> inertia_cg_kgm2, const std::string& suffix) {
+    return sliding::make_block(box_from_options(block, cg, inertia_cg_kgm2, suffix));
 }
 
 }  // namespace freestand::cli

@@ -202,19 +202,24 @@ def test_error_classes_carry_exit_codes():
             freestand.NumericalError.exit_code, freestand.IoError.exit_code) == (2, 3, 4, 5)
 
 
-def test_a_bad_value_is_the_command_s_input_error():
+def test_a_bad_value_is_an_input_error_naming_the_keyword():
+    # The command line names its option, Python its keyword; the message and the class agree.
     code, _, err = cli("classify", "--block", "b=0.15,h=0.6", "--mu", "-0.4", "--a-g", "0.3", "--json")
     with pytest.raises(freestand.InputError) as e:
         freestand.classify({"b": 0.15, "h": 0.6}, mu=-0.4, a_g=0.3)
     assert code == freestand.InputError.exit_code
-    assert str(e.value) in err
-    assert "--mu" in str(e.value)
+    assert str(e.value) == "mu: value -0.4 is out of range; expected [0, 2]"
+    assert "--mu: value -0.4 is out of range; expected [0, 2]" in err
+    assert isinstance(e.value, ValueError)
 
 
-def test_an_unknown_option_is_a_usage_error():
-    with pytest.raises(freestand.UsageError) as e:
+def test_an_unknown_keyword_is_python_s_type_error():
+    with pytest.raises(TypeError, match="unexpected keyword argument 'colour'"):
         freestand.classify({"b": 0.15, "h": 0.6}, mu=0.4, a_g=0.3, colour="red")
-    assert "--colour" in str(e.value)
+    with pytest.raises(TypeError, match=r"^block: unknown key 'q'; expected one of b, h, m"):
+        freestand.classify({"b": 0.15, "h": 0.6, "q": 1}, mu=0.4, a_g=0.3)
+    with pytest.raises(TypeError, match=r"^block: missing 'h'"):
+        freestand.classify({"b": 0.15}, mu=0.4, a_g=0.3)
 
 
 def test_a_missing_file_is_an_io_error(tmp_path):
