@@ -43,8 +43,8 @@ struct BatchList {
 const std::vector<std::string>& list_keys();
 
 /// Reads a list: a folder, a `.csv` or a `.toml` file (see above). Throws InputError with field
-/// `list` (the path as its file, no line) when the path is none of these, IoError when it cannot be read, InputError on any bad content or a
-/// list without components.
+/// `list` (the path as its file, no line) when the path is none of these, IoError when it
+/// cannot be read, InputError on any bad content or a list without components.
 BatchList read_batch_list(const std::filesystem::path& list);
 
 /// Reads list text; file_label names the file in messages and its folder resolves case paths.
