@@ -1,6 +1,6 @@
 // Speed of one case's assessment on the machine's cores and with the history and run caches
 // (docs/methods.md s.12): the shipped glove box (cases/glovebox-single.toml, every level, the
-// material search) assessed through report::run_case as `freestand assess` does it:
+// material search) assessed through api::assess_report as `freestand assess` does it:
 //  1. without the cache on 1 and 2 threads (the speed-up);
 //  2. with cold caches (every set generated, every run simulated, all stored) and warm ones
 //     (every set and run read), on every core;
@@ -18,11 +18,11 @@
 #include <functional>
 #include <string>
 
+#include "api/assess.hpp"
 #include "assess/case.hpp"
 #include "assess/histories.hpp"
 #include "core/content_store.hpp"
 #include "core/parallel.hpp"
-#include "report/run.hpp"
 #include "timing.hpp"
 
 using namespace freestand;
@@ -64,7 +64,11 @@ int main(int argc, char** argv) {
     const core::ContentStore cache(cache_dir);
     const core::ContentStore runs(cache_dir / "runs");
     const auto run = [&](assess::RunSettings s) {
-        return report::run_case(case_file, std::nullopt, "bench", s).rendered.json;
+        api::AssessRequest request;
+        request.case_file = case_file;
+        request.commit = "bench";
+        request.run = s;
+        return api::assess_report(request).rendered.json;
     };
     const std::string reference = run(assess::RunSettings(1));
     std::printf("%s: assess, least of %d runs, %d cores\n", case_file.string().c_str(), repeats,

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "api/batch.hpp"
 #include "batch/list.hpp"
 #include "batch/run.hpp"
 #include "timing.hpp"
@@ -23,6 +24,13 @@ using bench::Clock;
 using bench::seconds_since;
 using bench::source_dir;
 
+api::BatchRequest request(unsigned threads) {
+    api::BatchRequest r;
+    r.commit = "bench";
+    r.run = assess::RunSettings(static_cast<int>(threads));
+    return r;
+}
+
 struct Timed {
     batch::BatchRun run;
     std::vector<core::OutputFile> files;
@@ -32,7 +40,7 @@ struct Timed {
 Timed timed_batch(const batch::BatchList& list, unsigned threads) {
     const auto t0 = Clock::now();
     Timed t;
-    t.run = batch::run_batch(list, assess::RunSettings(static_cast<int>(threads)), "bench");
+    t.run = api::run_batch(list, request(threads));
     t.files = batch::batch_files(t.run);
     t.seconds = seconds_since(t0);
     return t;
@@ -43,7 +51,7 @@ void per_case(const batch::BatchList& list) {
     std::printf("   %-22s %8s  %s\n", "case", "1 thr s", "verdict");
     for (std::size_t i = 0; i < list.entries.size(); ++i) {
         const auto t0 = Clock::now();
-        const std::vector<batch::BatchRow> rows = batch::run_rows(list, {i}, assess::RunSettings(1), "bench");
+        const std::vector<batch::BatchRow> rows = api::run_rows(list, {i}, request(1));
         const report::SummaryRow& r = rows.at(0).row;
         std::printf("   %-22s %8.2f  %s\n", r.name.c_str(), seconds_since(t0),
                     r.outcome ? r.outcome->verdict_kind.c_str() : r.error.c_str());

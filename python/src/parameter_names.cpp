@@ -15,6 +15,8 @@ const std::map<std::string, std::string>& keyword_names() {
         {"cg x", "cg['x']"},
         {"cg h", "cg['h']"},
         {"inertia", "inertia"},
+        // api::AssessRequest's levels (assess::with_pga_levels)
+        {"pga_levels", "pga_g"},
     };
     return names;
 }

@@ -1,4 +1,4 @@
-// simulate, assess and fragility.
+// simulate and fragility.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -12,7 +12,6 @@
 #include "convert.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
-#include "report/case_assessment.hpp"
 #include "report/fragility_json.hpp"
 
 namespace freestand::python {
@@ -153,21 +152,6 @@ void bind_runs(py::module_& m) {
         },
         py::arg("args"), py::arg("accel_mps2"), py::arg("dt_s"), py::arg("scale"),
         py::arg("series"), py::arg("repeats"));
-    m.def(
-        "assess",
-        [](const std::string& case_file, const std::optional<std::vector<double>>& pga_g) {
-            std::string json;
-            {
-                py::gil_scoped_release unlocked;
-                const report::CaseAssessment a =
-                    report::assess_case_file(case_file, pga_g, cli::build_commit);
-                json = report::result_json_text(a.result, a.stamp,
-                                                a.fragility ? &*a.fragility : nullptr,
-                                                a.goal ? &*a.goal : nullptr);
-            }
-            return json_loads(json);
-        },
-        py::arg("case_file"), py::arg("pga_g"));
     m.def(
         "fragility",
         [](const std::string& case_file, const std::vector<std::string>& args) {

@@ -113,9 +113,10 @@ BatchList read_batch_list(const fs::path& list) {
     if (fs::is_directory(st)) return read_folder(list);
     const std::string ext = lower(list.extension().string());
     if (ext != ".csv" && ext != ".toml") {
-        throw UsageError(fmt::format("{}: a list is a folder of case files, a .csv or a .toml "
-                                     "file; got \"{}\"",
-                                     list.string(), list.extension().string()));
+        throw InputError(SourceLocation{list.string(), 0, "list"},
+                         fmt::format("a list is a folder of case files, a .csv or a .toml file; "
+                                     "got \"{}\"",
+                                     list.extension().string()));
     }
     const std::string text = core::read_input_file(list);
     BatchList out = ext == ".csv" ? parse_csv_list(text, list.string())

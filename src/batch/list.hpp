@@ -1,5 +1,5 @@
 #pragma once
-/// A facility's equipment list for `freestand batch` (README "Batch"): a folder of case files, or a
+/// A facility's equipment list for a batch (README "Batch"): a folder of case files, or a
 /// CSV or TOML list of case files with values replacing each case's own (assess/overrides.hpp).
 ///
 /// - A folder: every `*.toml` in it (not in sub-folders; hidden files skipped), sorted by file
@@ -42,9 +42,9 @@ struct BatchList {
 /// Columns of a CSV list and keys of a TOML list's [[case]] tables.
 const std::vector<std::string>& list_keys();
 
-/// Reads a list: a folder, a `.csv` or a `.toml` file (see above). Throws UsageError when the
-/// path is none of these, IoError when it cannot be read, InputError on any bad content or a
-/// list without components.
+/// Reads a list: a folder, a `.csv` or a `.toml` file (see above). Throws InputError with field
+/// `list` (the path as its file, no line) when the path is none of these, IoError when it
+/// cannot be read, InputError on any bad content or a list without components.
 BatchList read_batch_list(const std::filesystem::path& list);
 
 /// Reads list text; file_label names the file in messages and its folder resolves case paths.

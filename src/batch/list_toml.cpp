@@ -38,9 +38,8 @@ const toml::array& case_tables(const toml::table& root, const std::string& file)
         const bool case_file = key == "component" || key == "site" || key == "options";
         throw InputError(SourceLocation{file, line_of(node), key},
                          fmt::format("unknown key; a batch list holds [[case]] tables{}",
-                                     case_file ? " (this looks like a case file: assess it with "
-                                                 "`freestand assess`, or list it in a [[case]] "
-                                                 "table's file)"
+                                     case_file ? " (this looks like a case file: assess it on its "
+                                                 "own, or list it in a [[case]] table's file)"
                                                : ""));
     }
     const toml::node* cases = root.get("case");

@@ -2,17 +2,16 @@
 // (and report.pdf with --pdf).
 #include <fmt/format.h>
 
-#include <chrono>
 #include <iostream>
 
+#include "api/assess.hpp"
 #include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/run_options.hpp"
 #include "core/publish.hpp"
 #include "core/printable.hpp"
-#include "report/pdf.hpp"
-#include "report/run.hpp"
+#include "report/verdict_line.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::assess_command {
@@ -34,41 +33,33 @@ int run(const std::vector<std::string>& args) {
     const auto vm = parse_options("assess", usage, desc, args, {"case"});
     if (!vm) return 0;
     const RunContext run(*vm);
-    const std::filesystem::path case_file = (*vm)["case"].as<std::string>();
-    std::optional<std::vector<double>> pga;
-    if (vm->count("pga")) pga = parse_double_list((*vm)["pga"].as<std::string>(), "--pga");
+    api::AssessRequest request;
+    request.case_file = (*vm)["case"].as<std::string>();
+    if (vm->count("pga")) request.pga_g = parse_double_list((*vm)["pga"].as<std::string>(), "--pga");
+    request.pdf = (*vm)["pdf"].as<bool>();
+    request.commit = build_commit;
+    request.run = run.settings();
     const std::filesystem::path out = vm->count("out")
                                           ? std::filesystem::path((*vm)["out"].as<std::string>())
-                                          : std::filesystem::path("out") / case_file.stem();
-    // A missing converter stops the command before the assessment, not after it.
-    std::optional<std::filesystem::path> converter;
-    if ((*vm)["pdf"].as<bool>()) converter = report::find_pdf_converter();
-    const auto start = std::chrono::steady_clock::now();
-    const report::CaseRun r = report::run_case(case_file, pga, build_commit, run.settings());
-    const double assess_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                                          : std::filesystem::path("out") / request.case_file.stem();
+    const api::AssessReport r = api::assess_report(request);
     run.finish("assess");
-    std::vector<core::OutputFile> files = report::report_files(r.rendered);
-    double pdf_s = 0;
-    if (converter) {
-        const auto pdf_start = std::chrono::steady_clock::now();
-        files.push_back({"report.pdf", report::html_to_pdf(*converter, r.rendered.html)});
-        pdf_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - pdf_start).count();
-    }
-    core::publish_folder(out, files);
-    std::cout << report::verdict_line(r.result) << "\n";
+    core::publish_folder(out, r.files);
+    const api::AssessResult& a = r.assessed;
+    std::cout << report::verdict_line(a.result) << "\n";
     // Timing goes to stdout only, never into the reports (they must be byte-identical per input).
     std::string goal_samples;
-    if (r.goal) {
-        const fragility::Config& g = r.goal->meta.config;
+    if (a.goal) {
+        const fragility::Config& g = a.goal->meta.config;
         goal_samples = fmt::format(", performance goal {} samples",
                                    g.pga_g.size() * static_cast<std::size_t>(g.samples));
     }
     std::cout << fmt::format("wrote {} ({} histories generated, {} simulations{}) in {:.2f} s\n",
-                             core::printable_name(out.string()), r.result.histories_generated, r.result.simulations_run,
-                             goal_samples, assess_s);
-    if (converter) std::cout << fmt::format("report.pdf made by {} in {:.2f} s\n",
-                                            core::printable_name(converter->string()), pdf_s);
+                             core::printable_name(out.string()), a.result.histories_generated,
+                             a.result.simulations_run, goal_samples, r.assess_s);
+    if (r.pdf_converter)
+        std::cout << fmt::format("report.pdf made by {} in {:.2f} s\n",
+                                 core::printable_name(r.pdf_converter->string()), r.pdf_s);
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <optional>
 
+#include "api/batch.hpp"
 #include "batch/run.hpp"
 #include "batch/shard.hpp"
 #include "cli/batch_output.hpp"
@@ -40,12 +41,10 @@ const char* const usage =
     "byte for byte (give every shard the same LIST path and build)";
 
 // Shard k of n: its components' rows and report files as JSON lines for `freestand merge`.
-int run_shard(const batch::BatchList& list, std::array<int, 2> share, const RunContext& run,
-              const std::filesystem::path& out) {
-    const std::vector<std::size_t> mine =
-        batch::shard_indices(list.entries.size(), share[0], share[1]);
-    const std::vector<batch::BatchRow> rows =
-        batch::run_rows(list, mine, run.settings(), build_commit);
+int run_shard(const batch::BatchList& list, const api::BatchRequest& request,
+              const RunContext& run, const std::filesystem::path& out) {
+    const std::vector<std::size_t> mine = api::shard_entries(list, request);
+    const std::vector<batch::BatchRow> rows = api::run_rows(list, mine, request);
     run.finish("batch");
     std::vector<nlohmann::ordered_json> records;
     std::size_t failed = 0;
@@ -56,13 +55,23 @@ int run_shard(const batch::BatchList& list, std::array<int, 2> share, const RunC
             std::cout << batch::row_line(rows[i].row) << "\n";
         }
     }
-    const auto file = write_shard(out, "batch", share[0], share[1],
+    const auto [k, n] = *request.shard;
+    const auto file = write_shard(out, "batch", k, n,
                                   batch::shard_run_json(batch::batch_stamp(list, build_commit), list),
                                   records);
     std::cout << fmt::format("shard {} of {}: {} of {} components ({} failed) written to {}\n",
-                             share[0], share[1], rows.size(), list.entries.size(), failed,
-                             file.string());
+                             k, n, rows.size(), list.entries.size(), failed, file.string());
     return failed == 0 ? 0 : static_cast<int>(ExitCode::failure);
+}
+
+// The list, a path that is no list being a usage error of the LIST argument.
+batch::BatchList list_argument(const api::BatchRequest& request) {
+    try {
+        return api::read_list(request);
+    } catch (const InputError& e) {
+        if (e.where().field == "list") throw UsageError(e.where().file + ": " + e.message());
+        throw;
+    }
 }
 
 int run(const std::vector<std::string>& args) {
@@ -84,21 +93,24 @@ int run(const std::vector<std::string>& args) {
     if (!vm) return 0;
     const RunContext run(*vm);
     const bool json = (*vm)["json"].as<bool>();
-    std::optional<std::array<int, 2>> share;
-    if (vm->count("shard")) share = parse_shard((*vm)["shard"].as<std::string>(), "--shard");
-    if (share && json)
+    api::BatchRequest request;
+    request.list = (*vm)["list"].as<std::string>();
+    if (vm->count("shard")) request.shard = parse_shard((*vm)["shard"].as<std::string>(), "--shard");
+    if (request.shard && json)
         throw UsageError("--json prints the whole batch's summary; give it to `freestand merge`, "
                          "not to a --shard run");
+    request.commit = build_commit;
+    request.run = run.settings();
     const std::filesystem::path out = (*vm)["out"].as<std::string>();
-    const batch::BatchList list = batch::read_batch_list((*vm)["list"].as<std::string>());
-    if (share) return run_shard(list, *share, run, out);
+    const batch::BatchList list = list_argument(request);
+    if (request.shard) return run_shard(list, request, run, out);
     core::check_publish_target(out);
     const auto start = std::chrono::steady_clock::now();
-    const batch::BatchRun r = batch::run_batch(list, run.settings(), build_commit);
+    const batch::BatchRun r = api::run_batch(list, request);
     const double run_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     run.finish("batch");
-    const auto threads = static_cast<std::size_t>(core::thread_count(run.settings().threads));
+    const auto threads = static_cast<std::size_t>(core::thread_count(request.run.threads));
     // Timing goes to stdout only, never into the outputs (byte-identical per input).
     return write_batch_outputs(
         r, out, json,

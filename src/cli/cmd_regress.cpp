@@ -3,18 +3,15 @@
 
 #include <algorithm>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
+#include "api/regress.hpp"
 #include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/run_options.hpp"
 #include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "report/regress.hpp"
-#include "report/run.hpp"
+#include "report/render.hpp"
 #include "report/validation.hpp"
-#include "validate/validate.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::regress_command {
@@ -25,82 +22,36 @@ const char* const usage =
     "[REPORTS_DIR] [--cases DIR] [--update] [--rtol 1e-6] [--threads T] [--cache DIR | --no-cache]";
 constexpr std::size_t max_listed = 20;
 
-std::vector<fs::path> case_files(const fs::path& dir) {
-    if (!fs::is_directory(dir)) throw IoError(dir.string() + ": not a folder of case files");
-    std::vector<fs::path> out;
-    for (const auto& e : fs::directory_iterator(dir)) {
-        if (e.is_regular_file() && e.path().extension() == ".toml") out.push_back(e.path());
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-// A headline value (a JSON pointer into the document) as one line: a string as it is, anything
-// else as JSON.
-std::string headline_text(const nlohmann::ordered_json& doc, const char* headline) {
-    const nlohmann::ordered_json::json_pointer at(headline);
-    if (!doc.contains(at)) return "(none)";
-    const auto& h = doc.at(at);
-    return h.is_string() ? h.get<std::string>() : h.dump();
-}
-
-// Compares one fresh result.json with its golden; returns true when they match. headline is the
-// fresh document's one-line summary ("/verdict" of a case, "/summary/text" of the validation).
-bool check(const fs::path& golden_file, const std::string& fresh_json, const char* headline,
-           double rtol) {
-    const std::string name = golden_file.parent_path().filename().string();
-    if (!fs::exists(golden_file)) {
-        std::cout << fmt::format("MISSING {}: no golden {}\n", name, golden_file.string());
-        return false;
-    }
-    nlohmann::ordered_json golden;
-    try {
-        golden = nlohmann::ordered_json::parse(core::read_text_file(golden_file));
-    } catch (const nlohmann::json::parse_error& e) {
-        throw InputError(SourceLocation{golden_file.string(), 0, ""},
-                         std::string("not valid JSON: ") + e.what());
-    }
-    const auto fresh = nlohmann::ordered_json::parse(fresh_json);
-    const auto diffs = report::compare_results(golden, fresh, rtol);
-    const std::string fresh_headline = headline_text(fresh, headline);
-    if (diffs.empty()) {
-        std::cout << fmt::format("ok      {}: {}\n", name, fresh_headline);
-        return true;
-    }
-    std::cout << fmt::format("CHANGED {}: {} difference(s)\n", name, diffs.size());
-    const std::string golden_headline = headline_text(golden, headline);
-    if (golden_headline != fresh_headline) {
-        std::cout << fmt::format("  {}: {} -> {}\n", headline, golden_headline, fresh_headline);
-    }
-    for (std::size_t i = 0; i < std::min(diffs.size(), max_listed); ++i) {
-        std::cout << fmt::format("  {}: {} -> {}\n", diffs[i].path, diffs[i].golden,
-                                 diffs[i].fresh);
-    }
-    if (diffs.size() > max_listed)
-        std::cout << fmt::format("  ... and {} more\n", diffs.size() - max_listed);
-    return false;
-}
-
-const char* const validation_headline = "/summary/text";
-
-// The validation against the thesis (reports/validation/), when the cases folder holds the
-// shipped cases it assesses.
-bool regress_validation(const fs::path& reports, const fs::path& cases, bool update, double rtol) {
-    if (!validate::has_cases(cases)) {
+// One entry's lines, as it is done; an updated entry's folder published first.
+void show(const api::RegressEntry& e, const fs::path& cases) {
+    using Status = api::RegressEntry::Status;
+    switch (e.status) {
+    case Status::ok: std::cout << fmt::format("ok      {}: {}\n", e.name, e.fresh_headline); return;
+    case Status::missing:
+        std::cout << fmt::format("MISSING {}: no golden {}\n", e.name,
+                                 (e.dir / "result.json").string());
+        return;
+    case Status::skipped:
         std::cout << fmt::format("skipped validation: {} lacks the shipped glove-box cases\n",
                                  cases.string());
-        return true;
+        return;
+    case Status::updated:
+        if (e.report) report::write_report(e.dir, *e.report);
+        if (e.validation) report::write_validation(e.dir, *e.validation);
+        std::cout << fmt::format("updated {}: {}\n", e.dir.string(), e.fresh_headline);
+        return;
+    case Status::changed: break;
     }
-    const validate::Validation v = validate::run(cases);
-    const report::ValidationReport rendered =
-        report::render_validation(v, report::validation_stamp(v, build_commit));
-    const fs::path dir = reports / "validation";
-    if (!update) return check(dir / "result.json", rendered.json, validation_headline, rtol);
-    report::write_validation(dir, rendered);
-    std::cout << fmt::format(
-        "updated {}: {}\n", dir.string(),
-        headline_text(nlohmann::ordered_json::parse(rendered.json), validation_headline));
-    return true;
+    std::cout << fmt::format("CHANGED {}: {} difference(s)\n", e.name, e.differences.size());
+    if (e.golden_headline != e.fresh_headline)
+        std::cout << fmt::format("  {}: {} -> {}\n", e.headline, e.golden_headline,
+                                 e.fresh_headline);
+    for (std::size_t i = 0; i < std::min(e.differences.size(), max_listed); ++i) {
+        const api::Difference& d = e.differences[i];
+        std::cout << fmt::format("  {}: {} -> {}\n", d.path, d.golden, d.fresh);
+    }
+    if (e.differences.size() > max_listed)
+        std::cout << fmt::format("  ... and {} more\n", e.differences.size() - max_listed);
 }
 
 int run(const std::vector<std::string>& args) {
@@ -115,26 +66,24 @@ int run(const std::vector<std::string>& args) {
     const auto vm = parse_options("regress", usage, desc, args, {"reports"});
     if (!vm) return 0;
     const RunContext context(*vm);
-    const double rtol = parse_double((*vm)["rtol"].as<std::string>(), "--rtol");
-    if (rtol < 0.0) throw UsageError(fmt::format("--rtol: expected a number >= 0; got {}", rtol));
-    const fs::path reports = (*vm)["reports"].as<std::string>();
-    const bool update = (*vm)["update"].as<bool>();
-    bool all_ok = true;
-    for (const fs::path& case_file : case_files((*vm)["cases"].as<std::string>())) {
-        const report::CaseRun run =
-            report::run_case(case_file, std::nullopt, build_commit, context.settings());
-        const fs::path dir = reports / case_file.stem();
-        if (update) {
-            report::write_report(dir, run.rendered);
-            std::cout << fmt::format("updated {}: {}\n", dir.string(),
-                                     report::verdict_line(run.result));
-        } else {
-            all_ok = check(dir / "result.json", run.rendered.json, "/verdict", rtol) && all_ok;
-        }
+    api::RegressRequest request;
+    request.rtol = parse_double((*vm)["rtol"].as<std::string>(), "--rtol");
+    request.reports_dir = (*vm)["reports"].as<std::string>();
+    request.cases_dir = (*vm)["cases"].as<std::string>();
+    request.update = (*vm)["update"].as<bool>();
+    request.commit = build_commit;
+    request.run = context.settings();
+    request.on_entry = [&](const api::RegressEntry& e) { show(e, request.cases_dir); };
+    api::RegressResult result;
+    try {
+        result = api::regress(request);
+    } catch (const InputError& e) {
+        // The tolerance is the one request field given as a flag whose range the api checks.
+        if (e.where().field == "rtol") throw UsageError("--rtol: " + e.message());
+        throw;
     }
-    all_ok = regress_validation(reports, (*vm)["cases"].as<std::string>(), update, rtol) && all_ok;
     context.finish("regress");
-    return all_ok ? 0 : static_cast<int>(ExitCode::failure);
+    return result.all_ok() ? 0 : static_cast<int>(ExitCode::failure);
 }
 
 const CommandRegistrar reg{{"regress",

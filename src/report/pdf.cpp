@@ -291,7 +291,7 @@ std::filesystem::path find_pdf_converter() {
             return candidate;
     }
     throw IoError(fmt::format(
-        "--pdf needs the program {} (Debian package weasyprint), which is not on PATH ({}); "
+        "report.pdf needs the program {} (Debian package weasyprint), which is not on PATH ({}); "
         "scripts/setup.sh installs it",
         pdf_converter_program, core::printable(path)));
 }

@@ -1,6 +1,6 @@
 #include "report/render.hpp"
 
-#include "report/case_assessment.hpp"
+#include "report/result_document.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

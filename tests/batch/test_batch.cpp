@@ -11,7 +11,6 @@
 #include "batch/run.hpp"
 #include "core/csv_table.hpp"
 #include "core/errors.hpp"
-#include "report/run.hpp"
 #include "report/summary.hpp"
 #include "support/run_cli.hpp"
 
@@ -34,27 +33,6 @@ std::map<std::string, std::string> folder_files(const fs::path& dir) {
 }
 
 std::string quoted(const fs::path& p) { return fmt::format("'{}'", p.string()); }
-
-const report::SummaryRow& row_named(const BatchRun& run, const std::string& name) {
-    for (const report::SummaryRow& r : run.summary.rows)
-        if (r.name == name) return r;
-    FAIL("no row " << name);
-    throw std::logic_error("unreachable");
-}
-
-// The result.json of row i's report folder.
-std::string result_json(const BatchRun& run, std::size_t i) {
-    for (const core::OutputFile& f : run.reports.at(i))
-        if (f.name == "result.json") return f.contents;
-    FAIL("row " << i << " has no result.json");
-    return "";
-}
-
-nlohmann::json without_stamp(const std::string& json_text) {
-    nlohmann::json j = nlohmann::json::parse(json_text);
-    j.erase("stamp");
-    return j;
-}
 
 }  // namespace
 
@@ -81,69 +59,6 @@ TEST_CASE("a component's folder is the bytes `assess --out` writes, overridden o
         CHECK(batch_files.size() >= 6);  // report.md, report.html, result.json, figures, marker
         CHECK(batch_files == alone_files);
     }
-    fs::remove_all(dir);
-}
-
-TEST_CASE("an overridden case is assessed as the case file carrying the values",
-          "[batch][overrides]") {
-    const fs::path dir = test::batch_dir("overrides");
-    test::write_text(dir / "cases" / "rest.toml", test::resting_case("Rest"));
-    test::write_text(dir / "cases" / "slide.toml", test::sliding_case("Slider"));
-    test::write_text(dir / "list.toml", R"([[case]]
-file = "cases/rest.toml"
-name = "rest-hdpe"
-base_material = "HDPE"
-pga_g = [0.04, 0.06]
-
-[[case]]
-file = "cases/slide.toml"
-seed = 9
-histories_per_level = 2
-)");
-    // The same cases with the values written in by hand.
-    std::string rest = test::resting_case("Rest");
-    rest.replace(rest.find("base_material = \"steel\""), 23, "base_material = \"HDPE\"");
-    rest.replace(rest.find("pga_g = [0.05]"), 14, "pga_g = [0.04, 0.06]");
-    test::write_text(dir / "edited" / "rest.toml", rest);
-    std::string slide = test::sliding_case("Slider");
-    slide.replace(slide.find("histories_per_level = 1\nseed = 3"), 32,
-                  "histories_per_level = 2\nseed = 9");
-    test::write_text(dir / "edited" / "slide.toml", slide);
-
-    const BatchRun run = run_batch(read_batch_list(dir / "list.toml"), assess::RunSettings(2), "test");
-    REQUIRE(run.all_assessed());
-    const report::CaseRun rest_file =
-        report::run_case(dir / "edited" / "rest.toml", std::nullopt, "test");
-    const report::CaseRun slide_file =
-        report::run_case(dir / "edited" / "slide.toml", std::nullopt, "test");
-    CHECK(without_stamp(result_json(run, 0)) == without_stamp(rest_file.rendered.json));
-    CHECK(without_stamp(result_json(run, 1)) == without_stamp(slide_file.rendered.json));
-    CHECK(nlohmann::json::parse(result_json(run, 1))["stamp"]["seed"] == 9);
-    CHECK(slide_file.result.histories_generated > 0);  // the seed and count were used
-    CHECK(row_named(run, "rest-hdpe").overrides ==
-          "pga_g = [0.04, 0.06]; base_material = \"HDPE\"");
-    CHECK(row_named(run, "slide").overrides == "seed = 9; histories_per_level = 2");
-    fs::remove_all(dir);
-}
-
-TEST_CASE("the thread count does not change a byte", "[batch][threads][determinism]") {
-    const fs::path dir = test::batch_dir("threads");
-    test::write_text(dir / "cases" / "rest.toml", test::resting_case("Rest"));
-    test::write_text(dir / "cases" / "slide.toml", test::sliding_case("Slider"));
-    test::write_text(dir / "list.csv",
-                     "file,name,pga_g,seed\ncases/slide.toml,s1,,\ncases/rest.toml,r1,,\n"
-                     "cases/missing.toml,gone,,\ncases/rest.toml,r2,0.06,\n"
-                     "cases/slide.toml,s2,,4\ncases/rest.toml,r3,,\n");
-    const BatchList list = read_batch_list(dir / "list.csv");
-    const std::vector<core::OutputFile> one = batch_files(run_batch(list, assess::RunSettings(1), "test"));
-    const std::vector<core::OutputFile> three = batch_files(run_batch(list, assess::RunSettings(3), "test"));
-    REQUIRE(one.size() == three.size());
-    for (std::size_t i = 0; i < one.size(); ++i) {
-        INFO(one[i].name);
-        CHECK(one[i].name == three[i].name);
-        CHECK(one[i].contents == three[i].contents);
-    }
-    CHECK(one.size() > 20);  // four summary files and five report folders
     fs::remove_all(dir);
 }
 

@@ -215,8 +215,8 @@ TEST_CASE("a TOML list's errors name list:line and the key", "[batch][list][toml
           "plant/list.toml:1); names must differ, ignoring case: each names a report folder");
     CHECK(toml_error("[component]\nname = \"x\"\n") ==
           "plant/list.toml:1: component: unknown key; a batch list holds [[case]] tables (this "
-          "looks like a case file: assess it with `freestand assess`, or list it in a [[case]] "
-          "table's file)");
+          "looks like a case file: assess it on its own, or list it in a [[case]] table's "
+          "file)");
     CHECK(toml_error("title = \"x\"\n") ==
           "plant/list.toml:1: title: unknown key; a batch list holds [[case]] tables");
     CHECK(toml_error("") ==
@@ -230,10 +230,10 @@ TEST_CASE("a TOML list's errors name list:line and the key", "[batch][list][toml
 TEST_CASE("a list path that is no list", "[batch][list]") {
     const fs::path dir = test::batch_dir("paths");
     test::write_text(dir / "list.txt", "file\na.toml\n");
-    CHECK_THROWS_AS(read_batch_list(dir / "list.txt"), UsageError);
+    CHECK_THROWS_AS(read_batch_list(dir / "list.txt"), InputError);
     CHECK_THROWS_WITH(read_batch_list(dir / "list.txt"),
                       (dir / "list.txt").string() +
-                          ": a list is a folder of case files, a .csv or a .toml file; got "
+                          ": list: a list is a folder of case files, a .csv or a .toml file; got "
                           "\".txt\"");
     CHECK_THROWS_AS(read_batch_list(dir / "none.csv"), IoError);
     CHECK_THROWS_WITH(read_batch_list(dir / "none.csv"),

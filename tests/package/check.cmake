@@ -19,7 +19,7 @@ run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix}
 
 set(include_dir ${prefix}/${INCLUDEDIR}/freestand)
 set(package_dir ${prefix}/${LIBDIR}/cmake/freestand)
-foreach(required IN ITEMS ${include_dir}/core/record.hpp ${include_dir}/report/run.hpp
+foreach(required IN ITEMS ${include_dir}/core/record.hpp ${include_dir}/api/assess.hpp
                           ${package_dir}/freestandConfig.cmake
                           ${package_dir}/freestandConfigVersion.cmake ${prefix}/${BINDIR}/freestand)
   if(NOT EXISTS ${required})

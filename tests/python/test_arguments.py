@@ -97,5 +97,5 @@ def test_fragility_takes_its_level_range_as_text():
 def test_a_level_near_zero_is_an_input_error():
     # The library's InputError, not an IndexError from an exception of the C++ runtime.
     with pytest.raises(freestand.InputError,
-                       match=r"--pga: value 1e-310 is out of range; expected \[0.001, 3\]"):
+                       match=r"^pga_g: value 1e-310 is out of range; expected \[0.001, 3\]"):
         freestand.assess(CASE, pga_g=[1e-310, 0.1])

@@ -184,6 +184,22 @@ def test_assess_equals_result_json(tmp_path):
     assert json.dumps(got) == json.dumps(expected)
 
 
+def test_assess_of_a_box_at_rest_is_acceptable_at_the_levels_given(tmp_path):
+    # A squat steel box (b/h = 0.75) at 0.02 and 0.04 g: below steel's friction and far below
+    # its tipping ratio, neither slide nor rock starts (docs/methods.md s.2), so the closed forms
+    # decide without a history.
+    case = tmp_path / "rest.toml"
+    case.write_text('[component]\nname = "Rest"\nmass_kg = 500.0\nwidth_m = 1.2\ndepth_m = 1.0\n'
+                    'height_m = 0.8\nbase_material = "steel"\nallowable_slide_m = 0.050\n\n'
+                    '[site]\npga_g = [0.05]\n')
+    got = freestand.assess(case, pga_g=np.array([0.02, 0.04]))
+    assert got["verdict"] == "free-standing acceptable"
+    assert sorted({level["pga_g"] for level in got["levels"]}) == [0.02, 0.04]
+    assert got["histories_generated"] == 0
+    assert got["stamp"]["case_file"] == str(case)
+    assert isinstance(got["levels"], list) and isinstance(got["histories_generated"], int)
+
+
 def test_fragility_equals_fragility_json():
     case = ROOT / "cases" / "block-ts1.toml"
     args = ["--pga", "0.2,0.6", "--samples", "3", "--seed", "5"]

@@ -1,8 +1,8 @@
 """The JSON Schemas in docs/schema/ against what freestand writes.
 
-Validates every shipped golden reports/<case>/result.json against result.schema.json, a
-fragility.json the built CLI writes (FREESTAND_EXE) against fragility.schema.json, and checks
-that broken documents fail. Runs under Debian's python3-pytest and python3-jsonschema (4.10) as
+Validates the result.json the built CLI (FREESTAND_EXE) writes for shipped cases of every kind
+against result.schema.json, a fragility.json it writes against fragility.schema.json, and
+checks that broken documents fail. Runs under Debian's python3-pytest and python3-jsonschema (4.10) as
 well as newer jsonschema (4.18+, which resolves references through `referencing`).
 """
 import copy
@@ -16,9 +16,11 @@ import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCHEMA_DIR = ROOT / "docs" / "schema"
-# reports/validation/result.json is the thesis validation (`freestand validate`), not an
-# assessment: it has no schema of its own.
-GOLDEN_RESULTS = sorted(p for p in (ROOT / "reports").glob("*/result.json") if p.parent.name != "validation")
+# Shipped cases at one level each, which between them write every kind of result.json: one
+# component, with a fragility section (block-ts3), with a performance goal (steel pads), and two
+# units joined by a tunnel (simulated at 0.1 g).
+FRESH_CASES = {"block-ts1": "0.3", "block-ts3": "0.3", "glovebox-steel-pads": "0.3",
+               "glovebox-pair-unbraced": "0.1"}
 
 
 def load(path):
@@ -51,14 +53,37 @@ def test_schema_is_a_valid_draft_2020_12_schema(name):
     jsonschema.Draft202012Validator.check_schema(SCHEMAS[name])
 
 
-def test_there_are_goldens_of_both_kinds():
-    kinds = {"pair" in load(p) for p in GOLDEN_RESULTS}
-    assert kinds == {False, True}, "expected one-component and two-unit goldens in reports/"
+def freestand_exe():
+    exe = os.environ.get("FREESTAND_EXE")
+    if not exe:
+        pytest.fail("FREESTAND_EXE is not set: run through ctest, or set it to the built freestand")
+    return exe
 
 
-@pytest.mark.parametrize("path", GOLDEN_RESULTS, ids=lambda p: p.parent.name)
-def test_golden_result_json_follows_the_schema(path):
-    assert errors("result", load(path)) == []
+@pytest.fixture(scope="module")
+def fresh_results(tmp_path_factory):
+    """result.json of each of FRESH_CASES, written by this run of the built CLI."""
+    out = tmp_path_factory.mktemp("assess")
+    documents = {}
+    for name, pga in FRESH_CASES.items():
+        run = subprocess.run([freestand_exe(), "assess", str(ROOT / "cases" / f"{name}.toml"),
+                              "--pga", pga, "--threads", "2", "--out", str(out / name)],
+                             capture_output=True, text=True, check=False)
+        assert run.returncode == 0, run.stderr
+        documents[name] = load(out / name / "result.json")
+    return documents
+
+
+def test_fresh_results_are_of_every_kind(fresh_results):
+    docs = fresh_results.values()
+    assert {"pair" in d for d in docs} == {False, True}, "expected one-component and two-unit results"
+    assert any("fragility" in d for d in docs), "expected a result with a fragility section"
+    assert any("performance_goal" in d for d in docs), "expected a result with a performance goal"
+
+
+@pytest.mark.parametrize("name", sorted(FRESH_CASES))
+def test_fresh_result_json_follows_the_schema(fresh_results, name):
+    assert errors("result", fresh_results[name]) == []
 
 
 @pytest.fixture(scope="module")
@@ -66,9 +91,7 @@ def fragility_json(tmp_path_factory):
     """fragility.json of a small run of the built CLI on a shipped case (about 0.1 s): the El
     Centro pair of tests/data at 7 levels x 10 samples, where overturning has a fitted curve and
     sliding has none (no failure), so both forms of a fit are checked."""
-    exe = os.environ.get("FREESTAND_EXE")
-    if not exe:
-        pytest.fail("FREESTAND_EXE is not set: run through ctest, or set it to the built freestand")
+    exe = freestand_exe()
     out = tmp_path_factory.mktemp("fragility")
     records = [str(ROOT / "tests" / "data" / f"RSN175_IMPVALL.H_H-E{n}.AT2") for n in ("12140", "12230")]
     run = subprocess.run([exe, "fragility", str(ROOT / "cases" / "block-ts1.toml"), "--pga", "0.25:0.55:0.05",
@@ -84,34 +107,27 @@ def test_fragility_json_follows_the_schema(fragility_json):
     assert errors("fragility", fragility_json) == []
 
 
-def test_a_golden_result_carries_a_fragility_section():
-    with_fragility = [p for p in GOLDEN_RESULTS if "fragility" in load(p)]
-    assert with_fragility, "expected a golden result.json with a fragility section"
+# A change that breaks a document, applied to one component's result (steel pads) or a pair's.
+BROKEN_RESULTS = {
+    "missing stamp": ("glovebox-steel-pads", lambda d: d.pop("stamp")),
+    "unknown top-level key": ("glovebox-steel-pads", lambda d: d.update(extra=1)),
+    "unknown key in a level": ("glovebox-steel-pads", lambda d: d["levels"][0].update(slide_mm=3.0)),
+    "string where a number belongs": ("glovebox-steel-pads",
+                                      lambda d: d["levels"][0].update(pga_g="0.3")),
+    "unknown verdict kind": ("glovebox-steel-pads", lambda d: d["overall"].update(kind="fine")),
+    "bad commit": ("glovebox-steel-pads", lambda d: d["stamp"].update(commit="HEAD")),
+    "a unit missing from a pair": ("glovebox-pair-unbraced", lambda d: d["units"].pop()),
+    "a pair unit with a stamp": ("glovebox-pair-unbraced",
+                                 lambda d: d["units"][0].update(stamp=d["stamp"])),
+}
 
 
-def broken_results():
-    one = load(ROOT / "reports" / "glovebox-single" / "result.json")
-    pair = load(ROOT / "reports" / "glovebox-pair-unbraced" / "result.json")
-    cases = {}
-
-    def case(label, doc, change):
-        doc = copy.deepcopy(doc)
-        change(doc)
-        cases[label] = doc
-
-    case("missing stamp", one, lambda d: d.pop("stamp"))
-    case("unknown top-level key", one, lambda d: d.update(extra=1))
-    case("unknown key in a level", one, lambda d: d["levels"][0].update(slide_mm=3.0))
-    case("string where a number belongs", one, lambda d: d["levels"][0].update(pga_g="0.3"))
-    case("unknown verdict kind", one, lambda d: d["overall"].update(kind="fine"))
-    case("bad commit", one, lambda d: d["stamp"].update(commit="HEAD"))
-    case("a unit missing from a pair", pair, lambda d: d["units"].pop())
-    case("a pair unit with a stamp", pair, lambda d: d["units"][0].update(stamp=d["stamp"]))
-    return cases
-
-
-@pytest.mark.parametrize("label,document", sorted(broken_results().items()))
-def test_a_broken_result_fails(label, document):
+@pytest.mark.parametrize("label", sorted(BROKEN_RESULTS))
+def test_a_broken_result_fails(fresh_results, label):
+    name, change = BROKEN_RESULTS[label]
+    document = copy.deepcopy(fresh_results[name])
+    assert errors("result", document) == [], f"{label}: the unbroken document must pass"
+    change(document)
     assert errors("result", document), f"{label}: expected a schema error"
 
 

@@ -9,7 +9,7 @@
 #include "assess/joined.hpp"
 #include "assess/pipeline.hpp"
 #include "report/render.hpp"
-#include "report/run.hpp"
+#include "report/verdict_line.hpp"
 #include "core/errors.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
@@ -56,26 +56,5 @@ TEST_CASE("joined report: a failing tunnel heads the report with its remedy", "[
     CHECK(report::verdict_line(r).find("A + B: tunnel fails") == 0);
 }
 
-TEST_CASE("joined report: a batch row and a fragility section are refused for two units",
-          "[report][joined][errors]") {
-    const std::string pair = unit("A", "0.1") + unit("B", "0.3") +
-                             "[tunnel]\nheight_m = 1.0\nallowable_relative_m = 0.001\n[site]\n"
-                             "pga_g = [0.3]\n";
-    CHECK_THROWS_MATCHES(
-        report::run_case(pair, "pair.toml", assess::CaseOverrides{}, "x", assess::RunSettings(1)), InputError,
-        Catch::Matchers::Message("pair.toml: unit: a batch runs one-component cases; assess two "
-                                 "[[unit]] tables with `freestand assess`"));
-    const auto file = std::filesystem::temp_directory_path() / "freestand_joined_fragility.toml";
-    {
-        std::ofstream out(file);
-        out << pair << "[options]\nfragility = true\n";
-    }
-    CHECK_THROWS_MATCHES(report::run_case(file, std::nullopt, "x"), InputError,
-                         Catch::Matchers::Message(
-                             file.string() +
-                             ": options.fragility: not available for two [[unit]] tables (the "
-                             "fragility analysis takes one component)"));
-    std::filesystem::remove(file);
-}
 
 }  // namespace freestand_test_report_test_joined_report

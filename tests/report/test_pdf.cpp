@@ -236,7 +236,7 @@ TEST_CASE("assess --pdf without weasyprint stops before the assessment, exit 5",
     const auto r = run_cli("assess cases/glovebox-steel-pads.toml --pdf --out '" + out.string() + "'",
                            "PATH=/nonexistent ");
     CHECK(r.exit_code == 5);
-    CHECK_THAT(r.err, Catch::StartsWith("freestand assess: error: --pdf needs the program weasyprint"));
+    CHECK_THAT(r.err, Catch::StartsWith("freestand assess: error: report.pdf needs the program weasyprint"));
     CHECK_THAT(r.err, Catch::Contains("scripts/setup.sh"));
     // Before the assessment: nothing printed, no folder.
     CHECK(r.out.empty());
@@ -255,7 +255,7 @@ TEST_CASE("fragility --pdf writes report.pdf, and with --shard is a usage error"
                                           "does not write"));
     const auto missing = run_cli(base, "PATH=/nonexistent ");
     CHECK(missing.exit_code == 5);
-    CHECK_THAT(missing.err, Catch::Contains("--pdf needs the program weasyprint"));
+    CHECK_THAT(missing.err, Catch::Contains("report.pdf needs the program weasyprint"));
     CHECK_FALSE(fs::exists(out));
 
     const auto r = run_cli(base);

@@ -14,9 +14,8 @@
 #include "report/json.hpp"
 #include "report/plots.hpp"
 #include "report/references.hpp"
-#include "report/regress.hpp"
 #include "report/render.hpp"
-#include "report/run.hpp"
+#include "report/verdict_line.hpp"
 #include "core/sha256.hpp"
 #include "report/svg.hpp"
 #include "support/run_cli.hpp"
@@ -482,27 +481,6 @@ TEST_CASE("an SVG plot escapes its text and skips non-positive values on log axe
     // Two finite positive points survive on the line.
     const std::regex polyline("<polyline points=\"([0-9.]+,[0-9.]+) ([0-9.]+,[0-9.]+)\"");
     CHECK(std::regex_search(svg, polyline));
-}
-
-TEST_CASE("regress comparison: tolerance, verdict change, stamp ignored", "[report][regress]") {
-    auto golden = nlohmann::ordered_json::parse(
-        R"({"verdict": "anchor", "levels": [{"x": 1.0}], "stamp": {"commit": "a"}})");
-    auto fresh = golden;
-    fresh["stamp"]["commit"] = "b";
-    fresh["levels"][0]["x"] = 1.0 + 5e-7;
-    CHECK(compare_results(golden, fresh, 1e-6).empty());
-    fresh["levels"][0]["x"] = 1.0 + 2e-6;
-    auto d = compare_results(golden, fresh, 1e-6);
-    REQUIRE(d.size() == 1);
-    CHECK(d[0].path == "/levels/0/x");
-    fresh = golden;
-    fresh["verdict"] = "free-standing acceptable";
-    d = compare_results(golden, fresh, 1e-6);
-    REQUIRE(d.size() == 1);
-    CHECK(d[0].path == "/verdict");
-    fresh = golden;
-    fresh["levels"].push_back(nlohmann::ordered_json::object());
-    CHECK(compare_results(golden, fresh, 1e-6).at(0).path == "/levels/length");
 }
 
 TEST_CASE("a failed write leaves no half file behind", "[report][atomic]") {

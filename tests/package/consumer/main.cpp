@@ -9,7 +9,8 @@
 
 #include <freestand/core/record.hpp>
 #include <freestand/core/units.hpp>
-#include <freestand/report/run.hpp>
+#include <freestand/api/assess.hpp>
+#include <freestand/report/verdict_line.hpp>
 #include <freestand/spectra/response.hpp>
 
 namespace fs = freestand;
@@ -33,8 +34,11 @@ int main(int argc, char** argv) {
         std::printf("psa_100hz_g %.3f\n", rs.psa_g[0][0]);
 
         // The whole pipeline: read, assess and render a case (templates compiled into the library).
-        const fs::report::CaseRun run = fs::report::run_case(argv[1], std::nullopt, "consumer");
-        std::printf("%s\n", fs::report::verdict_line(run.result).c_str());
+        fs::api::AssessRequest request;
+        request.case_file = argv[1];
+        request.commit = "consumer";
+        const fs::api::AssessReport run = fs::api::assess_report(request);
+        std::printf("%s\n", fs::report::verdict_line(run.assessed.result).c_str());
         std::printf("report_html_bytes %zu\n", run.rendered.html.size());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "consumer: %s\n", e.what());

@@ -4,26 +4,28 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "report/case_assessment.hpp"
+#include "api/assess.hpp"
 #include "report/render.hpp"
 #include "support/goal_cases.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
-namespace freestand_test_report_test_goal_report {
+namespace freestand_test_api_test_goal_report {
 
 using namespace freestand;
 
 namespace {
 
-report::CaseAssessment assessed(const char* toml, const char* file, int threads) {
-    assess::RunSettings run(threads);
-    run.cache = test::test_cache();
-    return report::assess_case(assess::parse_case(toml, file), toml, file, "abc", run);
+api::AssessResult assessed(const char* toml, const char* file, int threads) {
+    api::AssessRequest request;
+    request.case_file = file;
+    request.case_bytes = toml;
+    request.commit = "abc";
+    request.run = assess::RunSettings(threads);
+    request.run.cache = test::test_cache();
+    return api::assess(request);
 }
 
-std::string json_text(const report::CaseAssessment& a) {
-    return report::result_json_text(a.result, a.stamp, nullptr, a.goal ? &*a.goal : nullptr);
-}
+std::string json_text(const api::AssessResult& a) { return api::to_json(a).dump(2) + "\n"; }
 
 void check_consistent(const nlohmann::json& g) {
     for (const char* key :
@@ -96,7 +98,7 @@ TEST_CASE("result.json: a met goal leaves the headline, and no DBE writes no goa
     CHECK(j.at("overall").at("kind") == "acceptable");
     std::string no_dbe = test::squat_goal_toml;
     no_dbe.erase(no_dbe.find("dbe_pga_g = 0.05\n"), 17);
-    const report::CaseAssessment none = assessed(no_dbe.c_str(), "squat.toml", 2);
+    const api::AssessResult none = assessed(no_dbe.c_str(), "squat.toml", 2);
     CHECK_FALSE(none.goal.has_value());
     CHECK_FALSE(nlohmann::json::parse(json_text(none)).contains("performance_goal"));
 }
@@ -108,7 +110,7 @@ TEST_CASE("the goal's outputs are the same bytes at 1 and 2 threads", "[report][
 }
 
 TEST_CASE("the reports carry the goal's section and a goal headline", "[report][goal]") {
-    const report::CaseAssessment a = assessed(test::slender_goal_toml, "slender.toml", 2);
+    const api::AssessResult a = assessed(test::slender_goal_toml, "slender.toml", 2);
     const report::Rendered r = report::render(a.result, a.stamp, nullptr, &*a.goal);
     CHECK_THAT(r.markdown, Catch::Contains("## Performance goal (ASCE 43-05 s.1.3)") &&
                                Catch::Contains("**Not met: P(") &&
@@ -118,4 +120,4 @@ TEST_CASE("the reports carry the goal's section and a goal headline", "[report][
     CHECK_THAT(plain.markdown, !Catch::Contains("Performance goal (ASCE"));
 }
 
-}  // namespace freestand_test_report_test_goal_report
+}  // namespace freestand_test_api_test_goal_report
