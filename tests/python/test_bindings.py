@@ -180,6 +180,29 @@ def test_slide_follows_the_asce_4_and_energy_formulas():
     assert s["slide_energy_m"] == pytest.approx(0.056, abs=0.0005)
 
 
+def power_law_spectrum(path, damping):
+    """PSA = 0.1 f (g, f in Hz) up to 4 Hz, 0.4 g above, at the damping, in the spectrum file
+    format (docs/methods.md s.8): linear on log-log axes, so a crossing of a level L below 0.4 g
+    is read exactly at f = 10 L."""
+    rows = "".join(f"{f},{0.1 * min(f, 4.0)}\n" for f in (0.25, 1.0, 4.0, 16.0, 64.0))
+    path.write_text(f"# damping: {damping}\nfrequency_hz,psa_g\n{rows}")
+    return path
+
+
+def test_slide_finds_f_es_on_spectrum_files(tmp_path):
+    # f_es is where SA_VH = C_s = 2 mu_e g (docs/methods.md s.4): on PSA = 0.1 f, f = 20 mu_e;
+    # two equal components give SA_VH = sqrt(1.16) PSA, so f = 20 mu_e / sqrt(1.16).
+    h1 = power_law_spectrum(tmp_path / "h1.csv", 0.1)
+    one = freestand.slide(0.15, spectrum10=h1)
+    assert one["f_es_hz"] == pytest.approx(20 * 0.15, rel=1e-9)
+    assert one["slide_asce_m"] == pytest.approx(2 * 0.15 * G_MPS2 / (2 * math.pi * 3.0) ** 2,
+                                                rel=1e-9)
+    two = freestand.slide(0.15, spectrum10=[h1, str(h1)])
+    assert two["f_es_hz"] == pytest.approx(20 * 0.15 / math.sqrt(1.16), rel=1e-9)
+    with pytest.raises(freestand.InputError, match="damping"):
+        freestand.slide(0.15, spectrum10=power_law_spectrum(tmp_path / "h5.csv", 0.05))
+
+
 def test_slide_classify_and_rock_equal_their_commands():
     # The front-ends agree: the same request from the command line and from Python.
     expected = cli_json("slide", "--mu", "0.15", "--pga-g", "0.3", "--pgd-m", "0.1", "--fes-hz", "1.5",
@@ -190,6 +213,18 @@ def test_slide_classify_and_rock_equal_their_commands():
     expected = cli_json("rock", "--block", "b=0.3,h=0.9,m=500", "--pga-g", "0.4", "--pgv-mps", "0.3",
                         "--mu", "0.5", "--json")
     same(freestand.rock({"b": 0.3, "h": 0.9, "m": 500}, pga_g=0.4, pgv_mps=0.3, mu=0.5), expected)
+
+
+def test_rock_on_spectrum_files_equals_its_command(tmp_path):
+    files = [power_law_spectrum(tmp_path / f"h{d}.csv", d) for d in (0.02, 0.05)]
+    expected = cli_json("rock", "--block", "b=0.15,h=0.6,m=38", "--spectrum",
+                        ",".join(map(str, files)), "--v-ratio", "0.5", "--fn-hz", "8",
+                        "--rock-band-hz", "0.5,5", "--json")
+    got = freestand.rock({"b": 0.15, "h": 0.6, "m": 38}, spectrum=files, v_ratio=0.5, fn_hz=8,
+                         rock_band_hz=(0.5, 5))
+    same(got, expected)
+    # The files were read: the spectral checks and the flexible-body screen ran.
+    assert got["housner_sv_mps"] is not None and got["flexible"] is not None
 
 
 # --- simulate -----------------------------------------------------------------------------------
