@@ -2,10 +2,10 @@
 """What calling `simulate` from Python costs against the C++ call (the aim: < 2x on a 20 s record).
 
 For each row, the same block, friction and the first 20 s of El Centro (RSN 175, 140) scaled to
-a PGA: the least thread CPU time of `freestand.simulate` over the repeats (options to arguments,
-option checks, the samples copied in, the summary as a dict and, with series, the arrays out),
-against the least of the bare C++ calls (excitation and run) that `_simulate_cpu_s` times inside
-the module. Run with the module on PYTHONPATH:
+a PGA: the least thread CPU time of `freestand.simulate` over the repeats (the arguments'
+type checks, the samples copied in, the summary as a dict and, with series, the arrays out),
+against the least of the bare C++ calls (api::simulate of the request: model, excitation and
+run) that `_simulate_cpu_s` times inside the module. Run with the module on PYTHONPATH:
 
     PYTHONPATH=build/default/python python3 bench/python_simulate.py [REPEATS]
 """
@@ -50,8 +50,8 @@ def main():
     for label, block, mu, pga_g in ROWS:
         scale = pga_g * 9.81 / pga_mps2
         for series in (False, True):
-            args = ["--block", ",".join(f"{k}={v}" for k, v in block.items()), "--mu", str(mu)]
-            cpp_s = _fs._simulate_cpu_s(args, accel, rec.dt_s, scale, series, REPEATS)
+            box = freestand._box(block, None, None)
+            cpp_s = _fs._simulate_cpu_s(box, mu, accel, rec.dt_s, scale, series, REPEATS)
             result = {}
 
             def call():

@@ -1,17 +1,19 @@
 """freestand from Python: must free-standing equipment be anchored to survive the design earthquake?
 
-Every function here runs the same C++ code as the `freestand` command of the same name, through
-the same option checks, and returns what that command prints with --json (or writes as
-result.json / fragility.json) as a dict; series of numbers come as float64 NumPy arrays. Units
-are SI and in the names (accel_mps2, dt_s, pga_g). Keyword options are the command's options
-with '-' written '_' (`a_g` is `--a-g`); an error names the option as the command line does
-(`--a-g`). A keyword that takes numbers refuses anything else (a string, a bool, a complex
-number, an array of them) with an InputError naming the keyword (`mu`), before any command runs.
-Methods: docs/methods.md.
+Every function here runs the same C++ code as the `freestand` command of the same name and
+returns what that command prints with --json (or writes as result.json / fragility.json) as a
+dict; series of numbers come as float64 NumPy arrays. Units are SI and in the names
+(accel_mps2, dt_s, pga_g). Keywords are the command's options with '-' written '_' (`a_g` is
+`--a-g`). classify, slide, rock and simulate pass typed values to the library: a keyword of the
+wrong type (a string, a bool, a complex number for a number) is a TypeError naming it, and a
+value out of its range an InputError naming it (`mu: value -0.4 is out of range; expected
+[0, 2]`). The other functions still pass their options as command-line text: a keyword that
+takes numbers refuses anything else with an InputError naming it, and a range error names the
+option as the command line does (`--pga`). Methods: docs/methods.md.
 
 Errors are exceptions carrying the command's message, one class per exit-code class:
-UsageError (2), InputError (3), NumericalError (4), IoError (5), all subclasses of Error, each
-with its `exit_code`.
+UsageError (2), InputError (3, also a ValueError), NumericalError (4), IoError (5), all
+subclasses of Error, each with its `exit_code`.
 """
 from __future__ import annotations
 
@@ -67,11 +69,9 @@ class Record:
 # checked here rather than by the option parser: a string would reach it as option text ("0.1,0.2"
 # for one number), and a bool as a bare flag, whose messages name a --flag the caller never typed.
 _NUMBER_OPTIONS = frozenset({
-    "a_g", "ag", "adv2_range", "av_g", "da_max", "damping", "dt", "duration", "fes_hz", "fmax",
-    "fmin", "fn_hz", "frequencies", "fs_required", "inertia", "inertia2", "mu", "mu2", "mu_k",
-    "mu_k2", "per_decade", "pga", "pga_g", "pgd_m", "pgv_mps", "pool", "restitution",
-    "restitution2", "rock_band_hz", "samples", "scale", "sd1", "sds", "seed", "threads", "tl",
-    "top", "tunnel_height", "v_ratio", "va_range", "vertical_ratio",
+    "ag", "adv2_range", "da_max", "damping", "dt", "duration", "fmax", "fmin", "frequencies",
+    "per_decade", "pga", "pool", "samples", "sd1", "sds", "seed", "threads", "tl", "va_range",
+    "vertical_ratio",
 })
 
 # NumPy kinds of real numbers: signed and unsigned integers, floats. Not b (bool), c (complex,
@@ -143,23 +143,6 @@ def _args(**options: Any) -> list:
     return args
 
 
-def _block(block: Union[str, Mapping[str, float]]) -> str:
-    """{"b": 0.15, "h": 0.6, "m": 38} (or the command line's "b=0.15,h=0.6,m=38")."""
-    if isinstance(block, str):
-        return block
-    return ",".join(f"{key}={_text(_real(value, f'block[{key!r}]'))}"
-                    for key, value in block.items())
-
-
-def _cg(cg: Union[None, str, Sequence[float], Mapping[str, float]]) -> Optional[str]:
-    if cg is None or isinstance(cg, str):
-        return cg
-    if isinstance(cg, Mapping):
-        return ",".join(f"{key}={_text(_real(value, f'cg[{key!r}]'))}"
-                        for key, value in cg.items())
-    return _number_text(list(cg), "cg")
-
-
 def _samples(values: Any, what: str) -> np.ndarray:
     """values as float64 samples; InputError naming `what`, as the module does, when they are
     not real numbers (its shape is checked there)."""
@@ -225,6 +208,29 @@ def _box(block: Mapping[str, float], cg: Any, inertia: Optional[float]) -> dict:
     return box
 
 
+def _optional_number(value: Any, keyword: str) -> Optional[float]:
+    """None, or value as a float when it is a real number; TypeError naming keyword otherwise."""
+    return None if value is None else _number(value, keyword)
+
+
+def _paths(value: Any, keyword: str) -> list:
+    """A path or a sequence of paths as a list of str ([] for None); TypeError naming keyword
+    for anything else."""
+    if value is None:
+        return []
+    if isinstance(value, (str, os.PathLike)):
+        return [os.fspath(value)]
+    if not isinstance(value, Iterable) or isinstance(value, bytes):
+        raise TypeError(f"{keyword}: expected a path or a sequence of paths, got "
+                        f"{type(value).__name__} {value!r}")
+    out = []
+    for item in value:
+        if not isinstance(item, (str, os.PathLike)):
+            raise TypeError(f"{keyword}: expected a path, got {type(item).__name__} {item!r}")
+        out.append(os.fspath(item))
+    return out
+
+
 def read_record(path: PathLike) -> Record:
     """Reads a PEER .AT2, COSMOS .V2 or CSV record (docs/methods.md s.8 for the CSV headers)."""
     r = _fs.read_record(os.fspath(path))
@@ -269,10 +275,19 @@ def generate(target: Optional[str] = None, *, seed: int = 1, timing: bool = True
                                           r["component"]) for r in records}
 
 
-def slide(mu: float, **options: Any) -> dict:
-    """ASCE 4 and energy-conservation sliding estimates (`freestand slide --json`): av_g=,
-    pgd_m=, pga_g=, and fes_hz= or spectrum10=[H1.csv, H2.csv]."""
-    return _fs.slide(_args(mu=mu, **options))
+def slide(mu: float, *, av_g: float = 0.0, pgd_m: Optional[float] = None,
+          pga_g: Optional[float] = None, fes_hz: Optional[float] = None,
+          spectrum10: Union[None, PathLike, Sequence[PathLike]] = None) -> dict:
+    """ASCE 4 and energy-conservation sliding estimates (`freestand slide --json`): mu the
+    static friction coefficient, av_g the peak vertical acceleration (g), pgd_m the peak ground
+    displacement (m, energy method), pga_g the peak horizontal acceleration (g), and f_es as
+    fes_hz (Hz) or found on spectrum10, the 10%-damped horizontal spectrum file(s) [H1.csv,
+    H2.csv]: exactly one of the two."""
+    if (fes_hz is None) == (spectrum10 is None):
+        raise UsageError("slide: give exactly one of fes_hz and spectrum10")
+    return _fs.slide(_number(mu, "mu"), _number(av_g, "av_g"), _optional_number(pgd_m, "pgd_m"),
+                     _optional_number(pga_g, "pga_g"), _optional_number(fes_hz, "fes_hz"),
+                     _paths(spectrum10, "spectrum10"))
 
 
 def classify(block: Mapping[str, float], mu: float, a_g: float, *, cg=None, av_g: float = 0.0,
@@ -285,22 +300,54 @@ def classify(block: Mapping[str, float], mu: float, a_g: float, *, cg=None, av_g
                         _number(av_g, "av_g"))
 
 
-def rock(block: Union[str, Mapping[str, float]], *, cg=None, **options: Any) -> dict:
-    """Closed-form rocking and overturning checks (`freestand rock --json`): spectrum=[files],
-    spectrum_v=, v_ratio=, pga_g=, av_g=, pgv_mps=, mu=, restitution=, fs_required=, fn_hz=,
-    rock_band_hz=(lo, hi), inertia=."""
-    return _fs.rock(_args(block=_block(block), cg=_cg(cg), **options))
+def rock(block: Mapping[str, float], *, cg=None, inertia: Optional[float] = None,
+         spectrum: Union[None, PathLike, Sequence[PathLike]] = None,
+         spectrum_v: Union[None, PathLike, Sequence[PathLike]] = None,
+         v_ratio: Optional[float] = None, pga_g: Optional[float] = None,
+         av_g: Optional[float] = None, pgv_mps: Optional[float] = None,
+         mu: Optional[float] = None, restitution: Optional[float] = None,
+         fs_required: Optional[float] = None, fn_hz: Optional[float] = None,
+         rock_band_hz: Optional[Sequence[float]] = None) -> dict:
+    """Closed-form rocking and overturning checks (`freestand rock --json`): block, cg and
+    inertia as classify's; spectrum=[files] the horizontal spectra, one per damping, and
+    spectrum_v the vertical ones (or v_ratio = SA_V / SA_H); pga_g, av_g (g), pgv_mps (m/s),
+    mu, restitution, fs_required (default 1.5), fn_hz and rock_band_hz=(lo, hi) (Hz, the
+    flexible-body screen)."""
+    demand = {
+        "v_ratio": _optional_number(v_ratio, "v_ratio"),
+        "pga_h_g": _optional_number(pga_g, "pga_g"),
+        "av_g": _optional_number(av_g, "av_g"),
+        "pgv_mps": _optional_number(pgv_mps, "pgv_mps"),
+        "mu_s": _optional_number(mu, "mu"),
+        "restitution": _optional_number(restitution, "restitution"),
+        "fs_required": _optional_number(fs_required, "fs_required"),
+        "fixed_base_hz": _optional_number(fn_hz, "fn_hz"),
+    }
+    band = None
+    if rock_band_hz is not None:
+        if isinstance(rock_band_hz, (str, bytes)) or not isinstance(rock_band_hz, Iterable):
+            raise TypeError(f"rock_band_hz: expected (lo, hi) in Hz, got "
+                            f"{type(rock_band_hz).__name__} {rock_band_hz!r}")
+        band = [_number(v, "rock_band_hz") for v in rock_band_hz]
+        if len(band) != 2:
+            raise TypeError(f"rock_band_hz: expected (lo, hi) in Hz, got {len(band)} numbers")
+    return _fs.rock(_box(block, cg, inertia), demand, _paths(spectrum, "spectrum"),
+                    _paths(spectrum_v, "spectrum_v"), band)
 
 
-def simulate(block: Union[str, Mapping[str, float]], motion: Union[Record, np.ndarray],
+def simulate(block: Mapping[str, float], motion: Union[Record, np.ndarray],
              dt_s: Optional[float] = None, *, mu: float, vertical_mps2: Optional[np.ndarray] = None,
-             scale: float = 1.0, series: bool = True, cg=None, **options: Any) -> dict:
+             scale: float = 1.0, series: bool = True, cg=None, inertia: Optional[float] = None,
+             mu_k: Optional[float] = None, restitution: Optional[float] = None,
+             top: Optional[float] = None, integrator: str = "event", dt: float = 1e-4) -> dict:
     """Time history of the planar rigid block (`freestand simulate --json`) under a record (or
-    an array of m/s^2 samples at dt_s), times scale; vertical_mps2 on the same samples. Options:
-    mu_k=, restitution=, inertia=, top=, integrator="event"|"cd", dt=. Returns the summary, and
-    with series=True also "series": NumPy arrays time_s, slide_m, slide_velocity_mps,
-    rotation_rad, angular_velocity_radps, mode (codes into mode_names), normal_force_N,
-    friction_force_N, top_accel_mps2."""
+    an array of m/s^2 samples at dt_s), times scale; vertical_mps2 on the same samples. block,
+    cg and inertia as classify's; mu and mu_k the static and kinetic friction, restitution on
+    angular velocity (default Housner's), top the height of the top corners (m), integrator
+    "event" or "cd" with its step dt (s). Returns the summary, and with series=True also
+    "series": NumPy arrays time_s, slide_m, slide_velocity_mps, rotation_rad,
+    angular_velocity_radps, mode (codes into mode_names), normal_force_N, friction_force_N,
+    top_accel_mps2."""
     if isinstance(motion, Record):
         if dt_s is not None and dt_s != motion.dt_s:
             raise UsageError(f"dt_s {dt_s} s given for a record sampled at {motion.dt_s} s")
@@ -309,11 +356,15 @@ def simulate(block: Union[str, Mapping[str, float]], motion: Union[Record, np.nd
         if dt_s is None:
             raise UsageError("simulate: an array of samples needs dt_s (s)")
         accel, label = motion, "python array"
+    if not isinstance(integrator, str):
+        raise TypeError(f"integrator: expected \"event\" or \"cd\", got "
+                        f"{type(integrator).__name__} {integrator!r}")
     vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
-    return _fs.simulate(_args(block=_block(block), cg=_cg(cg), mu=mu, **options),
-                        _samples(accel, "accel_mps2"), float(_real(dt_s, "dt_s")), vertical,
-                        float(_real(scale, "scale")),
-                        label, series)
+    return _fs.simulate(_box(block, cg, inertia), _number(mu, "mu"),
+                        _optional_number(mu_k, "mu_k"), _optional_number(restitution, "restitution"),
+                        _optional_number(top, "top"), integrator, _number(dt, "dt"),
+                        _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"), vertical,
+                        _number(scale, "scale"), label, bool(series))
 
 
 def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:

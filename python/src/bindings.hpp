@@ -14,9 +14,9 @@ core::Record make_record(const pybind11::handle& accel_mps2, double dt_s, const 
 
 /// read_record, spectrum.
 void bind_records(pybind11::module_& m);
-/// classify.
+/// classify, slide, rock.
 void bind_closed_forms(pybind11::module_& m);
-/// target, document (slide, rock), generate.
+/// target, generate.
 void bind_documents(pybind11::module_& m);
 /// simulate, fragility.
 void bind_runs(pybind11::module_& m);

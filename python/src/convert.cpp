@@ -72,14 +72,10 @@ std::vector<double> from_numpy(const py::handle& values, const std::string& what
     return {a.data(), a.data() + a.size()};
 }
 
-namespace {
-
 std::optional<double> optional_number(const py::dict& d, const char* key) {
     if (!d.contains(key) || d[key].is_none()) return std::nullopt;
     return d[key].cast<double>();
 }
-
-}  // namespace
 
 sliding::BoxSpec box_spec(const py::dict& box) {
     sliding::BoxSpec s;

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ py::array_t<double> to_numpy(const std::vector<double>& values);
 /// The samples of a 1-D array-like of numbers (a NumPy array or a sequence), as doubles;
 /// InputError naming `what` if it is not one-dimensional.
 std::vector<double> from_numpy(const py::handle& values, const std::string& what);
+
+/// The number d[key], or nullopt when the key is absent or None. The package has checked each
+/// value is a real number.
+std::optional<double> optional_number(const py::dict& d, const char* key);
 
 /// The box the package passes as a dict with BoxSpec's field names (half_width_m and
 /// half_height_m; mass_kg, cg_offset_m, cg_height_m and inertia_cg_kgm2 when given). The package

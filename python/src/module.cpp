@@ -54,12 +54,12 @@ PYBIND11_MODULE(_freestand, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const InputError& e) {
-            // A field the Python table names is renamed to its keyword; the commands still parsed
-            // from option text name their option.
-            const InputError named = freestand::python::in_python(e);
-            const bool renamed = named.where().field != e.where().field;
-            PyErr_SetString(errors.input.ptr(),
-                            (renamed ? named : cli::on_command_line(e)).what());
+            // A field the Python table names is renamed to its keyword (some keep their name:
+            // mu_k); the commands still parsed from option text name their option.
+            const bool keyword = freestand::python::keyword_names().count(e.where().field) > 0;
+            PyErr_SetString(errors.input.ptr(), (keyword ? freestand::python::in_python(e)
+                                                         : cli::on_command_line(e))
+                                                    .what());
         } catch (const UsageError& e) {
             PyErr_SetString(errors.usage.ptr(), e.what());
         } catch (const NumericalError& e) {

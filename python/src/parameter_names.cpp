@@ -4,17 +4,32 @@ namespace freestand::python {
 
 const std::map<std::string, std::string>& keyword_names() {
     static const std::map<std::string, std::string> names{
-        // api::ClassifyRequest
+        // api::ClassifyRequest (and mu_s, av_g of the other requests)
         {"mu_s", "mu"},
         {"a_h_g", "a_g"},
         {"av_g", "av_g"},
         // sliding::BoxSpec, behind block= , cg= and inertia=
-        {"b (half-width, m)", "block['b']"},
-        {"h (half-height, m)", "block['h']"},
-        {"m", "block['m']"},
-        {"cg x", "cg['x']"},
-        {"cg h", "cg['h']"},
-        {"inertia", "inertia"},
+        {"box.half_width_m", "block['b']"},
+        {"box.half_height_m", "block['h']"},
+        {"box.mass_kg", "block['m']"},
+        {"box.cg_offset_m", "cg['x']"},
+        {"box.cg_height_m", "cg['h']"},
+        {"box.inertia_cg_kgm2", "inertia"},
+        // api::SimulateRequest
+        {"mu_k", "mu_k"},
+        {"restitution", "restitution"},
+        {"top_height_m", "top"},
+        {"cd_dt_s", "dt"},
+        {"integrator", "integrator"},
+        // api::SlideRequest and api::RockRequest
+        {"pgd_m", "pgd_m"},
+        {"pga_h_g", "pga_g"},
+        {"fes_hz", "fes_hz"},
+        {"v_ratio", "v_ratio"},
+        {"pgv_mps", "pgv_mps"},
+        {"fs_required", "fs_required"},
+        {"fixed_base_hz", "fn_hz"},
+        {"rock_band_hz", "rock_band_hz"},
         // api::AssessRequest's levels (assess::with_pga_levels)
         {"pga_levels", "pga_g"},
     };

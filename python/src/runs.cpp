@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "api/simulate.hpp"
 #include "bindings.hpp"
 #include "cli/build_info.hpp"
 #include "cli/documents.hpp"
@@ -51,31 +52,42 @@ py::dict series_dict(const std::vector<dynamics::Sample>& series) {
     return d;
 }
 
-/// The model and run options `simulate`'s arguments describe.
-struct SimulateSetup {
-    dynamics::BlockModel model;
-    dynamics::Options options;
-};
-
-SimulateSetup simulate_setup(const std::vector<std::string>& args) {
-    const auto vm = cli::parse_document_options("simulate", cli::simulate_model_options(), args);
-    return {cli::simulate_model(vm, cli::simulate_block(vm)),
-            cli::simulate_run_options(vm, dynamics::Options{})};
-}
-
-/// simulate_setup of the arguments, remembered for the last few argument lists: a study calls
-/// simulate with one block over many records, and parsing the options costs as much as a 20 s
-/// resting run (bench/python_simulate.py). Called with the GIL held, which serialises it; the
-/// copy returned stays valid while another thread changes the cache.
-SimulateSetup cached_simulate_setup(const std::vector<std::string>& args) {
-    static std::vector<std::pair<std::vector<std::string>, SimulateSetup>> cache;
-    for (const auto& [key, setup] : cache)
-        if (key == args) return setup;
-    SimulateSetup setup = simulate_setup(args);  // may throw: nothing cached
-    constexpr std::size_t capacity = 16;
-    if (cache.size() == capacity) cache.erase(cache.begin());
-    cache.emplace_back(args, std::move(setup));
-    return cache.back().second;
+/// The request of simulate's typed arguments, the record's samples copied in. The vertical
+/// must be on the horizontal's samples: a shorter one would be read as zero after its end
+/// (sample_at), which for arrays is a mistake, not a resampling.
+api::SimulateRequest simulate_request(const py::dict& box, double mu_s,
+                                      std::optional<double> mu_k,
+                                      std::optional<double> restitution,
+                                      std::optional<double> top_height_m,
+                                      const std::string& integrator, double cd_dt_s,
+                                      const py::handle& accel_mps2, double dt_s,
+                                      const py::object& vertical_mps2, double scale,
+                                      const std::string& label, bool series) {
+    api::SimulateRequest r;
+    r.box = box_spec(box);
+    r.mu_s = mu_s;
+    r.mu_k = mu_k;
+    r.restitution = restitution;
+    r.top_height_m = top_height_m;
+    const auto named = api::integrator_named(integrator);
+    if (!named)
+        throw InputError(SourceLocation{"", 0, "integrator"},
+                         fmt::format("expected \"event\" or \"cd\"; got \"{}\"", integrator));
+    r.integrator = *named;
+    r.cd_dt_s = cd_dt_s;
+    r.record_series = series;
+    api::SimulateExcitation& e = r.excitation;
+    e.horizontal = make_record(accel_mps2, dt_s, label, "python", "h");
+    if (!vertical_mps2.is_none()) {
+        e.vertical = make_record(vertical_mps2, dt_s, label, "python", "v");
+        if (e.vertical->size() != e.horizontal->size())
+            throw InputError(SourceLocation{"", 0, "vertical_mps2"},
+                             fmt::format("{} samples; expected the {} of accel_mps2 (the same "
+                                         "time steps)",
+                                         e.vertical->size(), e.horizontal->size()));
+    }
+    e.scale = scale;
+    return r;
 }
 
 py::list mode_names() {
@@ -101,56 +113,47 @@ void bind_runs(py::module_& m) {
     m.attr("mode_names") = mode_names();
     m.def(
         "simulate",
-        [](const std::vector<std::string>& args, const py::handle& accel_mps2, double dt_s,
-           const py::object& vertical_mps2, double scale, const std::string& label,
+        [](const py::dict& box, double mu_s, std::optional<double> mu_k,
+           std::optional<double> restitution, std::optional<double> top_height_m,
+           const std::string& integrator, double cd_dt_s, const py::handle& accel_mps2,
+           double dt_s, const py::object& vertical_mps2, double scale, const std::string& label,
            bool series) {
-            const SimulateSetup setup = cached_simulate_setup(args);
-            const dynamics::BlockModel& model = setup.model;
-            dynamics::Options opt = setup.options;
-            opt.record_series = series;
-            const core::Record h = make_record(accel_mps2, dt_s, label, "python", "h");
-            std::optional<core::Record> v;
-            if (!vertical_mps2.is_none())
-                v = make_record(vertical_mps2, dt_s, label, "python", "v");
-            // On the horizontal's samples: a shorter vertical would be read as zero after its
-            // end (sample_at), which for arrays is a mistake, not a resampling.
-            if (v && v->size() != h.size())
-                throw InputError(SourceLocation{"", 0, "vertical_mps2"},
-                                 fmt::format("{} samples; expected the {} of accel_mps2 (the same "
-                                             "time steps)", v->size(), h.size()));
-            dynamics::SimulationResult res;
+            const api::SimulateRequest request =
+                simulate_request(box, mu_s, mu_k, restitution, top_height_m, integrator, cd_dt_s,
+                                 accel_mps2, dt_s, vertical_mps2, scale, label, series);
+            api::SimulateResult result;
             {
                 py::gil_scoped_release unlocked;
-                const dynamics::Excitation exc =
-                    dynamics::excitation_from_record(h, scale, v ? &*v : nullptr, scale);
-                res = dynamics::simulate(model, exc, opt);
+                result = api::simulate(request);
             }
-            py::dict out(to_python(cli::summary_json(res.summary), Arrays::lists));
-            if (series) out["series"] = series_dict(res.series);
+            const auto& run = std::get<api::PlanarRun>(result.run);
+            py::dict out(to_python(api::to_json(run.result.summary), Arrays::lists));
+            if (series) out["series"] = series_dict(run.result.series);
             return out;
         },
-        py::arg("args"), py::arg("accel_mps2"), py::arg("dt_s"), py::arg("vertical_mps2"),
-        py::arg("scale"), py::arg("label"), py::arg("series"));
-    // bench/python_simulate.py's reference: the C++ call `simulate` makes (the record as the
-    // library's own, its excitation and the run), timed in C++ as the thread's CPU seconds, the
-    // least of `repeats` calls.
+        py::arg("box"), py::arg("mu_s"), py::arg("mu_k"), py::arg("restitution"),
+        py::arg("top_height_m"), py::arg("integrator"), py::arg("cd_dt_s"), py::arg("accel_mps2"),
+        py::arg("dt_s"), py::arg("vertical_mps2"), py::arg("scale"), py::arg("label"),
+        py::arg("series"));
+    // bench/python_simulate.py's reference: the C++ call `simulate` makes (api::simulate of the
+    // request, with the record already the library's own), timed in C++ as the thread's CPU
+    // seconds, the least of `repeats` calls.
     m.def(
         "_simulate_cpu_s",
-        [](const std::vector<std::string>& args, const py::handle& accel_mps2, double dt_s,
+        [](const py::dict& box, double mu_s, const py::handle& accel_mps2, double dt_s,
            double scale, bool series, int repeats) {
-            const SimulateSetup setup = simulate_setup(args);
-            dynamics::Options opt = setup.options;
-            opt.record_series = series;
-            const core::Record h = make_record(accel_mps2, dt_s, "bench", "python", "h");
+            const api::SimulateRequest request =
+                simulate_request(box, mu_s, std::nullopt, std::nullopt, std::nullopt, "event",
+                                 1e-4, accel_mps2, dt_s, py::none(), scale, "bench", series);
             double best_s = std::numeric_limits<double>::infinity();
             for (int i = 0; i < repeats; ++i) {
                 const double t0 = thread_cpu_s();
-                dynamics::simulate(setup.model, dynamics::excitation_from_record(h, scale), opt);
+                api::simulate(request);
                 best_s = std::min(best_s, thread_cpu_s() - t0);
             }
             return best_s;
         },
-        py::arg("args"), py::arg("accel_mps2"), py::arg("dt_s"), py::arg("scale"),
+        py::arg("box"), py::arg("mu_s"), py::arg("accel_mps2"), py::arg("dt_s"), py::arg("scale"),
         py::arg("series"), py::arg("repeats"));
     m.def(
         "fragility",

@@ -1,20 +1,17 @@
-// `freestand simulate`: rigid-block time history under a record or a sine (src/dynamics).
+// `freestand simulate`: block time history under a record or a sine (api/simulate.hpp).
 #include <fmt/format.h>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
+#include "api/simulate.hpp"
 #include "cli/command.hpp"
-#include "cli/documents.hpp"
 #include "cli/options.hpp"
+#include "cli/simulate_biaxial.hpp"
+#include "cli/simulate_flexible.hpp"
+#include "cli/simulate_pair.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
 #include "core/readers.hpp"
-#include "core/units.hpp"
-#include "cli/simulate_biaxial.hpp"
-#include "cli/simulate_pair.hpp"
-#include "cli/simulate_flexible.hpp"
-#include "dynamics/simulate.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::simulate_command {
@@ -29,20 +26,108 @@ const char* const usage =
     "[--integrator event|cd] [--dt 1e-4] [--out series.csv] [--json] "
     "[--block2 ... [--cg2 ...] --mu2 MU [--mu-k2 MU] [--restitution2 R] --tunnel-height H]";
 
-dynamics::Excitation parse_sine(const std::string& text) {
-    return dynamics::sine_excitation(parse_sine_spec(text, "--sine", false));
+po::options_description simulate_options() {
+    po::options_description desc("simulate options");
+    desc.add_options()
+        ("block", po::value<std::string>()->required(), "b=half-width,h=CG height,m=mass (m, kg)")
+        ("cg", po::value<std::string>(),
+         "x,y: CG x from the left edge and y above the base (m); or x=OFFSET,h=HEIGHT: x right "
+         "of the base's centre, as classify and rock take it")
+        ("inertia", po::value<double>(), "I_c about the CG (kg m^2)")
+        ("top", po::value<double>(), "height of the top corners for top_accel (m; default 2 h)")
+        ("mu", po::value<double>()->required(), "static friction coefficient, in [0, 2]")
+        ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
+        ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
+        ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
+        ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
+        ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
+        ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
+        ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
+        ("motion-y", po::value<std::string>(),
+         "FILE: second horizontal component with --motion; runs biaxial sliding")
+        ("sine-y", po::value<std::string>(),
+         "A g,f Hz,T s[,ramp=t s][,phase=DEG]: biaxial sliding under x = A sin(2 pi f t), "
+         "y = A sin(2 pi f t + phase) (phase 0 by default)")
+        ("flexible", po::value<std::string>(),
+         "f=HZ[,zeta=RATIO][,mass=FRACTION][,height=M]: reduced-order flexible body (fixed-base "
+         "frequency, modal damping, modal mass as a fraction of m, its height above the base; "
+         "defaults zeta 0.02 and a uniform cantilever's 0.613 m at 0.726 x 2 h)")
+        ("out", po::value<std::string>(), "write the time series CSV here")
+        ("json", po::bool_switch(), "print the summary as JSON");
+    add_pair_options(desc);
+    return desc;
 }
 
-dynamics::Excitation parse_motion(const std::string& text, double scale) {
+std::optional<double> opt_double(const po::variables_map& vm, const char* name) {
+    if (!vm.count(name)) return std::nullopt;
+    return vm[name].as<double>();
+}
+
+// Which options go together, as the command line spells them; the request's own consistency
+// is api::simulate's to check.
+void require_option_set(const po::variables_map& vm) {
+    if (vm.count("motion") + vm.count("sine") + vm.count("sine-y") != 1)
+        throw UsageError("simulate: give exactly one of --motion, --sine and --sine-y");
+    if (vm.count("motion-y") && !vm.count("motion"))
+        throw UsageError("--motion-y: needs --motion (the x component)");
+    const bool biaxial = vm.count("motion-y") || vm.count("sine-y");
+    if (pair_requested(vm)) require_pair_options(vm);
+    if (vm.count("flexible") && (biaxial || pair_requested(vm)))
+        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit)");
+    if (biaxial)
+        for (const char* flag : {"restitution", "top"})
+            if (vm.count(flag))
+                throw UsageError(fmt::format("--{}: not used by the biaxial model (--motion-y, "
+                                             "--sine-y), which has no rocking",
+                                             flag));
+}
+
+// --motion FILE[,VERTICAL_FILE] [--motion-y FILE] as records.
+void read_motion(const po::variables_map& vm, api::SimulateExcitation& e) {
+    const std::string text = vm["motion"].as<std::string>();
     const std::vector<std::string> files = split_list(text);
     if (files.size() > 2 || files[0].empty() || (files.size() == 2 && files[1].empty()))
         throw UsageError(fmt::format("--motion: expected FILE[,VERTICAL_FILE]; got \"{}\"", text));
-    const core::Record h = core::read_record(files[0]);
-    if (files.size() == 1) return dynamics::excitation_from_record(h, scale);
-    const core::Record v = core::read_record(files[1]);
-    return dynamics::excitation_from_record(h, scale, &v, scale);
+    std::string y_file;
+    if (vm.count("motion-y")) {
+        y_file = vm["motion-y"].as<std::string>();
+        if (y_file.empty()) throw UsageError("--motion-y: expected a record FILE; got \"\"");
+    }
+    e.horizontal = core::read_record(files[0]);
+    if (!y_file.empty()) e.horizontal_y = core::read_record(y_file);
+    if (files.size() == 2) e.vertical = core::read_record(files[1]);
 }
 
+api::SimulateExcitation excitation_of(const po::variables_map& vm) {
+    api::SimulateExcitation e;
+    e.scale = vm["scale"].as<double>();
+    if (vm.count("sine")) e.sine = parse_sine_spec(vm["sine"].as<std::string>(), "--sine", false);
+    if (vm.count("sine-y"))
+        e.sine_y = parse_sine_spec(vm["sine-y"].as<std::string>(), "--sine-y", true);
+    if (vm.count("motion")) read_motion(vm, e);
+    return e;
+}
+
+api::SimulateRequest simulate_request(const po::variables_map& vm) {
+    api::SimulateRequest r;
+    r.box = box_from_options(vm["block"].as<std::string>(), opt_string(vm, "cg"),
+                             opt_double(vm, "inertia"));
+    r.mu_s = vm["mu"].as<double>();
+    r.mu_k = opt_double(vm, "mu-k");
+    r.restitution = opt_double(vm, "restitution");
+    r.top_height_m = opt_double(vm, "top");
+    const std::string integrator = vm["integrator"].as<std::string>();
+    const auto named = api::integrator_named(integrator);
+    if (!named)
+        throw UsageError(fmt::format("--integrator: expected event or cd; got \"{}\"", integrator));
+    r.integrator = *named;
+    r.cd_dt_s = vm["dt"].as<double>();
+    if (vm.count("flexible")) r.flexible = parse_flexible_mode(vm["flexible"].as<std::string>());
+    if (pair_requested(vm)) r.unit2 = joined_unit(vm);
+    r.excitation = excitation_of(vm);
+    r.record_series = vm.count("out") > 0;
+    return r;
+}
 
 /// The excitation's label (from a file name) on the CSV's comment line: control characters as
 /// \xNN, a line break as a blank, so a file named with ESC or BEL cannot put them raw into the
@@ -54,7 +139,7 @@ std::string one_line_label(const std::string& label) {
     return s;
 }
 
-std::string series_csv(const dynamics::SimulationResult& r, const std::string& label) {
+std::string planar_series_csv(const dynamics::SimulationResult& r, const std::string& label) {
     std::string out = fmt::format(
         "# freestand simulate: {} integrator, excitation {}\n"
         "# units: time s, slide m, slide velocity m/s, rotation rad (+ on the right edge), "
@@ -71,7 +156,9 @@ std::string series_csv(const dynamics::SimulationResult& r, const std::string& l
     return out;
 }
 
-void print_text(const dynamics::Summary& s, const dynamics::BlockModel& m) {
+void print_planar(const api::PlanarRun& run) {
+    const dynamics::Summary& s = run.result.summary;
+    const dynamics::BlockModel& m = run.model;
     std::cout << fmt::format(
         "integrator            {}\n"
         "peak slide            {:.4g} m (residual {:.4g} m)\n"
@@ -96,52 +183,37 @@ void print_text(const dynamics::Summary& s, const dynamics::BlockModel& m) {
     std::cout << "\n";
 }
 
+// The series CSV of the run (a pair records none: require_pair_options refuses --out).
+std::string series_csv(const api::SimulateResult& result) {
+    const std::string& label = result.excitation_label;
+    if (const auto* p = std::get_if<api::PlanarRun>(&result.run))
+        return planar_series_csv(p->result, label);
+    if (const auto* b = std::get_if<api::BiaxialRun>(&result.run))
+        return biaxial_series_csv(*b, label);
+    return flexible_series_csv(std::get<api::FlexibleRun>(result.run), label);
+}
+
+void print_text(const api::SimulateResult& result) {
+    struct Printer {
+        void operator()(const api::PlanarRun& r) const { print_planar(r); }
+        void operator()(const api::BiaxialRun& r) const { print_biaxial(r); }
+        void operator()(const api::FlexibleRun& r) const { print_flexible(r); }
+        void operator()(const api::PairRun& r) const { print_pair(r); }
+    };
+    std::visit(Printer{}, result.run);
+}
+
 int run(const std::vector<std::string>& args) {
-    po::options_description desc = simulate_model_options();
-    desc.add_options()
-        ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
-        ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
-        ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
-        ("motion-y", po::value<std::string>(),
-         "FILE: second horizontal component with --motion; runs biaxial sliding")
-        ("sine-y", po::value<std::string>(),
-         "A g,f Hz,T s[,ramp=t s][,phase=DEG]: biaxial sliding under x = A sin(2 pi f t), "
-         "y = A sin(2 pi f t + phase) (phase 0 by default)")
-        ("flexible", po::value<std::string>(),
-         "f=HZ[,zeta=RATIO][,mass=FRACTION][,height=M]: reduced-order flexible body (fixed-base "
-         "frequency, modal damping, modal mass as a fraction of m, its height above the base; "
-         "defaults zeta 0.02 and a uniform cantilever's 0.613 m at 0.726 x 2 h)")
-        ("out", po::value<std::string>(), "write the time series CSV here")
-        ("json", po::bool_switch(), "print the summary as JSON");
-    add_pair_options(desc);
-    const auto vm = parse_options("simulate", usage, desc, args);
+    const auto vm = parse_options("simulate", usage, simulate_options(), args);
     if (!vm) return 0;
-    if (vm->count("motion") + vm->count("sine") + vm->count("sine-y") != 1)
-        throw UsageError("simulate: give exactly one of --motion, --sine and --sine-y");
-    if (vm->count("motion-y") && !vm->count("motion"))
-        throw UsageError("--motion-y: needs --motion (the x component)");
-    const block::Block blk = simulate_block(*vm);
-    const bool biaxial = vm->count("motion-y") || vm->count("sine-y");
-    dynamics::Options opt =
-        simulate_run_options(*vm, biaxial ? dynamics::biaxial_options() : dynamics::Options{});
-    opt.record_series = vm->count("out") > 0;
-    if (pair_requested(*vm)) require_pair_options(*vm);
-    if (vm->count("flexible") && (biaxial || pair_requested(*vm)))
-        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit)");
-    if (biaxial) return run_biaxial_simulation(*vm, blk, opt);
-    const dynamics::BlockModel model = simulate_model(*vm, blk);
-    const dynamics::Excitation exc =
-        vm->count("sine") ? parse_sine((*vm)["sine"].as<std::string>())
-                          : parse_motion((*vm)["motion"].as<std::string>(), (*vm)["scale"].as<double>());
-    if (pair_requested(*vm)) return run_pair_simulation(*vm, model, exc, opt);
-    if (vm->count("flexible")) return run_flexible_simulation(*vm, model, exc, opt);
-    const dynamics::SimulationResult res = dynamics::simulate(model, exc, opt);
-    if (vm->count("out")) core::write_file_atomic((*vm)["out"].as<std::string>(), series_csv(res, exc.label));
-    if ((*vm)["json"].as<bool>()) {
-        std::cout << summary_json(res.summary).dump(2) << "\n";
-    } else {
-        print_text(res.summary, model);
-    }
+    require_option_set(*vm);
+    const api::SimulateResult result = api::simulate(simulate_request(*vm));
+    if (vm->count("out"))
+        core::write_file_atomic((*vm)["out"].as<std::string>(), series_csv(result));
+    if ((*vm)["json"].as<bool>())
+        std::cout << api::to_json(result, "--top").dump(2) << "\n";
+    else
+        print_text(result);
     return 0;
 }
 

@@ -15,9 +15,6 @@
 #include "fragility/fragility.hpp"
 #include "report/json.hpp"
 #include "motion/motion.hpp"
-#include "rocking/summary.hpp"
-#include "sliding/asce.hpp"
-#include "sliding/initiation.hpp"
 #include "spectra/response.hpp"
 
 namespace freestand::cli {
@@ -44,37 +41,6 @@ po::options_description target_options();
 std::vector<spectra::Spectrum> target_spectra(const po::variables_map& vm);
 /// `target --json`.
 json target_document(const po::variables_map& vm, const std::vector<spectra::Spectrum>& spectra);
-
-// --- closed forms -----------------------------------------------------------------------------
-
-po::options_description slide_options();
-struct SlideRun {
-    sliding::SlidingInput input;
-    sliding::SlidingEstimate estimate;
-};
-SlideRun slide_run(const po::variables_map& vm);
-json slide_json(const SlideRun& run);
-
-po::options_description rock_options();
-struct RockRun {
-    rocking::RockingInput input;
-    rocking::RockingChecks checks;
-};
-RockRun rock_run(const po::variables_map& vm);
-json rock_json(const RockRun& run);
-
-// --- simulate (planar rigid block) ------------------------------------------------------------
-
-/// The block, friction, restitution and integrator options of `simulate` (not the excitation).
-po::options_description simulate_model_options();
-/// The block the options describe (--block, --cg, --inertia).
-block::Block simulate_block(const po::variables_map& vm);
-/// The planar rigid-block model on blk (--mu, --mu-k, --restitution, --top).
-dynamics::BlockModel simulate_model(const po::variables_map& vm, const block::Block& blk);
-/// base with the integrator options (--integrator, --dt) applied.
-dynamics::Options simulate_run_options(const po::variables_map& vm, dynamics::Options base);
-/// `simulate --json`'s summary of one block.
-json summary_json(const dynamics::Summary& s);
 
 // --- generate ---------------------------------------------------------------------------------
 

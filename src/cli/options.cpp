@@ -162,9 +162,4 @@ sliding::BoxSpec box_from_options(const std::string& block, const std::optional<
     return sliding::box_spec(box, cg_kv, inertia_cg_kgm2);
 }
 
-block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
-                                std::optional<double> inertia_cg_kgm2, const std::string& suffix) {
-    return sliding::make_block(box_from_options(block, cg, inertia_cg_kgm2, suffix));
-}
-
 }  // namespace freestand::cli

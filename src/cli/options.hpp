@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "block/block.hpp"
 #include "sliding/block_spec.hpp"
 
 namespace freestand::cli {
@@ -65,16 +64,13 @@ inline std::optional<std::string> opt_string(const po::variables_map& vm, const 
 }
 
 /// The box of --block b=HALF_WIDTH,h=HALF_HEIGHT[,m=KG], --cg and --inertia, one parser for
-/// classify, rock and simulate (sliding::box_spec / make_block: a uniform box unless a CG or an
-/// inertia is given; m defaults to 1 kg). --cg is x=OFFSET,h=HEIGHT (x right of the base's
-/// centre) or the positional x,y (x from the left edge, y up). InputError naming the field.
-/// suffix names a second block's options (--block2, --cg2 for "2").
+/// classify, rock and simulate (the api's requests check it with sliding::make_block: a uniform
+/// box unless a CG or an inertia is given; m defaults to 1 kg). --cg is x=OFFSET,h=HEIGHT (x
+/// right of the base's centre) or the positional x,y (x from the left edge, y up). UsageError
+/// naming the option for bad syntax; InputError (field "block b", "block h") for a missing
+/// key. suffix names a second block's options (--block2, --cg2 for "2").
 sliding::BoxSpec box_from_options(const std::string& block, const std::optional<std::string>& cg,
                                   std::optional<double> inertia_cg_kgm2,
                                   const std::string& suffix = "");
-/// make_block of box_from_options.
-block::Block block_from_options(const std::string& block, const std::optional<std::string>& cg,
-                                std::optional<double> inertia_cg_kgm2,
-                                const std::string& suffix = "");
 
 }  // namespace freestand::cli

@@ -1,11 +1,9 @@
 #pragma once
-/// `freestand simulate` with a second horizontal component (--motion-y, --sine-y): biaxial
-/// sliding (docs/methods.md s.10), its JSON, text and series CSV.
-#include <optional>
+/// `freestand simulate` with a second horizontal component (--motion-y, --sine-y): the sine
+/// syntax, and biaxial sliding's text and series CSV (docs/methods.md s.10).
 #include <string>
 
-#include "cli/options.hpp"
-#include "dynamics/biaxial.hpp"
+#include "api/simulate.hpp"
 
 namespace freestand::cli {
 
@@ -14,10 +12,10 @@ namespace freestand::cli {
 dynamics::SineSpec parse_sine_spec(const std::string& text, const std::string& option,
                                    bool allow_phase);
 
-/// Runs the biaxial model for the parsed simulate options (--motion with --motion-y, or
-/// --sine-y) and prints as `simulate` does. Refuses, naming the flags, a block that would rock
-/// (dynamics::biaxial_rocking_reason): the biaxial model has no rocking.
-int run_biaxial_simulation(const po::variables_map& vm, const block::Block& block,
-                           const dynamics::Options& options);
+/// The series CSV of a biaxial run (--out).
+std::string biaxial_series_csv(const api::BiaxialRun& run, const std::string& label);
+
+/// The text `simulate` prints for a biaxial run.
+void print_biaxial(const api::BiaxialRun& run);
 
 }  // namespace freestand::cli

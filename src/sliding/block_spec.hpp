@@ -23,7 +23,8 @@ struct BoxSpec {
 /// Uniform block when only the box is given (I_c = M (b^2 + h^2) / 3). With a CG position the
 /// inertia is required (a non-uniform mass distribution has no default I_c), and with an inertia
 /// the mass is required (I_O depends on I_c / M). |cg_offset| < half_width. Throws InputError
-/// naming the field ("cg x", "cg h", "inertia", "m", ...) otherwise.
+/// naming the BoxSpec field ("box.half_width_m", "box.cg_offset_m", "box.inertia_cg_kgm2",
+/// "box.mass_kg", ...) otherwise, the block's own limits (core/limits.hpp) included.
 block::Block make_block(const BoxSpec& spec);
 
 /// BoxSpec from key=value maps as the command line and case files write them: box keys

@@ -3,6 +3,7 @@
 
 #include "cli/options.hpp"
 #include "core/errors.hpp"
+#include "sliding/block_spec.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_cli_test_options {
@@ -35,12 +36,15 @@ TEST_CASE("whole numbers: counts, seeds and threads are never truncated", "[cli]
 }
 
 TEST_CASE("the block options give the same block in both --cg forms", "[cli][options]") {
-    const block::Block a = cli::block_from_options("b=0.2,h=0.5,m=10", std::string("0.25,0.4"), 1.5);
-    const block::Block b = cli::block_from_options("b=0.2,h=0.5,m=10", std::string("x=0.05,h=0.4"), 1.5);
+    const block::Block a =
+        sliding::make_block(cli::box_from_options("b=0.2,h=0.5,m=10", std::string("0.25,0.4"), 1.5));
+    const block::Block b = sliding::make_block(
+        cli::box_from_options("b=0.2,h=0.5,m=10", std::string("x=0.05,h=0.4"), 1.5));
     CHECK(a.b_left_m == Approx(b.b_left_m));
     CHECK(a.b_right_m == Approx(b.b_right_m));
     CHECK(a.h_m == Approx(0.4));
-    const block::Block u = cli::block_from_options("b=0.2,h=0.5", std::nullopt, std::nullopt);
+    const block::Block u =
+        sliding::make_block(cli::box_from_options("b=0.2,h=0.5", std::nullopt, std::nullopt));
     CHECK(u.mass_kg == 1.0);  // per unit mass by default, in every command
     CHECK(u.inertia_cg_kgm2 == Approx(block::uniform_inertia_cg_kgm2(1.0, 0.2, 0.5)));
 }

@@ -129,8 +129,8 @@ TEST_CASE("simulate --flexible refuses a mode above the case key's limit and an 
         INFO("f = " << f);
         const auto r = run_cli(common + "--flexible f=" + f + " --integrator cd --json");
         CHECK(r.exit_code == 4);
-        CHECK(r.err.find("--integrator cd: --dt 0.0001 s (a step of 9.62e-05 s on the input's "
-                         "samples) exceeds the stability limit ") != std::string::npos);
+        CHECK(r.err.find("the central-difference step 0.0001 s (a step of 9.62e-05 s on the "
+                         "input's samples) exceeds the stability limit ") != std::string::npos);
         CHECK(r.err.find(std::string("of the elastic mode at f = ") + f + " Hz") !=
               std::string::npos);
         CHECK(r.out.empty());

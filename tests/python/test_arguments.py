@@ -60,18 +60,74 @@ def test_integer_samples_are_numbers():
 def test_a_number_argument_refuses_what_is_not_a_real_number(value, shown):
     rec = freestand.read_record(EL_CENTRO)
     shown = re.escape(shown)
-    with pytest.raises(freestand.InputError, match=f"^mu: expected a real number, got {shown}"):
+    with pytest.raises(TypeError, match=f"^mu: expected a real number, got {shown}"):
         freestand.simulate(BLOCK, rec, mu=value)
     with pytest.raises(TypeError, match=f"^mu: expected a real number, got {shown}"):
         freestand.classify(BLOCK, mu=value, a_g=0.3)
     with pytest.raises(TypeError, match=f"^a_g: expected a real number, got {shown}"):
         freestand.classify(BLOCK, mu=0.3, a_g=value)
-    with pytest.raises(freestand.InputError, match="^scale: expected a real number"):
+    with pytest.raises(TypeError, match="^scale: expected a real number"):
         freestand.simulate(BLOCK, rec, mu=0.3, scale=value)
+    with pytest.raises(TypeError, match="^mu_k: expected a real number"):
+        freestand.simulate(BLOCK, rec, mu=0.3, mu_k=value)
+    with pytest.raises(TypeError, match="^dt: expected a real number"):
+        freestand.simulate(BLOCK, rec, mu=0.3, dt=value)
+    with pytest.raises(TypeError, match="^pga_g: expected a real number"):
+        freestand.rock(BLOCK, pga_g=value)
+    with pytest.raises(TypeError, match="^fes_hz: expected a real number"):
+        freestand.slide(0.3, fes_hz=value)
     with pytest.raises(TypeError, match=r"^block\['b'\]: expected a real number"):
         freestand.classify({"b": value, "h": 0.6}, mu=0.3, a_g=0.3)
     with pytest.raises(freestand.InputError, match="^samples: expected a real number"):
         freestand.fragility(CASE, pga=[0.2], samples=value)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=2.5),
+     "mu: value 2.5 is out of range; expected [0, 2]"),
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, mu_k=0.4),
+     "mu_k: kinetic friction must be in [0, mu_s = 0.3]; got 0.4"),
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, restitution=1.5),
+     "restitution: value 1.5 is out of range; expected [0, 1]"),
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, top=0.1),
+     "top: "),
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, integrator="cd", dt=-1.0),
+     "dt: value -1 must be a finite number > 0"),
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, integrator="rk4"),
+     'integrator: expected "event" or "cd"; got "rk4"'),
+    (lambda: freestand.simulate({"b": -0.2, "h": 0.5}, np.zeros(10), 0.01, mu=0.3),
+     "block['b']: value -0.2 must be a finite number > 0"),
+    (lambda: freestand.simulate({"b": 0.2, "h": 0.5, "m": 1e-6}, np.zeros(10), 0.01, mu=0.3),
+     "block['m']: mass (kg): 1e-06 is below the limit"),
+    (lambda: freestand.simulate(BLOCK, np.zeros(10), 0.01, mu=0.3, cg={"x": 0.3, "h": 0.4},
+                                inertia=1.0),
+     "cg['x']: value 0.3 is out of range"),
+    (lambda: freestand.rock(BLOCK, pga_g=-1.0), "pga_g: value -1 is out of range"),
+    (lambda: freestand.rock(BLOCK, av_g=1.0), "av_g: value 1 is out of range; expected [0, 1)"),
+    (lambda: freestand.rock(BLOCK, fn_hz=0.0), "fn_hz: value 0 is out of range"),
+    (lambda: freestand.rock(BLOCK, fs_required=0.5), "fs_required: value 0.5 is out of range"),
+    (lambda: freestand.rock(BLOCK, rock_band_hz=(5.0, 1.0)),
+     "rock_band_hz: 5,1 Hz; expected 0 < LO < HI"),
+    (lambda: freestand.rock(BLOCK, mu=-1.0), "mu: value -1 is out of range"),
+    (lambda: freestand.slide(0.3, fes_hz=0.0), "fes_hz: value 0 must be a finite number > 0"),
+    (lambda: freestand.slide(0.3, fes_hz=1.0, pgd_m=-1.0), "pgd_m: value -1 is out of range"),
+    (lambda: freestand.slide(0.3, fes_hz=1.0, pga_g=-1.0), "pga_g: value -1 is out of range"),
+    (lambda: freestand.slide(3.0, fes_hz=1.0), "mu: value 3 is out of range; expected [0, 2]"),
+], ids=["mu", "mu_k", "restitution", "top", "dt", "integrator", "block-b", "block-m", "cg-x",
+        "rock-pga_g", "rock-av_g", "rock-fn_hz", "rock-fs_required", "rock-band", "rock-mu",
+        "slide-fes_hz", "slide-pgd_m", "slide-pga_g", "slide-mu"])
+def test_a_value_out_of_range_is_an_input_error_naming_the_keyword(call, message):
+    with pytest.raises(freestand.InputError) as e:
+        call()
+    assert str(e.value).startswith(message)
+    assert "--" not in str(e.value)
+
+
+def test_slide_takes_exactly_one_source_of_f_es():
+    with pytest.raises(freestand.UsageError, match="exactly one of fes_hz and spectrum10"):
+        freestand.slide(0.3)
+    with pytest.raises(TypeError, match="^spectrum10: expected a path"):
+        freestand.slide(0.3, spectrum10=[1.5])
 
 
 def test_a_list_argument_refuses_a_string():

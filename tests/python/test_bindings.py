@@ -1,10 +1,14 @@
-"""The Python module `freestand` against the command line (README "Python").
+"""The Python module `freestand` (README "Python"): its numbers against closed forms, and the
+front-ends against each other.
 
-Every binding runs on the same input as the built CLI (FREESTAND_EXE) and must return what the
-command prints with --json or writes as JSON: the same keys in the same order and the same
-numbers (the module calls the same C++ code, so equal, not close). Errors must carry the
-command's message and the class of its exit code. The module is the one the build put in
-<build>/python (PYTHONPATH, set by ctest).
+The closed forms (classify, rock, slide) and simulate are checked against values computed here
+from docs/methods.md's formulas: a uniform box's geometry, ASCE 4's sliding displacement, a
+block at rest, and a Coulomb block's slip under a constant-acceleration pulse. A few bindings are
+also run on the same input as the built CLI (FREESTAND_EXE) and must return what the command
+prints with --json or writes as JSON: the same keys in the same order and the same numbers (both
+call the same C++ code, so equal, not close). Errors must carry the command's message and the
+class of its exit code. The module is the one the build put in <build>/python (PYTHONPATH, set
+by ctest).
 """
 import csv
 import json
@@ -113,26 +117,155 @@ def test_generate_equals_the_command_s_match_json_and_records(tmp_path):
 
 # --- closed forms -------------------------------------------------------------------------------
 
-def test_slide_equals_slide_json():
+G_MPS2 = 9.81  # docs/methods.md, Conventions
+#: Tolerance of a closed form evaluated here against the library's: the same double arithmetic
+#: in another order.
+CLOSED_FORM_RTOL = 1e-12
+
+
+def test_classify_of_a_uniform_box_follows_tan_alpha():
+    # docs/methods.md s.2: tan(alpha) = b / h; A = a_g / (1 - av_g); at rest below tan(alpha),
+    # rocking above it when mu_s > tan(alpha).
+    b, h = 0.15, 0.6
+    rest = freestand.classify({"b": b, "h": h}, mu=0.4, a_g=0.2)
+    assert rest["tan_alpha"] == pytest.approx(b / h, rel=CLOSED_FORM_RTOL)
+    assert rest["mode"] == "rest"
+    rocks = freestand.classify({"b": b, "h": h}, mu=0.4, a_g=0.3, av_g=0.1)
+    assert rocks["A"] == pytest.approx(0.3 / (1 - 0.1), rel=CLOSED_FORM_RTOL)
+    assert rocks["mode"] == "rock"
+    slides = freestand.classify({"b": b, "h": h}, mu=0.1, a_g=0.3)
+    assert slides["mode"] == "slide"
+
+
+def test_rock_of_a_uniform_box_gives_its_geometry_and_thresholds():
+    # Uniform box (docs/methods.md s.1, s.5): I_O = 4/3 M R^2, so p = sqrt(3 g / (4 R)); uplift
+    # at A = tan(alpha) = b / h; Housner's r = 1 - 3/2 sin^2(alpha); Ishiyama's bound
+    # V = 0.4 sqrt(8 g R (1 - cos alpha) / (3 cos alpha)).
+    b, h, m = 0.3, 0.9, 500.0
+    r = freestand.rock({"b": b, "h": h, "m": m}, pga_g=0.4, pgv_mps=0.3, mu=0.5)
+    radius_m = math.hypot(b, h)
+    alpha = math.atan2(b, h)
+    assert r["R_m"] == pytest.approx(radius_m, rel=CLOSED_FORM_RTOL)
+    assert r["tan_alpha"] == pytest.approx(b / h, rel=CLOSED_FORM_RTOL)
+    assert r["alpha_rad"] == pytest.approx(alpha, rel=CLOSED_FORM_RTOL)
+    assert r["p_radps"] == pytest.approx(math.sqrt(3 * G_MPS2 / (4 * radius_m)),
+                                         rel=CLOSED_FORM_RTOL)
+    assert r["inertia_edge_kgm2"] == pytest.approx(4 / 3 * m * radius_m**2, rel=CLOSED_FORM_RTOL)
+    assert r["uplift_a_g"] == pytest.approx(b / h, rel=CLOSED_FORM_RTOL)
+    assert r["restitution"] == pytest.approx(1 - 1.5 * math.sin(alpha)**2, rel=CLOSED_FORM_RTOL)
+    ishiyama = 0.4 * math.sqrt(8 * G_MPS2 * radius_m * (1 - math.cos(alpha))
+                               / (3 * math.cos(alpha)))
+    assert r["ishiyama_v_mps"] == pytest.approx(ishiyama, rel=CLOSED_FORM_RTOL)
+    assert r["pgv_below_ishiyama"] is (0.3 < ishiyama)
+    # mu_s 0.5 > tan(alpha) = 0.333 and 0.4 g above it: the block rocks.
+    assert r["mode"] == "rock"
+
+
+def test_slide_follows_the_asce_4_and_energy_formulas():
+    # docs/methods.md s.4: mu_e = mu_s (1 - 0.4 A_v), C_s = 2 mu_e g, delta_s = C_s / (2 pi f_es)^2;
+    # energy: g DD = 4 mu_e g delta + (2 pi f_es)^2 delta^2 / 2, the positive root.
+    mu, av_g, pgd_m, fes_hz = 0.15, 0.2243, 0.040, 1.2
+    s = freestand.slide(mu, av_g=av_g, pgd_m=pgd_m, fes_hz=fes_hz)
+    mu_e = mu * (1 - 0.4 * av_g)
+    c_s = 2 * mu_e * G_MPS2
+    omega2 = (2 * math.pi * fes_hz) ** 2
+    assert s["mu_e"] == pytest.approx(mu_e, rel=CLOSED_FORM_RTOL)
+    assert s["c_s_mps2"] == pytest.approx(c_s, rel=CLOSED_FORM_RTOL)
+    assert s["slide_asce_m"] == pytest.approx(c_s / omega2, rel=CLOSED_FORM_RTOL)
+    a, bq, c = omega2 / 2, 4 * mu_e * G_MPS2, G_MPS2 * pgd_m
+    assert s["slide_energy_m"] == pytest.approx((-bq + math.sqrt(bq * bq + 4 * a * c)) / (2 * a),
+                                                rel=1e-9)
+    # The thesis's worked example (Saraswat 2017 s.5.5): 47 mm by ASCE 4, 56 mm by energy.
+    assert s["slide_asce_m"] == pytest.approx(0.047, abs=0.0005)
+    assert s["slide_energy_m"] == pytest.approx(0.056, abs=0.0005)
+
+
+def power_law_spectrum(path, damping):
+    """PSA = 0.1 f (g, f in Hz) up to 4 Hz, 0.4 g above, at the damping, in the spectrum file
+    format (docs/methods.md s.8): linear on log-log axes, so a crossing of a level L below 0.4 g
+    is read exactly at f = 10 L."""
+    rows = "".join(f"{f},{0.1 * min(f, 4.0)}\n" for f in (0.25, 1.0, 4.0, 16.0, 64.0))
+    path.write_text(f"# damping: {damping}\nfrequency_hz,psa_g\n{rows}")
+    return path
+
+
+def test_slide_finds_f_es_on_spectrum_files(tmp_path):
+    # f_es is where SA_VH = C_s = 2 mu_e g (docs/methods.md s.4): on PSA = 0.1 f, f = 20 mu_e;
+    # two equal components give SA_VH = sqrt(1.16) PSA, so f = 20 mu_e / sqrt(1.16).
+    h1 = power_law_spectrum(tmp_path / "h1.csv", 0.1)
+    one = freestand.slide(0.15, spectrum10=h1)
+    assert one["f_es_hz"] == pytest.approx(20 * 0.15, rel=1e-9)
+    assert one["slide_asce_m"] == pytest.approx(2 * 0.15 * G_MPS2 / (2 * math.pi * 3.0) ** 2,
+                                                rel=1e-9)
+    two = freestand.slide(0.15, spectrum10=[h1, str(h1)])
+    assert two["f_es_hz"] == pytest.approx(20 * 0.15 / math.sqrt(1.16), rel=1e-9)
+    with pytest.raises(freestand.InputError, match="damping"):
+        freestand.slide(0.15, spectrum10=power_law_spectrum(tmp_path / "h5.csv", 0.05))
+
+
+def test_slide_classify_and_rock_equal_their_commands():
+    # The front-ends agree: the same request from the command line and from Python.
     expected = cli_json("slide", "--mu", "0.15", "--pga-g", "0.3", "--pgd-m", "0.1", "--fes-hz", "1.5",
                         "--json")
     same(freestand.slide(0.15, pga_g=0.3, pgd_m=0.1, fes_hz=1.5), expected)
-
-
-def test_classify_equals_classify_json():
     expected = cli_json("classify", "--block", "b=0.15,h=0.6", "--mu", "0.4", "--a-g", "0.3", "--json")
     same(freestand.classify({"b": 0.15, "h": 0.6}, mu=0.4, a_g=0.3), expected)
-
-
-def test_rock_equals_rock_json():
     expected = cli_json("rock", "--block", "b=0.3,h=0.9,m=500", "--pga-g", "0.4", "--pgv-mps", "0.3",
                         "--mu", "0.5", "--json")
     same(freestand.rock({"b": 0.3, "h": 0.9, "m": 500}, pga_g=0.4, pgv_mps=0.3, mu=0.5), expected)
 
 
+def test_rock_on_spectrum_files_equals_its_command(tmp_path):
+    files = [power_law_spectrum(tmp_path / f"h{d}.csv", d) for d in (0.02, 0.05)]
+    expected = cli_json("rock", "--block", "b=0.15,h=0.6,m=38", "--spectrum",
+                        ",".join(map(str, files)), "--v-ratio", "0.5", "--fn-hz", "8",
+                        "--rock-band-hz", "0.5,5", "--json")
+    got = freestand.rock({"b": 0.15, "h": 0.6, "m": 38}, spectrum=files, v_ratio=0.5, fn_hz=8,
+                         rock_band_hz=(0.5, 5))
+    same(got, expected)
+    # The files were read: the spectral checks and the flexible-body screen ran.
+    assert got["housner_sv_mps"] is not None and got["flexible"] is not None
+
+
 # --- simulate -----------------------------------------------------------------------------------
 
 BLOCK = {"b": 0.2, "h": 0.5, "m": 100}
+
+
+def test_simulate_a_block_under_a_sub_threshold_sine_stays_at_rest():
+    # 0.1 g against mu_s g = 0.6 g and g tan(alpha) = 0.4 g (docs/methods.md s.2): neither
+    # sliding nor rocking starts, so the block moves with the base.
+    dt_s = 0.005
+    t = np.arange(0.0, 4.0, dt_s)
+    accel = 0.1 * G_MPS2 * np.sin(2 * np.pi * 2.0 * t)
+    run = freestand.simulate(BLOCK, accel, dt_s, mu=0.6)
+    assert run["slide_max_m"] == 0.0
+    assert run["rock_max_rad"] == 0.0
+    assert not run["overturned"]
+    assert run["pga_g"] == pytest.approx(0.1, rel=1e-3)
+    series = run["series"]
+    assert np.all(series["slide_m"] == 0.0) and np.all(series["rotation_rad"] == 0.0)
+    assert set(series["mode"].tolist()) == {freestand.mode_names.index("rest")}
+
+
+def test_simulate_a_coulomb_block_under_a_pulse_slips_the_closed_form_distance():
+    # A squat block (tan(alpha) = 2.5 > mu_s: it cannot rock) under a base acceleration a0 > mu g
+    # for T seconds, then none. Relative to the base it slips at (a0 - mu g) during the pulse,
+    # reaching v = (a0 - mu g) T, then friction stops it at mu g (mu_k = mu_s):
+    # d = (a0 - mu g) T^2 / 2 + v^2 / (2 mu g) = (a0 - mu g) a0 T^2 / (2 mu g).
+    mu, a0_mps2, pulse_s, dt_s = 0.2, 0.4 * G_MPS2, 0.5, 0.001
+    n_pulse = int(round(pulse_s / dt_s))
+    accel = np.zeros(2000)
+    accel[1:n_pulse + 1] = a0_mps2
+    run = freestand.simulate({"b": 0.5, "h": 0.2, "m": 100}, accel, dt_s, mu=mu)
+    expected_m = (a0_mps2 - mu * G_MPS2) * a0_mps2 * pulse_s**2 / (2 * mu * G_MPS2)
+    # The samples ramp the pulse on and off over one step each: an error of order dt / T.
+    assert run["slide_max_m"] == pytest.approx(expected_m, rel=5 * dt_s / pulse_s)
+    assert run["slide_residual_m"] == pytest.approx(run["slide_max_m"], rel=1e-9)
+    assert run["rock_max_rad"] == 0.0
+    # It stops (v / (mu g) after the pulse, about 1 s) and stays: at rest from then on.
+    stopped = run["series"]["time_s"] > 1.1
+    assert set(run["series"]["mode"][stopped].tolist()) == {freestand.mode_names.index("rest")}
 
 
 @pytest.mark.parametrize("scale,mu", [(2.0, 0.1), (4.0, 0.6)], ids=["slides", "rocks"])
@@ -162,7 +295,7 @@ def test_simulate_an_array_equals_the_record_run():
     assert from_array["slide_max_m"] > 0.001
 
 
-def test_simulate_remembers_no_stale_block():
+def test_simulate_runs_each_call_on_its_own_arguments():
     rec = freestand.read_record(EL_CENTRO)
     runs = [freestand.simulate(BLOCK, rec, mu=mu, scale=2.0, series=False)["slide_max_m"]
             for mu in (0.1, 0.25, 0.1)]

@@ -32,16 +32,41 @@ TEST_CASE("box spec: uniform box, CG offset and explicit inertia", "[sliding][bl
 TEST_CASE("box spec errors name the field", "[sliding][block_spec]") {
     CHECK_THROWS_WITH(box_spec({{"h", 0.6}}, {}, std::nullopt), Catch::Contains("block b: missing"));
     CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.6}}, {}, 2.0)),
-                      Catch::Contains("m: an explicit inertia needs the mass"));
+                      Catch::Contains("box.mass_kg: an explicit inertia needs the mass"));
     CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.6}, {"m", 1.0}}, {{"x", 0.1}}, std::nullopt)),
-                      Catch::Contains("inertia"));
+                      Catch::StartsWith("box.inertia_cg_kgm2: a CG position"));
     CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.6}, {"m", 1.0}}, {{"x", 0.15}}, 1.0)),
-                      Catch::Contains("cg x") && Catch::Contains("out of range"));
+                      Catch::StartsWith("box.cg_offset_m: value 0.15 is out of range"));
     CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.6}, {"m", 1.0}}, {{"h", 0.0}}, 1.0)),
-                      Catch::Contains("cg h"));
+                      Catch::StartsWith("box.cg_height_m: value 0 must be"));
     CHECK_THROWS_AS(make_block(box_spec({{"b", 0.15}, {"h", 0.0}}, {}, std::nullopt)), InputError);
     CHECK_THROWS_WITH(make_block(box_spec({{"b", 0.15}, {"h", 0.0}}, {}, std::nullopt)),
-                      Catch::Contains("h (half-height, m): value 0 must be a finite number > 0"));
+                      Catch::Equals("box.half_height_m: value 0 must be a finite number > 0"));
+}
+
+TEST_CASE("the block's own limits are named as the box field the caller gave", "[sliding][block_spec]") {
+    // block::Block names its quantities (b, h as the CG height, m, I_c); a box's caller gave a
+    // half-height, or a CG offset for the distances to the edges.
+    const auto spec = [](double b, double h, std::optional<double> m, std::optional<double> x,
+                         std::optional<double> inertia) {
+        BoxSpec s;
+        s.half_width_m = b;
+        s.half_height_m = h;
+        s.mass_kg = m;
+        s.cg_offset_m = x;
+        s.inertia_cg_kgm2 = inertia;
+        return s;
+    };
+    CHECK_THROWS_WITH(make_block(spec(200.0, 0.6, 38.0, std::nullopt, std::nullopt)),
+                      Catch::StartsWith("box.half_width_m: length (m): 200 is above the limit"));
+    CHECK_THROWS_WITH(make_block(spec(0.2, 200.0, 38.0, std::nullopt, std::nullopt)),
+                      Catch::StartsWith("box.half_height_m: length (m): 200 is above the limit"));
+    CHECK_THROWS_WITH(make_block(spec(0.2, 0.6, 1e-6, std::nullopt, std::nullopt)),
+                      Catch::StartsWith("box.mass_kg: mass (kg): 1e-06 is below the limit"));
+    CHECK_THROWS_WITH(make_block(spec(0.2, 0.6, 38.0, 0.0, -1.0)),
+                      Catch::StartsWith("box.inertia_cg_kgm2: value -1 must be"));
+    CHECK_THROWS_WITH(make_block(spec(0.2, 0.6, 0.0, 0.0, 1.0)),
+                      Catch::StartsWith("box.mass_kg: value 0 must be"));
 }
 
 TEST_CASE("sliding helper error paths", "[sliding][asce]") {

@@ -1,0 +1,137 @@
+// `simulate --json`'s documents, one per model (api/simulate.hpp).
+#include <fmt/format.h>
+
+#include "api/simulate.hpp"
+
+namespace freestand::api {
+namespace simulate_json_detail {
+
+json biaxial_json(const dynamics::BiaxialSummary& s) {
+    json j;
+    j["model"] = "biaxial_sliding";
+    j["slide_max_m"] = s.slide_max_m;
+    j["slide_max_x_m"] = s.slide_max_x_m;
+    j["slide_max_y_m"] = s.slide_max_y_m;
+    j["slide_residual_m"] = s.slide_residual_m;
+    j["slide_residual_x_m"] = s.slide_residual_x_m;
+    j["slide_residual_y_m"] = s.slide_residual_y_m;
+    j["mode_changes"] = s.mode_changes;
+    j["wall_s"] = s.wall_s;
+    j["integrator"] = s.integrator;
+    json t;
+    for (auto m : {dynamics::Mode::rest, dynamics::Mode::slide, dynamics::Mode::flight})
+        t[dynamics::mode_name(m)] = s.time_in_mode_s[static_cast<std::size_t>(m)];
+    j["time_in_mode_s"] = t;
+    j["pga_g"] = s.pga_g;
+    j["steps"] = s.steps;
+    j["rejected_steps"] = s.rejected_steps;
+    j["end_time_s"] = s.end_time_s;
+    return j;
+}
+
+json flexible_json(const FlexibleRun& run, const std::string& top_height_name) {
+    const dynamics::FlexibleSummary& s = run.result.summary;
+    const dynamics::FlexibleModel& model = run.model;
+    json j;
+    j["model"] = s.rigid_handover ? "rigid" : "flexible";
+    j["model_reason"] = model_reason(run);
+    j["rigid_above_hz"] = run.rigid_above_hz;
+    // The rigid top-corner acceleration does not apply: the modal mass's is given instead.
+    json base = to_json(s.base);
+    base.erase("top_accel_max_g");
+    base.erase("amplification");
+    j.update(base);
+    j["uplifted"] = s.uplifted;
+    j["modal_max_m"] = s.modal_max_m;
+    j["modal_drift_max"] = s.modal_drift_max;
+    j["modal_accel_max_g"] = s.modal_accel_max_g;
+    j["rejected_steps"] = s.rejected_steps;
+    j["flexible_mode"] = {{"frequency_hz", model.frequency_hz},
+                          {"damping", model.damping},
+                          {"mass_fraction", model.mass_fraction},
+                          {"height_m", model.height_m}};
+    j["assumptions"] = assumptions(run, top_height_name);
+    return j;
+}
+
+json pair_json(const PairRun& run) {
+    const dynamics::PairResult& r = run.result;
+    json j;
+    j["relative_max_m"] = r.relative_max_m;
+    j["relative_max_time_s"] = r.relative_max_time_s;
+    j["relative_residual_m"] = r.relative_residual_m;
+    j["tunnel_height_m"] = run.tunnel_height_m;
+    j["overturned"] = r.overturned;
+    j["sampled_at"] = "the input samples";
+    j["model"] = "two rigid planar blocks under the same base motion (docs/methods.md s.10)";
+    j["unit1"] = to_json(r.units[0]);
+    j["unit2"] = to_json(r.units[1]);
+    return j;
+}
+
+}  // namespace simulate_json_detail
+
+json to_json(const dynamics::Summary& s) {
+    json j;
+    j["slide_max_m"] = s.slide_max_m;
+    j["slide_residual_m"] = s.slide_residual_m;
+    j["rock_max_rad"] = s.rock_max_rad;
+    j["rock_max_over_alpha"] = s.rock_max_over_alpha;
+    j["overturned"] = s.overturned;
+    j["overturn_time_s"] = number_or_null(s.overturn_time_s);
+    j["overturn_mode"] = s.overturn_mode ? json(*s.overturn_mode) : json(nullptr);
+    j["impacts"] = s.impacts;
+    j["mode_changes"] = s.mode_changes;
+    j["top_accel_max_g"] = s.top_accel_max_g;
+    j["amplification"] = s.amplification;
+    j["wall_s"] = s.wall_s;
+    j["integrator"] = s.integrator;
+    j["overturn_criterion"] = dynamics::overturn_criterion_name(s.overturn_criterion);
+    json t;
+    for (std::size_t m = 0; m < dynamics::mode_count; ++m)
+        t[dynamics::mode_name(static_cast<dynamics::Mode>(m))] = s.time_in_mode_s[m];
+    j["time_in_mode_s"] = t;
+    j["pga_g"] = s.pga_g;
+    j["settlements"] = s.settlements;
+    j["steps"] = s.steps;
+    j["end_time_s"] = s.end_time_s;
+    return j;
+}
+
+std::string model_reason(const FlexibleRun& run) {
+    const double f_hz = run.model.frequency_hz;
+    if (run.result.summary.rigid_handover)
+        return fmt::format("the mode at {} Hz moves with the base (from {:.4g} Hz): the rigid "
+                           "block ran", f_hz, run.rigid_above_hz);
+    return fmt::format("the mode at {} Hz is below {:.4g} Hz, where it would move with the "
+                       "base: the flexible body ran", f_hz, run.rigid_above_hz);
+}
+
+std::vector<std::string> assumptions(const FlexibleRun& run, const std::string& top_height_name) {
+    const dynamics::FlexibleModel& model = run.model;
+    std::vector<std::string> out;
+    if (model.mass_fraction_default)
+        out.push_back(fmt::format("modal mass {} M: first mode of a uniform cantilever",
+                                  model.mass_fraction));
+    if (model.height_default)
+        out.push_back(fmt::format(
+            "modal height {:.4g} m: {} of the body's height, taken as the top height {:.4g} m "
+            "({}; 2 x the CG height when not given)",
+            model.height_m, dynamics::cantilever_modal_height_ratio, model.rigid.top_height_m,
+            top_height_name));
+    return out;
+}
+
+json to_json(const SimulateResult& result, const std::string& top_height_name) {
+    using namespace simulate_json_detail;
+    struct Visitor {
+        const std::string& top_name;
+        json operator()(const PlanarRun& r) const { return to_json(r.result.summary); }
+        json operator()(const BiaxialRun& r) const { return biaxial_json(r.result.summary); }
+        json operator()(const FlexibleRun& r) const { return flexible_json(r, top_name); }
+        json operator()(const PairRun& r) const { return pair_json(r); }
+    };
+    return std::visit(Visitor{top_height_name}, result.run);
+}
+
+}  // namespace freestand::api
