@@ -9,8 +9,9 @@
 ///     sign change ends one (docs/methods.md s.2, s.3, s.10),
 ///   - its impact rule (what a contact or landing does to the rates, and the settling rule),
 /// and takes from the skeleton
-///   - the input: piecewise-linear base acceleration per sample segment (BaseMotion,
-///     BiaxialBase); every step ends at a sample time, where the input's slope jumps;
+///   - the input: piecewise-linear base acceleration per sample segment (BaseMotion and its
+///     Segment, BiaxialBase and its BiaxialSegment, integrators.hpp and biaxial_detail.hpp);
+///     every step ends at a sample time, where the input's slope jumps;
 ///   - step control: run_fixed_steps() for the fixed-step baselines (n_sub steps per segment,
 ///     then the segment-end sample), AdaptiveStep for an error-controlled stepper (dopri5.hpp)
 ///     with its step limits (1e-14 s floor, Options::max_contact_step_s, the snap onto the

@@ -25,12 +25,6 @@ constexpr double half_pi = std::numbers::pi / 2.0;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
 
-// Linear base acceleration on the current segment.
-struct Segment {
-    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
-    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
-};
-
 enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
 
 // False only if sigma (v + c0 t + c1 t^2 / 2) > 0 on all of (0, span]: the end value and, when
@@ -50,8 +44,7 @@ public:
 
     // Advances from t towards tb on segment k; returns the time reached (tb or an event).
     double advance(std::size_t k, double t, double tb) {
-        bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
-        seg_.tk = bm_.t_k(k);
+        seg_ = bm_.linear_segment(k);
         tb_ = tb;
         switch (st_.mode) {
             case Mode::rest: return advance_rest(t);
@@ -505,8 +498,7 @@ private:
     }
 
     void enter_segment(std::size_t k) {
-        bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
-        seg_.tk = bm_.t_k(k);
+        seg_ = bm_.linear_segment(k);
         tb_ = bm_.t_k(k + 1);
     }
 

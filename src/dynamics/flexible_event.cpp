@@ -26,11 +26,6 @@ using Stepper = Dopri5<8>;
 
 constexpr double half_pi = std::numbers::pi / 2.0;
 
-struct Segment {
-    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
-    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
-};
-
 enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unload_right, land };
 
 // The accepted step [t, t + h]'s continuous extension at a time inside it: the state, one
@@ -96,8 +91,7 @@ public:
         if (m_.mode != Mode::rest || bm.t_k(k) < hold_until_) return k;
         const double min_end = bm.min_end_s();
         for (; k < n_seg; ++k) {
-            bm.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
-            seg_.tk = bm.t_k(k);
+            seg_ = bm.linear_segment(k);
             tb_ = bm.t_k(k + 1);
             if (std::abs(tb_ - seg_.tk - full_step_.tau) > 1e-9 * full_step_.tau) return k;
             double q = x_[4], qd = x_[5];
@@ -571,12 +565,7 @@ FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, c
     FlexRecorder rec(g, o, out);
     FlexEngine engine(g, o, bm, rec, rigid_limit_hz);
     const std::size_t n_seg = bm.segments(o.tail_s);
-    auto segment = [&](std::size_t k) {
-        Segment s;
-        bm.segment(k, s.ax0, s.ax1, s.G0, s.G1);
-        s.tk = bm.t_k(k);
-        return s;
-    };
+    auto segment = [&](std::size_t k) { return bm.linear_segment(k); };
     engine.start(segment(0).at(probe_time(0.0, bm.dt())));
     engine.sample(0.0, bm.sample(0));
     double t_end = bm.t_k(n_seg);

@@ -13,6 +13,12 @@
 
 namespace freestand::dynamics::detail {
 
+/// Base acceleration on one input segment, linear in t - tk: ax = ax0 + ax1 (t - tk), G likewise.
+struct Segment {
+    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
+    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
+};
+
 /// Piecewise-linear base acceleration; sample i at i dt, zero from sample n on (the base is at
 /// rest after the record).
 class BaseMotion {
@@ -37,6 +43,13 @@ public:
         ax1 = (h(k + 1) - ax0) * inv_dt_;
         G0 = g_ + v(k);
         G1 = (v(k + 1) - v(k)) * inv_dt_;
+    }
+    /// Segment k with its start time.
+    Segment linear_segment(std::size_t k) const {
+        Segment s;
+        segment(k, s.ax0, s.ax1, s.G0, s.G1);
+        s.tk = t_k(k);
+        return s;
     }
     /// First time from which the base is at rest for good, s.
     double quiet_from_s() const { return quiet_from_; }
