@@ -4,7 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "assess/materials.hpp"
-#include "assess/toml_reader.hpp"
+#include "assess/toml_reader_detail.hpp"
 #include "core/limits.hpp"
 
 namespace freestand::assess {

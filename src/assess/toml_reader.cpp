@@ -1,4 +1,4 @@
-#include "assess/toml_reader.hpp"
+#include "assess/toml_reader_detail.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

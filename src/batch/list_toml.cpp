@@ -2,7 +2,7 @@
 // list:line and case.<key> as a case file's do.
 #include <fmt/format.h>
 
-#include "assess/toml_reader.hpp"
+#include "assess/toml_reader_detail.hpp"
 #include "core/limits.hpp"
 #include "batch/list.hpp"
 #include "batch/list_detail.hpp"

@@ -105,19 +105,24 @@ BiaxialResult run_biaxial_cd(const BiaxialModel& m, const BiaxialBase& base, con
     constexpr const char* name = "cd";
     BiaxialRecorder rec(o, 0.0);
     const double h = central_difference_step_s(base.dt(), o.cd_dt_s);
-    const auto n_sub = static_cast<std::size_t>(std::lround(base.dt() / h));
     const std::size_t n_seg = base.segments(o.tail_s);
     BiaxialState st;
     rec.sample(0.0, st);
     BiaxialCdStepper stepper(m, rec, st);
-    for (std::size_t k = 0; k < n_seg; ++k) {
-        const BiaxialSegment seg = base.segment(k);
-        for (std::size_t j = 0; j < n_sub; ++j) stepper.step(seg, seg.tk + h * static_cast<double>(j), h);
-        const double tb = base.t_k(k + 1);
-        rec.sample(tb, st);
-        if (st.mode == Mode::rest && tb >= base.quiet_from_s()) return rec.finish(st, tb, name);
-    }
-    return rec.finish(st, base.t_k(n_seg), name);
+    std::size_t k_seg = 0;
+    BiaxialSegment seg = base.segment(0);
+    const FixedRun run = run_fixed_steps(
+        base.dt(), h, n_seg,
+        [&](std::size_t k, double t, double dt) {
+            if (k != k_seg) seg = base.segment(k_seg = k);
+            stepper.step(seg, t, dt);
+            return true;
+        },
+        [&](std::size_t, double tb) {
+            rec.sample(tb, st);
+            return st.mode == Mode::rest && tb >= base.quiet_from_s();
+        });
+    return rec.finish(st, run.end_s, name);
 }
 
 }  // namespace freestand::dynamics::detail

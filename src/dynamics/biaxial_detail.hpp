@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "dynamics/biaxial.hpp"
+#include "dynamics/engine.hpp"
 #include "core/steps.hpp"
 
 namespace freestand::dynamics::detail {
@@ -141,17 +142,17 @@ public:
     BiaxialRecorder(const Options& o, double pga_mps2) : record_series_(o.record_series) {
         summary_.pga_g = pga_mps2 / o.g_mps2;
     }
+    BiaxialRecorder(const BiaxialRecorder&) = delete;  // the tally refers to its own summary
+    BiaxialRecorder& operator=(const BiaxialRecorder&) = delete;
     /// Tracks the peaks of |u|, |u_x| and |u_y| at a state of the trajectory.
     void observe(const Vec2& u) {
         summary_.slide_max_m = std::max(summary_.slide_max_m, norm(u));
         summary_.slide_max_x_m = std::max(summary_.slide_max_x_m, std::abs(u[0]));
         summary_.slide_max_y_m = std::max(summary_.slide_max_y_m, std::abs(u[1]));
     }
-    void transition(Mode from, Mode to) {
-        if (from != to) ++summary_.mode_changes;
-    }
-    void time_in(Mode m, double dt_s) { summary_.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s; }
-    void step() { ++summary_.steps; }
+    void transition(Mode from, Mode to) { tally_.transition(from, to); }
+    void time_in(Mode m, double dt_s) { tally_.time_in(m, dt_s); }
+    void step() { tally_.step(); }
     void rejected() { ++summary_.rejected_steps; }
     void sample(double t_s, const BiaxialState& st) {
         if (record_series_) series_.push_back({t_s, st.u[0], st.u[1], st.v[0], st.v[1], st.mode});
@@ -170,6 +171,7 @@ private:
     bool record_series_ = true;
     BiaxialSummary summary_;
     std::vector<BiaxialSample> series_;
+    ModeTally<BiaxialSummary> tally_{summary_};
 };
 
 BiaxialResult run_biaxial_event(const BiaxialModel& m, const BiaxialBase& base, const Options& o);

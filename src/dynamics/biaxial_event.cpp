@@ -109,7 +109,7 @@ public:
 
 private:
     // A start exactly at a threshold is classified a little after it (strict inequalities).
-    double probe_time(double t) const { return t + std::min(1e-9, 0.5 * (tb_ - t)); }
+    double probe_time(double t) const { return detail::probe_time(t, tb_); }
 
     void set_mode(Mode next) {
         rec_.transition(st_.mode, next);
@@ -200,66 +200,69 @@ private:
                 start_from_rest(t);
                 return t;
             }
-            set_slaved(t);
-            const double speed_now = norm(st_.v);
-            rhs_.d = speed_now > 0.0 ? Vec2{st_.v[0] / speed_now, st_.v[1] / speed_now}
-                                     : d_start_;
-            const State x0 = {st_.u[0], st_.u[1], st_.v[0], st_.v[1]};
-            if (!fsal_) rhs_(x0, k1_, t);
-            if (h_next_ < 1e-14 * std::max(1.0, t))
-                throw NumericalError(fmt::format(
-                    "biaxial event-driven integrator: the step fell below 1e-14 s at t = {} s", t));
-            double h = std::min({h_next_, t_end - t, o_.max_contact_step_s});
-            if (t_end - (t + h) < 1e-12 * h + 8.0 * eps_ * t_end) h = t_end - t;
-            const bool clipped = h < h_next_;
-            const double err = dp_.step(rhs_, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
-            if (!(err <= 1.0)) {
-                rec_.rejected();
-                fsal_ = true;
-                h_next_ = h * std::min(1.0, Stepper::factor(err));
-                continue;
-            }
-            // A step cut short by the segment's end keeps the longer step it was allowed.
-            h_next_ = clipped ? std::max(h_next_, h * Stepper::factor(err))
-                              : h * Stepper::factor(err);
-            const double t1 = (h == t_end - t) ? t_end : t + h;
-            const State x1 = dp_.x1();
-            auto dense = [&](double te) { return dp_.dense((te - t) / h); };
-            const double t_stop = stop_in_step(dense, x0, x1, t, t1);
-            if (t_stop < 0.0) {  // a turn, not a stop: retry up to half the way to it
-                rec_.rejected();
-                fsal_ = true;
-                h_next_ = 0.5 * (-t_stop - t);
-                continue;
-            }
-            if (t_stop == t && speed == 0.0 && !redirected_ && norm(vel(x1)) > 0.0) {
-                // A restart whose load turns within the step (a frictionless base under a load
-                // passing through zero): it leaves along the slip it gains, not along -a_g.
-                redirected_ = true;
-                rec_.rejected();
-                d_start_ = {x1[2] / norm(vel(x1)), x1[3] / norm(vel(x1))};
-                fsal_ = false;
-                continue;
-            }
-            const double te = t_stop < t1 ? t_stop : t1;
-            const State xe = t_stop < t1 ? dense(te) : x1;
-            rec_.step();
-            rec_.time_in(Mode::slide, te - t);
-            observe_peaks(dense, x0, xe, t, te);
-            st_.u = pos(xe);
-            st_.v = vel(xe);
-            if (t_stop < t1) {
-                fsal_ = false;
-                st_.v = {0.0, 0.0};
-                start_from_rest(te);
-                return te;
-            }
-            k1_ = dp_.k7();  // f(x1, t1) with x1 . d > 0: the next step's first stage
-            fsal_ = true;
-            t = te;
+            if (slide_step(t, t_end, speed) == SlideStep::stopped) return t;
         }
         if (lifts) set_mode(Mode::flight);
         return t_end;
+    }
+
+    enum class SlideStep { retried, taken, stopped };
+
+    // One Dormand-Prince step of the slide from t towards t_end (speed: |v| at t): rejected by
+    // the error control, a turn or a redirected restart (retried), or accepted up to t_end or to
+    // a stop (stopped), t then the time reached.
+    SlideStep slide_step(double& t, double t_end, double speed) {
+        set_slaved(t);
+        const double speed_now = norm(st_.v);
+        rhs_.d = speed_now > 0.0 ? Vec2{st_.v[0] / speed_now, st_.v[1] / speed_now} : d_start_;
+        const State x0 = {st_.u[0], st_.u[1], st_.v[0], st_.v[1]};
+        if (!fsal_) rhs_(x0, k1_, t);
+        const double h =
+            step_.propose(t, t_end, o_.max_contact_step_s, "biaxial event-driven integrator");
+        const double err = dp_.step(rhs_, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
+        if (!(err <= 1.0)) {
+            rec_.rejected();
+            fsal_ = true;
+            step_.reject(Stepper::factor(err));
+            return SlideStep::retried;
+        }
+        step_.accept(Stepper::factor(err));
+        const double t0 = t, t1 = step_.step_end(t0, t_end);
+        const State x1 = dp_.x1();
+        auto dense = [&](double te) { return dp_.dense((te - t0) / h); };
+        const double t_stop = stop_in_step(dense, x0, x1, t0, t1);
+        if (t_stop < 0.0) {  // a turn, not a stop: retry up to half the way to it
+            rec_.rejected();
+            fsal_ = true;
+            step_.retry_with(0.5 * (-t_stop - t0));
+            return SlideStep::retried;
+        }
+        if (t_stop == t0 && speed == 0.0 && !redirected_ && norm(vel(x1)) > 0.0) {
+            // A restart whose load turns within the step (a frictionless base under a load
+            // passing through zero): it leaves along the slip it gains, not along -a_g.
+            redirected_ = true;
+            rec_.rejected();
+            d_start_ = {x1[2] / norm(vel(x1)), x1[3] / norm(vel(x1))};
+            fsal_ = false;
+            return SlideStep::retried;
+        }
+        const double te = t_stop < t1 ? t_stop : t1;
+        const State xe = t_stop < t1 ? dense(te) : x1;
+        rec_.step();
+        rec_.time_in(Mode::slide, te - t0);
+        observe_peaks(dense, x0, xe, t0, te);
+        st_.u = pos(xe);
+        st_.v = vel(xe);
+        t = te;
+        if (t_stop < t1) {
+            fsal_ = false;
+            st_.v = {0.0, 0.0};
+            start_from_rest(te);
+            return SlideStep::stopped;
+        }
+        k1_ = dp_.k7();  // f(x1, t1) with x1 . d > 0: the next step's first stage
+        fsal_ = true;
+        return SlideStep::taken;
     }
 
     // Chooses the slaved or the full equation for the step starting at t (takes_slaved) and
@@ -379,7 +382,6 @@ private:
         return te;
     }
 
-    static constexpr double eps_ = std::numeric_limits<double>::epsilon();
     const BiaxialModel& m_;
     const Options& o_;
     BiaxialRecorder& rec_;
@@ -390,7 +392,7 @@ private:
     SlideRhs rhs_;
     BiaxialSegment seg_;
     double tb_ = 0.0;
-    double h_next_ = 1e-3;    // step the error control proposes next
+    AdaptiveStep step_;
     double tau_s_ = 0.0;      // slaved_tau_s of the options' tolerance
     Vec2 d_start_{1.0, 0.0};  // slip direction of a start from v = 0
     bool redirected_ = false; // d_start_ was taken from the first step's slip

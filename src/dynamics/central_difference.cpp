@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "dynamics/engine.hpp"
 #include "dynamics/integrators.hpp"
 
 namespace freestand::dynamics::detail {
@@ -185,7 +186,6 @@ SimulationResult run_central_difference(const Geometry& g, const BaseMotion& bm,
                                         const Options& o) {
     Recorder rec(g, o, bm.pga_mps2());
     const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
-    const auto n_sub = static_cast<std::size_t>(std::lround(bm.dt() / h));
     const std::size_t n_seg = bm.segments(o.tail_s);
     const Base b0 = bm.at(0, 0.0);
     BlockState st = initial_state(g, o, b0, b0);
@@ -194,21 +194,18 @@ SimulationResult run_central_difference(const Geometry& g, const BaseMotion& bm,
     rec.observe(st);
     rec.sample(0.0, st, b0);
     CdStepper stepper(g, bm, o, rec, st);
-    for (std::size_t k = 0; k < n_seg; ++k) {
-        const double tk = bm.t_k(k);
-        for (std::size_t j = 0; j < n_sub; ++j) {
-            const double t = tk + h * static_cast<double>(j);
-            if (!stepper.step(k, t, h)) return rec.finish(st, t + h, integrator_name(Integrator::central_difference));
-        }
-        const double tb = bm.t_k(k + 1);
-        rec.sample(tb, st, bm.at(k, tb));
-        if (st.mode == Mode::rest && tb >= bm.min_end_s())
-            return rec.finish(st, tb, integrator_name(Integrator::central_difference));
-    }
+    const char* name = integrator_name(Integrator::central_difference);
+    const FixedRun run = run_fixed_steps(
+        bm.dt(), h, n_seg,
+        [&](std::size_t k, double t, double dt) { return stepper.step(k, t, dt); },
+        [&](std::size_t k, double tb) {
+            rec.sample(tb, st, bm.at(k, tb));
+            return st.mode == Mode::rest && tb >= bm.min_end_s();
+        });
+    if (run.stopped) return rec.finish(st, run.end_s, name);
     // The run ends with the body as it is: the rule applies to that state too.
-    const double t_end = bm.t_k(n_seg);
-    rec.check_overturn(st, t_end, t_end >= bm.quiet_from_s());
-    return rec.finish(st, t_end, integrator_name(Integrator::central_difference));
+    rec.check_overturn(st, run.end_s, run.end_s >= bm.quiet_from_s());
+    return rec.finish(st, run.end_s, name);
 }
 
 }  // namespace freestand::dynamics::detail

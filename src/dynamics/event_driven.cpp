@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "core/steps.hpp"
+#include "dynamics/engine.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/integrators.hpp"
 #include "dynamics/taylor.hpp"
@@ -22,73 +23,9 @@ namespace {
 using Vec = std::array<double, 4>;  // u, u', theta, theta'
 constexpr double half_pi = std::numbers::pi / 2.0;
 constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr std::size_t burst_settle = 64;      // events inside settle_interval_s before settling
-constexpr std::size_t burst_fail = 100000;    // ... before giving up
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
-// How long a block settled by the chatter rule stays at rest before the rest criteria are
-// evaluated again. A burst can be a loop at one instant: a rock onset whose excursion lies
-// below the impact search's resolution (the base grazing g tan(alpha)) returns to theta = 0
-// at once, settles, and starts again at the same t. In 1 us such an onset lifts the block by
-// about (A - g tan alpha) t^2 / (2 R): far below any angle that matters.
-constexpr double settle_hold_s = 1e-6;
-
-// Linear base acceleration on the current segment.
-struct Segment {
-    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
-    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
-};
 
 enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
-
-// Root of a smooth f in a sign-changing bracket [a, b] by Newton's method with the derivative
-// g(t) = {f, f'} gives (the dense output carries theta and theta'), safeguarded by bisection
-// when a step leaves the bracket; stops at a step below 4 ulp, or below x_tol_s if given. 3-4
-// evaluations where TOMS 748 needs ~10 (it cannot use the derivative).
-template <class G>
-double newton_root(G g, double a, double b, double fa, double fb, double x_tol_s = 0.0) {
-    if (fa == 0.0) return a;
-    if (fb == 0.0) return b;
-    const double ulp4 = 4.0 * std::numeric_limits<double>::epsilon();
-    double x = a - fa * (b - a) / (fb - fa);  // secant start
-    for (int it = 0; it < 100; ++it) {
-        const auto [fx, dfx] = g(x);
-        if (fx == 0.0) return x;
-        if ((fx < 0.0) == (fa < 0.0)) {
-            a = x;
-            fa = fx;
-        } else {
-            b = x;
-        }
-        double xn = dfx != 0.0 ? x - fx / dfx : 0.5 * (a + b);
-        if (std::abs(xn - x) <= std::max(ulp4 * std::abs(x), x_tol_s)) return std::clamp(xn, a, b);
-        if (!(xn > a && xn < b)) xn = 0.5 * (a + b);
-        if (b - a <= ulp4 * std::abs(x)) return xn;
-        x = xn;
-    }
-    return x;
-}
-
-// Smallest root of c0 + c1 t + c2 t^2 in (tmin, tmax]; +inf if none. c0 == 0 drops t = 0.
-double first_quadratic_root(double c0, double c1, double c2, double tmin, double tmax) {
-    const double inf = std::numeric_limits<double>::infinity();
-    double r1 = inf, r2 = inf;
-    if (c0 == 0.0) {
-        if (c2 != 0.0) r1 = -c1 / c2;
-    } else if (c2 == 0.0) {
-        if (c1 != 0.0) r1 = -c0 / c1;
-    } else {
-        const double disc = c1 * c1 - 4.0 * c2 * c0;
-        if (disc < 0.0) return inf;
-        // Numerically stable pair (Press et al., Numerical Recipes 5.6).
-        const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-        r1 = q / c2;
-        r2 = q != 0.0 ? c0 / q : inf;
-    }
-    double best = inf;
-    for (double r : {r1, r2})
-        if (r > tmin && r <= tmax && r < best) best = r;
-    return best;
-}
 
 // False only if sigma (v + c0 t + c1 t^2 / 2) > 0 on all of (0, span]: the end value and, when
 // the vertex t = -c0/c1 lies inside, the extremum are on the slip side. Saves the root solve
@@ -107,8 +44,7 @@ public:
 
     // Advances from t towards tb on segment k; returns the time reached (tb or an event).
     double advance(std::size_t k, double t, double tb) {
-        bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
-        seg_.tk = bm_.t_k(k);
+        seg_ = bm_.linear_segment(k);
         tb_ = tb;
         switch (st_.mode) {
             case Mode::rest: return advance_rest(t);
@@ -123,10 +59,7 @@ public:
 private:
     // Base a little after t, to classify a start exactly at a threshold (section 2 uses strict
     // inequalities, so at the threshold itself the block is still at rest).
-    Base probe(double t) const {
-        const double dt = std::min(1e-9, 0.5 * (tb_ - t));
-        return seg_.at(dt > 0.0 ? t + dt : t);
-    }
+    Base probe(double t) const { return seg_.at(t < tb_ ? probe_time(t, tb_) : t); }
 
     void set_mode(const Start& k, double t) {
         rec_.transition(st_.mode, k.mode);
@@ -141,18 +74,12 @@ private:
 
     // Chatter guard: many events inside settle_interval_s settle the block at rest.
     void note_event(double t) {
-        burst_ = (t - last_event_ < o_.settle_interval_s) ? burst_ + 1 : 0;
-        last_event_ = t;
-        if (burst_ == burst_settle) {
-            rec_.settlement();
-            rec_.transition(st_.mode, Mode::rest);
-            st_.mode = Mode::rest;
-            st_.v = st_.th = st_.om = 0.0;
-            rest_hold_until_ = t + settle_hold_s;
-        }
-        if (burst_ > burst_fail)
-            throw NumericalError(fmt::format(
-                "event-driven integrator: events accumulate at t = {} s without settling", t));
+        if (!chatter_.note(t, o_.settle_interval_s, "event-driven integrator")) return;
+        rec_.settlement();
+        rec_.transition(st_.mode, Mode::rest);
+        st_.mode = Mode::rest;
+        st_.v = st_.th = st_.om = 0.0;
+        rest_hold_until_ = t + settle_hold_s;
     }
 
     // Flat contact again (after settling or a flat landing): slide if slipping, else from rest.
@@ -188,7 +115,7 @@ private:
         t_ev = std::clamp(t_ev, t, tb_);
         rec_.time_in(Mode::rest, t_ev - t);
         const Start k = classify_from_rest(g_, probe(t_ev));
-        if (k.mode == Mode::rest) return std::min(tb_, t_ev + std::min(1e-9, 0.5 * (tb_ - t_ev)));
+        if (k.mode == Mode::rest) return std::min(tb_, probe_time(t_ev, tb_));
         set_mode(k, t_ev);
         return t_ev;
     }
@@ -571,8 +498,7 @@ private:
     }
 
     void enter_segment(std::size_t k) {
-        bm_.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
-        seg_.tk = bm_.t_k(k);
+        seg_ = bm_.linear_segment(k);
         tb_ = bm_.t_k(k + 1);
     }
 
@@ -736,8 +662,7 @@ private:
     double known_t_ = 0.0;
     Vec known_x_{};
     Mode known_mode_ = Mode::rest;
-    double last_event_ = -1.0;
-    std::size_t burst_ = 0;
+    ChatterGuard chatter_;
     double rest_hold_until_ = -1.0;
     bool armed_ = false;
 };
@@ -748,7 +673,7 @@ SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const
     Recorder rec(g, o, bm.pga_mps2());
     const std::size_t n_seg = bm.segments(o.tail_s);
     const Base b0 = bm.at(0, 0.0);
-    BlockState st = initial_state(g, o, b0, bm.at(0, std::min(1e-9, 0.5 * bm.dt())));
+    BlockState st = initial_state(g, o, b0, bm.at(0, probe_time(0.0, bm.dt())));
     rec.transition(Mode::rest, st.mode);
     if (st.mode == Mode::flight) st.fl = to_flight(g, st.s, st.u, st.v, st.th, st.om);
     rec.observe(st);

@@ -256,28 +256,21 @@ FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, cons
     FlexibleResult out;
     FlexRecorder rec(g, o, out);
     const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
-    const auto n_sub = static_cast<std::size_t>(std::lround(bm.dt() / h));
     const std::size_t n_seg = bm.segments(o.tail_s);
     FlexCdStepper stepper(g, bm, o, rec);
     stepper.start(bm.at(0, 0.0));
     stepper.sample(0.0, bm.sample(0));
-    double t_end = bm.t_k(n_seg);
-    for (std::size_t k = 0; k < n_seg && !rec.overturned(); ++k) {
-        const double tk = bm.t_k(k);
-        for (std::size_t j = 0; j < n_sub && !rec.overturned(); ++j) {
-            stepper.step(k, tk + h * static_cast<double>(j), h);
-        }
-        const double tb = bm.t_k(k + 1);
-        if (rec.overturned()) {
-            t_end = out.summary.base.overturn_time_s.value_or(tb);
-            break;
-        }
-        stepper.sample(tb, bm.sample(k + 1));
-        if (tb >= bm.min_end_s() && stepper.settled(o.g_mps2)) {
-            t_end = tb;
-            break;
-        }
-    }
+    const FixedRun run = run_fixed_steps(
+        bm.dt(), h, n_seg,
+        [&](std::size_t k, double t, double dt) {
+            stepper.step(k, t, dt);
+            return !rec.overturned();
+        },
+        [&](std::size_t k, double tb) {
+            stepper.sample(tb, bm.sample(k + 1));
+            return tb >= bm.min_end_s() && stepper.settled(o.g_mps2);
+        });
+    double t_end = run.end_s;
     // The run ends with the body as it is: the rule applies to that state too.
     if (!rec.overturned()) rec.check_overturn(stepper.mode(), stepper.state(), t_end, t_end >= bm.quiet_from_s());
     if (rec.overturned()) t_end = out.summary.base.overturn_time_s.value_or(t_end);

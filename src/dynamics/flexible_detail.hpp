@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dynamics/engine.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/integrators.hpp"
 #include "dynamics/mechanics.hpp"
@@ -291,6 +292,8 @@ void flex_rhs(const FlexGeometry& g, const FlexMode& m, const FlexState& x, Base
 class FlexRecorder {
 public:
     FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out);
+    FlexRecorder(const FlexRecorder&) = delete;  // the tallies refer to out's summary
+    FlexRecorder& operator=(const FlexRecorder&) = delete;
     /// Peaks of slip, uplift and |q| at the state x in mode m (inline: once per step and
     /// sample). The tilt in flight counts as a rotation (phi < 0 leans over the right edge).
     void observe(const FlexMode& m, const FlexState& x) {
@@ -317,15 +320,15 @@ public:
         if (o_.record_series) record(t, m, x);
     }
     void transition(Mode from, Mode to);
-    void time_in(Mode m, double dt_s) {
-        out_.summary.base.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s;
-    }
-    void step() { ++out_.summary.base.steps; }
+    void time_in(Mode m, double dt_s) { tally_.time_in(m, dt_s); }
+    void step() { tally_.step(); }
     void rejected() { ++out_.summary.rejected_steps; }
-    void impact(double t_s, double omega_before, double omega_after, bool settled);
-    void settlement() { ++out_.summary.base.settlements; }
-    void overturn(double t_s, OverturnCriterion criterion);
-    bool overturned() const { return out_.summary.base.overturned; }
+    void impact(double t_s, double omega_before, double omega_after, bool settled) {
+        log_.impact(t_s, omega_before, omega_after, settled);
+    }
+    void settlement() { log_.settlement(); }
+    void overturn(double t_s, OverturnCriterion criterion) { log_.overturn(t_s, criterion); }
+    bool overturned() const { return log_.overturned(); }
     /// Fills the summary's totals; slide_residual_m from the final state.
     void finish(const char* integrator, double end_time_s, double pga_mps2, double residual_m,
                 double wall_s);
@@ -333,15 +336,14 @@ public:
 private:
     void record(double t, const FlexMode& m, const FlexState& x);
     void rotation_peak(double theta_rad, int s) {
-        Summary& b = out_.summary.base;
-        b.rock_max_rad = std::max(b.rock_max_rad, theta_rad);
-        const double alpha = g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(s))];
-        b.rock_max_over_alpha = std::max(b.rock_max_over_alpha, theta_rad / alpha);
+        log_.rotation_peak(theta_rad, g_.rigid.alpha[static_cast<std::size_t>(Geometry::index(s))]);
     }
 
     const FlexGeometry& g_;
     const Options& o_;
     FlexibleResult& out_;
+    ModeTally<Summary> tally_{out_.summary.base};
+    ContactLog log_{out_.summary.base, out_.impact_log};
     double accel_peak_ = 0.0;
     /// Least potential energy of a pose with the CG over edge [i] (left, right), J.
     std::array<double, 2> ridge_energy_J_{};

@@ -25,13 +25,6 @@ namespace {
 using Stepper = Dopri5<8>;
 
 constexpr double half_pi = std::numbers::pi / 2.0;
-constexpr std::size_t burst_settle = 64;
-constexpr std::size_t burst_fail = 100000;
-
-struct Segment {
-    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
-    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
-};
 
 enum class Ev { none, impact, overturn, lift, friction, stop, unload_left, unload_right, land };
 
@@ -98,8 +91,7 @@ public:
         if (m_.mode != Mode::rest || bm.t_k(k) < hold_until_) return k;
         const double min_end = bm.min_end_s();
         for (; k < n_seg; ++k) {
-            bm.segment(k, seg_.ax0, seg_.ax1, seg_.G0, seg_.G1);
-            seg_.tk = bm.t_k(k);
+            seg_ = bm.linear_segment(k);
             tb_ = bm.t_k(k + 1);
             if (std::abs(tb_ - seg_.tk - full_step_.tau) > 1e-9 * full_step_.tau) return k;
             double q = x_[4], qd = x_[5];
@@ -138,26 +130,19 @@ private:
         set_mode(classify_flat(g_, x_[4], x_[5], v, probe(t)), t);
     }
 
+    // Chatter guard: many events inside settle_interval_s settle the body at rest.
     void note_event(double t) {
-        burst_ = (t - last_event_ < o_.settle_interval_s) ? burst_ + 1 : 0;
-        last_event_ = t;
-        if (burst_ == burst_settle) {
-            rec_.settlement();
-            const Pose p = pose_of(g_, m_, x_);
-            const double u = is_flight(m_.mode) ? p.X : x_[0];
-            x_ = {u, 0.0, 0.0, 0.0, p.q, flat_modal_rate(g_, p, u, 0.0), 0.0, 0.0};
-            rec_.transition(m_.mode, Mode::rest);
-            m_ = {Mode::rest, 1, 1};
-            hold_until_ = t + 1e-6;
-        }
-        if (burst_ > burst_fail)
-            throw NumericalError(fmt::format(
-                "flexible-body integrator: events accumulate at t = {} s without settling", t));
+        if (!chatter_.note(t, o_.settle_interval_s, integrator_name_)) return;
+        rec_.settlement();
+        const Pose p = pose_of(g_, m_, x_);
+        const double u = is_flight(m_.mode) ? p.X : x_[0];
+        x_ = {u, 0.0, 0.0, 0.0, p.q, flat_modal_rate(g_, p, u, 0.0), 0.0, 0.0};
+        rec_.transition(m_.mode, Mode::rest);
+        m_ = {Mode::rest, 1, 1};
+        hold_until_ = t + settle_hold_s;
     }
 
-    Base probe(double t) const {
-        return seg_.at(std::min(tb_, t + std::min(1e-9, 0.5 * (tb_ - t))));
-    }
+    Base probe(double t) const { return seg_.at(std::min(tb_, probe_time(t, tb_))); }
 
     // Rest: the exact oscillator to the segment's end, or to the first failure of rest.
     double advance_rest(double t) {
@@ -198,7 +183,7 @@ private:
         const double m0 = margin_of(q0, qd0, t);
         const double te = m0 < 0.0 ? t : toms748_root(margin, t, tb_, m0, m1);
         step_rest(t, te);
-        const double tp = std::min(tb_, te + std::min(1e-9, 0.5 * (tb_ - te)));
+        const double tp = std::min(tb_, probe_time(te, tb_));
         const auto [qp, qdp] = state_at(tp);
         const FlexMode next = classify_flat(g_, qp, qdp, 0.0, seg_.at(tp));
         if (next.mode == Mode::rest) {
@@ -364,25 +349,18 @@ private:
                 a0_ = a_last_;
                 fsal_ = true;
             }
-            if (h_next_ < 1e-14 * std::max(1.0, t))
-                throw NumericalError(fmt::format(
-                    "flexible-body integrator: the step fell below 1e-14 s at t = {} s", t));
-            double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
-            if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
-            const bool clipped = h < h_next_;
+            const double h = step_.propose(t, tb_, o_.max_contact_step_s, integrator_name_);
             // The steps a stiff mode needs grow with its frequency: bounded, not run for ever.
             require_step_budget(++dp_steps_, t, g_.omega / (2.0 * std::numbers::pi), rigid_limit_hz_);
             const double err = dp_step(f, t, x_, h);
             if (!(err <= 1.0)) {
                 rec_.rejected();
-                h_next_ = h * std::min(1.0, Stepper::factor(err));
+                step_.reject(Stepper::factor(err));
                 continue;
             }
-            // A step cut short by the segment's end keeps the longer step it was allowed.
-            h_next_ = clipped ? std::max(h_next_, h * Stepper::factor(err))
-                              : h * Stepper::factor(err);
+            step_.accept(Stepper::factor(err));
             rec_.step();
-            const double t1 = (h == tb_ - t) ? tb_ : t + h;
+            const double t1 = step_.step_end(t, tb_);
             const FlexState& x0 = dp_.x0();
             const FlexState& x1 = dp_.x1();
             const FlexAccel& a1 = a_last_;  // f(x1, t1), the last stage
@@ -553,7 +531,7 @@ private:
         set_mode(classify_edge(g_, l.st.s, pose_of(g_, m_, x_), 0.0, seg_.at(t)), t);
     }
 
-    static constexpr double eps_ = std::numeric_limits<double>::epsilon();
+    static constexpr const char* integrator_name_ = "flexible-body integrator";
     const FlexGeometry& g_;
     const Options& o_;
     FlexRecorder& rec_;
@@ -574,9 +552,8 @@ private:
     FlexAccel a_end_{};       // ... at the end of the last step that met no event
     bool end_valid_ = false;
     double end_t_ = -1.0;
-    double h_next_ = 1e-3;
-    double last_event_ = -1.0;
-    std::size_t burst_ = 0;
+    AdaptiveStep step_;
+    ChatterGuard chatter_;
     double hold_until_ = -1.0;
 };
 
@@ -588,13 +565,8 @@ FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, c
     FlexRecorder rec(g, o, out);
     FlexEngine engine(g, o, bm, rec, rigid_limit_hz);
     const std::size_t n_seg = bm.segments(o.tail_s);
-    auto segment = [&](std::size_t k) {
-        Segment s;
-        bm.segment(k, s.ax0, s.ax1, s.G0, s.G1);
-        s.tk = bm.t_k(k);
-        return s;
-    };
-    engine.start(segment(0).at(std::min(1e-9, 0.5 * bm.dt())));
+    auto segment = [&](std::size_t k) { return bm.linear_segment(k); };
+    engine.start(segment(0).at(probe_time(0.0, bm.dt())));
     engine.sample(0.0, bm.sample(0));
     double t_end = bm.t_k(n_seg);
     for (std::size_t k = 0; k < n_seg; ++k) {

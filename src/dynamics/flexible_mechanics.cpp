@@ -232,8 +232,15 @@ FlexGeometry make_flex_geometry(const FlexibleModel& m) {
     return g;
 }
 
-FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pose& p,
-                             Base base) {
+namespace {
+
+// The body without contact at pose p: the mass matrix A of (X'', Y'', phi'', q'') (upper
+// triangle) and the forces f.
+struct FreeBody {
+    Mat4 A{};
+    std::array<double, 4> f{};
+};
+FreeBody free_body(const FlexGeometry& g, const Pose& p, Base base) {
     const double cp = p.cphi, sp = p.sphi, w = p.phid, w2 = w * w;
     const Vec2 e1 = {cp, sp};
     const Vec2 rr = rot(cp, sp, {0.0, g.hr});       // O to the rigid remainder's CG
@@ -249,8 +256,9 @@ FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pos
     // the modal mass along e1, m_s (X'' . e1 - h_s phi'' + q'' - phi'^2 q) = -k q - c q' +
     // m_s g . e1 (cross(rs, e1) = -h_s).
     const Vec2 S = {g.Mr * rr[0] + g.ms * rs[0], g.Mr * rr[1] + g.ms * rs[1]};
-    Mat4 A{};
-    std::array<double, 4> f{};
+    FreeBody body;
+    Mat4& A = body.A;
+    std::array<double, 4>& f = body.f;
     for (std::size_t i = 0; i < 2; ++i) {
         A[i][i] = g.M;
         A[i][2] = g.Mr * jr[i] + g.ms * js[i];
@@ -262,19 +270,32 @@ FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pos
     A[3][3] = g.ms;
     f[2] = -g.Mr * cross(rr, vr) - g.ms * cross(rs, vs) + cross(S, gv);
     f[3] = -g.k * p.q - g.c * p.qd + g.ms * (gv[0] * e1[0] + gv[1] * e1[1]) + g.ms * w2 * p.q;
+    return body;
+}
 
+// The contact forces and constraints of mode m at pose p.
+struct ContactSet {
+    std::array<ForceCol, 3> fc{};
+    std::size_t nf = 0;
+    std::array<std::array<double, 4>, 3> C{};
+    std::array<double, 3> gamma{};
+};
+Vec2 edge_point(const FlexGeometry& g, const Pose& p, int s) {
+    const double bx = s > 0 ? g.b[1] : -g.b[0];
+    return rot(p.cphi, p.sphi, {bx, 0.0});
+}
+ContactSet contact_set(const FlexGeometry& g, const FlexMode& m, const Pose& p) {
+    const double w = p.phid, w2 = w * w;
+    ContactSet cs;
+    std::array<ForceCol, 3>& fc = cs.fc;
+    std::size_t& nf = cs.nf;
+    std::array<std::array<double, 4>, 3>& C = cs.C;
+    std::array<double, 3>& gamma = cs.gamma;
     // Contact forces of the mode (docs/methods.md s.3): force j acts along d_j at the body
     // point r_j (column D_j of its generalised force), constraint i fixes the acceleration of a
     // contact point (row C_i: X'' + J r phi'' - phi'^2 r, one component) or phi'' = 0.
-    std::array<ForceCol, 3> fc{};
-    std::size_t nf = 0;
-    const auto edge_r = [&](int s) {
-        const double bx = s > 0 ? g.b[1] : -g.b[0];
-        return rot(cp, sp, {bx, 0.0});
-    };
+    const auto edge_r = [&](int s) { return edge_point(g, p, s); };
     const double mu = g.rigid.mu_k;
-    std::array<std::array<double, 4>, 3> C{};
-    std::array<double, 3> gamma{};
     const auto point_row = [&](std::size_t row, Vec2 rc, std::size_t comp) {
         C[row][comp] = 1.0;
         C[row][2] = perp(rc)[comp];
@@ -311,7 +332,17 @@ FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pos
             C[2][2] = 1.0;
             break;
     }
-    if (m.mode == Mode::rock) return rock_by_projection(A, f, edge_r(m.s), w2);
+    return cs;
+}
+
+// The accelerations and contact forces of mode m (not rocking: rock_by_projection).
+FlexAccel solve_with_contacts(const FlexMode& m, const FreeBody& body, const ContactSet& cs) {
+    const Mat4& A = body.A;
+    const std::array<double, 4>& f = body.f;
+    const std::array<ForceCol, 3>& fc = cs.fc;
+    const std::size_t nf = cs.nf;
+    const std::array<std::array<double, 4>, 3>& C = cs.C;
+    const std::array<double, 3>& gamma = cs.gamma;
     // A a - D lambda = f, C a = gamma: a = A^-1 (f + D lambda), (C A^-1 D) lambda = gamma -
     // C A^-1 f.
     MassSolve mass;
@@ -343,6 +374,16 @@ FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pos
         a.NR = lambda[2];
     }
     return a;
+}
+
+}  // namespace
+
+FlexAccel flex_accel_general(const FlexGeometry& g, const FlexMode& m, const Pose& p,
+                             Base base) {
+    const FreeBody body = free_body(g, p, base);
+    if (m.mode == Mode::rock)
+        return rock_by_projection(body.A, body.f, edge_point(g, p, m.s), p.phid * p.phid);
+    return solve_with_contacts(m, body, contact_set(g, m, p));
 }
 
 Pose contact_pose(const FlexGeometry& g, int s, double u, double v, double th, double om,

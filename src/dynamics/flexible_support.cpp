@@ -82,21 +82,8 @@ void FlexRecorder::record(double t, const FlexMode& m, const FlexState& x) {
 }
 
 void FlexRecorder::transition(Mode from, Mode to) {
-    if (from != to) ++out_.summary.base.mode_changes;
+    tally_.transition(from, to);
     if (to == Mode::rock || to == Mode::slide_rock || is_flight(to)) out_.summary.uplifted = true;
-}
-
-void FlexRecorder::impact(double t_s, double omega_before, double omega_after, bool settled) {
-    ++out_.summary.base.impacts;
-    out_.impact_log.push_back({t_s, omega_before, omega_after, settled});
-}
-
-void FlexRecorder::overturn(double t_s, OverturnCriterion criterion) {
-    Summary& s = out_.summary.base;
-    s.overturned = true;
-    s.overturn_time_s = t_s;
-    s.overturn_mode = s.impacts > 0 ? 1 : 2;
-    s.overturn_criterion = criterion;
 }
 
 FlexRecorder::FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResult& out)

@@ -8,9 +8,16 @@
 #include <cstddef>
 #include <vector>
 
+#include "dynamics/engine.hpp"
 #include "dynamics/mechanics.hpp"
 
 namespace freestand::dynamics::detail {
+
+/// Base acceleration on one input segment, linear in t - tk: ax = ax0 + ax1 (t - tk), G likewise.
+struct Segment {
+    double tk = 0, ax0 = 0, ax1 = 0, G0 = 0, G1 = 0;
+    Base at(double t) const { return {ax0 + ax1 * (t - tk), G0 + G1 * (t - tk)}; }
+};
 
 /// Piecewise-linear base acceleration; sample i at i dt, zero from sample n on (the base is at
 /// rest after the record).
@@ -36,6 +43,13 @@ public:
         ax1 = (h(k + 1) - ax0) * inv_dt_;
         G0 = g_ + v(k);
         G1 = (v(k + 1) - v(k)) * inv_dt_;
+    }
+    /// Segment k with its start time.
+    Segment linear_segment(std::size_t k) const {
+        Segment s;
+        segment(k, s.ax0, s.ax1, s.G0, s.G1);
+        s.tk = t_k(k);
+        return s;
     }
     /// First time from which the base is at rest for good, s.
     double quiet_from_s() const { return quiet_from_; }
@@ -94,6 +108,8 @@ inline double contact_top_accel(const Geometry& g, const BlockState& st, Base ba
 class Recorder {
 public:
     Recorder(const Geometry& g, const Options& o, double pga_mps2);
+    Recorder(const Recorder&) = delete;  // the tallies refer to its own summary
+    Recorder& operator=(const Recorder&) = delete;
     /// Tracks peak slip and rotation of the state.
     void observe(const BlockState& st) {
         // Contracts of every integrator's state at the points it reports.
@@ -119,18 +135,15 @@ public:
     /// Applies the overturning rule (overturn.hpp) to a rock / slide-rock state at t_s.
     void check_overturn(const BlockState& st, double t_s, bool input_ended);
     /// A mode change at a transition (counts only changes of Mode).
-    void transition(Mode from, Mode to) {
-        if (from != to) ++summary_.mode_changes;
-    }
-    void time_in(Mode m, double dt_s) { summary_.time_in_mode_s[static_cast<std::size_t>(m)] += dt_s; }
+    void transition(Mode from, Mode to) { tally_.transition(from, to); }
+    void time_in(Mode m, double dt_s) { tally_.time_in(m, dt_s); }
     void impact(double t_s, double omega_before, double omega_after, bool settled) {
-        ++summary_.impacts;
-        impacts_.push_back({t_s, omega_before, omega_after, settled});
+        log_.impact(t_s, omega_before, omega_after, settled);
     }
-    void settlement() { ++summary_.settlements; }
-    void step(std::size_t n = 1) { summary_.steps += n; }
-    void overturn(double t_s, OverturnCriterion c);
-    bool overturned() const { return summary_.overturned; }
+    void settlement() { log_.settlement(); }
+    void step(std::size_t n = 1) { tally_.step(n); }
+    void overturn(double t_s, OverturnCriterion c) { log_.overturn(t_s, c); }
+    bool overturned() const { return log_.overturned(); }
     /// Output sample at time t (also tracks the peak top acceleration); `known`, if given, holds
     /// the contact state's accelerations and trigonometry already evaluated by the integrator.
     void sample(double t_s, const BlockState& st, Base base, const Known* known = nullptr);
@@ -156,9 +169,7 @@ public:
 
 private:
     void rotation_peak(double theta_rad, int s) {
-        summary_.rock_max_rad = std::max(summary_.rock_max_rad, theta_rad);
-        const double ratio = theta_rad / g_.alpha[static_cast<std::size_t>(Geometry::index(s))];
-        summary_.rock_max_over_alpha = std::max(summary_.rock_max_over_alpha, ratio);
+        log_.rotation_peak(theta_rad, g_.alpha[static_cast<std::size_t>(Geometry::index(s))]);
     }
     void push(double t_s, const BlockState& st, const Accel& a, double top);
     const Geometry& g_;
@@ -168,6 +179,8 @@ private:
     Summary summary_;
     std::vector<Sample> series_;
     std::vector<ImpactEvent> impacts_;
+    ModeTally<Summary> tally_{summary_};
+    ContactLog log_{summary_, impacts_};
 };
 
 /// Initial mode from Options (initial rotation / slide velocity) or from rest.

@@ -78,13 +78,6 @@ Recorder::Recorder(const Geometry& g, const Options& o, double pga_mps2)
     summary_.pga_g = pga_mps2 / o.g_mps2;
 }
 
-void Recorder::overturn(double t_s, OverturnCriterion c) {
-    summary_.overturned = true;
-    summary_.overturn_time_s = t_s;
-    summary_.overturn_mode = summary_.impacts > 0 ? 1 : 2;
-    summary_.overturn_criterion = c;
-}
-
 void Recorder::check_overturn(const BlockState& st, double t_s, bool input_ended) {
     if (st.mode != Mode::rock && st.mode != Mode::slide_rock) return;
     const auto i = static_cast<std::size_t>(Geometry::index(st.s));

@@ -1,6 +1,8 @@
 #pragma once
-/// Typed, range-checked reading of one TOML table that remembers which keys were read, so
-/// finish() can reject the rest (STYLE.md: unknown keys are errors, as SeisSol's warnUnknown()).
+/// Internal: typed, range-checked reading of one TOML table that remembers which keys were read,
+/// so finish() can reject the rest (STYLE.md: unknown keys are errors, as SeisSol's
+/// warnUnknown()). For the case reader (case_detail.hpp) and batch lists' TOML form only: a
+/// *_detail header is not installed (cmake/install.cmake), so toml++ stays out of the package.
 #include <toml++/toml.h>
 
 #include <optional>
