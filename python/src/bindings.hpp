@@ -18,7 +18,9 @@ void bind_records(pybind11::module_& m);
 void bind_closed_forms(pybind11::module_& m);
 /// target, document (slide, rock), generate.
 void bind_documents(pybind11::module_& m);
-/// simulate, assess, fragility.
+/// simulate, assess.
 void bind_runs(pybind11::module_& m);
+/// fragility.
+void bind_fragility(pybind11::module_& m);
 
 }  // namespace freestand::python

@@ -76,4 +76,5 @@ PYBIND11_MODULE(_freestand, m) {
     freestand::python::bind_closed_forms(m);
     freestand::python::bind_documents(m);
     freestand::python::bind_runs(m);
+    freestand::python::bind_fragility(m);
 }

@@ -1,4 +1,4 @@
-// simulate, assess and fragility.
+// simulate and assess.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -13,7 +13,6 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "report/case_assessment.hpp"
-#include "report/fragility_json.hpp"
 
 namespace freestand::python {
 
@@ -168,20 +167,6 @@ void bind_runs(py::module_& m) {
             return json_loads(json);
         },
         py::arg("case_file"), py::arg("pga_g"));
-    m.def(
-        "fragility",
-        [](const std::string& case_file, const std::vector<std::string>& args) {
-            const auto vm = cli::parse_document_options("fragility", cli::fragility_options(), args);
-            std::string json;
-            {
-                py::gil_scoped_release unlocked;
-                const cli::FragilityRun r =
-                    cli::fragility_result(core::read_input_file(case_file), case_file, vm);
-                json = report::fragility_json(r.result, r.stamp).dump(2) + "\n";
-            }
-            return json_loads(json);
-        },
-        py::arg("case_file"), py::arg("args"));
 }
 
 }  // namespace freestand::python
