@@ -104,6 +104,13 @@ def test_fragility_takes_its_levels_as_a_range_text_or_numbers():
         freestand.fragility(CASE, pga=[0.2], samples=2.5)
     with pytest.raises(TypeError, match="unexpected keyword argument 'sample'"):
         freestand.fragility(CASE, pga=[0.2], sample=2)
+    # Values out of their range are the request's to refuse, named as the keyword.
+    with pytest.raises(freestand.InputError, match="^threads: value -1 is out of range"):
+        freestand.fragility(CASE, pga=[0.2], samples=1, threads=-1)
+    with pytest.raises(freestand.InputError, match="^seed: value -1 is out of range"):
+        freestand.fragility(CASE, pga=[0.2], samples=1, seed=-1)
+    with pytest.raises(freestand.InputError, match="^samples: 0; expected 1"):
+        freestand.fragility(CASE, pga=[0.2], samples=0)
 
 
 def test_a_level_near_zero_is_an_input_error():
