@@ -1,7 +1,7 @@
 // Fuzz target: a batch shard as `freestand merge` reads it: the first line the run's header
 // ({"stamp", "names"}), every further line a component's record, merged into the batch's files.
 // Only freestand's own errors may escape the reader (a line that is not JSON is the shard file
-// reader's business, cli/shards.cpp, and is skipped here).
+// reader's business, fragility/shard_file.cpp, fuzzed by fuzz_shard_file, and is skipped here).
 #include <cstdint>
 
 #include "batch/run.hpp"

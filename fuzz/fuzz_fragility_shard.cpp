@@ -1,7 +1,7 @@
 // Fuzz target: a fragility shard as `freestand merge` reads it: the first line the run's meta,
 // every further line a sample, each checked against the run, then aggregated. Only freestand's
 // own errors may escape the readers (a line that is not JSON is the shard file reader's
-// business, cli/shards.cpp, and is skipped here).
+// business, fragility/shard_file.cpp, fuzzed by fuzz_shard_file, and is skipped here).
 #include <cstdint>
 
 #include "core/errors.hpp"

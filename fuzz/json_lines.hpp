@@ -1,6 +1,6 @@
 #pragma once
 // The fuzz input as the lines of a JSON Lines shard, each with its location: what
-// cli/shards.cpp hands the shard readers. An input with a line that is not JSON is the shard
+// fragility/shard_file.cpp hands the shard readers. An input with a line that is not JSON is the shard
 // file reader's business, not the readers', and gives no lines.
 #include <cstdint>
 #include <nlohmann/json.hpp>

@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-10}"
-targets=(at2 cosmos csv spectrum_csv case cli_values fragility_shard batch_shard batch_list)
+targets=(at2 cosmos csv spectrum_csv case cli_values fragility_shard batch_shard batch_list shard_file)
 [ -f build/asan/CMakeCache.txt ] || cmake --preset asan >/dev/null
 cmake --build --preset asan --target "${targets[@]/#/fuzz_}" >/dev/null
 

@@ -184,6 +184,20 @@ def _keyed_numbers(values: Mapping[str, Any], keys: Mapping[str, str], keyword: 
     return out
 
 
+def _reals_typed(values: Any, keyword: str) -> list:
+    """A sequence of numbers as a list (each still to check); TypeError naming keyword for a
+    string, a multi-dimensional array or anything that is not a sequence."""
+    if isinstance(values, np.ndarray):
+        if values.ndim != 1:
+            raise TypeError(f"{keyword}: expected a one-dimensional array of real numbers, got "
+                            f"a {values.ndim}-dimensional array")
+        return values.tolist()
+    if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
+        raise TypeError(f"{keyword}: expected a sequence of real numbers, got "
+                        f"{type(values).__name__} {values!r}")
+    return list(values)
+
+
 def _box(block: Mapping[str, float], cg: Any, inertia: Optional[float]) -> dict:
     """The block, CG and inertia as the module's box fields (sliding::BoxSpec): block {"b", "h"
     [, "m"]}; cg {"x", "h"} (x right of the box centre) or (x, y) (x from the left edge, y up)."""
@@ -374,14 +388,48 @@ def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict
     return _fs.assess(os.fspath(case_file), levels)
 
 
+_FRAGILITY_OPTIONS = ("samples", "pool", "seed", "threads", "cache", "no_cache")
+
+
+def _whole(value: Any, keyword: str) -> int:
+    """value as an int when it is a whole number (int or NumPy integer, not a bool); TypeError
+    naming keyword otherwise."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{keyword}: expected a whole number, got {type(value).__name__} "
+                        f"{value!r}")
+    return int(value)
+
+
+def _level_range(text: str) -> tuple:
+    """(start, stop, step) of "START:STOP:STEP"; InputError naming pga otherwise."""
+    parts = text.split(":")
+    try:
+        if len(parts) != 3:
+            raise ValueError
+        return tuple(float(p) for p in parts)
+    except ValueError:
+        raise InputError(f"pga: expected \"START:STOP:STEP\" or a list of numbers, got "
+                         f"{text!r}") from None
+
+
 def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.0:0.1",
               records: Optional[Sequence[PathLike]] = None, **options: Any) -> dict:
     """P(overturn), P(slide), P(rock) against PGA (`freestand fragility`): fragility.json as a
-    dict. pga as "START:STOP:STEP" or a list; samples=, pool=, seed=, threads= (0: all cores;
-    the result does not depend on it); records=[files] a user suite."""
-    # "START:STOP:STEP" is the one text a number keyword takes; a list goes as numbers.
-    args = ["--pga", pga] if isinstance(pga, str) else _args(pga=pga)
-    args += _args(**options)
-    if records:
-        args += ["--records"] + [os.fspath(r) for r in records]
-    return _fs.fragility(os.fspath(case_file), args)
+    dict. pga as "START:STOP:STEP" or a list; samples=, pool=, seed= (default: the case's),
+    threads= (0: all cores; the result does not depend on it), whole numbers; cache= a folder or
+    no_cache=True; records=[files] a user suite."""
+    for name in options:
+        if name not in _FRAGILITY_OPTIONS:
+            raise TypeError(f"fragility() got an unexpected keyword argument {name!r}")
+    pga_range = _level_range(pga) if isinstance(pga, str) else None
+    levels = [] if pga_range else [_number(v, "pga") for v in _reals_typed(pga, "pga")]
+    seed = options.get("seed")
+    cache = options.get("cache")
+    no_cache = options.get("no_cache", False)
+    if not isinstance(no_cache, (bool, np.bool_)):
+        raise TypeError(f"no_cache: expected True or False, got {type(no_cache).__name__}")
+    return _fs.fragility(
+        os.fspath(case_file), levels, pga_range, _whole(options.get("samples", 100), "samples"),
+        _whole(options.get("pool", 20), "pool"), None if seed is None else _whole(seed, "seed"),
+        [os.fspath(r) for r in records or []], _whole(options.get("threads", 0), "threads"),
+        None if cache is None else os.fspath(cache), bool(no_cache))

@@ -18,9 +18,11 @@ void bind_records(pybind11::module_& m);
 void bind_closed_forms(pybind11::module_& m);
 /// target, generate.
 void bind_documents(pybind11::module_& m);
-/// simulate, fragility.
+/// simulate.
 void bind_runs(pybind11::module_& m);
 /// assess.
 void bind_case_runs(pybind11::module_& m);
+/// fragility.
+void bind_fragility(pybind11::module_& m);
 
 }  // namespace freestand::python

@@ -54,12 +54,15 @@ PYBIND11_MODULE(_freestand, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const InputError& e) {
-            // A field the Python table names is renamed to its keyword (some keep their name:
-            // mu_k); the commands still parsed from option text name their option.
-            const bool keyword = freestand::python::keyword_names().count(e.where().field) > 0;
-            PyErr_SetString(errors.input.ptr(), (keyword ? freestand::python::in_python(e)
-                                                         : cli::on_command_line(e))
-                                                    .what());
+            // A field the Python table names is renamed to its keyword; the commands still parsed
+            // from option text name their option.
+            // A keyword spelt as its field (samples) is still a keyword, not an option.
+            const SourceLocation& w = e.where();
+            const bool keyword = w.file.empty() && w.line == 0 &&
+                                 freestand::python::keyword_names().count(w.field) > 0;
+            PyErr_SetString(errors.input.ptr(),
+                            (keyword ? freestand::python::in_python(e) : cli::on_command_line(e))
+                                .what());
         } catch (const UsageError& e) {
             PyErr_SetString(errors.usage.ptr(), e.what());
         } catch (const NumericalError& e) {
@@ -77,4 +80,5 @@ PYBIND11_MODULE(_freestand, m) {
     freestand::python::bind_documents(m);
     freestand::python::bind_runs(m);
     freestand::python::bind_case_runs(m);
+    freestand::python::bind_fragility(m);
 }

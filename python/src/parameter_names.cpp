@@ -8,6 +8,12 @@ const std::map<std::string, std::string>& keyword_names() {
         {"mu_s", "mu"},
         {"a_h_g", "a_g"},
         {"av_g", "av_g"},
+        // api::FragilityRequest (its pga_g is the binding's to name: fragility's keyword is pga)
+        {"samples", "samples"},
+        {"pool", "pool"},
+        {"seed", "seed"},
+        {"threads", "threads"},
+        {"cache", "cache"},
         // sliding::BoxSpec, behind block= , cg= and inertia=
         {"box.half_width_m", "block['b']"},
         {"box.half_height_m", "block['h']"},

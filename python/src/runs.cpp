@@ -1,4 +1,4 @@
-// simulate and fragility.
+// simulate.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -8,12 +8,8 @@
 
 #include "api/simulate.hpp"
 #include "bindings.hpp"
-#include "cli/build_info.hpp"
-#include "cli/documents.hpp"
 #include "convert.hpp"
 #include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "report/fragility_json.hpp"
 
 namespace freestand::python {
 
@@ -103,10 +99,6 @@ double thread_cpu_s() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-py::object json_loads(const std::string& text) {
-    return py::module_::import("json").attr("loads")(text);
-}
-
 }  // namespace
 
 void bind_runs(py::module_& m) {
@@ -155,20 +147,6 @@ void bind_runs(py::module_& m) {
         },
         py::arg("box"), py::arg("mu_s"), py::arg("accel_mps2"), py::arg("dt_s"), py::arg("scale"),
         py::arg("series"), py::arg("repeats"));
-    m.def(
-        "fragility",
-        [](const std::string& case_file, const std::vector<std::string>& args) {
-            const auto vm = cli::parse_document_options("fragility", cli::fragility_options(), args);
-            std::string json;
-            {
-                py::gil_scoped_release unlocked;
-                const cli::FragilityRun r =
-                    cli::fragility_result(core::read_input_file(case_file), case_file, vm);
-                json = report::fragility_json(r.result, r.stamp).dump(2) + "\n";
-            }
-            return json_loads(json);
-        },
-        py::arg("case_file"), py::arg("args"));
 }
 
 }  // namespace freestand::python

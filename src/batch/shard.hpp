@@ -14,7 +14,7 @@
 namespace freestand::batch {
 
 /// The shard header's "run": the summary stamp and every component's name in list order;
-/// identical in every shard of one run (cli::read_shards compares it).
+/// identical in every shard of one run (fragility::join_shards compares it).
 nlohmann::ordered_json shard_run_json(const report::SummaryStamp& stamp, const BatchList& list);
 
 /// One record: {"index": its place in the list, "row": the summary row, "files": [[name,

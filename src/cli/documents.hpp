@@ -12,7 +12,6 @@
 #include "assess/case.hpp"
 #include "core/record.hpp"
 #include "dynamics/simulate.hpp"
-#include "fragility/fragility.hpp"
 #include "report/json.hpp"
 #include "motion/motion.hpp"
 #include "spectra/response.hpp"
@@ -54,24 +53,5 @@ GenerateRequest generate_request(const po::variables_map& vm);
 /// match.json; wall_s is null unless timing.
 json match_document(const motion::TargetSet& targets, const motion::GeneratedSet& set,
                     bool timing);
-
-// --- fragility --------------------------------------------------------------------------------
-
-/// --pga, --samples, --records, --pool, --seed and the run options (cli/run_options.hpp).
-po::options_description fragility_options();
-/// The sampling configuration; the seed defaults to the case's.
-fragility::Config fragility_config(const po::variables_map& vm, const assess::Case& c);
-/// The stamp of a fragility run: the case's bytes, the seed, the case's other inputs and the
-/// records of a user suite, each hashed, and the build's commit.
-report::Stamp fragility_stamp(const std::string& case_bytes, const std::string& case_file,
-                              const assess::Case& c, const fragility::Config& config);
-struct FragilityRun {
-    fragility::Result result;
-    report::Stamp stamp;
-};
-/// Every sample of the run on this machine, aggregated, with its stamp.
-FragilityRun fragility_result(const std::string& case_bytes,
-                              const std::filesystem::path& case_file,
-                              const po::variables_map& vm);
 
 }  // namespace freestand::cli

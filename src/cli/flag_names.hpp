@@ -28,6 +28,10 @@ inline const std::map<std::string, std::string>& flag_names() {
         {"pga_g", "--pga"},
         {"samples", "--samples"},
         {"pool", "--pool"},
+        // api::FragilityRequest and api::CacheRequest, behind the run options
+        {"threads", "--threads"},
+        {"shard", "--shard"},
+        {"sets", "--sets"},
         // motion::GenerateOptions, behind generate's options
         {"dt_s", "--dt"},
         {"duration_s", "--duration"},

@@ -1,21 +1,15 @@
 #include "cli/fragility_output.hpp"
 
-#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
 #include <iostream>
 
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
-#include "fragility/serialize.hpp"
 #include "report/fragility_report.hpp"
 #include "report/pdf.hpp"
 
 namespace freestand::cli {
-
-nlohmann::ordered_json fragility_run_json(const fragility::Meta& meta, const report::Stamp& stamp) {
-    return {{"meta", fragility::to_json(meta)}, {"stamp", report::stamp_json(stamp)}};
-}
 
 void write_fragility_outputs(const fragility::Result& r, const report::Stamp& stamp,
                              const std::filesystem::path& out, bool print_json,

@@ -190,4 +190,17 @@ EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>&
     return out;
 }
 
+double fitted_p(const Fit& fit, double a_g) {
+    return core::normal_cdf(std::log(a_g / fit.theta_m_g) / fit.beta);
+}
+
+std::vector<CurvePoint> fitted_curve(const Fit& fit, double lo_g, double hi_g, int intervals) {
+    std::vector<CurvePoint> out;
+    for (int i = 0; i <= intervals; ++i) {
+        const double a = lo_g * std::pow(hi_g / lo_g, i / static_cast<double>(intervals));
+        out.push_back({a, fitted_p(fit, a)});
+    }
+    return out;
+}
+
 }  // namespace freestand::fragility

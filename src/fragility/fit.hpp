@@ -16,6 +16,19 @@ namespace freestand::fragility {
 EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>& k,
                        const std::vector<int>& n);
 
+/// P(a_g) = Phi(ln(a_g / theta_m) / beta) of the fitted curve; a_g > 0.
+double fitted_p(const Fit& fit, double a_g);
+
+/// One point of a fitted curve: the PGA and P there.
+struct CurvePoint {
+    double pga_g = 0.0;
+    double p = 0.0;
+};
+
+/// The fitted curve at intervals + 1 PGAs spaced evenly in ln a over [lo_g, hi_g] (both > 0,
+/// intervals >= 1), the first lo_g and the last hi_g: what a figure draws as the curve.
+std::vector<CurvePoint> fitted_curve(const Fit& fit, double lo_g, double hi_g, int intervals);
+
 /// The probability of failure at one PGA, with its 95% interval.
 struct Probability {
     double p = 0.0;

@@ -10,7 +10,7 @@
 
 #include "core/printable.hpp"
 #include "core/publish.hpp"
-#include "core/statistics.hpp"
+#include "fragility/fit.hpp"
 #include "report/references.hpp"
 #include "report/render.hpp"
 #include "report/svg.hpp"
@@ -47,10 +47,9 @@ std::string count_text(const fragility::Count& c) {
 Line fitted_line(const fragility::Fit& f, double lo, double hi, const std::string& label,
                  const std::string& color) {
     Line l{label, {}, {}, color, 1.6, false, false};
-    for (int i = 0; i <= 120; ++i) {
-        const double a = lo * std::pow(hi / lo, i / 120.0);
-        l.x.push_back(a);
-        l.y.push_back(core::normal_cdf(std::log(a / f.theta_m_g) / f.beta));
+    for (const fragility::CurvePoint& c : fragility::fitted_curve(f, lo, hi, 120)) {
+        l.x.push_back(c.pga_g);
+        l.y.push_back(c.p);
     }
     return l;
 }

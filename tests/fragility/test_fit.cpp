@@ -79,4 +79,33 @@ TEST_CASE("no fit without a curve to fit, and the note says why", "[fragility][f
     CHECK_THAT(fit_lognormal({0.3}, {4}, {10}).note, Catch::Contains("at least two levels"));
 }
 
+TEST_CASE("the fitted curve passes 0.5 at theta_m and Phi(1) one beta above it",
+          "[fragility][fit]") {
+    // Phi(1) = 0.8413447460685429 (Abramowitz & Stegun 26.2, Table 26.1).
+    constexpr double kPhi1 = 0.8413447460685429, kTol = 1e-12;
+    fragility::Fit f;
+    f.theta_m_g = 0.5;
+    f.beta = 0.4;
+    CHECK(fragility::fitted_p(f, 0.5) == Approx(0.5).margin(kTol));
+    CHECK(fragility::fitted_p(f, 0.5 * std::exp(0.4)) == Approx(kPhi1).margin(kTol));
+    CHECK(fragility::fitted_p(f, 0.5 * std::exp(-0.4)) == Approx(1.0 - kPhi1).margin(kTol));
+}
+
+TEST_CASE("the fitted curve's points span the range evenly in ln a and rise with a",
+          "[fragility][fit]") {
+    fragility::Fit f;
+    f.theta_m_g = 0.6;
+    f.beta = 0.3;
+    const auto curve = fragility::fitted_curve(f, 0.1, 2.0, 4);
+    REQUIRE(curve.size() == 5);
+    CHECK(curve.front().pga_g == Approx(0.1).epsilon(1e-14));
+    CHECK(curve.back().pga_g == Approx(2.0).epsilon(1e-14));
+    // The middle point is the geometric mean of the ends.
+    CHECK(curve[2].pga_g == Approx(std::sqrt(0.1 * 2.0)).epsilon(1e-14));
+    for (std::size_t i = 1; i < curve.size(); ++i) {
+        CHECK(curve[i].p > curve[i - 1].p);
+        CHECK(curve[i].p == fragility::fitted_p(f, curve[i].pga_g));
+    }
+}
+
 }  // namespace freestand_test_fragility_test_fit

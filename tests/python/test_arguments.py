@@ -78,8 +78,10 @@ def test_a_number_argument_refuses_what_is_not_a_real_number(value, shown):
         freestand.slide(0.3, fes_hz=value)
     with pytest.raises(TypeError, match=r"^block\['b'\]: expected a real number"):
         freestand.classify({"b": value, "h": 0.6}, mu=0.3, a_g=0.3)
-    with pytest.raises(freestand.InputError, match="^samples: expected a real number"):
+    with pytest.raises(TypeError, match=f"^samples: expected a whole number, got {shown}"):
         freestand.fragility(CASE, pga=[0.2], samples=value)
+    with pytest.raises(TypeError, match=f"^pga: expected a real number, got {shown}"):
+        freestand.fragility(CASE, pga=[0.2, value])
 
 
 @pytest.mark.parametrize("call, message", [
@@ -145,9 +147,26 @@ def test_a_list_argument_refuses_a_string():
         freestand.assess(CASE, pga_g=np.array([0.1 + 1j]))
 
 
-def test_fragility_takes_its_level_range_as_text():
-    with pytest.raises(freestand.InputError, match="--pga: value 1e-310 is out of range"):
-        freestand.fragility(CASE, pga="1e-310,0.1", samples=2)
+def test_fragility_takes_its_levels_as_a_range_text_or_numbers():
+    # The library's range check names the keyword, not the command line's --pga.
+    with pytest.raises(freestand.InputError, match="^pga: value 1e-310 is out of range"):
+        freestand.fragility(CASE, pga=[1e-310, 0.1], samples=2)
+    with pytest.raises(freestand.InputError, match="^pga: .*needs STEP > 0"):
+        freestand.fragility(CASE, pga="0.3:0.1:0.1", samples=2)
+    # A comma list is the command line's text; Python gives a list.
+    with pytest.raises(freestand.InputError, match="^pga: expected \"START:STOP:STEP\""):
+        freestand.fragility(CASE, pga="0.1,0.2", samples=2)
+    with pytest.raises(TypeError, match="^samples: expected a whole number, got float 2.5"):
+        freestand.fragility(CASE, pga=[0.2], samples=2.5)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'sample'"):
+        freestand.fragility(CASE, pga=[0.2], sample=2)
+    # Values out of their range are the request's to refuse, named as the keyword.
+    with pytest.raises(freestand.InputError, match="^threads: value -1 is out of range"):
+        freestand.fragility(CASE, pga=[0.2], samples=1, threads=-1)
+    with pytest.raises(freestand.InputError, match="^seed: value -1 is out of range"):
+        freestand.fragility(CASE, pga=[0.2], samples=1, seed=-1)
+    with pytest.raises(freestand.InputError, match="^samples: 0; expected 1"):
+        freestand.fragility(CASE, pga=[0.2], samples=0)
 
 
 def test_a_level_near_zero_is_an_input_error():

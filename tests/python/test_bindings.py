@@ -342,6 +342,37 @@ def test_fragility_equals_fragility_json():
     assert [lvl["n"] for lvl in got["levels"]] == [3, 3]
 
 
+def test_fragility_of_a_slender_block_against_its_uplift_threshold():
+    # TS1 is 0.3 m wide and 1.2 m tall: tan(alpha) = 0.15 / 0.6 = 0.25, so it cannot uplift
+    # while a_h < 0.25 g (1 - a_v) (docs/methods.md s.2), about 0.24 g at 0.05 g with the case's
+    # vertical ratio 2/3: nothing rocks or overturns there; at 2 g every sample overturns.
+    case = ROOT / "cases" / "block-ts1.toml"
+    levels = [0.05, 0.23, 0.26, 0.29, 2.0]
+    got = freestand.fragility(case, pga=levels, samples=6, pool=2, seed=3, threads=2)
+    assert [lvl["pga_g"] for lvl in got["levels"]] == levels
+    p_overturn = [lvl["events"]["overturn"]["p"] for lvl in got["levels"]]
+    assert got["levels"][0]["events"]["rock"]["k"] == 0
+    assert p_overturn[0] == 0.0
+    assert p_overturn[-1] == 1.0
+    # Counts that rise with the level: the fitted median lies above the last level where no
+    # sample overturns and below the first where every sample does (P = 0.5 falls between).
+    none = max(a for a, p in zip(levels, p_overturn) if p == 0.0)
+    every = min(a for a, p in zip(levels, p_overturn) if p == 1.0)
+    assert none < every
+    fit = got["fit"]["overturn"]
+    assert fit is not None, got["fit_notes"]
+    assert none < fit["theta_m_g"] < every
+
+
+def test_fragility_takes_a_level_range_as_the_command_line_does():
+    case = ROOT / "cases" / "block-ts1.toml"
+    expected = cli_json("fragility", case, "--pga", "0.05:0.11:0.03", "--samples", "1",
+                        "--pool", "1", "--json")
+    got = freestand.fragility(case, pga="0.05:0.11:0.03", samples=1, pool=1)
+    assert [lvl["pga_g"] for lvl in got["levels"]] == [0.05, 0.08, 0.11]
+    assert got == expected
+
+
 # --- errors -------------------------------------------------------------------------------------
 
 def test_error_classes_carry_exit_codes():

@@ -1,4 +1,4 @@
-#include "cli/shards.hpp"
+#include "fragility/shard_file.hpp"
 
 #include <fmt/format.h>
 
@@ -6,11 +6,10 @@
 #include <map>
 #include <sstream>
 
-#include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/text_parse.hpp"
 
-namespace freestand::cli {
+namespace freestand::fragility {
 
 namespace fs = std::filesystem;
 
@@ -32,52 +31,20 @@ fs::path write_shard(const fs::path& dir, const std::string& kind, int k, int n,
     return file;
 }
 
-namespace {
+namespace shard_file_detail {
 
-struct Shard {
-    fs::path file;
-    std::string kind;
-    int k = 0, n = 0;
-    nlohmann::json run;
-    std::vector<nlohmann::json> records;
-    std::vector<int> record_lines;
-};
-
-Shard read_one(const fs::path& file) {
-    Shard s;
-    s.file = file;
-    const std::string text = core::read_text_file(file);
-    std::istringstream in(std::string(core::text::utf8_text(text, file.string())));
-    std::string line;
-    int number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        nlohmann::json j;
-        try {
-            j = nlohmann::json::parse(line);
-        } catch (const nlohmann::json::exception& e) {
-            throw InputError(SourceLocation{file.string(), number, ""},
-                             fmt::format("not a JSON line ({})", e.what()));
-        }
-        if (number > 1) {
-            s.records.push_back(std::move(j));
-            s.record_lines.push_back(number);
-            continue;
-        }
-        try {
-            if (j.at("freestand_shard").get<int>() != 1) throw std::runtime_error("version");
-            s.kind = j.at("kind").get<std::string>();
-            s.k = j.at("shard").get<int>();
-            s.n = j.at("of").get<int>();
-            s.run = j.at("run");
-        } catch (const std::exception&) {
-            throw InputError(SourceLocation{file.string(), 1, "header"},
-                             "expected a freestand shard header {\"freestand_shard\": 1, "
-                             "\"kind\", \"shard\", \"of\", \"run\"}");
-        }
+void read_header(const nlohmann::json& j, ShardFile& s) {
+    try {
+        if (j.at("freestand_shard").get<int>() != 1) throw std::runtime_error("version");
+        s.kind = j.at("kind").get<std::string>();
+        s.k = j.at("shard").get<int>();
+        s.n = j.at("of").get<int>();
+        s.run = j.at("run");
+    } catch (const std::exception&) {
+        throw InputError(SourceLocation{s.file, 1, "header"},
+                         "expected a freestand shard header {\"freestand_shard\": 1, "
+                         "\"kind\", \"shard\", \"of\", \"run\"}");
     }
-    if (number == 0) throw InputError(SourceLocation{file.string(), 0, ""}, "empty shard file");
-    return s;
 }
 
 std::vector<fs::path> shard_files(const std::vector<fs::path>& paths) {
@@ -105,44 +72,78 @@ std::vector<fs::path> shard_files(const std::vector<fs::path>& paths) {
     return out;
 }
 
-}  // namespace
+}  // namespace shard_file_detail
 
-ShardSet read_shards(const std::vector<fs::path>& paths) {
-    std::map<int, Shard> by_index;
+ShardFile parse_shard(const std::string& text, const std::string& file) {
+    ShardFile s;
+    s.file = file;
+    std::istringstream in(std::string(core::text::utf8_text(text, file)));
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        nlohmann::json j;
+        try {
+            j = nlohmann::json::parse(line);
+        } catch (const nlohmann::json::exception& e) {
+            throw InputError(SourceLocation{file, number, ""},
+                             fmt::format("not a JSON line ({})", e.what()));
+        }
+        if (number == 1) {
+            shard_file_detail::read_header(j, s);
+            continue;
+        }
+        s.records.push_back(std::move(j));
+        s.record_lines.push_back(number);
+    }
+    if (number == 0) throw InputError(SourceLocation{file, 0, ""}, "empty shard file");
+    return s;
+}
+
+ShardSet join_shards(std::vector<ShardFile> shards) {
+    std::map<int, ShardFile> by_index;
     int of = 0;
-    for (const fs::path& file : shard_files(paths)) {
-        Shard s = read_one(file);
+    for (ShardFile& s : shards) {
         if (!by_index.empty()) {
-            const Shard& first = by_index.begin()->second;
+            const ShardFile& first = by_index.begin()->second;
             if (s.kind != first.kind || s.n != first.n || s.run != first.run)
                 throw InputError(
-                    SourceLocation{file.string(), 1, "run"},
+                    SourceLocation{s.file, 1, "run"},
                     fmt::format("this shard belongs to another run than {} (kind, shard count "
                                 "or run settings differ)",
-                                first.file.string()));
+                                first.file));
         }
         if (by_index.count(s.k))
-            throw InputError(SourceLocation{file.string(), 1, "shard"},
+            throw InputError(SourceLocation{s.file, 1, "shard"},
                              fmt::format("shard {} of {} is also in {}", s.k, s.n,
-                                         by_index.at(s.k).file.string()));
+                                         by_index.at(s.k).file));
         of = s.n;
-        by_index.emplace(s.k, std::move(s));
+        const int k = s.k;
+        by_index.emplace(k, std::move(s));
     }
     for (int k = 1; k <= of; ++k)
         if (!by_index.count(k))
             throw InputError(SourceLocation{"", 0, "shards"},
                              fmt::format("shard {} of {} is missing", k, of));
+    if (by_index.empty()) throw InputError(SourceLocation{"", 0, "shards"}, "no shard given");
     ShardSet out;
     out.kind = by_index.begin()->second.kind;
     out.run = by_index.begin()->second.run;
-    out.run_at = SourceLocation{by_index.begin()->second.file.string(), 1, ""};
+    out.run_at = SourceLocation{by_index.begin()->second.file, 1, ""};
     for (auto& [k, s] : by_index) {
         for (std::size_t i = 0; i < s.records.size(); ++i) {
             out.records.push_back(std::move(s.records[i]));
-            out.record_at.push_back(SourceLocation{s.file.string(), s.record_lines[i], ""});
+            out.record_at.push_back(SourceLocation{s.file, s.record_lines[i], ""});
         }
     }
     return out;
 }
 
-}  // namespace freestand::cli
+ShardSet read_shards(const std::vector<fs::path>& paths) {
+    std::vector<ShardFile> shards;
+    for (const fs::path& file : shard_file_detail::shard_files(paths))
+        shards.push_back(parse_shard(core::read_text_file(file), file.string()));
+    return join_shards(std::move(shards));
+}
+
+}  // namespace freestand::fragility
