@@ -56,10 +56,12 @@ PYBIND11_MODULE(_freestand, m) {
         } catch (const InputError& e) {
             // A field the Python table names is renamed to its keyword; the commands still parsed
             // from option text name their option.
-            const InputError named = freestand::python::in_python(e);
-            const bool renamed = named.where().field != e.where().field;
+            const SourceLocation& w = e.where();
+            const bool keyword = w.file.empty() && w.line == 0 &&
+                                 freestand::python::keyword_names().count(w.field) > 0;
             PyErr_SetString(errors.input.ptr(),
-                            (renamed ? named : cli::on_command_line(e)).what());
+                            (keyword ? freestand::python::in_python(e) : cli::on_command_line(e))
+                                .what());
         } catch (const UsageError& e) {
             PyErr_SetString(errors.usage.ptr(), e.what());
         } catch (const NumericalError& e) {
@@ -75,5 +77,6 @@ PYBIND11_MODULE(_freestand, m) {
     freestand::python::bind_records(m);
     freestand::python::bind_closed_forms(m);
     freestand::python::bind_documents(m);
+    freestand::python::bind_motion(m);
     freestand::python::bind_runs(m);
 }

@@ -14,11 +14,9 @@
 #include "dynamics/simulate.hpp"
 #include "fragility/fragility.hpp"
 #include "report/json.hpp"
-#include "motion/motion.hpp"
 #include "rocking/summary.hpp"
 #include "sliding/asce.hpp"
 #include "sliding/initiation.hpp"
-#include "spectra/response.hpp"
 
 namespace freestand::cli {
 
@@ -29,21 +27,6 @@ using json = nlohmann::ordered_json;
 po::variables_map parse_document_options(const std::string& command,
                                          const po::options_description& desc,
                                          const std::vector<std::string>& args);
-
-// --- spectrum, target -------------------------------------------------------------------------
-
-/// --damping, --fmin, --fmax, --per-decade, --frequencies (`spectrum`'s defaults).
-po::options_description spectrum_grid_options();
-/// `spectrum --json`: the record's measures and its PSA, SD and PSV per damping on the grid of
-/// the options.
-json spectrum_document(const core::Record& record, const po::variables_map& grid);
-
-/// `target`'s options (design name, design values, grid, --vertical).
-po::options_description target_options();
-/// The design spectra the options name, one per damping.
-std::vector<spectra::Spectrum> target_spectra(const po::variables_map& vm);
-/// `target --json`.
-json target_document(const po::variables_map& vm, const std::vector<spectra::Spectrum>& spectra);
 
 // --- closed forms -----------------------------------------------------------------------------
 
@@ -75,19 +58,6 @@ dynamics::BlockModel simulate_model(const po::variables_map& vm, const block::Bl
 dynamics::Options simulate_run_options(const po::variables_map& vm, dynamics::Options base);
 /// `simulate --json`'s summary of one block.
 json summary_json(const dynamics::Summary& s);
-
-// --- generate ---------------------------------------------------------------------------------
-
-po::options_description generate_options();
-struct GenerateRequest {
-    motion::TargetSet targets;
-    motion::GenerateOptions options;
-};
-/// Targets (design or file, with the realism ranges) and generation options from the options.
-GenerateRequest generate_request(const po::variables_map& vm);
-/// match.json; wall_s is null unless timing.
-json match_document(const motion::TargetSet& targets, const motion::GeneratedSet& set,
-                    bool timing);
 
 // --- fragility --------------------------------------------------------------------------------
 
