@@ -12,7 +12,7 @@
 #
 # The headers include each other as "core/record.hpp", so include/freestand is on the installed
 # targets' include path as well as include/, where a consumer writes <freestand/core/record.hpp>.
-# The command line's own libraries (freestand_cli_options, freestand_cli_documents) are not
+# The command line's own libraries (freestand_cli_options, freestand_cli_support) are not
 # installed: they are the executable's parsing and printing, not the library's API.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)

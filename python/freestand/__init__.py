@@ -65,94 +65,21 @@ class Record:
         return self.accel_mps2 / 9.81
 
 
-# Keyword options that take a number or a list of numbers, in any function. Their values are
-# checked here rather than by the option parser: a string would reach it as option text ("0.1,0.2"
-# for one number), and a bool as a bare flag, whose messages name a --flag the caller never typed.
-_NUMBER_OPTIONS = frozenset({
-    "ag", "adv2_range", "da_max", "damping", "dt", "duration", "fmax", "fmin", "frequencies",
-    "per_decade", "pga", "pool", "samples", "sd1", "sds", "seed", "threads", "tl", "va_range",
-    "vertical_ratio",
-})
-
 # NumPy kinds of real numbers: signed and unsigned integers, floats. Not b (bool), c (complex,
 # whose imaginary part a cast to float drops with only a warning), U/S (text) or O (objects).
 _REAL_KINDS = "iuf"
 
 
-def _real(value: Any, keyword: str) -> Any:
-    """value unchanged when it is a real number; InputError naming keyword otherwise."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(
-            value, (int, float, np.integer, np.floating)):
-        raise InputError(f"{keyword}: expected a real number, got {type(value).__name__} "
-                         f"{value!r}")
-    return value
-
-
-def _reals(values: Any, keyword: str) -> list:
-    """A sequence of real numbers as a list; InputError naming keyword otherwise (a string is
-    not a sequence of numbers here)."""
-    if isinstance(values, np.ndarray):
-        if values.ndim != 1 or values.dtype.kind not in _REAL_KINDS:
-            raise InputError(f"{keyword}: expected a one-dimensional array of real numbers, got "
-                             f"a {values.ndim}-dimensional array of {values.dtype}")
-        return values.tolist()
-    if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
-        raise InputError(f"{keyword}: expected a sequence of real numbers, got "
-                         f"{type(values).__name__} {values!r}")
-    return [_real(v, keyword) for v in values]
-
-
-def _number_text(value: Any, keyword: str) -> str:
-    """The option text of a number or a sequence of numbers (a comma list)."""
-    if isinstance(value, (list, tuple, np.ndarray)):
-        return ",".join(_text(v) for v in _reals(value, keyword))
-    return _text(_real(value, keyword))
-
-
-def _text(value: Any) -> str:
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError("a flag takes True or False, not a value")
-    if isinstance(value, (int, np.integer)):
-        return str(int(value))
-    if isinstance(value, (float, np.floating)):
-        return repr(float(value))  # the shortest text that reads back as the same double
-    if isinstance(value, (str, os.PathLike)):
-        return os.fspath(value)
-    raise TypeError(f"expected a number or a string, got {type(value).__name__}")
-
-
-def _args(**options: Any) -> list:
-    """Command-line arguments from keyword options: None leaves an option out; a number option
-    (_NUMBER_OPTIONS) takes a real number or a sequence of them; otherwise False leaves a flag
-    out, True gives it, a sequence gives a comma list and anything else its text."""
-    args = []
-    for name, value in options.items():
-        if value is None:
-            continue
-        flag = "--" + name.replace("_", "-")
-        if name in _NUMBER_OPTIONS:
-            args += [flag, _number_text(value, name)]
-        elif value is False:
-            continue
-        elif value is True:
-            args.append(flag)
-        elif isinstance(value, (list, tuple, np.ndarray)):
-            args += [flag, ",".join(_text(v) for v in value)]
-        else:
-            args += [flag, _text(value)]
-    return args
-
-
 def _samples(values: Any, what: str) -> np.ndarray:
-    """values as float64 samples; InputError naming `what`, as the module does, when they are
-    not real numbers (its shape is checked there)."""
+    """values as float64 samples; TypeError naming `what` when they are not real numbers (the
+    module checks the shape, and refuses the same things itself with an InputError)."""
     try:
         array = np.asarray(values)
     except (TypeError, ValueError) as e:
-        raise InputError(f"{what}: expected a one-dimensional array of numbers ({e})") from None
+        raise TypeError(f"{what}: expected a one-dimensional array of numbers ({e})") from None
     if array.dtype.kind not in _REAL_KINDS:
-        raise InputError(f"{what}: expected a one-dimensional array of real numbers, got an "
-                         f"array of {array.dtype}")
+        raise TypeError(f"{what}: expected a one-dimensional array of real numbers, got an "
+                        f"array of {array.dtype}")
     return array.astype(float)
 
 
@@ -184,7 +111,7 @@ def _keyed_numbers(values: Mapping[str, Any], keys: Mapping[str, str], keyword: 
     return out
 
 
-def _reals_typed(values: Any, keyword: str) -> list:
+def _sequence(values: Any, keyword: str) -> list:
     """A sequence of numbers as a list (each still to check); TypeError naming keyword for a
     string, a multi-dimensional array or anything that is not a sequence."""
     if isinstance(values, np.ndarray):
@@ -245,6 +172,89 @@ def _paths(value: Any, keyword: str) -> list:
     return out
 
 
+def _numbers(values: Any, keyword: str) -> list:
+    """A real number or a sequence of them as a list of floats; TypeError naming keyword
+    otherwise (a string is not a sequence of numbers here)."""
+    if isinstance(values, np.ndarray):
+        if values.ndim != 1 or values.dtype.kind not in _REAL_KINDS:
+            raise TypeError(f"{keyword}: expected a one-dimensional array of real numbers, got "
+                            f"a {values.ndim}-dimensional array of {values.dtype}")
+        return [float(v) for v in values]
+    if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
+        return [_number(values, keyword)]
+    return [_number(v, keyword) for v in values]
+
+
+def _grid(frequencies: Any, fmin: Any, fmax: Any, per_decade: Any) -> tuple:
+    """The frequency grid's arguments to the module: an explicit list or fmin/fmax/per_decade."""
+    if frequencies is not None:
+        for keyword, value in (("fmin", fmin), ("fmax", fmax), ("per_decade", per_decade)):
+            if value is not None:
+                raise TypeError(f"frequencies and {keyword} exclude each other; give one")
+        return _numbers(frequencies, "frequencies"), None, None, None
+    return (None, _optional_number(fmin, "fmin"), _optional_number(fmax, "fmax"),
+            _optional_number(per_decade, "per_decade"))
+
+
+# Design values by keyword: the request's field and whether it takes a number (else a name).
+_DESIGN_VALUES = {"pga": ("pga_g", True), "sds": ("sds_g", True), "sd1": ("sd1_g", True),
+                  "tl": ("tl_s", True), "ag": ("ag_g", True), "type": ("type", False),
+                  "ground": ("ground", False), "soil": ("soil", False)}
+
+
+def _design_values(values: Mapping[str, Any], function: str) -> dict:
+    """{field: value} of the design values; TypeError naming an unknown keyword or a value of
+    the wrong type (EC8's type may be given as the number 1 or 2)."""
+    unknown = sorted(set(values) - set(_DESIGN_VALUES))
+    if unknown:
+        raise TypeError(f"{function}() got unexpected keyword argument(s) {', '.join(unknown)}")
+    out = {}
+    for keyword, value in values.items():
+        if value is None:
+            continue
+        field, numeric = _DESIGN_VALUES[keyword]
+        if numeric:
+            out[field] = _number(value, keyword)
+        elif keyword == "type" and isinstance(value, (int, np.integer)) and not isinstance(
+                value, (bool, np.bool_)):
+            out[field] = str(int(value))
+        elif isinstance(value, str):
+            out[field] = value
+        else:
+            raise TypeError(f"{keyword}: expected a str, got {type(value).__name__} {value!r}")
+    return out
+
+
+def _range(value: Any, keyword: str) -> Optional[tuple]:
+    """(min, max) of a realism range; TypeError naming keyword unless two real numbers."""
+    if value is None:
+        return None
+    pair = _numbers(value, keyword)
+    if len(pair) != 2:
+        raise TypeError(f"{keyword}: expected (min, max), got {len(pair)} number(s)")
+    return pair[0], pair[1]
+
+
+def _names(value: Any, keyword: str) -> list:
+    """A comma list ("h1,h2") or a sequence of names as a list of str."""
+    if value is None:
+        return []
+    if isinstance(value, str):
+        return value.split(",")
+    if not isinstance(value, Iterable) or not all(isinstance(v, str) for v in value):
+        raise TypeError(f"{keyword}: expected a str or a sequence of str, got "
+                        f"{type(value).__name__} {value!r}")
+    return list(value)
+
+
+def _path(value: Any, keyword: str) -> str:
+    if value is None:
+        return ""
+    if not isinstance(value, (str, os.PathLike)):
+        raise TypeError(f"{keyword}: expected a path, got {type(value).__name__} {value!r}")
+    return os.fspath(value)
+
+
 def read_record(path: PathLike) -> Record:
     """Reads a PEER .AT2, COSMOS .V2 or CSV record (docs/methods.md s.8 for the CSV headers)."""
     r = _fs.read_record(os.fspath(path))
@@ -256,11 +266,9 @@ def response_spectrum(record: Record, damping: Union[float, Sequence[float]] = 0
                       fmax: Optional[float] = None, per_decade: Optional[int] = None) -> dict:
     """The record's measures and its PSA (g), SD (m) and PSV (m/s) per damping
     (`freestand spectrum --json`): psa_g["0.05"] is an array over frequencies_hz."""
-    damping = damping if isinstance(damping, (list, tuple, np.ndarray)) else [damping]
     return _fs.spectrum(_samples(record.accel_mps2, "accel_mps2"), record.dt_s, record.name,
-                        record.source, record.component,
-                        _args(damping=damping, frequencies=frequencies, fmin=fmin, fmax=fmax,
-                              per_decade=per_decade))
+                        record.source, record.component, _numbers(damping, "damping"),
+                        *_grid(frequencies, fmin, fmax, per_decade))
 
 
 def design_target(design: str, *, damping: Union[float, Sequence[float]] = 0.05,
@@ -269,10 +277,21 @@ def design_target(design: str, *, damping: Union[float, Sequence[float]] = 0.05,
                   per_decade: Optional[int] = None, **design_values: Any) -> dict:
     """A design spectrum as a matching target (`freestand target --json`): design is rg1.60
     (pga=), asce7 (sds=, sd1=, tl=), ec8 (ag=, type=, ground=) or is1893 (pga=, soil=)."""
-    damping = damping if isinstance(damping, (list, tuple, np.ndarray)) else [damping]
-    return _fs.target(_args(design=design, vertical=vertical, damping=damping,
-                            frequencies=frequencies, fmin=fmin, fmax=fmax, per_decade=per_decade,
-                            **design_values))
+    if not isinstance(design, str):
+        raise TypeError(f"design: expected a str, got {type(design).__name__} {design!r}")
+    if not isinstance(vertical, (bool, np.bool_)):
+        raise TypeError(f"vertical: expected True or False, got {type(vertical).__name__}")
+    return _fs.target(design, _design_values(design_values, "design_target"),
+                      _numbers(damping, "damping"), bool(vertical),
+                      *_grid(frequencies, fmin, fmax, per_decade))
+
+
+# generate's keyword options besides the design values: the request's field and its reader.
+_GENERATE_OPTIONS = {
+    "target_file": _path, "target_file_10": _path, "vertical_ratio": _optional_number,
+    "components": _names, "duration": _optional_number, "dt": _optional_number,
+    "va_range": _range, "adv2_range": _range, "da_max": _optional_number,
+}
 
 
 def generate(target: Optional[str] = None, *, seed: int = 1, timing: bool = True,
@@ -282,9 +301,20 @@ def generate(target: Optional[str] = None, *, seed: int = 1, timing: bool = True
     being match.json as a dict and records a dict of Record by component (h1, h2, v). Options
     as the command's: pga=, target_file=, vertical_ratio=, components=, duration=, dt=,
     va_range=, adv2_range=, da_max=, ... timing=False writes wall_s as None (--no-timing)."""
-    seed_files = None if seed_record is None else [os.fspath(p) for p in seed_record]
-    match, records = _fs.generate(_args(target=target, seed=seed, seed_record=seed_files,
-                                        **options), timing)
+    if target is not None and not isinstance(target, str):
+        raise TypeError(f"target: expected a str, got {type(target).__name__} {target!r}")
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
+        raise TypeError(f"seed: expected a whole number, got {type(seed).__name__} {seed!r}")
+    if not 0 <= int(seed) < 2**64:
+        raise InputError(f"seed: {seed}; expected a whole number in [0, 2^64)")
+    design = {k: v for k, v in options.items() if k not in _GENERATE_OPTIONS}
+    given = {k: _GENERATE_OPTIONS[k](v, k) for k, v in options.items() if k in _GENERATE_OPTIONS}
+    seeds = [] if seed_record is None else [_path(p, "seed_record") for p in seed_record]
+    match, records = _fs.generate(
+        target or "", _design_values(design, "generate"), given.get("target_file", ""),
+        given.get("target_file_10", ""), given.get("vertical_ratio"), seeds,
+        given.get("components", []), given.get("duration"), given.get("dt"), int(seed),
+        given.get("va_range"), given.get("adv2_range"), given.get("da_max"), bool(timing))
     return match, {r["component"]: Record(r["accel_mps2"], r["dt_s"], r["component"], "generated",
                                           r["component"]) for r in records}
 
@@ -384,7 +414,7 @@ def simulate(block: Mapping[str, float], motion: Union[Record, np.ndarray],
 def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:
     """Assesses a case file (`freestand assess`): result.json as a dict; pga_g replaces the
     case's levels. The reports (HTML, Markdown, figures) are the command line's to write."""
-    levels = None if pga_g is None else [float(p) for p in _reals(pga_g, "pga_g")]
+    levels = None if pga_g is None else [_number(p, "pga_g") for p in _sequence(pga_g, "pga_g")]
     return _fs.assess(os.fspath(case_file), levels)
 
 
@@ -422,7 +452,7 @@ def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.
         if name not in _FRAGILITY_OPTIONS:
             raise TypeError(f"fragility() got an unexpected keyword argument {name!r}")
     pga_range = _level_range(pga) if isinstance(pga, str) else None
-    levels = [] if pga_range else [_number(v, "pga") for v in _reals_typed(pga, "pga")]
+    levels = [] if pga_range else [_number(v, "pga") for v in _sequence(pga, "pga")]
     seed = options.get("seed")
     cache = options.get("cache")
     no_cache = options.get("no_cache", False)

@@ -7,7 +7,7 @@
 
 #include "api/assess.hpp"
 #include "bindings.hpp"
-#include "cli/build_info.hpp"
+#include "api/build_commit.hpp"
 #include "convert.hpp"
 
 namespace freestand::python {
@@ -19,7 +19,7 @@ void bind_case_runs(py::module_& m) {
             api::AssessRequest request;
             request.case_file = case_file;
             request.pga_g = pga_g;
-            request.commit = cli::build_commit;
+            request.commit = api::build_commit;
             api::json document;
             {
                 py::gil_scoped_release unlocked;

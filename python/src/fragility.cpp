@@ -6,7 +6,7 @@
 
 #include "api/fragility.hpp"
 #include "bindings.hpp"
-#include "cli/build_info.hpp"
+#include "api/build_commit.hpp"
 #include "convert.hpp"
 #include "core/content_store.hpp"
 #include "core/errors.hpp"
@@ -43,7 +43,7 @@ api::FragilityRequest request(const std::string& case_file, const std::vector<do
         throw InputError(SourceLocation{"", 0, "cache"}, "a cache folder with no_cache=True");
     if (cache) r.cache_dir = *cache;
     else if (!no_cache) r.cache_dir = core::default_cache_dir();
-    r.commit = cli::build_commit;
+    r.commit = api::build_commit;
     return r;
 }
 

@@ -4,8 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "cli/build_info.hpp"
-#include "cli/flag_names.hpp"
+#include "api/build_commit.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
 #include "parameter_names.hpp"
@@ -39,8 +38,12 @@ PYBIND11_MODULE(_freestand, m) {
     m.doc() = "freestand's C++ library (see the freestand package for the documented API)";
     static ErrorClasses errors;
     errors.base = make_class(m, "Error", PyExc_Exception, 1, "Base of every freestand error.");
-    errors.usage = make_class(m, "UsageError", errors.base, 2,
-                              "A call the command line would refuse as usage (exit code 2).");
+    // Raised by the package for arguments that exclude or need each other (the library never
+    // raises it): also a TypeError, as a bad combination of arguments is in Python.
+    const py::tuple usage_bases = py::make_tuple(errors.base, py::handle(PyExc_TypeError));
+    errors.usage = make_class(m, "UsageError", usage_bases, 2,
+                              "Arguments that exclude or need each other (exit code 2 on the "
+                              "command line); also a TypeError.");
     // Also a ValueError: a value out of its range is what Python callers catch as one.
     const py::tuple input_bases = py::make_tuple(errors.base, py::handle(PyExc_ValueError));
     errors.input = make_class(m, "InputError", input_bases, 3,
@@ -54,17 +57,8 @@ PYBIND11_MODULE(_freestand, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const InputError& e) {
-            // A field the Python table names is renamed to its keyword; the commands still parsed
-            // from option text name their option.
-            // A keyword spelt as its field (samples) is still a keyword, not an option.
-            const SourceLocation& w = e.where();
-            const bool keyword = w.file.empty() && w.line == 0 &&
-                                 freestand::python::keyword_names().count(w.field) > 0;
-            PyErr_SetString(errors.input.ptr(),
-                            (keyword ? freestand::python::in_python(e) : cli::on_command_line(e))
-                                .what());
-        } catch (const UsageError& e) {
-            PyErr_SetString(errors.usage.ptr(), e.what());
+            // A request field is renamed to the keyword the caller typed.
+            PyErr_SetString(errors.input.ptr(), freestand::python::in_python(e).what());
         } catch (const NumericalError& e) {
             PyErr_SetString(errors.numerical.ptr(), e.what());
         } catch (const IoError& e) {
@@ -74,10 +68,10 @@ PYBIND11_MODULE(_freestand, m) {
         }
     });
     m.attr("version") = freestand::core::version();
-    m.attr("commit") = freestand::cli::build_commit;
+    m.attr("commit") = freestand::api::build_commit;
     freestand::python::bind_records(m);
     freestand::python::bind_closed_forms(m);
-    freestand::python::bind_documents(m);
+    freestand::python::bind_motion(m);
     freestand::python::bind_runs(m);
     freestand::python::bind_case_runs(m);
     freestand::python::bind_fragility(m);

@@ -1,8 +1,8 @@
 // read_record and spectrum.
 #include <pybind11/stl.h>
 
+#include "api/spectrum.hpp"
 #include "bindings.hpp"
-#include "cli/documents.hpp"
 #include "convert.hpp"
 #include "core/readers.hpp"
 
@@ -21,6 +21,18 @@ py::dict record_dict(const core::Record& r) {
 }
 
 }  // namespace
+
+api::FrequencyGrid frequency_grid(const std::optional<std::vector<double>>& frequency_hz,
+                                  const std::optional<double>& fmin_hz,
+                                  const std::optional<double>& fmax_hz,
+                                  const std::optional<double>& per_decade) {
+    api::FrequencyGrid grid;
+    if (frequency_hz) grid.frequency_hz = *frequency_hz;
+    if (fmin_hz) grid.fmin_hz = *fmin_hz;
+    if (fmax_hz) grid.fmax_hz = *fmax_hz;
+    if (per_decade) grid.per_decade = *per_decade;
+    return grid;
+}
 
 core::Record make_record(const py::handle& accel_mps2, double dt_s, const std::string& name,
                          const std::string& source, const std::string& component) {
@@ -45,18 +57,24 @@ void bind_records(py::module_& m) {
         "spectrum",
         [](const py::handle& accel_mps2, double dt_s, const std::string& name,
            const std::string& source, const std::string& component,
-           const std::vector<std::string>& args) {
-            const core::Record r = make_record(accel_mps2, dt_s, name, source, component);
-            const auto vm = cli::parse_document_options("spectrum", cli::spectrum_grid_options(), args);
-            nlohmann::ordered_json doc;
+           const std::vector<double>& dampings,
+           const std::optional<std::vector<double>>& frequency_hz,
+           const std::optional<double>& fmin_hz, const std::optional<double>& fmax_hz,
+           const std::optional<double>& per_decade) {
+            api::SpectrumRequest request;
+            request.record = make_record(accel_mps2, dt_s, name, source, component);
+            request.dampings = dampings;
+            request.grid = frequency_grid(frequency_hz, fmin_hz, fmax_hz, per_decade);
+            api::json doc;
             {
                 py::gil_scoped_release unlocked;
-                doc = cli::spectrum_document(r, vm);
+                doc = api::to_json(api::spectrum(request));
             }
             return to_python(doc, Arrays::numpy);
         },
         py::arg("accel_mps2"), py::arg("dt_s"), py::arg("name"), py::arg("source"),
-        py::arg("component"), py::arg("args"));
+        py::arg("component"), py::arg("dampings"), py::arg("frequency_hz"), py::arg("fmin_hz"),
+        py::arg("fmax_hz"), py::arg("per_decade"));
 }
 
 }  // namespace freestand::python

@@ -17,6 +17,7 @@
 #include "cli/shards.hpp"
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
+#include "cli/usage_error.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::batch_command {

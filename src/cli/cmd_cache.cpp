@@ -12,6 +12,7 @@
 #include "cli/run_options.hpp"
 #include "core/errors.hpp"
 #include "core/printable.hpp"
+#include "cli/usage_error.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::cache_command {

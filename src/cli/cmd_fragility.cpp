@@ -17,6 +17,7 @@
 #include "core/printable.hpp"
 #include "fragility/shard_file.hpp"
 #include "report/pdf.hpp"
+#include "cli/usage_error.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::fragility_command {

@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "report/render.hpp"
 #include "report/validation.hpp"
+#include "cli/usage_error.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::regress_command {

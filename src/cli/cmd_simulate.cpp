@@ -12,6 +12,7 @@
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
 #include "core/readers.hpp"
+#include "cli/usage_error.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::simulate_command {

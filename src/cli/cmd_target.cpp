@@ -3,44 +3,42 @@
 #include <fmt/format.h>
 
 #include <iostream>
-#include <nlohmann/json.hpp>
-#include <set>
 
+#include "api/target.hpp"
 #include "cli/command.hpp"
-#include "cli/documents.hpp"
+#include "cli/design_options.hpp"
 #include "cli/options.hpp"
 #include "cli/spectra_cli.hpp"
-#include "spectra/design.hpp"
+#include "cli/usage_error.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::target_command {
 namespace {
 
-/// Where each design's formulas come from (written into --output files).
-const std::map<std::string, std::string> design_source{
-    {"rg1.60",
-     "US NRC Regulatory Guide 1.60 Rev. 2, Tables I and II: control points A 33 Hz, "
-     "B 9 Hz, C 2.5 Hz (vertical 3.5 Hz), D 0.25 Hz (36 in ground displacement per 1 g), "
-     "log-log lines, PSA = PGA above 33 Hz, constant SD below 0.25 Hz (docs/methods.md s.8)"},
-    {"asce7",
-     "ASCE 7-16 section 11.4.6 design response spectrum: T0 = 0.2 SD1/SDS, TS = SD1/SDS, "
-     "SD1/T to TL, SD1 TL/T^2 beyond (docs/methods.md s.8)"},
-    {"ec8",
-     "EN 1998-1:2004 3.2.2.2 horizontal elastic spectrum, eqs. (3.2)-(3.6), recommended "
-     "S, TB, TC, TD of Tables 3.2 (Type 1) and 3.3 (Type 2) (docs/methods.md s.8)"},
-    {"is1893",
-     "IS 1893 (Part 1) Sa/g at 5% damping: 1 + 15 T below 0.1 s, 2.5 plateau, "
-     "then 1.0/T, 1.36/T, 1.67/T (rock, medium, soft) to 4 s, constant beyond (docs/methods.md s.8)"},
-};
-const std::map<std::string, std::string> design_scaling{
-    {"rg1.60",
-     "PSA is proportional to PGA: multiply psa_g by the design PGA in g over the PGA of the label"},
-    {"asce7", "PSA is proportional to SDS and SD1 scaled together (same TS); TL fixed"},
-    {"ec8",
-     "PSA is proportional to a_g: multiply psa_g by the design a_g in g over the a_g of the label"},
-    {"is1893",
-     "PSA is proportional to PGA: multiply psa_g by the design PGA in g over the PGA of the label"},
-};
+po::options_description target_options() {
+    po::options_description desc("options");
+    desc.add_options()("design", po::value<std::string>()->required(),
+                       "rg1.60 | asce7 | ec8 | is1893")(
+        "vertical", po::bool_switch(), "rg1.60: vertical instead of horizontal spectrum");
+    add_design_options(desc);
+    add_spectrum_grid_options(desc, "0.05",
+                              "damping ratios, comma-separated: rg1.60 0.005-0.10, ec8 (0, 1), "
+                              "asce7 and is1893 0.05 only");
+    desc.add_options()("json", po::bool_switch(), "print one JSON object instead of CSV")(
+        "output", po::value<std::string>(),
+        "write the spectrum file format (one damping) to this path instead of printing");
+    return desc;
+}
+
+api::TargetRequest target_request(const po::variables_map& vm) {
+    api::TargetRequest r;
+    r.design = vm["design"].as<std::string>();
+    r.values = design_values(vm);
+    r.dampings = dampings_from(vm);
+    r.vertical = vm["vertical"].as<bool>();
+    r.grid = grid_from(vm);
+    return r;
+}
 
 /// The command line without --output and its path, so a regenerated file does not name itself.
 std::string join_args(const std::vector<std::string>& args) {
@@ -57,33 +55,29 @@ std::string join_args(const std::vector<std::string>& args) {
 }
 
 int run_target(const std::vector<std::string>& args) {
-    po::options_description desc = target_options();
-    desc.add_options()("json", po::bool_switch(), "print one JSON object instead of CSV")(
-        "output", po::value<std::string>(),
-        "write the spectrum file format (one damping) to this path instead of printing");
-    const auto vm = parse_options("target", "--design NAME [design options] [options]", desc, args);
+    const auto vm =
+        parse_options("target", "--design NAME [design options] [options]", target_options(), args);
     if (!vm) return 0;
-
-    const std::string design = (*vm)["design"].as<std::string>();
-    const std::vector<spectra::Spectrum> spectra_out = target_spectra(*vm);
+    const api::TargetResult result = api::target(target_request(*vm));
+    const std::string& design = result.request.design;
     if (vm->count("output")) {
-        if (spectra_out.size() != 1)
+        if (result.spectra.size() != 1)
             throw UsageError("--output writes one spectrum; give a single --damping value");
-        spectra::write_spectrum_csv(spectra_out[0], (*vm)["output"].as<std::string>(),
-                                    {"source: " + design_source.at(design),
+        spectra::write_spectrum_csv(result.spectra[0], (*vm)["output"].as<std::string>(),
+                                    {"source: " + api::design_source(design),
                                      "units: frequency_hz in Hz, psa_g in g (g = 9.81 m/s^2)",
-                                     "scaling: " + design_scaling.at(design),
+                                     "scaling: " + api::design_scaling(design),
                                      "generated by: freestand target " + join_args(args)});
         return 0;
     }
     if ((*vm)["json"].as<bool>()) {
-        std::cout << target_document(*vm, spectra_out).dump(2) << "\n";
+        std::cout << api::to_json(result).dump(2) << "\n";
         return 0;
     }
     std::vector<std::vector<double>> psa;
-    psa.reserve(spectra_out.size());
-    for (const auto& s : spectra_out) psa.push_back(s.psa_g);
-    print_psa_csv(frequencies_from(*vm), dampings_from(*vm), psa);
+    psa.reserve(result.spectra.size());
+    for (const auto& s : result.spectra) psa.push_back(s.psa_g);
+    print_psa_csv(result.frequency_hz, result.request.dampings, psa);
     return 0;
 }
 

@@ -5,13 +5,12 @@
 #include <chrono>
 #include <iostream>
 
+#include "api/validate.hpp"
 #include "cli/build_info.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
-#include "core/errors.hpp"
 #include "core/printable.hpp"
 #include "report/validation.hpp"
-#include "validate/validate.hpp"
 
 // The command's own namespace: the command files share a unity build (src/cli/CMakeLists.txt).
 namespace freestand::cli::validate_command {
@@ -19,15 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 const char* const usage = "[--out DIR] [--cases DIR] [--json]";
-
-void require_cases(const fs::path& dir) {
-    if (validate::has_cases(dir)) return;
-    std::string names;
-    for (const std::string& n : validate::case_names()) names += (names.empty() ? "" : ", ") + n;
-    throw IoError(fmt::format("{}: expected the shipped cases {} (run from the repository root "
-                              "or give --cases)",
-                              dir.string(), names));
-}
 
 int run(const std::vector<std::string>& args) {
     po::options_description desc("options");
@@ -38,21 +28,20 @@ int run(const std::vector<std::string>& args) {
         "json", po::bool_switch(), "print result.json instead of the table");
     const auto vm = parse_options("validate", usage, desc, args);
     if (!vm) return 0;
-    const fs::path cases = (*vm)["cases"].as<std::string>();
-    require_cases(cases);
+    api::ValidateRequest request;
+    request.cases_dir = (*vm)["cases"].as<std::string>();
+    request.build_commit = build_commit;
     const fs::path out = (*vm)["out"].as<std::string>();
     const auto start = std::chrono::steady_clock::now();
-    const validate::Validation v = validate::run(cases);
-    const report::Stamp stamp = report::validation_stamp(v, build_commit);
-    const report::ValidationReport rendered = report::render_validation(v, stamp);
-    report::write_validation(out, rendered);
+    const api::ValidateResult result = api::validate(request);
+    report::write_validation(out, result.reports);
     const double run_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << ((*vm)["json"].as<bool>() ? rendered.json : report::validation_text(v));
+    std::cout << ((*vm)["json"].as<bool>() ? result.reports.json
+                                          : report::validation_text(result.validation));
     // Timing goes to stderr: stdout and the reports are byte-identical for the same inputs.
     std::cerr << fmt::format("wrote {} ({} rows) in {:.2f} s\n", core::printable_name(out.string()),
-                             v.rows.size(),
-                             run_s);
+                             result.validation.rows.size(), run_s);
     return 0;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sliding/block_spec.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "core/printable.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

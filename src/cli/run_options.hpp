@@ -10,6 +10,7 @@
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "core/content_store.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "api/simulate.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

@@ -6,6 +6,7 @@
 
 #include "cli/options.hpp"
 #include "core/errors.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

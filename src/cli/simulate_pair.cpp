@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "core/errors.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

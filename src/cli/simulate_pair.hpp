@@ -4,6 +4,7 @@
 /// (docs/methods.md s.10): the options, the second unit's request and the text.
 #include "api/simulate.hpp"
 #include "cli/options.hpp"
+#include "cli/usage_error.hpp"
 
 namespace freestand::cli {
 

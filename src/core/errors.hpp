@@ -59,12 +59,6 @@ private:
     std::string message_;
 };
 
-/// Bad command line (unknown option, missing argument).
-class UsageError : public Error {
-public:
-    explicit UsageError(const std::string& message) : Error(ExitCode::usage, message) {}
-};
-
 /// A file could not be opened, read or written.
 class IoError : public Error {
 public:

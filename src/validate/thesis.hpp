@@ -3,10 +3,10 @@
 /// in the thesis text: S. (A.) Saraswat, "Response Evaluation of Freestanding Systems subjected to
 /// Seismic Loading", PhD thesis, HBNI / BARC, 2017, in the text extraction
 /// ../shared/thesis/000_da2bef6b73563e7f.txt (figures lost; tables and conclusions present).
-/// tests/data/thesis/values.tsv is a copy of this table (key, value, unit, section, line, quote)
-/// and tests/data/thesis/excerpt.txt the cited lines with their numbers: the tests check that the
-/// two tables agree, that every quote stands on its line of the excerpt, and, where the shared
-/// thesis folder is present, that the excerpt is the thesis's own text.
+/// This table is the one place each value is written. tests/data/thesis/excerpt.txt holds the cited
+/// lines with their numbers: the tests check that every quote and every value stands on its line
+/// of the excerpt and, where the shared thesis folder is present, that the excerpt is the
+/// thesis's own text.
 #include <optional>
 #include <string>
 #include <vector>

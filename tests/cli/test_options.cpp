@@ -4,6 +4,7 @@
 #include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "sliding/block_spec.hpp"
+#include "cli/usage_error.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_cli_test_options {

@@ -165,11 +165,19 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("duration 15 s is too short"));
     r = run_cli("generate --target rg1.60 --out '" + out.string() + "'");
-    CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains("--target rg1.60 needs --pga"));
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("--pga: required by design rg1.60"));
     r = run_cli("generate --target nureg --pga 0.2 --out '" + out.string() + "'");
-    CHECK(r.exit_code == 2);
+    CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("--target: unknown design \"nureg\""));
+    r = run_cli("generate --out '" + out.string() + "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("--target: no target; expected a design (rg1.60, asce7, "
+                                      "ec8, is1893) or a target spectrum file"));
+    r = run_cli("generate --target rg1.60 --pga 0.2 --target-file x.csv --out '" + out.string() +
+                "'");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("--target-file: excludes a design target; give one"));
     // Realism ranges: two numbers, min < max, positive; --sds belongs to asce7 only.
     r = run_cli("generate --target rg1.60 --pga 0.2 --va-range 0.8 --out '" + out.string() + "'");
     CHECK(r.exit_code == 2);
@@ -181,14 +189,14 @@ TEST_CASE("generate rejects bad requests with a clear message and exit code",
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Catch::Contains("da"));
     r = run_cli("generate --target rg1.60 --pga 0.2 --sds 1 --out '" + out.string() + "'");
-    CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains("--sds does not apply to --target rg1.60"));
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("--sds: does not apply to design rg1.60"));
     r = run_cli(
         "generate --target rg1.60 --pga 0.2 --seed-record tests/data/RSN175_IMPVALL.H_H-E12230.AT2 "
         "--dt 0.005 --out '" +
         out.string() + "'");
-    CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains("--dt applies to synthetic records"));
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.err, Catch::Contains("--dt: applies to synthetic records"));
     // Target files: missing damping, non-increasing frequency, non-positive PSA.
     fs::create_directories(out);
     const auto write = [&](const std::string& name, const std::string& text) {

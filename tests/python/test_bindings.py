@@ -428,7 +428,7 @@ def test_an_array_that_is_not_one_dimensional_is_refused():
 
 
 def test_samples_that_are_not_numbers_are_refused_naming_the_array():
-    with pytest.raises(freestand.InputError, match="accel_mps2: expected a one-dimensional"):
+    with pytest.raises(TypeError, match="accel_mps2: expected a one-dimensional"):
         freestand.simulate(BLOCK, np.array(["a", "b"]), 0.01, mu=0.3)
 
 

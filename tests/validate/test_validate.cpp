@@ -8,11 +8,13 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "support/paths.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 #include "validate/specimens.hpp"
+#include "validate/thesis.hpp"
 #include "validate/validate.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
@@ -35,13 +37,41 @@ const Row& row(const std::string& id) {
     return *it;
 }
 
+// Table 3-2 of the thesis (s.3.3.3.1): critical angle alpha (rad) and diagonal length R (m).
+struct Specimen {
+    const char* key;
+    double alpha_rad;
+    double R_m;
+};
+constexpr Specimen table_3_2[] = {{"ts1", 0.245, 0.62}, {"ts2", 0.322, 0.47}, {"ts3", 0.463, 0.34}};
+constexpr double g_mps2 = 9.81;
+
+// Ishiyama's bound, the thesis's Eq. 3.41: V = 0.4 sqrt(8 g R (1 - cos a) / (3 cos a)), m/s.
+double ishiyama_mps(const Specimen& s) {
+    const double c = std::cos(s.alpha_rad);
+    return 0.4 * std::sqrt(8.0 * g_mps2 * s.R_m * (1.0 - c) / (3.0 * c));
+}
+
+// The R (m) at which Eq. 3.41 gives v_mps for the specimen's alpha.
+double ishiyama_R_m(const Specimen& s, double v_mps) {
+    const double c = std::cos(s.alpha_rad);
+    return (v_mps / 0.4) * (v_mps / 0.4) * 3.0 * c / (8.0 * g_mps2 * (1.0 - c));
+}
+
 }  // namespace
 
-TEST_CASE("the validation has every row of the thesis comparison", "[validate][slow]") {
-    for (const char* ts : {"ts1", "ts2", "ts3"}) {
-        for (const char* f : {"0.5", "1", "2", "3", "5", "10"})
-            CHECK_NOTHROW(row(std::string(ts) + "-" + f + "hz"));
-        CHECK_NOTHROW(row(std::string(ts) + "-ishiyama"));
+TEST_CASE("the validation has every row of the thesis comparison, each with the thesis's outcome",
+          "[validate][slow]") {
+    // s.3.3.4.1 (text of Fig. 3-13): all three overturned below 2 Hz; at 2 Hz TS1 and TS2
+    // overturned and TS3 kept rocking; above, only peak angles (Fig. 3-13, lost) remain.
+    for (const Specimen& s : table_3_2) {
+        const std::string ts = s.key;
+        for (const char* f : {"0.5", "1"}) CHECK(row(ts + "-" + f + "hz").thesis == "overturned");
+        CHECK(row(ts + "-2hz").thesis ==
+              (ts == "ts3" ? "kept rocking, did not overturn" : "overturned"));
+        for (const char* f : {"3", "5", "10"})
+            CHECK_THAT(row(ts + "-" + f + "hz").thesis, Catch::StartsWith("did not overturn"));
+        CHECK(row(ts + "-ishiyama").unit == "m/s");
     }
     for (const char* id :
          {"gb-asce-0.2g-thesis-inputs", "gb-energy-0.2g-thesis-inputs",
@@ -71,10 +101,13 @@ TEST_CASE("every row has the thesis, the prediction, the difference and a reason
         // Only sines can be beyond the table's stroke, and only outcome rows are sines.
         if (r.agreement == Agreement::not_runnable) CHECK(r.kind == Kind::outcome);
         if (r.thesis_value) {
+            // The thesis's value is one the row cites, in the row's unit (thesis.cpp).
             REQUIRE(r.predicted_value);
             REQUIRE(r.difference_value);
-            CHECK(*r.difference_value == Approx(*r.predicted_value - *r.thesis_value));
-            CHECK(!r.unit.empty());
+            CHECK(std::any_of(r.sources.begin(), r.sources.end(), [&](const std::string& key) {
+                const Fact& f = fact(key);
+                return f.value && *f.value == *r.thesis_value && f.unit == r.unit;
+            }));
         }
     }
     for (const Group& g : v.groups) {
@@ -88,30 +121,67 @@ TEST_CASE("every row has the thesis, the prediction, the difference and a reason
 
 TEST_CASE("the thesis's own arithmetic is reproduced, its TS3 bound is not", "[validate][slow]") {
     // s.5.5: 47 and 56 mm; s.6.4: 56 and 58 mm, all to the thesis's millimetre.
-    for (const char* id : {"gb-asce-0.2g-thesis-inputs", "gb-energy-0.2g-thesis-inputs",
-                           "pair-asce-0.2g-thesis-inputs", "pair-energy-0.2g-thesis-inputs"}) {
+    const std::pair<const char*, double> thesis_mm[] = {{"gb-asce-0.2g-thesis-inputs", 47.0},
+                                                        {"gb-energy-0.2g-thesis-inputs", 56.0},
+                                                        {"pair-asce-0.2g-thesis-inputs", 56.0},
+                                                        {"pair-energy-0.2g-thesis-inputs", 58.0}};
+    for (const auto& [id, mm] : thesis_mm) {
         INFO(id);
+        REQUIRE(row(id).predicted_value);
+        CHECK(std::abs(*row(id).predicted_value - mm) <= 0.5);
         CHECK(row(id).agreement == Agreement::agrees);
-        CHECK(std::abs(*row(id).difference_value) <= 0.5);
     }
-    CHECK(*row("gb-asce-0.2g-thesis-inputs").predicted_value == Approx(47.1).margin(0.05));
-    CHECK(row("ts1-ishiyama").agreement == Agreement::agrees);
-    CHECK(row("ts2-ishiyama").agreement == Agreement::agrees);
+    // Table 3-6's bounds (0.283, 0.326, 0.499 m/s) beside Eq. 3.41 worked here from Table 3-2:
+    // TS1 and TS2 to the thesis's three digits, TS3's 0.499 needs a longer diagonal.
+    const double table_3_6_mps[] = {0.283, 0.326, 0.499};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Specimen& s = table_3_2[i];
+        const Row& r = row(std::string(s.key) + "-ishiyama");
+        INFO(r.id);
+        REQUIRE(r.predicted_value);
+        REQUIRE(r.thesis_value);
+        CHECK(*r.predicted_value == Approx(ishiyama_mps(s)).epsilon(1e-9));
+        CHECK(*r.thesis_value == table_3_6_mps[i]);
+        const bool thesis_arithmetic = std::abs(ishiyama_mps(s) - table_3_6_mps[i]) <= 0.0005;
+        CHECK(thesis_arithmetic == (i < 2));
+        CHECK((r.agreement == Agreement::agrees) == thesis_arithmetic);
+    }
     const Row& ts3 = row("ts3-ishiyama");
-    CHECK(ts3.agreement == Agreement::differs);
-    CHECK(*ts3.thesis_value == 0.499);
-    CHECK(*ts3.predicted_value == Approx(0.4092).margin(5e-5));
-    CHECK(ts3.reason.find("would need R = 0.51 m") != std::string::npos);
+    CHECK(*ts3.difference_value == Approx(ishiyama_mps(table_3_2[2]) - 0.499).epsilon(1e-9));
+    CHECK_THAT(ts3.reason, Catch::Contains(fmt::format("would need R = {:.2f} m",
+                                                       ishiyama_R_m(table_3_2[2], 0.499))));
 }
 
 TEST_CASE("rigid-block rows state the thesis's outcome and explain TS3 at 2 Hz",
           "[validate][slow]") {
-    CHECK(row("ts1-2hz").thesis == "overturned");
-    CHECK(row("ts3-2hz").thesis == "kept rocking, did not overturn");
+    // At 2 Hz the model overturns all three; the thesis saw TS1 and TS2 overturn, TS3 rock.
+    for (const char* ts : {"ts1", "ts2"}) {
+        const Row& r = row(std::string(ts) + "-2hz");
+        INFO(r.id);
+        CHECK_THAT(r.predicted, Catch::StartsWith("overturned"));
+        CHECK(r.agreement == Agreement::agrees);
+    }
     const Row& ts3 = row("ts3-2hz");
-    if (ts3.agreement == Agreement::differs) {
-        CHECK(ts3.reason.find("Eq. 3.41") != std::string::npos);
-        CHECK(ts3.reason.find("Table 3-6") != std::string::npos);
+    CHECK_THAT(ts3.predicted, Catch::StartsWith("overturned"));
+    CHECK(ts3.agreement == Agreement::differs);
+    CHECK(ts3.reason.find("Eq. 3.41") != std::string::npos);
+    CHECK(ts3.reason.find("Table 3-6") != std::string::npos);
+    // Above 2 Hz: standing, the peak angle falling with frequency towards the thesis's "virtual
+    // zero" (s.3.3.4.1), at 10 Hz below a twentieth of alpha.
+    for (const Specimen& s : table_3_2) {
+        std::vector<double> peak_rad;
+        for (const char* f : {"3", "5", "10"}) {
+            const Row& r = row(std::string(s.key) + "-" + f + "hz");
+            INFO(r.id);
+            CHECK_THAT(r.predicted, Catch::StartsWith("standing"));
+            REQUIRE(r.predicted_value);
+            CHECK(*r.predicted_value < s.alpha_rad);
+            peak_rad.push_back(*r.predicted_value);
+        }
+        INFO(s.key);
+        CHECK(peak_rad[0] > peak_rad[1]);
+        CHECK(peak_rad[1] > peak_rad[2]);
+        CHECK(peak_rad[2] < 0.05 * s.alpha_rad);
     }
     // The stroke caveat on every 0.5 and 1 Hz row.
     for (const char* id : {"ts1-0.5hz", "ts2-1hz", "ts3-0.5hz"})
@@ -122,8 +192,13 @@ TEST_CASE("rigid-block rows state the thesis's outcome and explain TS3 at 2 Hz",
 TEST_CASE("glove-box modes: rest at 0.1 g on PVC and to 0.3 g on steel pads", "[validate][slow]") {
     CHECK(row("gb-pvc-0.1g").predicted.rfind("rest", 0) == 0);
     CHECK(row("gb-pvc-0.2g").predicted.rfind("slide", 0) == 0);
-    for (const char* id : {"gb-steel-pads-0.1g", "gb-steel-pads-0.2g", "gb-steel-pads-0.3g"})
+    for (const char* id : {"gb-steel-pads-0.1g", "gb-steel-pads-0.2g", "gb-steel-pads-0.3g"}) {
+        INFO(id);
         CHECK(row(id).predicted.rfind("rest", 0) == 0);
+        // s.5.7: rest up to 0.3 g on steel pads: no slide in any history.
+        REQUIRE(row(id).predicted_value);
+        CHECK(*row(id).predicted_value == 0.0);
+    }
 }
 
 TEST_CASE("validation without the shipped cases is an I/O error naming the file", "[validate]") {
@@ -152,12 +227,17 @@ TEST_CASE("the unbraced pair's tunnel demand stands beside the thesis at 0.2, 0.
     CHECK(rows[0]->sources == std::vector<std::string>{"unbraced.relative_0.2g_mm"});
     CHECK(rows[1]->id == "unbraced-pair-0.3g");
     CHECK(rows[1]->agreement == Agreement::not_comparable);
-    CHECK(rows[1]->predicted_value.has_value());
     CHECK(rows[2]->id == "unbraced-pair-0.4g");
     CHECK(rows[2]->thesis_value == 25.0);
-    REQUIRE(rows[2]->predicted_value);
-    REQUIRE(rows[2]->difference_value);
-    CHECK(*rows[2]->difference_value == Approx(*rows[2]->predicted_value - 25.0));
+    for (const Row* r : rows) REQUIRE(r->predicted_value);
+    // s.6.3: at most 7 mm up to 0.2 g, 25 mm at 0.4 g; the lower friction bound predicts more
+    // at both, so both differ, and the relative slide grows with the level.
+    CHECK(*rows[0]->predicted_value > 1.2 * 7.0);
+    CHECK(rows[0]->agreement == Agreement::differs);
+    CHECK(*rows[2]->predicted_value > 1.2 * 25.0);
+    CHECK(rows[2]->agreement == Agreement::differs);
+    CHECK(*rows[0]->predicted_value < *rows[1]->predicted_value);
+    CHECK(*rows[1]->predicted_value < *rows[2]->predicted_value);
     for (const Row* r : rows) CHECK(r->predicted.find("common lower friction bound") != std::string::npos);
 }
 
@@ -325,11 +405,14 @@ TEST_CASE("glove-box sliding: ASCE 4 at 0.1 g, the pair at 0.4 g and the braced 
         REQUIRE(r.thesis_value);
         CHECK(*r.thesis_value == thesis_mm);
         REQUIRE(r.predicted_value);
-        REQUIRE(r.difference_value);
-        CHECK(*r.difference_value == Approx(*r.predicted_value - thesis_mm));
-        // The group's 20% tolerance, stated before comparing.
-        CHECK((r.agreement == Agreement::agrees) ==
-              (std::abs(*r.difference_value) <= 0.2 * thesis_mm));
+        // The group's 20% tolerance, stated before comparing: the energy balance lands within
+        // it at every level, ASCE 4's spectral estimate above it from 0.2 g.
+        const bool within = std::abs(*r.predicted_value - thesis_mm) <= 0.2 * thesis_mm;
+        CHECK((r.agreement == Agreement::agrees) == within);
+        const bool energy = id.find("-energy-") != std::string::npos;
+        const bool at_rest = id.find("-0.1g-") != std::string::npos;
+        CHECK(within == energy);
+        if (!energy && !at_rest) CHECK(*r.predicted_value > thesis_mm);
     }
     // The braced and the s.6.4 pair compare with one and the same assessment.
     for (const char* level : {"asce-0.1g", "asce-0.2g", "energy-0.3g", "asce-0.4g"}) {
