@@ -166,8 +166,7 @@ HistoryBank::HistoryBank(const Case& c, RunSettings run)
 }
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
-    // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.
-    return core::splitmix64(case_seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k));
+    return core::sequence_seed(case_seed, static_cast<std::uint64_t>(k));
 }
 
 std::size_t HistoryBank::max_sets() const {

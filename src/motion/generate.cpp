@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/random.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
 #include "motion/criteria.hpp"
@@ -125,7 +126,8 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
     GeneratedComponent best;
     const std::string& name = o.components[index];
     for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
-        const std::uint64_t seed = derive_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
+        const std::uint64_t seed =
+            core::component_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
         core::Record raw = synthesize(target, o.duration_s, o.dt_s, seed, o.envelope);
         // A fresh seed usually converges in a few passes where a stubborn one needs dozens:
         // cap the passes of the first half of the attempts; hard targets get full ones after.

@@ -26,11 +26,6 @@
 
 namespace freestand::motion {
 
-std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt) {
-    return core::splitmix64(seed ^ (component * 0x9E3779B97F4A7C15ull) ^
-                            (attempt * 0xD1B54A32D192ED03ull));
-}
-
 double envelope_at(const Envelope& e, double t_s, double duration_s) {
     if (t_s <= 0.0) return 0.0;
     if (t_s < e.rise_s) return (t_s / e.rise_s) * (t_s / e.rise_s);
