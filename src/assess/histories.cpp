@@ -202,7 +202,7 @@ void HistoryBank::extend(std::size_t n) {
     const std::size_t first = sets_.size();
     const motion::TargetSet targets = unit_targets(case_->site);
     // The sets are independent (own seeds): each lands in its own slot whatever the thread
-    // that made it (the motion stage serialises FFTW planning).
+    // that made it (core/fft.hpp serialises FFTW planning).
     std::vector<Obtained> got(n - first);
     core::parallel_for(
         got.size(), run_.threads,

@@ -7,7 +7,7 @@
 #include "core/measures.hpp"
 #include "core/units.hpp"
 #include "motion/criteria.hpp"
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 #include "motion/motion.hpp"
 #include "spectra/design.hpp"
 #include "spectra/response.hpp"
@@ -44,8 +44,8 @@ std::vector<double> averaged_psd_per_radps(const core::Record& record, double td
     // Zero-padding samples X(f), the record's continuous transform, densely (<= 0.005 Hz), so the
     // +-20% band average approximates an integral even at 0.3 Hz, where it spans few 1/T bins.
     const auto dense = static_cast<std::size_t>(std::ceil(1.0 / (kPsdResolutionHz * record.dt_s)));
-    const std::size_t n = fft_size(std::max(record.size(), dense));
-    RealFft fft(n);
+    const std::size_t n = core::fft_size(std::max(record.size(), dense));
+    core::RealFft fft(n);
     const auto x = fft.forward(record.accel_mps2);
     const double df = 1.0 / (static_cast<double>(n) * record.dt_s);
     std::vector<double> s(x.size());

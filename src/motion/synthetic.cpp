@@ -20,7 +20,7 @@
 #include "core/units.hpp"
 #include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 #include "motion/internal.hpp"
 #include "spectra/response.hpp"
 
@@ -73,7 +73,7 @@ constexpr double kClipFraction = 0.3;
 // built from them.
 struct Process {
     std::size_t samples;
-    RealFft fft;
+    core::RealFft fft;
     double df_hz;
     std::vector<double> amp;
     std::vector<std::complex<double>> unit;
@@ -83,7 +83,7 @@ struct Process {
 
     Process(std::size_t n, double dt_s)
         : samples(n),
-          fft(fft_size(n)),
+          fft(core::fft_size(n)),
           df_hz(1.0 / (static_cast<double>(fft.size()) * dt_s)),
           amp(fft.bins(), 0.0),
           unit(fft.bins()),
