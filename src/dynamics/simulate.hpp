@@ -124,7 +124,7 @@ struct Options {
     /// edge) released with theta' = 0, and slip velocity u'(0).
     double initial_rotation_rad = 0.0;
     double initial_slide_velocity_mps = 0.0;
-    double g_mps2 = 9.81;        ///< gravity (docs/methods.md, Conventions: 9.81)
+    double g_mps2 = units::g_mps2;  ///< gravity (docs/methods.md, Conventions)
 };
 
 /// Central difference's step on an input sampled at sample_dt_s: cd_dt_s rounded down to
