@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/units.hpp"
@@ -150,7 +151,7 @@ std::string srp_failures(const Acceptance& a) {
     std::string why;
     if (a.dt_s > criteria::max_dt_s + 1e-12)
         add_reason(why, fmt::format("dt {} s > {} s", a.dt_s, criteria::max_dt_s));
-    if (a.duration_s < criteria::min_duration_s - 1e-9)
+    if (a.duration_s < criteria::min_duration_s - core::tol::duration_s)
         add_reason(why,
                    fmt::format("duration {:.3f} s < {} s", a.duration_s, criteria::min_duration_s));
     if (a.min_ratio < criteria::floor_ratio)
@@ -175,7 +176,8 @@ std::string srp_failures(const Acceptance& a) {
 
 // The criteria of srp_failures by what they need: the record's measures, its 5% spectrum, its PSD.
 bool measures_fail(const Acceptance& a) {
-    return a.dt_s > criteria::max_dt_s + 1e-12 || a.duration_s < criteria::min_duration_s - 1e-9 ||
+    return a.dt_s > criteria::max_dt_s + 1e-12 ||
+           a.duration_s < criteria::min_duration_s - core::tol::duration_s ||
            std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps ||
            std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m;
 }
