@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/dopri5.hpp"
@@ -210,7 +211,7 @@ private:
                 throw NumericalError(fmt::format(
                     "biaxial event-driven integrator: the step fell below 1e-14 s at t = {} s", t));
             double h = std::min({h_next_, t_end - t, o_.max_contact_step_s});
-            if (t_end - (t + h) < 1e-12 * h + 8.0 * eps_ * t_end) h = t_end - t;
+            h = core::step_to_sample(t, h, t_end);
             const bool clipped = h < h_next_;
             const double err = dp_.step(rhs_, t, x0, k1_, h, o_.rel_tol, o_.abs_tol);
             if (!(err <= 1.0)) {
@@ -379,7 +380,6 @@ private:
         return te;
     }
 
-    static constexpr double eps_ = std::numeric_limits<double>::epsilon();
     const BiaxialModel& m_;
     const Options& o_;
     BiaxialRecorder& rec_;

@@ -14,6 +14,7 @@
 
 #include "core/contract.hpp"
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/dopri5.hpp"
 #include "dynamics/flexible_detail.hpp"
@@ -368,7 +369,7 @@ private:
                 throw NumericalError(fmt::format(
                     "flexible-body integrator: the step fell below 1e-14 s at t = {} s", t));
             double h = std::min({h_next_, tb_ - t, o_.max_contact_step_s});
-            if (tb_ - (t + h) < 1e-12 * h + 8.0 * eps_ * tb_) h = tb_ - t;
+            h = core::step_to_sample(t, h, tb_);
             const bool clipped = h < h_next_;
             // The steps a stiff mode needs grow with its frequency: bounded, not run for ever.
             require_step_budget(++dp_steps_, t, g_.omega / (2.0 * std::numbers::pi), rigid_limit_hz_);
@@ -553,7 +554,6 @@ private:
         set_mode(classify_edge(g_, l.st.s, pose_of(g_, m_, x_), 0.0, seg_.at(t)), t);
     }
 
-    static constexpr double eps_ = std::numeric_limits<double>::epsilon();
     const FlexGeometry& g_;
     const Options& o_;
     FlexRecorder& rec_;

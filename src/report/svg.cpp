@@ -95,9 +95,10 @@ std::vector<double> linear_ticks(const Scale& s) {
     std::vector<double> out;
     const double step = nice_step(s.hi - s.lo, 5);
     if (!(step > 0.0 && std::isfinite(step))) return out;
-    for (double v = std::ceil(s.lo / step - 1e-9) * step;
-         v <= s.hi + step * 1e-9 && out.size() < max_ticks; v += step) {
-        out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+    const double near_step = step * core::tol::relative;
+    for (double v = core::steps_covering(s.lo / step) * step;
+         v <= s.hi + near_step && out.size() < max_ticks; v += step) {
+        out.push_back(std::abs(v) < near_step ? 0.0 : v);
     }
     return out;
 }
