@@ -128,7 +128,7 @@ SetUp set_up(const Case& c, const core::Record& rec) {
     double peak = 0.0;
     for (double a : rec.accel_mps2) peak = std::max(peak, std::abs(a));
     SetUp u{dynamics::make_block_model(block::Block::uniform(c.half_width_m, 0.6, 38.0), c.mu),
-            dynamics::excitation_from_record(rec, c.pga_g * 9.81 / peak), {}, {}};
+            dynamics::excitation_from_record(rec, c.pga_g * freestand::units::g_mps2 / peak), {}, {}};
     u.o.record_series = false;
     auto tight = u.o;
     tight.rel_tol = 1e-13;
@@ -162,7 +162,7 @@ void pair_rows(const core::Record& rec, const char* label, double pga_g,
                const std::array<dynamics::BlockModel, 2>& units, double tunnel_height_m) {
     double peak = 0.0;
     for (double a : rec.accel_mps2) peak = std::max(peak, std::abs(a));
-    const auto e = dynamics::excitation_from_record(rec, pga_g * 9.81 / peak);
+    const auto e = dynamics::excitation_from_record(rec, pga_g * freestand::units::g_mps2 / peak);
     dynamics::Options o;
     o.record_series = false;
     dynamics::PairOptions p;
@@ -215,7 +215,8 @@ void pair_rows(const core::Record& rec, const char* label, double pga_g,
 // USGS SLAMMER's rigid-block comparison: the whole El Centro #12 (140) record (7,814 samples)
 // times 3, mu 0.15 on a level floor, a block too squat to rock. SLAMMER (Java, fixed step) needs
 // 0.024 ms at the record's 5 ms step with a 1.4% error, 0.35 ms for 0.1% and 1.8 ms for 0.01%
-// against its converged residual 1.4801 cm (at g = 9.80665; freestand's 9.81 gives 1.4807 cm).
+// against its converged residual 1.4801 cm (at standard gravity 9.80665; the thesis's 9.81,
+// units::g_thesis_mps2, gives 1.4807 cm).
 void slammer_row(const core::Record& whole) {
     dynamics::Excitation e = dynamics::excitation_from_record(whole, 3.0);
     const dynamics::BlockModel m =

@@ -79,7 +79,7 @@ inline void biaxial_record_rows(const core::Record& x140) {
     y.accel_mps2.resize(x140.accel_mps2.size());
     double peak = 0.0;
     for (double a : x140.accel_mps2) peak = std::max(peak, std::abs(a));
-    const double scale = 0.5 * 9.81 / peak;
+    const double scale = 0.5 * freestand::units::g_mps2 / peak;
     const auto xy = dynamics::biaxial_excitation_from_records(x140, y, scale);
     const auto planar_e = dynamics::excitation_from_record(x140, scale);
     const auto bi = dynamics::make_biaxial_model(0.2);

@@ -48,7 +48,7 @@ inline void flexible_rows(const core::Record& rec) {
     for (const FlexCase& c : cases) {
         const auto rigid =
             dynamics::make_block_model(block::Block::uniform(c.half_width_m, 0.6, 38.0), c.mu);
-        const auto e = dynamics::excitation_from_record(rec, c.pga_g * 9.81 / peak);
+        const auto e = dynamics::excitation_from_record(rec, c.pga_g * freestand::units::g_mps2 / peak);
         dynamics::FlexibleMode mode;
         mode.frequency_hz = 7.5;
         const dynamics::FlexibleModel fm = dynamics::make_flexible_model(rigid, mode);

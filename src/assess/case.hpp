@@ -11,6 +11,7 @@
 
 #include "block/block.hpp"
 #include "core/statistics.hpp"
+#include "core/units.hpp"
 #include "motion/motion.hpp"
 #include "spectra/spectrum.hpp"
 
@@ -119,7 +120,7 @@ struct Site {
     /// RG 1.60 the vertical histories match its vertical spectrum scaled to this ZPA.
     double vertical_ratio = 2.0 / 3.0;
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
-    double g_mps2 = 9.81;               ///< gravity used throughout the case
+    double g_mps2 = units::g_mps2;      ///< gravity used throughout the case
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy
     /// method's DeltaD (docs/methods.md s.4: the thesis's test band started at 0.5 Hz), Hz.
     double energy_highpass_hz = 0.5;

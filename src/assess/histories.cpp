@@ -166,8 +166,7 @@ HistoryBank::HistoryBank(const Case& c, RunSettings run)
 }
 
 std::uint64_t HistoryBank::history_seed(std::uint64_t case_seed, int k) {
-    // splitmix64 of the pair: the k-th state after case_seed of splitmix64's sequence.
-    return core::splitmix64(case_seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k));
+    return core::sequence_seed(case_seed, static_cast<std::uint64_t>(k));
 }
 
 std::size_t HistoryBank::max_sets() const {
@@ -203,7 +202,7 @@ void HistoryBank::extend(std::size_t n) {
     const std::size_t first = sets_.size();
     const motion::TargetSet targets = unit_targets(case_->site);
     // The sets are independent (own seeds): each lands in its own slot whatever the thread
-    // that made it (the motion stage serialises FFTW planning).
+    // that made it (core/fft.hpp serialises FFTW planning).
     std::vector<Obtained> got(n - first);
     core::parallel_for(
         got.size(), run_.threads,

@@ -7,14 +7,15 @@
 
 #include "core/contract.hpp"
 #include "core/statistics.hpp"
+#include "core/steps.hpp"
 
 namespace freestand::assess {
 
 double order_statistic(std::vector<double> values, double q) {
     FREESTAND_EXPECT(!values.empty(), "an order statistic needs values");
     const auto n = static_cast<double>(values.size());
-    // ceil(q n) with a guard against 0.84 * 25 = 21.000000000000004 rounding up to 22.
-    const auto rank = static_cast<std::size_t>(std::max(1.0, std::ceil(q * n - 1e-9)));
+    // ceil(q n), guarded: 0.84 * 25 = 21.000000000000004 is rank 21, not 22.
+    const auto rank = static_cast<std::size_t>(std::max(1.0, core::steps_covering(q * n)));
     const std::size_t index = std::min(values.size(), rank) - 1;
     std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index),
                      values.end());

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/units.hpp"
+#include "core/steps.hpp"
 
 namespace freestand::assess {
 
@@ -533,8 +534,8 @@ std::string verdict_text(const Verdict& v) {
         case VerdictKind::acceptable:
             return "free-standing acceptable";
         case VerdictKind::acceptable_with_clearance: {
-            // Whole mm, rounded up; the 1e-9 guards against 0.047000000001 -> 48.
-            const double clear_mm = std::ceil(v.clearance_m * 1000.0 - 1e-9);
+            // Whole mm, rounded up, guarded: 0.047000000001 m is 47 mm, not 48.
+            const double clear_mm = core::steps_covering(v.clearance_m * 1000.0);
             return fmt::format("acceptable with clearance >= {:.0f} mm", clear_mm);
         }
         case VerdictKind::change_material: {

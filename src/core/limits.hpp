@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/units.hpp"
 
 namespace freestand::core::limits {
 
@@ -33,7 +34,7 @@ inline constexpr double min_dt_s = 1e-6;
 inline constexpr double max_dt_s = 1.0;
 /// Largest acceleration of a record or an excitation, m/s^2 (100 g): beyond it the products of
 /// the integrators overflow long before anything physical is left to compute.
-inline constexpr double max_abs_accel_mps2 = 100.0 * 9.81;
+inline constexpr double max_abs_accel_mps2 = 100.0 * units::g_mps2;
 /// Largest design level of a design spectrum, g (target's and generate's --pga, --sds, --sd1,
 /// --ag), the upper end of a case's pga_g levels: 'target --design rg1.60 --pga 1e300' printed
 /// spectral accelerations of 7.5e298 g with exit 0.

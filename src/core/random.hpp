@@ -8,9 +8,13 @@
 
 namespace freestand::core {
 
+/// splitmix64's increment between successive states, the golden-ratio "gamma" (Steele, Lea &
+/// Flood 2014).
+inline constexpr std::uint64_t splitmix64_gamma = 0x9E3779B97F4A7C15ULL;
+
 /// splitmix64's output function (Steele, Lea & Flood 2014): a bijective 64-bit mix.
 constexpr std::uint64_t splitmix64(std::uint64_t z) {
-    z += 0x9E3779B97F4A7C15ULL;
+    z += splitmix64_gamma;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
@@ -26,6 +30,20 @@ constexpr double uniform01(std::uint64_t draw) {
 /// and number): splitmix64 chained over them, so the stream depends on these three numbers only.
 constexpr std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t a, std::uint64_t b) {
     return splitmix64(splitmix64(splitmix64(seed) + a) + b);
+}
+
+/// The k-th output of splitmix64's sequence started at seed: one stream per index k of a run
+/// (the history sets of a case).
+constexpr std::uint64_t sequence_seed(std::uint64_t seed, std::uint64_t k) {
+    return splitmix64(seed + splitmix64_gamma * k);
+}
+
+/// The seed of a synthetic motion's component and retry (docs/methods.md s.8): the two indices
+/// are spread by two different odd 64-bit constants (splitmix64's gamma and 0xD1B54A32D192ED03)
+/// before the mix, so nearby (component, attempt) pairs give unrelated seeds.
+constexpr std::uint64_t component_seed(std::uint64_t seed, std::uint64_t component,
+                                       std::uint64_t attempt) {
+    return splitmix64(seed ^ (component * splitmix64_gamma) ^ (attempt * 0xD1B54A32D192ED03ULL));
 }
 
 }  // namespace freestand::core

@@ -1,4 +1,3 @@
-#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <regex>
@@ -40,8 +39,7 @@ Record parse_at2(const std::string& text, const std::string& file) {
                          "expected \"NPTS= n, DT= dt SEC\"; got \"" + header[3] + "\"");
     long npts = 0;
     const std::string npts_text = m[1].str();
-    const auto npts_parse = std::from_chars(npts_text.data(), npts_text.data() + npts_text.size(), npts);
-    if (npts_parse.ec != std::errc() || npts <= 0 || static_cast<double>(npts) > limits::max_samples)
+    if (!text::parse_integer(npts_text, npts) || npts <= 0 || static_cast<double>(npts) > limits::max_samples)
         throw InputError({file, 4, "NPTS"}, fmt::format("expected a point count between 1 and {:g} "
                                                         "(README, Limits); got \"{}\"",
                                                         limits::max_samples, npts_text));

@@ -12,7 +12,6 @@
 // (1 = acceleration), #3 units code (2 = g, 4 = cm/s/s, 10 = gal); real #62 sampling interval in
 // ms of the processed series, #34 sampling interval in s (of the raw record, used only when #62
 // is unknown). Only the first acceleration channel of a file is read.
-#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
@@ -103,8 +102,7 @@ const std::string& CosmosParser::line(std::size_t index, const std::string& what
 std::size_t CosmosParser::count(const std::string& digits, std::size_t index, const std::string& field) const {
     constexpr auto max_count = static_cast<std::size_t>(limits::max_samples);
     std::size_t value = 0;
-    const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (ec != std::errc() || ptr != digits.data() + digits.size() || value > max_count)
+    if (!text::parse_integer(digits, value) || value > max_count)
         throw InputError(at(index, field), fmt::format("count \"{}\" is not a whole number up to {}", digits, max_count));
     return value;
 }

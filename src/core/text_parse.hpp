@@ -1,5 +1,7 @@
 #pragma once
-/// Small text-parsing helpers shared by the record readers (internal to core).
+/// The text-parsing helpers of the project: numbers, blanks, case and lines of input text. Every
+/// reader of a token (record files, batch lists, command-line values) parses through these.
+#include <charconv>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -10,6 +12,15 @@ namespace freestand::core::text {
 /// Parses a whole token as a double (leading '+' allowed). std::from_chars rejects what strtod
 /// would half-accept ("0.3x"); "nan" and "inf" parse, so callers check std::isfinite.
 bool parse_double(std::string_view token, double& value);
+
+/// Parses a whole token as an integer of type Int (decimal digits, a leading '-' for signed
+/// types; no '+', no blanks): false for anything else or a value out of Int's range.
+template <class Int>
+bool parse_integer(std::string_view token, Int& value) {
+    const char* last = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), last, value);
+    return !token.empty() && ec == std::errc() && ptr == last;
+}
 
 /// Token without leading and trailing blanks (space, tab, CR).
 std::string_view trim(std::string_view s);

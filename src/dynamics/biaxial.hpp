@@ -11,6 +11,7 @@
 
 #include "block/block.hpp"
 #include "core/record.hpp"
+#include "core/units.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::dynamics {
@@ -57,7 +58,7 @@ BiaxialExcitation biaxial_excitation(const Excitation& planar, std::vector<doubl
 std::optional<std::string> biaxial_rocking_reason(const block::Block& block,
                                                   const BiaxialModel& model,
                                                   const BiaxialExcitation& excitation,
-                                                  double g_mps2 = 9.81);
+                                                  double g_mps2 = units::g_mps2);
 
 /// One output sample (at the excitation's sample times, continued through the tail).
 struct BiaxialSample {

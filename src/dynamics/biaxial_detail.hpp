@@ -8,14 +8,9 @@
 #include "dynamics/biaxial.hpp"
 #include "dynamics/engine.hpp"
 #include "core/steps.hpp"
+#include "dynamics/vec2.hpp"
 
 namespace freestand::dynamics::detail {
-
-using Vec2 = std::array<double, 2>;
-inline double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
-// sqrt rather than hypot: the values are far from overflow, and hypot costs several times more
-// in the slide's inner loop.
-inline double norm(const Vec2& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1]); }
 
 /// The slip speed relative to the load, tau = |v| / |a_g| (s), below which a slide step is
 /// taken slaved to the load. The slip direction turns towards F = -a_g at the rate |a_g| / |v|

@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/dopri5.hpp"

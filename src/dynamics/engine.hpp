@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::dynamics::detail {
@@ -88,7 +89,7 @@ public:
             throw NumericalError(fmt::format(
                 "{}: the step fell below 1e-14 s at t = {} s", integrator, t_s));
         h_s_ = std::min({h_next_s_, end_s - t_s, max_step_s});
-        if (end_s - (t_s + h_s_) < 1e-12 * h_s_ + 8.0 * eps * end_s) h_s_ = end_s - t_s;
+        h_s_ = core::step_to_sample(t_s, h_s_, end_s);
         clipped_ = h_s_ < h_next_s_;
         return h_s_;
     }
@@ -107,7 +108,6 @@ public:
     }
 
 private:
-    static constexpr double eps = std::numeric_limits<double>::epsilon();
     double h_next_s_ = 1e-3;
     double h_s_ = 0.0;
     bool clipped_ = false;

@@ -22,7 +22,6 @@ namespace {
 
 using Vec = std::array<double, 4>;  // u, u', theta, theta'
 constexpr double half_pi = std::numbers::pi / 2.0;
-constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr int landing_probes = 16;            // sub-samples per segment searching a landing
 
 enum class Ev { none, impact, overturn, past_alpha, friction, lift, stop };
@@ -218,11 +217,7 @@ public:
     // The step to try from t towards stop_at: the longest contact step and the last step's cap.
     double contact_step_request(double t, double stop_at) const {
         double h = std::min({stop_at - t, o_.max_contact_step_s, h_cap_});
-        // Sample times are k dt: a segment can be an ulp longer than dt (or the longest step), and a
-        // step an ulp short of the sample would leave a step of ~1e-15 s after it. An ulp of
-        // t grows with t (7e-15 s at 32 s), so the snap is a few ulps of t as well.
-        if (stop_at - (t + h) < std::max(1e-12 * h, 8.0 * eps * stop_at)) h = stop_at - t;
-        return h;
+        return core::step_to_sample(t, h, stop_at);
     }
 
     // Peak rotation inside a step (theta' from + to -): Newton on theta' with theta'' from the

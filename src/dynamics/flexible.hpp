@@ -133,6 +133,6 @@ double rigid_limit_hz(const FlexibleModel& model, const Excitation& excitation);
 /// against the free base in flight, ~5.5 x the fixed-base frequency for a uniform block carrying
 /// the cantilever's 0.613 M). The rigid block has no stiffness of its own (rigid contacts), so
 /// the elastic mode is the only limit. g_mps2: the gravity the run uses.
-double cd_stable_step_s(const FlexibleModel& model, double g_mps2 = 9.81);
+double cd_stable_step_s(const FlexibleModel& model, double g_mps2 = units::g_mps2);
 
 }  // namespace freestand::dynamics

@@ -14,6 +14,7 @@
 
 #include "core/contract.hpp"
 #include "core/errors.hpp"
+#include "core/steps.hpp"
 #include "dynamics/roots.hpp"
 #include "dynamics/dopri5.hpp"
 #include "dynamics/flexible_detail.hpp"

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/units.hpp"
 #include "dynamics/flexible_detail.hpp"
+#include "dynamics/vec2.hpp"
 
 namespace freestand::dynamics {
 
@@ -54,11 +55,6 @@ FlexibleModel make_flexible_model(const BlockModel& rigid, const FlexibleMode& m
 namespace detail {
 
 namespace {
-using Vec2 = std::array<double, 2>;
-Vec2 rot(double c, double s, Vec2 p) { return {c * p[0] - s * p[1], s * p[0] + c * p[1]}; }
-Vec2 perp(Vec2 v) { return {-v[1], v[0]}; }
-double cross(Vec2 a, Vec2 b) { return a[0] * b[1] - a[1] * b[0]; }
-
 using Mat4 = std::array<std::array<double, 4>, 4>;
 
 double dot4(const std::array<double, 4>& a, const std::array<double, 4>& b) {

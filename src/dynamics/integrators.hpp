@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/contract.hpp"
+#include "core/units.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -173,7 +174,7 @@ private:
     }
     void push(double t_s, const BlockState& st, const Accel& a, double top);
     const Geometry& g_;
-    double g_mps2_ = 9.81;
+    double g_mps2_ = units::g_mps2;
     double top_peak_ = 0.0;  ///< peak |top acceleration|, m/s^2
     bool record_series_ = true;
     Summary summary_;

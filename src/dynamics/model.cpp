@@ -11,17 +11,6 @@
 
 namespace freestand::dynamics {
 
-const char* mode_name(Mode mode) {
-    switch (mode) {
-        case Mode::rest: return "rest";
-        case Mode::slide: return "slide";
-        case Mode::rock: return "rock";
-        case Mode::slide_rock: return "slide_rock";
-        case Mode::flight: return "flight";
-    }
-    return "?";
-}
-
 const char* integrator_name(Integrator integrator) {
     return integrator == Integrator::event ? "event" : "cd";
 }

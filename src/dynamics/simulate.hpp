@@ -12,16 +12,18 @@
 #include <vector>
 
 #include "block/block.hpp"
+#include "block/mode.hpp"
 #include "core/record.hpp"
 #include "core/steps.hpp"
+#include "core/units.hpp"
 
 namespace freestand::dynamics {
 
 /// Contact state of the block. Rock and slide-rock carry an active edge (Sample::edge).
-enum class Mode { rest = 0, slide = 1, rock = 2, slide_rock = 3, flight = 4 };
-inline constexpr std::size_t mode_count = 5;
+using Mode = block::Mode;
+using block::mode_count;
 /// "rest", "slide", "rock", "slide_rock", "flight".
-const char* mode_name(Mode mode);
+using block::mode_name;
 
 /// The block and its contact with the base.
 struct BlockModel {
@@ -122,7 +124,7 @@ struct Options {
     /// edge) released with theta' = 0, and slip velocity u'(0).
     double initial_rotation_rad = 0.0;
     double initial_slide_velocity_mps = 0.0;
-    double g_mps2 = 9.81;        ///< gravity (docs/methods.md, Conventions: 9.81)
+    double g_mps2 = units::g_mps2;  ///< gravity (docs/methods.md, Conventions)
 };
 
 /// Central difference's step on an input sampled at sample_dt_s: cd_dt_s rounded down to

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/units.hpp"
 #include "motion/criteria.hpp"
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 #include "motion/motion.hpp"
 #include "spectra/design.hpp"
 #include "spectra/response.hpp"
@@ -44,8 +45,8 @@ std::vector<double> averaged_psd_per_radps(const core::Record& record, double td
     // Zero-padding samples X(f), the record's continuous transform, densely (<= 0.005 Hz), so the
     // +-20% band average approximates an integral even at 0.3 Hz, where it spans few 1/T bins.
     const auto dense = static_cast<std::size_t>(std::ceil(1.0 / (kPsdResolutionHz * record.dt_s)));
-    const std::size_t n = fft_size(std::max(record.size(), dense));
-    RealFft fft(n);
+    const std::size_t n = core::fft_size(std::max(record.size(), dense));
+    core::RealFft fft(n);
     const auto x = fft.forward(record.accel_mps2);
     const double df = 1.0 / (static_cast<double>(n) * record.dt_s);
     std::vector<double> s(x.size());
@@ -150,7 +151,7 @@ std::string srp_failures(const Acceptance& a) {
     std::string why;
     if (a.dt_s > criteria::max_dt_s + 1e-12)
         add_reason(why, fmt::format("dt {} s > {} s", a.dt_s, criteria::max_dt_s));
-    if (a.duration_s < criteria::min_duration_s - 1e-9)
+    if (a.duration_s < criteria::min_duration_s - core::tol::duration_s)
         add_reason(why,
                    fmt::format("duration {:.3f} s < {} s", a.duration_s, criteria::min_duration_s));
     if (a.min_ratio < criteria::floor_ratio)
@@ -175,7 +176,8 @@ std::string srp_failures(const Acceptance& a) {
 
 // The criteria of srp_failures by what they need: the record's measures, its 5% spectrum, its PSD.
 bool measures_fail(const Acceptance& a) {
-    return a.dt_s > criteria::max_dt_s + 1e-12 || a.duration_s < criteria::min_duration_s - 1e-9 ||
+    return a.dt_s > criteria::max_dt_s + 1e-12 ||
+           a.duration_s < criteria::min_duration_s - core::tol::duration_s ||
            std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps ||
            std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m;
 }

@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
+#include "core/random.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
 #include "motion/criteria.hpp"
@@ -70,7 +72,7 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
                 fmt::format("dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s, and the Nyquist "
                             "frequency {} Hz is below the {} Hz top of the acceptance band",
                             o.dt_s, criteria::max_dt_s, 0.5 / o.dt_s, criteria::band_high_hz));
-        if (o.duration_s < criteria::min_duration_s - 1e-9)
+        if (o.duration_s < criteria::min_duration_s - core::tol::duration_s)
             throw InputError(SourceLocation{"", 0, "duration_s"},
                              fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s",
                                          o.duration_s, criteria::min_duration_s));
@@ -104,7 +106,7 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
                 fmt::format("seed record dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s "
                             "(Nyquist {} Hz below the {} Hz acceptance band)",
                             r.dt_s, criteria::max_dt_s, 0.5 / r.dt_s, criteria::band_high_hz));
-        if (r.duration_s() < criteria::min_duration_s - 1e-9)
+        if (r.duration_s() < criteria::min_duration_s - core::tol::duration_s)
             throw InputError(SourceLocation{r.source, 0, "duration"},
                              fmt::format("seed record lasts {:.3f} s; SRP 3.7.1 needs >= {} s",
                                          r.duration_s(), criteria::min_duration_s));
@@ -125,7 +127,8 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
     GeneratedComponent best;
     const std::string& name = o.components[index];
     for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
-        const std::uint64_t seed = derive_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
+        const std::uint64_t seed =
+            core::component_seed(o.seed, index, static_cast<std::uint64_t>(attempt));
         core::Record raw = synthesize(target, o.duration_s, o.dt_s, seed, o.envelope);
         // A fresh seed usually converges in a few passes where a stubborn one needs dozens:
         // cap the passes of the first half of the attempts; hard targets get full ones after.

@@ -15,7 +15,4 @@ MatchResult match_in_place(core::Record record, const Target& target, const Matc
 /// meaningful). A record that passes gets check_acceptance's report, bit for bit.
 Acceptance check_acceptance_or_reject(const core::Record& record, const Target& target);
 
-/// splitmix64 mixing of (seed, component, attempt) into an independent generator seed.
-std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt);
-
 }  // namespace freestand::motion

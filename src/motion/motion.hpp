@@ -91,7 +91,7 @@ TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5
 
 /// Throws InputError (field = the spectrum's label) unless the spectrum has >= 2 points,
 /// strictly increasing finite positive frequencies, finite positive PSA, and the damping
-/// expected (tolerance 1e-9).
+/// expected (within core::tol::damping_equal).
 void validate_target(const spectra::Spectrum& spectrum, double expected_damping);
 
 /// Strong-motion envelope of the synthetic method: (t / rise)^2 while rising, 1 in the strong

@@ -20,16 +20,11 @@
 #include "core/units.hpp"
 #include "motion/baseline.hpp"
 #include "motion/criteria.hpp"
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 #include "motion/internal.hpp"
 #include "spectra/response.hpp"
 
 namespace freestand::motion {
-
-std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t component, std::uint64_t attempt) {
-    return core::splitmix64(seed ^ (component * 0x9E3779B97F4A7C15ull) ^
-                            (attempt * 0xD1B54A32D192ED03ull));
-}
 
 double envelope_at(const Envelope& e, double t_s, double duration_s) {
     if (t_s <= 0.0) return 0.0;
@@ -78,7 +73,7 @@ constexpr double kClipFraction = 0.3;
 // built from them.
 struct Process {
     std::size_t samples;
-    RealFft fft;
+    core::RealFft fft;
     double df_hz;
     std::vector<double> amp;
     std::vector<std::complex<double>> unit;
@@ -88,7 +83,7 @@ struct Process {
 
     Process(std::size_t n, double dt_s)
         : samples(n),
-          fft(fft_size(n)),
+          fft(core::fft_size(n)),
           df_hz(1.0 / (static_cast<double>(fft.size()) * dt_s)),
           amp(fft.bins(), 0.0),
           unit(fft.bins()),

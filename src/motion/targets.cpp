@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "motion/motion.hpp"
 #include "spectra/design.hpp"
@@ -33,7 +34,7 @@ spectra::Spectrum scaled(const spectra::Spectrum& s, double ratio, const std::st
 
 void validate_target(const spectra::Spectrum& s, double expected_damping) {
     const SourceLocation where{"", 0, s.label.empty() ? std::string("target") : s.label};
-    if (std::abs(s.damping - expected_damping) > 1e-9)
+    if (std::abs(s.damping - expected_damping) > core::tol::damping_equal)
         throw InputError(where,
                          fmt::format("damping {} but the acceptance criteria (SRP 3.7.1) are "
                                      "on the {}-damped spectrum; give a {} target",

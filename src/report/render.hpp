@@ -9,6 +9,7 @@
 #include "core/publish.hpp"
 #include "fragility/fragility.hpp"
 #include "goal/goal.hpp"
+#include "report/escape.hpp"
 #include "report/json.hpp"
 #include "report/plots.hpp"
 
@@ -46,11 +47,5 @@ void write_report(const std::filesystem::path& dir, const Rendered& rendered);
 /// The headline's governing level, "PGA 0.400 g, direction x", with " with <material>" when it
 /// is a level of the recommended material's trial (AssessmentResult::overall_from_trial).
 std::string headline_level(const assess::AssessmentResult& r);
-
-/// HTML text escape (& < > " ') that also shows control characters as \xNN.
-std::string html_escape(const std::string& text);
-
-/// Escapes text for a Markdown document (see render()); control characters show as \xNN.
-std::string markdown_escape(const std::string& text);
 
 }  // namespace freestand::report

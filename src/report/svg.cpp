@@ -1,5 +1,8 @@
 #include "report/svg.hpp"
 
+#include "report/escape.hpp"
+#include "core/steps.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -92,9 +95,10 @@ std::vector<double> linear_ticks(const Scale& s) {
     std::vector<double> out;
     const double step = nice_step(s.hi - s.lo, 5);
     if (!(step > 0.0 && std::isfinite(step))) return out;
-    for (double v = std::ceil(s.lo / step - 1e-9) * step;
-         v <= s.hi + step * 1e-9 && out.size() < max_ticks; v += step) {
-        out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+    const double near_step = step * core::tol::relative;
+    for (double v = core::steps_covering(s.lo / step) * step;
+         v <= s.hi + near_step && out.size() < max_ticks; v += step) {
+        out.push_back(std::abs(v) < near_step ? 0.0 : v);
     }
     return out;
 }
@@ -138,33 +142,6 @@ std::string vertex_dots(const Line& l, const Scale& sx, const Scale& sy) {
 
 }  // namespace
 
-std::string xml_escape(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&#39;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
-}
-
 std::string render_svg(const Plot& plot) {
     const double w = plot.width_px;
     // Unlabelled lines (interval bars, say) have no legend row.
@@ -198,10 +175,10 @@ std::string render_svg(const Plot& plot) {
         w, h, w, h);
     out +=
         fmt::format("<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n",
-                    xml_escape(plot.title));
+                    html_escape(plot.title));
     out +=
         fmt::format("<text x=\"{:.1f}\" y=\"18\" font-size=\"13\" font-weight=\"bold\">{}</text>\n",
-                    margin_left, xml_escape(plot.title));
+                    margin_left, html_escape(plot.title));
     for (const Region& r : plot.regions) {
         std::vector<double> rx, ry;
         for (const auto& p : r.polygon) {
@@ -233,10 +210,10 @@ std::string render_svg(const Plot& plot) {
         margin_left, margin_top, w - margin_right - margin_left, frame_bottom - margin_top);
     out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
                        (margin_left + w - margin_right) / 2.0, frame_bottom + 32.0,
-                       xml_escape(plot.x.label));
+                       html_escape(plot.x.label));
     out += fmt::format(
         "<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
-        (margin_top + frame_bottom) / 2.0, xml_escape(plot.y.label));
+        (margin_top + frame_bottom) / 2.0, html_escape(plot.y.label));
     for (const Line& l : plot.lines) {
         out += fmt::format(
             "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}/>\n",
@@ -249,14 +226,14 @@ std::string render_svg(const Plot& plot) {
         out += fmt::format(
             "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"{}\"/>\n"
             "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-            sx(m.x), sy(m.y), m.color, sx(m.x) + 6.0, sy(m.y) - 6.0, xml_escape(m.label));
+            sx(m.x), sy(m.y), m.color, sx(m.x) + 6.0, sy(m.y) - 6.0, html_escape(m.label));
     }
     double row_y = plot.height_px + 4.0;
     for (const Region& r : plot.regions) {
         out += fmt::format(
             "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"10\" fill=\"{}\"/>"
             "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-            margin_left, row_y, r.fill, margin_left + 20.0, row_y + 9.0, xml_escape(r.label));
+            margin_left, row_y, r.fill, margin_left + 20.0, row_y + 9.0, html_escape(r.label));
         row_y += legend_row_px;
     }
     for (const Line& l : plot.lines) {
@@ -266,7 +243,7 @@ std::string render_svg(const Plot& plot) {
             "stroke-width=\"2\"{}/><text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
             margin_left, row_y + 5.0, margin_left + 14.0, row_y + 5.0, l.color,
             l.dashed ? " stroke-dasharray=\"5 3\"" : "", margin_left + 20.0, row_y + 9.0,
-            xml_escape(l.label));
+            html_escape(l.label));
         row_y += legend_row_px;
     }
     out += "</svg>\n";

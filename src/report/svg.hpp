@@ -56,7 +56,4 @@ struct Plot {
 /// .svg file). Non-finite points and points outside a log axis's range are skipped.
 std::string render_svg(const Plot& plot);
 
-/// Escapes &, <, >, " and ' for XML text and attributes.
-std::string xml_escape(const std::string& text);
-
 }  // namespace freestand::report

@@ -1,7 +1,7 @@
 #include "report/template_render.hpp"
 
 #include "report/escape_guard.hpp"
-#include "report/render.hpp"
+#include "report/escape.hpp"
 
 namespace freestand::report {
 

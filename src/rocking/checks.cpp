@@ -62,7 +62,8 @@ double peak_pseudo_velocity_mps(const DampedDemand& d) {
 
 std::string amplification_warning(sliding::Mode mode, double mu_s, double A) {
     switch (mode) {
-        case sliding::Mode::rest: return "";
+        case sliding::Mode::rest:
+        case sliding::Mode::flight: return "";
         case sliding::Mode::slide:
             return fmt::format(
                 "sliding caps the horizontal acceleration transmitted to the body at about mu (g + "

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "core/units.hpp"
 
@@ -70,7 +71,7 @@ struct Scan {
         double prev = 0.0;
         for (int k = 1; k <= n; ++k) {
             const double th = k < n ? alpha * static_cast<double>(k) / static_cast<double>(n)
-                                    : alpha * (1.0 - 1e-9);
+                                    : alpha * (1.0 - core::tol::relative);
             if (excess_g(th) <= 0.0) {
                 double lo = prev, hi = th;
                 for (int it = 0; it < 100 && hi - lo > 1e-13 * alpha; ++it) {

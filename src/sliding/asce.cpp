@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "core/units.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 SourceLocation field(const char* name) { return SourceLocation{"", 0, name}; }
 
 void require_damping(const spectra::Spectrum& s, double damping) {
-    if (std::abs(s.damping - damping) > 1e-9)
+    if (std::abs(s.damping - damping) > core::tol::damping_equal)
         throw InputError(field("damping"),
                          fmt::format("spectrum \"{}\" has damping {}; expected {} (ASCE 4 sliding "
                                      "reads 10%-damped spectra)",

@@ -10,16 +10,6 @@ namespace freestand::sliding {
 using block::Block;
 using block::Edge;
 
-std::string to_string(Mode mode) {
-    switch (mode) {
-        case Mode::rest: return "rest";
-        case Mode::slide: return "slide";
-        case Mode::rock: return "rock";
-        case Mode::slide_rock: return "slide-rock";
-    }
-    return "unknown";
-}
-
 std::string describe(Criterion criterion) {
     switch (criterion) {
         case Criterion::below_thresholds: return "A <= mu_s and A <= tan(alpha)";

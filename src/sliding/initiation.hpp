@@ -6,14 +6,14 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "block/mode.hpp"
 
 namespace freestand::sliding {
 
-/// Initiating mode of a rigid block at rest.
-enum class Mode { rest, slide, rock, slide_rock };
-
+/// Initiating mode of a rigid block at rest: rest, slide, rock or slide_rock (never flight).
+using Mode = block::Mode;
 /// "rest", "slide", "rock", "slide-rock".
-std::string to_string(Mode mode);
+using block::to_string;
 
 /// Which boundary of docs/methods.md s.2 decided the mode.
 enum class Criterion {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "spectra/response.hpp"
 
@@ -17,7 +18,7 @@ void require_count(std::size_t n) {
 }
 
 void require_damping(const spectra::Spectrum& s, double damping, const std::string& file) {
-    if (std::abs(s.damping - damping) > 1e-9)
+    if (std::abs(s.damping - damping) > core::tol::damping_equal)
         throw InputError(SourceLocation{file, 0, "damping"},
                          fmt::format("spectrum \"{}\" has damping {}; expected {}", s.label,
                                      s.damping, damping));

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "core/errors.hpp"
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 
 namespace freestand::sliding {
 
@@ -23,7 +23,7 @@ double highpass_peak_displacement_m(const core::Record& record, double f_c_hz) {
     }
     const std::size_t n = record.accel_mps2.size();
     const auto pad = static_cast<std::size_t>(std::ceil(10.0 / f_c_hz / record.dt_s));
-    motion::RealFft fft(motion::fft_size(2 * n + pad));
+    core::RealFft fft(core::fft_size(2 * n + pad));
     std::vector<std::complex<double>> spectrum = fft.forward(record.accel_mps2);
     const double df_hz = 1.0 / (static_cast<double>(fft.size()) * record.dt_s);
     for (std::size_t k = 0; k < spectrum.size(); ++k) {

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
+#include "core/steps.hpp"
 #include "core/file_io.hpp"
 #include "core/text_parse.hpp"
 
@@ -51,7 +52,7 @@ std::vector<double> log_frequencies(double fmin_hz, double fmax_hz, int per_deca
     // tolerance keeps an exact number of decades (0.1-100 Hz: 300 intervals) from rounding up.
     const double decades = std::log10(fmax_hz / fmin_hz);
     const double intervals_wanted =
-        std::max(1.0, std::ceil(decades * static_cast<double>(per_decade) - 1e-9));
+        std::max(1.0, core::steps_covering(decades * static_cast<double>(per_decade)));
     // The grid's size is per_decade's doing: the limit names it, before the grid is allocated.
     core::limits::require_within(intervals_wanted + 1.0, core::limits::max_frequencies,
                                  SourceLocation{"", 0, "per_decade"},

@@ -26,7 +26,7 @@ struct Specimen {
 const std::vector<Specimen>& specimens();
 
 /// Gravity of the thesis's arithmetic and of these runs, m/s^2.
-inline constexpr double thesis_g_mps2 = 9.81;
+inline constexpr double thesis_g_mps2 = units::g_thesis_mps2;
 /// Amplitude of the thesis's sines, g (Table 3-5).
 double sine_amplitude_g();
 /// Duration of every sine, s (s.3.3.5.1: 5 s, "similar to the case of pure rocking").
@@ -35,7 +35,7 @@ double sine_duration_s();
 const std::vector<double>& sine_frequencies_hz();
 /// Half-stroke of the thesis's shake table, m (Table 3-1).
 double table_stroke_m();
-/// Table travel a sine needs: amplitude A g / (2 pi f)^2 of its displacement, m (g = 9.81).
+/// Table travel a sine needs: amplitude A g / (2 pi f)^2 of its displacement, m (g = thesis_g_mps2).
 double sine_travel_m(double amplitude_g, double frequency_hz);
 /// True when a travel of +-travel_m fits the table's stroke (<= table_stroke_m()).
 bool within_stroke(double travel_m);

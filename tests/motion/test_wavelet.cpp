@@ -312,9 +312,9 @@ TEST_CASE("portable uniform transform and seed derivation", "[motion][rng]") {
     std::mt19937_64 g;
     g.discard(9999);
     CHECK(g() == 9981545732273789042ull);
-    CHECK(derive_seed(1, 0, 0) != derive_seed(1, 1, 0));
-    CHECK(derive_seed(1, 0, 0) != derive_seed(1, 0, 1));
-    CHECK(derive_seed(1, 2, 3) == derive_seed(1, 2, 3));
+    CHECK(core::component_seed(1, 0, 0) != core::component_seed(1, 1, 0));
+    CHECK(core::component_seed(1, 0, 0) != core::component_seed(1, 0, 1));
+    CHECK(core::component_seed(1, 2, 3) == core::component_seed(1, 2, 3));
 }
 
 TEST_CASE("envelope: quadratic rise, flat strong part, exponential decay to end level",

@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "core/random.hpp"
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
-namespace freestand_test_motion_test_fft {
+namespace freestand_test_core_test_fft {
 
 using namespace freestand;
-using namespace freestand::motion;
+using namespace freestand::core;
 
 namespace {
 
@@ -54,7 +54,7 @@ Fresh fresh_transforms(const std::vector<double>& x) {
 
 }  // namespace
 
-TEST_CASE("shared FFT plans used from several threads give a fresh plan's bits", "[motion][fft]") {
+TEST_CASE("shared FFT plans used from several threads give a fresh plan's bits", "[core][fft]") {
     // 4050 = fft_size(4001) (a 20 s record at 5 ms) and 40000 (the PSD's 0.005 Hz bins); 1000
     // and 4050 again from other threads at the same time.
     const std::vector<std::size_t> lengths{4050, 40000, 1000, 4050, 40000, 1000};
@@ -83,7 +83,7 @@ TEST_CASE("shared FFT plans used from several threads give a fresh plan's bits",
     }
 }
 
-TEST_CASE("RealFft zero-pads, cuts and round-trips as documented", "[motion][fft]") {
+TEST_CASE("RealFft zero-pads, cuts and round-trips as documented", "[core][fft]") {
     RealFft fft(8);
     CHECK(fft.size() == 8);
     CHECK(fft.bins() == 5);
@@ -96,4 +96,4 @@ TEST_CASE("RealFft zero-pads, cuts and round-trips as documented", "[motion][fft
     CHECK(fft_size(40000) == 40000);
 }
 
-}  // namespace freestand_test_motion_test_fft
+}  // namespace freestand_test_core_test_fft

@@ -1,4 +1,4 @@
-#include "motion/fft.hpp"
+#include "core/fft.hpp"
 
 #include <fftw3.h>
 
@@ -8,7 +8,7 @@
 #include <new>
 #include <utility>
 
-namespace freestand::motion {
+namespace freestand::core {
 namespace {
 
 enum class Direction { forward, inverse };
@@ -113,4 +113,4 @@ std::size_t fft_size(std::size_t n) {
     }
 }
 
-}  // namespace freestand::motion
+}  // namespace freestand::core

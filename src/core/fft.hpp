@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace freestand::motion {
+namespace freestand::core {
 
 /// r2c / c2r pair for one length n, with FFTW-aligned buffers owned by the object and the
 /// length's shared plans. Unnormalised like FFTW: inverse(forward(x)) = n x. Not copyable; use
@@ -36,4 +36,4 @@ class RealFft {
 /// Smallest n' >= n of the form 2^a 3^b 5^c (fast FFT lengths).
 std::size_t fft_size(std::size_t n);
 
-}  // namespace freestand::motion
+}  // namespace freestand::core
