@@ -48,7 +48,7 @@ def main():
     print(f"{'row':<18} {'series':<7} {'C++ (ms)':>9} {'Python (ms)':>12} {'ratio':>6} "
           f"{'peak slide (m)':>15} {'theta/alpha':>12} overturned")
     for label, block, mu, pga_g in ROWS:
-        scale = pga_g * 9.81 / pga_mps2
+        scale = pga_g * freestand.g_mps2 / pga_mps2
         for series in (False, True):
             box = freestand._box(block, None, None)
             cpp_s = _fs._simulate_cpu_s(box, mu, accel, rec.dt_s, scale, series, REPEATS)

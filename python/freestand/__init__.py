@@ -33,6 +33,8 @@ IoError = _fs.IoError
 
 __version__: str = _fs.version
 commit: str = _fs.commit
+#: Gravity, m/s^2: the thesis's 9.81 (docs/methods.md, Conventions), as in every computation.
+g_mps2: float = _fs.g_mps2
 #: Names of the simulation's contact modes, indexed by the codes in simulate()'s series["mode"].
 mode_names: tuple = tuple(_fs.mode_names)
 
@@ -61,8 +63,8 @@ class Record:
 
     @property
     def accel_g(self) -> np.ndarray:
-        """The samples in g (g = 9.81 m/s^2, as everywhere in freestand)."""
-        return self.accel_mps2 / 9.81
+        """The samples in g (g = g_mps2, the value everywhere in freestand)."""
+        return self.accel_mps2 / g_mps2
 
 
 # NumPy kinds of real numbers: signed and unsigned integers, floats. Not b (bool), c (complex,

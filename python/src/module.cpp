@@ -6,6 +6,7 @@
 #include "bindings.hpp"
 #include "api/build_commit.hpp"
 #include "core/errors.hpp"
+#include "core/units.hpp"
 #include "core/version.hpp"
 #include "parameter_names.hpp"
 
@@ -68,6 +69,7 @@ PYBIND11_MODULE(_freestand, m) {
         }
     });
     m.attr("version") = freestand::core::version();
+    m.attr("g_mps2") = freestand::core::units::g_mps2;
     m.attr("commit") = freestand::api::build_commit;
     freestand::python::bind_records(m);
     freestand::python::bind_closed_forms(m);

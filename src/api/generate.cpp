@@ -152,13 +152,14 @@ json conventions_json() {
         {"realism",
          "PGA within pga_over_zpa_range x the target's zero-period acceleration, D5-75 >= "
          "d5_75_min_s; on horizontals V/A, AD/V^2 and D/A within their ranges where set "
-         "(rg1.60: 0.8-2.0 m/s/g, 2-8, <= 1.3 m/g; --va-range, --adv2-range, --da-max); "
+         "(rg1.60: 0.8-2.0 m/s/g, 2-8, <= 1.3 m/g; the request's va_range_mps_per_g, adv2_range, "
+         "da_max_m_per_g); "
          "docs/methods.md s.8"},
         {"psd",
          "S(f) = |X(f)|^2 / (pi T_D), X = dt FFT(a), T_D = D5-75, averaged over f(1 -+ 0.2): "
          "one-sided "
          "per rad/s, compared with the SRP 3.7.1 App. A target in the same convention"},
-        {"wall_s", "the only field that varies between identical runs (null with --no-timing)"}};
+        {"wall_s", "the only field that varies between identical runs (null when the run is not timed)"}};
 }
 
 }  // namespace generate_detail
