@@ -69,7 +69,7 @@ PYBIND11_MODULE(_freestand, m) {
         }
     });
     m.attr("version") = freestand::core::version();
-    m.attr("g_mps2") = freestand::core::units::g_mps2;
+    m.attr("g_mps2") = freestand::units::g_mps2;
     m.attr("commit") = freestand::api::build_commit;
     freestand::python::bind_records(m);
     freestand::python::bind_closed_forms(m);

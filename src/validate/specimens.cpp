@@ -275,7 +275,7 @@ Group specimen_group() {
         "the harmonic tests 'similar to the case of pure rocking'), then 10 s of free motion",
         "planar motion: the out-of-plane rocking the thesis recorded (0.6 g lateral at 2 Hz, "
         "s.3.3.4.2) is not modelled",
-        fmt::format("g = {} m/s^2", core::units::g_mps2),
+        fmt::format("g = {} m/s^2", units::g_mps2),
     };
     return g;
 }
