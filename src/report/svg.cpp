@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -140,17 +141,8 @@ std::string vertex_dots(const Line& l, const Scale& sx, const Scale& sy) {
     return out;
 }
 
-}  // namespace
-
-std::string render_svg(const Plot& plot) {
-    const double w = plot.width_px;
-    // Unlabelled lines (interval bars, say) have no legend row.
-    const std::size_t legend_rows =
-        plot.regions.size() +
-        static_cast<std::size_t>(std::count_if(plot.lines.begin(), plot.lines.end(),
-                                               [](const Line& l) { return !l.label.empty(); }));
-    const double h = plot.height_px + legend_row_px * static_cast<double>(legend_rows);
-    const double frame_bottom = plot.height_px - margin_bottom;
+/// Every plotted value of each axis: the lines', the regions' corners and the markers'.
+std::array<std::vector<double>, 2> plotted_values(const Plot& plot) {
     std::vector<double> xs, ys;
     for (const Line& l : plot.lines) {
         xs.insert(xs.end(), l.x.begin(), l.x.end());
@@ -166,19 +158,32 @@ std::string render_svg(const Plot& plot) {
         xs.push_back(m.x);
         ys.push_back(m.y);
     }
-    const Scale sx = make_scale(plot.x, xs, margin_left, w - margin_right);
-    const Scale sy = make_scale(plot.y, ys, frame_bottom, margin_top);
+    return {std::move(xs), std::move(ys)};
+}
+
+/// The plot area's geometry in pixels.
+struct Frame {
+    double width_px, height_px, bottom_px;
+    Scale sx, sy;
+};
+
+std::string svg_head(const Plot& plot, const Frame& f) {
     std::string out = fmt::format(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0f}\" height=\"{:.0f}\" viewBox=\"0 "
         "0 "
         "{:.0f} {:.0f}\" font-family=\"sans-serif\" font-size=\"11\">\n",
-        w, h, w, h);
+        f.width_px, f.height_px, f.width_px, f.height_px);
     out +=
         fmt::format("<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n",
                     html_escape(plot.title));
     out +=
         fmt::format("<text x=\"{:.1f}\" y=\"18\" font-size=\"13\" font-weight=\"bold\">{}</text>\n",
                     margin_left, html_escape(plot.title));
+    return out;
+}
+
+std::string region_polygons(const Plot& plot, const Frame& f) {
+    std::string out;
     for (const Region& r : plot.regions) {
         std::vector<double> rx, ry;
         for (const auto& p : r.polygon) {
@@ -186,18 +191,25 @@ std::string render_svg(const Plot& plot) {
             ry.push_back(p[1]);
         }
         out += fmt::format("<polygon points=\"{}\" fill=\"{}\" stroke=\"none\"/>\n",
-                           points_attr(rx, ry, sx, sy), r.fill);
+                           points_attr(rx, ry, f.sx, f.sy), r.fill);
     }
-    for (double t : ticks(sx)) {
-        const double px = sx(t);
+    return out;
+}
+
+/// Grid lines with their tick labels, then the frame and the axis labels.
+std::string axes(const Plot& plot, const Frame& f) {
+    const double w = f.width_px, frame_bottom = f.bottom_px;
+    std::string out;
+    for (double t : ticks(f.sx)) {
+        const double px = f.sx(t);
         out += fmt::format(
             "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" "
             "stroke=\"#dddddd\"/>\n"
             "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>\n",
             px, margin_top, frame_bottom, frame_bottom + 14.0, tick_label(t));
     }
-    for (double t : ticks(sy)) {
-        const double py = sy(t);
+    for (double t : ticks(f.sy)) {
+        const double py = f.sy(t);
         out += fmt::format(
             "<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\" "
             "stroke=\"#dddddd\"/>\n"
@@ -214,20 +226,32 @@ std::string render_svg(const Plot& plot) {
     out += fmt::format(
         "<text transform=\"translate(16 {:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
         (margin_top + frame_bottom) / 2.0, html_escape(plot.y.label));
+    return out;
+}
+
+std::string lines_and_markers(const Plot& plot, const Frame& f) {
+    std::string out;
     for (const Line& l : plot.lines) {
         out += fmt::format(
             "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}/>\n",
-            points_attr(l.x, l.y, sx, sy), l.color, l.width,
+            points_attr(l.x, l.y, f.sx, f.sy), l.color, l.width,
             l.dashed ? " stroke-dasharray=\"5 3\"" : "");
-        if (l.points) out += vertex_dots(l, sx, sy);
+        if (l.points) out += vertex_dots(l, f.sx, f.sy);
     }
     for (const Marker& m : plot.markers) {
-        if (!sx.contains(m.x) || !sy.contains(m.y)) continue;
+        if (!f.sx.contains(m.x) || !f.sy.contains(m.y)) continue;
         out += fmt::format(
             "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"{}\"/>\n"
             "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-            sx(m.x), sy(m.y), m.color, sx(m.x) + 6.0, sy(m.y) - 6.0, html_escape(m.label));
+            f.sx(m.x), f.sy(m.y), m.color, f.sx(m.x) + 6.0, f.sy(m.y) - 6.0,
+            html_escape(m.label));
     }
+    return out;
+}
+
+/// One legend row per region, then per labelled line, below the plot area.
+std::string legend(const Plot& plot) {
+    std::string out;
     double row_y = plot.height_px + 4.0;
     for (const Region& r : plot.regions) {
         out += fmt::format(
@@ -246,8 +270,25 @@ std::string render_svg(const Plot& plot) {
             html_escape(l.label));
         row_y += legend_row_px;
     }
-    out += "</svg>\n";
     return out;
+}
+
+}  // namespace
+
+std::string render_svg(const Plot& plot) {
+    const double w = plot.width_px;
+    // Unlabelled lines (interval bars, say) have no legend row.
+    const std::size_t legend_rows =
+        plot.regions.size() +
+        static_cast<std::size_t>(std::count_if(plot.lines.begin(), plot.lines.end(),
+                                               [](const Line& l) { return !l.label.empty(); }));
+    const double frame_bottom = plot.height_px - margin_bottom;
+    const auto [xs, ys] = plotted_values(plot);
+    const Frame f{w, plot.height_px + legend_row_px * static_cast<double>(legend_rows),
+                  frame_bottom, make_scale(plot.x, xs, margin_left, w - margin_right),
+                  make_scale(plot.y, ys, frame_bottom, margin_top)};
+    return svg_head(plot, f) + region_polygons(plot, f) + axes(plot, f) +
+           lines_and_markers(plot, f) + legend(plot) + "</svg>\n";
 }
 
 }  // namespace freestand::report
