@@ -5,7 +5,9 @@
 #include <array>
 #include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "core/statistics.hpp"
 #include "fragility/probit_detail.hpp"
@@ -112,41 +114,38 @@ std::string separation_note(const Levels& l, std::size_t m) {
         where, l.k[m], l.n[m], a, needed);
 }
 
-}  // namespace
-
-EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>& k,
+// The levels that have samples, on ln a.
+Levels observed_levels(const std::vector<double>& pga_g, const std::vector<int>& k,
                        const std::vector<int>& n) {
-    if (pga_g.size() != k.size() || k.size() != n.size())
-        throw std::invalid_argument("fit_lognormal: sizes differ");
     Levels l;
-    int failures = 0, total = 0;
     for (std::size_t j = 0; j < pga_g.size(); ++j) {
         if (n[j] <= 0) continue;
         l.x.push_back(std::log(pga_g[j]));
         l.k.push_back(k[j]);
         l.n.push_back(n[j]);
-        failures += k[j];
-        total += n[j];
     }
-    EventFit out;
-    if (l.x.size() < 2) {
-        out.note = "a lognormal curve needs at least two levels";
-        return out;
+    return l;
+}
+
+// Why no curve can be fitted to the levels, when that is known before fitting.
+std::optional<std::string> unfittable(const Levels& l) {
+    double failures = 0.0, total = 0.0;
+    for (std::size_t j = 0; j < l.x.size(); ++j) {
+        failures += l.k[j];
+        total += l.n[j];
     }
-    if (failures == 0) {
-        out.note = "no level has a failure";
-        return out;
-    }
-    if (failures == total) {
-        out.note = "every sample fails at every level: the median lies below the lowest level";
-        return out;
-    }
-    if (const auto m = separating_level(l)) {
-        out.note = separation_note(l, *m);
-        return out;
-    }
-    // Start from least squares on the empirical probits (continuity-corrected): the straight
-    // line z = a0 + a1 x through the points, by its normal equations.
+    if (l.x.size() < 2) return "a lognormal curve needs at least two levels";
+    if (failures == 0.0) return "no level has a failure";
+    if (failures == total)
+        return "every sample fails at every level: the median lies below the lowest level";
+    if (const auto m = separating_level(l)) return separation_note(l, *m);
+    return std::nullopt;
+}
+
+// Least squares on the empirical probits (continuity-corrected): the straight line
+// z = a0 + a1 x through the points, by its normal equations; a unit slope through the lowest
+// level when that line does not rise.
+Params probit_start(const Levels& l) {
     double sx = 0.0, sxx = 0.0, sz = 0.0, sxz = 0.0;
     for (std::size_t j = 0; j < l.x.size(); ++j) {
         const double z = core::normal_quantile((l.k[j] + 0.5) / (l.n[j] + 1.0));
@@ -155,30 +154,22 @@ EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>&
         sz += z;
         sxz += l.x[j] * z;
     }
-    Params start{-l.x.front(), 1.0};
     const Params ls =
         solve_symmetric_2x2(static_cast<double>(l.x.size()), sx, sxx, Params{sz, sxz});
-    if (finite(ls) && ls[1] > 0.0) start = ls;
-    const auto p = maximise(l, start);
-    if (!p || !((*p)[1] > 0.0)) {
-        out.note = p ? "failures do not increase with the PGA: no increasing lognormal fits"
-                     : "the likelihood has no finite maximum";
-        return out;
-    }
-    const double beta = 1.0 / (*p)[1];
-    if (beta < kMinBeta) {
-        out.note = "the fit tends to a step (beta -> 0): more samples or levels between are needed";
-        return out;
-    }
+    return finite(ls) && ls[1] > 0.0 ? ls : Params{-l.x.front(), 1.0};
+}
+
+// The fitted curve's parameters, fractiles and goodness of fit (Pearson's chi-squared).
+Fit fit_of(const Levels& l, const Params& p) {
     Fit f;
-    f.beta = beta;
-    f.theta_m_g = std::exp(-(*p)[0] * beta);
-    f.pga_1pct_g = f.theta_m_g * std::exp(beta * core::normal_quantile(0.01));
-    f.pga_5pct_g = f.theta_m_g * std::exp(beta * core::normal_quantile(0.05));
+    f.beta = 1.0 / p[1];
+    f.theta_m_g = std::exp(-p[0] * f.beta);
+    f.pga_1pct_g = f.theta_m_g * std::exp(f.beta * core::normal_quantile(0.01));
+    f.pga_5pct_g = f.theta_m_g * std::exp(f.beta * core::normal_quantile(0.05));
     f.pga_50pct_g = f.theta_m_g;
-    f.log_likelihood = log_likelihood(l, (*p)[0], (*p)[1]);
+    f.log_likelihood = log_likelihood(l, p[0], p[1]);
     for (std::size_t j = 0; j < l.x.size(); ++j) {
-        const double pj = core::normal_cdf((*p)[0] + (*p)[1] * l.x[j]);
+        const double pj = core::normal_cdf(p[0] + p[1] * l.x[j]);
         const double var = l.n[j] * pj * (1.0 - pj);
         if (var > 0.0) f.chi2 += std::pow(l.k[j] - l.n[j] * pj, 2) / var;
     }
@@ -186,7 +177,32 @@ EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>&
     if (f.dof >= 1)
         f.p_value = boost::math::cdf(
             boost::math::complement(boost::math::chi_squared_distribution<>(f.dof), f.chi2));
-    out.fit = f;
+    return f;
+}
+
+}  // namespace
+
+EventFit fit_lognormal(const std::vector<double>& pga_g, const std::vector<int>& k,
+                       const std::vector<int>& n) {
+    if (pga_g.size() != k.size() || k.size() != n.size())
+        throw std::invalid_argument("fit_lognormal: sizes differ");
+    const Levels l = observed_levels(pga_g, k, n);
+    EventFit out;
+    if (auto why = unfittable(l)) {
+        out.note = std::move(*why);
+        return out;
+    }
+    const auto p = maximise(l, probit_start(l));
+    if (!p || !((*p)[1] > 0.0)) {
+        out.note = p ? "failures do not increase with the PGA: no increasing lognormal fits"
+                     : "the likelihood has no finite maximum";
+        return out;
+    }
+    if (1.0 / (*p)[1] < kMinBeta) {
+        out.note = "the fit tends to a step (beta -> 0): more samples or levels between are needed";
+        return out;
+    }
+    out.fit = fit_of(l, *p);
     return out;
 }
 
