@@ -164,7 +164,7 @@ GeneratedComponent synthetic_component(const Target& target, const GenerateOptio
     best.attempts = std::max(best.attempts, 1);
     best.record.component = name;
     best.record.name = name;
-    best.record.source = fmt::format("freestand: synthetic, seed {}", best.seed);
+    best.record.source = fmt::format("freestand generate: synthetic, seed {}", best.seed);
     best.wall_s = seconds_since(start);
     return best;
 }
@@ -209,7 +209,7 @@ GeneratedComponent seed_component(const Target& target, const GenerateOptions& o
     }
     best.record.component = name;
     best.record.name = name;
-    best.record.source = fmt::format("freestand: wavelet-matched {}", seed.source);
+    best.record.source = fmt::format("freestand generate: wavelet-matched {}", seed.source);
     best.method = fmt::format("wavelet (seed {})", seed.name);
     best.stop = best.acceptance.passed ? "passed" : "attempt limit";
     best.wall_s = seconds_since(start);
