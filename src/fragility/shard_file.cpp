@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -33,12 +35,25 @@ fs::path write_shard(const fs::path& dir, const std::string& kind, int k, int n,
 
 namespace shard_file_detail {
 
+/// j[key] as an int; throws when it is not a whole number an int holds (nlohmann's own
+/// conversion of 1e39 to int is undefined behaviour, not an exception).
+int whole_number(const nlohmann::json& j, const char* key) {
+    const nlohmann::json& v = j.at(key);
+    constexpr auto int_max = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+    if (v.is_number_unsigned() && v.get<std::uint64_t>() <= int_max) return v.get<int>();
+    if (v.is_number_integer() && !v.is_number_unsigned() &&
+        v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+        v.get<std::int64_t>() <= std::numeric_limits<int>::max())
+        return v.get<int>();
+    throw std::runtime_error(key);
+}
+
 void read_header(const nlohmann::json& j, ShardFile& s) {
     try {
-        if (j.at("freestand_shard").get<int>() != 1) throw std::runtime_error("version");
+        if (whole_number(j, "freestand_shard") != 1) throw std::runtime_error("version");
         s.kind = j.at("kind").get<std::string>();
-        s.k = j.at("shard").get<int>();
-        s.n = j.at("of").get<int>();
+        s.k = whole_number(j, "shard");
+        s.n = whole_number(j, "of");
         s.run = j.at("run");
     } catch (const std::exception&) {
         throw InputError(SourceLocation{s.file, 1, "header"},

@@ -57,6 +57,19 @@ TEST_CASE("a malformed shard file is refused naming its file and line", "[fragil
     CHECK_THAT(message_of([] { parse_shard("", "s.jsonl"); }), Contains("empty shard file"));
 }
 
+TEST_CASE("a shard count beyond an int, or not whole, is a malformed header", "[fragility][shards]") {
+    // 1e39 as an int was undefined behaviour in the JSON library's conversion (found by
+    // fuzz_shard_file); each must be the header's refusal.
+    for (const std::string of : {"999999999999999999999999999999999999991", "1e39", "2.5",
+                                 "-1e30", "18446744073709551615", "-9223372036854775808"}) {
+        const std::string text = "{\"freestand_shard\":1,\"kind\":\"batch\",\"shard\":1,\"of\":" +
+                                 of + ",\"run\":{}}\n";
+        INFO(of);
+        CHECK_THAT(message_of([&] { parse_shard(text, "s.jsonl"); }),
+                   Contains("s.jsonl:1") && Contains("expected a freestand shard header"));
+    }
+}
+
 TEST_CASE("shards join in shard order and must make one whole run", "[fragility][shards]") {
     auto shard = [](int k, int n, const std::string& run, const std::string& file) {
         return parse_shard(header(k, n, run) + "{\"k\":" + std::to_string(k) + "}\n", file);
