@@ -127,6 +127,16 @@ def _sequence(values: Any, keyword: str) -> list:
     return list(values)
 
 
+def _pair(value: Any, keyword: str, shape: str) -> list:
+    """Two real numbers as a list; TypeError naming keyword and the expected shape otherwise."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, Iterable):
+        raise TypeError(f"{keyword}: expected {shape}, got {type(value).__name__} {value!r}")
+    pair = [_number(v, keyword) for v in value]
+    if len(pair) != 2:
+        raise TypeError(f"{keyword}: expected {shape}, got {len(pair)} numbers")
+    return pair
+
+
 def _box(block: Mapping[str, float], cg: Any, inertia: Optional[float]) -> dict:
     """The block, CG and inertia as the module's box fields (sliding::BoxSpec): block {"b", "h"
     [, "m"]}; cg {"x", "h"} (x right of the box centre) or (x, y) (x from the left edge, y up)."""
@@ -138,12 +148,7 @@ def _box(block: Mapping[str, float], cg: Any, inertia: Optional[float]) -> dict:
         if isinstance(cg, Mapping):
             box.update(_keyed_numbers(cg, _CG_KEYS, "cg"))
         else:
-            if isinstance(cg, (str, bytes)) or not isinstance(cg, Iterable):
-                raise TypeError(f"cg: expected {{'x': .., 'h': ..}} or (x, y), got "
-                                f"{type(cg).__name__} {cg!r}")
-            xy = [_number(v, "cg") for v in cg]
-            if len(xy) != 2:
-                raise TypeError(f"cg: expected (x, y), got {len(xy)} numbers")
+            xy = _pair(cg, "cg", "{'x': .., 'h': ..} or (x, y)")
             box["cg_offset_m"] = xy[0] - box["half_width_m"]
             box["cg_height_m"] = xy[1]
     if inertia is not None:
@@ -229,12 +234,7 @@ def _design_values(values: Mapping[str, Any], function: str) -> dict:
 
 def _range(value: Any, keyword: str) -> Optional[tuple]:
     """(min, max) of a realism range; TypeError naming keyword unless two real numbers."""
-    if value is None:
-        return None
-    pair = _numbers(value, keyword)
-    if len(pair) != 2:
-        raise TypeError(f"{keyword}: expected (min, max), got {len(pair)} number(s)")
-    return pair[0], pair[1]
+    return None if value is None else tuple(_pair(value, keyword, "(min, max)"))
 
 
 def _names(value: Any, keyword: str) -> list:
@@ -369,14 +369,8 @@ def rock(block: Mapping[str, float], *, cg=None, inertia: Optional[float] = None
         "fs_required": _optional_number(fs_required, "fs_required"),
         "fixed_base_hz": _optional_number(fn_hz, "fn_hz"),
     }
-    band = None
-    if rock_band_hz is not None:
-        if isinstance(rock_band_hz, (str, bytes)) or not isinstance(rock_band_hz, Iterable):
-            raise TypeError(f"rock_band_hz: expected (lo, hi) in Hz, got "
-                            f"{type(rock_band_hz).__name__} {rock_band_hz!r}")
-        band = [_number(v, "rock_band_hz") for v in rock_band_hz]
-        if len(band) != 2:
-            raise TypeError(f"rock_band_hz: expected (lo, hi) in Hz, got {len(band)} numbers")
+    band = (None if rock_band_hz is None
+            else _pair(rock_band_hz, "rock_band_hz", "(lo, hi) in Hz"))
     return _fs.rock(_box(block, cg, inertia), demand, _paths(spectrum, "spectrum"),
                     _paths(spectrum_v, "spectrum_v"), band)
 
