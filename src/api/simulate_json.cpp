@@ -1,10 +1,22 @@
 // `simulate --json`'s documents, one per model (api/simulate.hpp).
 #include <fmt/format.h>
 
+#include <array>
+#include <initializer_list>
+
 #include "api/simulate.hpp"
 
 namespace freestand::api {
 namespace simulate_json_detail {
+
+/// Seconds spent in each of `modes`, keyed by the mode's name.
+json time_in_mode_json(const std::array<double, dynamics::mode_count>& time_in_mode_s,
+                       std::initializer_list<dynamics::Mode> modes) {
+    json t;
+    for (dynamics::Mode m : modes)
+        t[dynamics::mode_name(m)] = time_in_mode_s[static_cast<std::size_t>(m)];
+    return t;
+}
 
 json biaxial_json(const dynamics::BiaxialSummary& s) {
     json j;
@@ -18,10 +30,9 @@ json biaxial_json(const dynamics::BiaxialSummary& s) {
     j["mode_changes"] = s.mode_changes;
     j["wall_s"] = s.wall_s;
     j["integrator"] = s.integrator;
-    json t;
-    for (auto m : {dynamics::Mode::rest, dynamics::Mode::slide, dynamics::Mode::flight})
-        t[dynamics::mode_name(m)] = s.time_in_mode_s[static_cast<std::size_t>(m)];
-    j["time_in_mode_s"] = t;
+    // Biaxial sliding never rocks: its summary has no rock or slide-rock time.
+    j["time_in_mode_s"] = time_in_mode_json(
+        s.time_in_mode_s, {dynamics::Mode::rest, dynamics::Mode::slide, dynamics::Mode::flight});
     j["pga_g"] = s.pga_g;
     j["steps"] = s.steps;
     j["rejected_steps"] = s.rejected_steps;
@@ -87,10 +98,10 @@ json to_json(const dynamics::Summary& s) {
     j["wall_s"] = s.wall_s;
     j["integrator"] = s.integrator;
     j["overturn_criterion"] = dynamics::overturn_criterion_name(s.overturn_criterion);
-    json t;
-    for (std::size_t m = 0; m < dynamics::mode_count; ++m)
-        t[dynamics::mode_name(static_cast<dynamics::Mode>(m))] = s.time_in_mode_s[m];
-    j["time_in_mode_s"] = t;
+    static_assert(dynamics::mode_count == 5, "every mode is listed below");
+    j["time_in_mode_s"] = simulate_json_detail::time_in_mode_json(
+        s.time_in_mode_s, {dynamics::Mode::rest, dynamics::Mode::slide, dynamics::Mode::rock,
+                           dynamics::Mode::slide_rock, dynamics::Mode::flight});
     j["pga_g"] = s.pga_g;
     j["settlements"] = s.settlements;
     j["steps"] = s.steps;
