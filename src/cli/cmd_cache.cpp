@@ -88,13 +88,9 @@ int run(const std::vector<std::string>& args) {
     if (!vm) return 0;
     const api::CacheRequest request = cache_request(*vm);
     const auto bar = std::make_shared<StepProgressBar>();
-    const api::CacheResult result =
-        api::cache(request, [bar](const std::string& step, std::size_t done, std::size_t total) {
-            bar->update(step, done, total);
-        });
+    const api::CacheResult result = api::cache(request, progress_on(bar));
     bar->finish();
-    for (const std::string& w : result.warnings)
-        std::cerr << "freestand cache: warning: " << w << "\n";
+    print_warnings("cache", result.warnings);
     print(result);
     return 0;
 }

@@ -83,15 +83,10 @@ std::filesystem::path out_folder(const po::variables_map& vm) {
 // warnings after it.
 api::FragilityResult run_with_progress(const api::FragilityRequest& request, const MpiSplit& mpi) {
     const auto bar = std::make_shared<StepProgressBar>();
-    assess::StepProgress progress;
-    if (mpi.rank() == 0)
-        progress = [bar](const std::string& step, std::size_t done, std::size_t total) {
-            bar->update(step, done, total);
-        };
+    const assess::StepProgress progress = mpi.rank() == 0 ? progress_on(bar) : nullptr;
     api::FragilityResult result = api::fragility(request, progress);
     bar->finish();
-    for (const std::string& w : result.cache_warnings)
-        std::cerr << "freestand fragility: warning: " << w << "\n";
+    print_warnings("fragility", result.cache_warnings);
     return result;
 }
 

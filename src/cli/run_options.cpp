@@ -5,7 +5,6 @@
 #include <iostream>
 
 #include "core/errors.hpp"
-#include "core/printable.hpp"
 #include "cli/usage_error.hpp"
 
 namespace freestand::cli {
@@ -35,35 +34,28 @@ std::optional<std::filesystem::path> cache_dir(const po::variables_map& vm) {
     return core::default_cache_dir();
 }
 
-RunContext::RunContext(const po::variables_map& vm) {
-    settings_.threads = threads_option(vm);
-    if (const auto dir = cache_dir(vm)) {
-        const std::uint64_t max_bytes = core::cache_max_bytes_from_environment();
-        cache_.emplace(*dir, max_bytes);
-        runs_.emplace(*dir / runs_folder, max_bytes);
-    }
-    settings_.cache = cache();
-    settings_.run_cache = runs();
-    bar_ = std::make_shared<StepProgressBar>();
-    settings_.progress = [bar = bar_](const std::string& step, std::size_t done,
-                                      std::size_t total) { bar->update(step, done, total); };
+assess::StepProgress progress_on(std::shared_ptr<StepProgressBar> bar) {
+    return [bar = std::move(bar)](const std::string& step, std::size_t done, std::size_t total) {
+        bar->update(step, done, total);
+    };
+}
+
+void print_warnings(const std::string& command, const std::vector<std::string>& warnings) {
+    for (const std::string& warning : warnings)
+        std::cerr << fmt::format("freestand {}: warning: {}\n", command, warning);
+}
+
+// --threads is read before the cache options, so its error comes first when both are bad.
+RunContext::RunContext(const po::variables_map& vm) : RunContext(threads_option(vm), vm) {}
+
+RunContext::RunContext(int threads, const po::variables_map& vm)
+    : caches_(cache_dir(vm)), bar_(std::make_shared<StepProgressBar>()) {
+    settings_ = caches_.settings(threads, progress_on(bar_));
 }
 
 void RunContext::finish(const std::string& command) const {
     bar_->finish();
-    const std::string cache_failure = cache_ ? cache_->first_failure() : "";
-    if (!cache_failure.empty())
-        std::cerr << fmt::format("freestand {}: warning: history sets were not cached in {}: {}\n",
-                                 command, core::printable(cache_->dir().string()),
-                                 core::printable(cache_failure));
-    if (!runs_) return;
-    const std::string runs_failure = runs_->first_failure();
-    if (!runs_failure.empty())
-        std::cerr << fmt::format("freestand {}: warning: runs were not cached in {}: {}\n",
-                                 command, core::printable(runs_->dir().string()),
-                                 core::printable(runs_failure));
-    else
-        runs_->prune();
+    print_warnings(command, caches_.finish());
 }
 
 }  // namespace freestand::cli

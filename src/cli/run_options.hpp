@@ -5,17 +5,15 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "api/cache.hpp"
 #include "assess/run_settings.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
-#include "core/content_store.hpp"
 #include "cli/usage_error.hpp"
 
 namespace freestand::cli {
-
-/// The simulation runs' folder inside the cache folder: the history sets' entries stay apart.
-inline constexpr const char* runs_folder = "runs";
 
 /// Adds --threads (0, the default: every core), --cache and --no-cache to desc.
 void add_run_options(po::options_description& desc);
@@ -31,16 +29,14 @@ class RunContext {
     RunContext& operator=(const RunContext&) = delete;
 
     const assess::RunSettings& settings() const { return settings_; }
-    const core::ContentStore* cache() const { return cache_ ? &*cache_ : nullptr; }
-    /// The simulation runs' store, the cache folder's runs/ (assess/run_cache.hpp).
-    const core::ContentStore* runs() const { return runs_ ? &*runs_ : nullptr; }
     /// Ends the progress line, warns on standard error when sets or runs could not be cached,
-    /// and bounds the runs' folder (the history sets' is bounded as they are generated).
+    /// and bounds the runs' folder (api::RunCaches::finish).
     void finish(const std::string& command) const;
 
   private:
-    std::optional<core::ContentStore> cache_;
-    std::optional<core::ContentStore> runs_;
+    RunContext(int threads, const po::variables_map& vm);
+
+    api::RunCaches caches_;
     std::shared_ptr<StepProgressBar> bar_;
     assess::RunSettings settings_;
 };
@@ -48,6 +44,12 @@ class RunContext {
 /// The cache folder the options name: --cache DIR, else the default (XDG); none with
 /// --no-cache or without a default.
 std::optional<std::filesystem::path> cache_dir(const po::variables_map& vm);
+
+/// A progress callback that draws on bar.
+assess::StepProgress progress_on(std::shared_ptr<StepProgressBar> bar);
+
+/// Each of warnings on standard error, as "freestand COMMAND: warning: ...".
+void print_warnings(const std::string& command, const std::vector<std::string>& warnings);
 
 /// --threads: a whole number of threads, 0 for every core.
 int threads_option(const po::variables_map& vm);
