@@ -108,14 +108,11 @@ std::vector<double> pga_range(double start_g, double stop_g, double step_g) {
     if (!(step_g > 0.0) || !(stop_g >= start_g))
         throw InputError(where, fmt::format("{}:{}:{} needs STEP > 0 and STOP >= START", start_g,
                                             stop_g, step_g));
-    const double count = std::floor((stop_g - start_g) / step_g + 1e-9) + 1.0;
+    const double count = core::limits::pga_range_count(start_g, stop_g, step_g);
     if (count > core::limits::max_pga_levels)
         throw InputError(where, fmt::format("{}:{}:{} gives {} levels; at most {}", start_g,
                                             stop_g, step_g, count, core::limits::max_pga_levels));
-    std::vector<double> out;
-    for (int i = 0; i < static_cast<int>(count); ++i)
-        out.push_back(std::round((start_g + i * step_g) * 1e12) / 1e12);
-    return out;
+    return core::limits::pga_range_levels(start_g, step_g, count);
 }
 
 }  // namespace freestand::api

@@ -93,14 +93,11 @@ std::vector<double> parse_levels(const std::string& text, const std::string& opt
     const double step = parse_double(parts[2], option);
     if (!(step > 0.0) || last < first)
         throw UsageError(fmt::format("{}: \"{}\" needs STEP > 0 and STOP >= START", option, text));
-    const double count = std::floor((last - first) / step + 1e-9) + 1.0;
+    const double count = core::limits::pga_range_count(first, last, step);
     if (count > core::limits::max_pga_levels)
         throw UsageError(fmt::format("{}: \"{}\" gives {} levels; at most {} (README, Limits)",
                                      option, text, count, core::limits::max_pga_levels));
-    std::vector<double> out;
-    for (int i = 0; i < static_cast<int>(count); ++i)
-        out.push_back(std::round((first + i * step) * 1e12) / 1e12);
-    return out;
+    return core::limits::pga_range_levels(first, step, count);
 }
 
 std::array<int, 2> parse_shard(const std::string& text, const std::string& option) {

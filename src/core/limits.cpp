@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/tolerances.hpp"
+
 namespace freestand::core::limits {
 
 namespace {
@@ -38,6 +40,17 @@ void require_in(double value, const Range& range, const SourceLocation& where) {
     if (within(value, range)) return;
     throw InputError(where,
                      fmt::format("value {} is out of range; expected {}", value, describe(range)));
+}
+
+double pga_range_count(double start_g, double stop_g, double step_g) {
+    return std::floor((stop_g - start_g) / step_g + tol::rounding_guard) + 1.0;
+}
+
+std::vector<double> pga_range_levels(double start_g, double step_g, double count) {
+    std::vector<double> out;
+    for (int i = 0; i < static_cast<int>(count); ++i)
+        out.push_back(std::round((start_g + i * step_g) * 1e12) / 1e12);
+    return out;
 }
 
 void require_pga_levels(const std::vector<double>& pga_g, const SourceLocation& where) {

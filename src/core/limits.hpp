@@ -99,6 +99,14 @@ inline constexpr Range mass_kg{min_mass_kg, max_mass_kg};
 /// "value <value> is out of range; expected <range>".
 void require_in(double value, const Range& range, const SourceLocation& where);
 
+/// How many levels START:STOP:STEP holds (both ends included, a STOP a rounding short of a
+/// step still counted); step > 0 and stop >= start are the caller's to check.
+double pga_range_count(double start_g, double stop_g, double step_g);
+
+/// The count levels start_g + i step_g, each rounded to 12 decimals so that 0.1 + 2 x 0.1 is
+/// written 0.3.
+std::vector<double> pga_range_levels(double start_g, double step_g, double count);
+
 /// Throws InputError at where unless pga_g holds 1 to max_pga_levels levels, each within
 /// pga_level_g, strictly increasing. The count is checked first, before any level is used.
 void require_pga_levels(const std::vector<double>& pga_g, const SourceLocation& where);
