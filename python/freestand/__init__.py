@@ -161,6 +161,12 @@ def _optional_number(value: Any, keyword: str) -> Optional[float]:
     return None if value is None else _number(value, keyword)
 
 
+def _one_path(value: Any, keyword: str) -> str:
+    if not isinstance(value, (str, os.PathLike)):
+        raise TypeError(f"{keyword}: expected a path, got {type(value).__name__} {value!r}")
+    return os.fspath(value)
+
+
 def _paths(value: Any, keyword: str) -> list:
     """A path or a sequence of paths as a list of str ([] for None); TypeError naming keyword
     for anything else."""
@@ -171,12 +177,7 @@ def _paths(value: Any, keyword: str) -> list:
     if not isinstance(value, Iterable) or isinstance(value, bytes):
         raise TypeError(f"{keyword}: expected a path or a sequence of paths, got "
                         f"{type(value).__name__} {value!r}")
-    out = []
-    for item in value:
-        if not isinstance(item, (str, os.PathLike)):
-            raise TypeError(f"{keyword}: expected a path, got {type(item).__name__} {item!r}")
-        out.append(os.fspath(item))
-    return out
+    return [_one_path(item, keyword) for item in value]
 
 
 def _numbers(values: Any, keyword: str) -> list:
@@ -250,11 +251,8 @@ def _names(value: Any, keyword: str) -> list:
 
 
 def _path(value: Any, keyword: str) -> str:
-    if value is None:
-        return ""
-    if not isinstance(value, (str, os.PathLike)):
-        raise TypeError(f"{keyword}: expected a path, got {type(value).__name__} {value!r}")
-    return os.fspath(value)
+    """A path as str ("" for None); TypeError naming keyword for anything else."""
+    return "" if value is None else _one_path(value, keyword)
 
 
 def read_record(path: PathLike) -> Record:
