@@ -89,7 +89,7 @@ api::SimulateRequest simulate_request(const py::dict& box, double mu_s,
 py::list mode_names() {
     py::list names;
     for (std::size_t m = 0; m < dynamics::mode_count; ++m)
-        names.append(dynamics::mode_name(static_cast<dynamics::Mode>(m)));
+        names.append(dynamics::to_string(static_cast<dynamics::Mode>(m)));
     return names;
 }
 

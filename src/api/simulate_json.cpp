@@ -14,7 +14,7 @@ json time_in_mode_json(const std::array<double, dynamics::mode_count>& time_in_m
                        std::initializer_list<dynamics::Mode> modes) {
     json t;
     for (dynamics::Mode m : modes)
-        t[dynamics::mode_name(m)] = time_in_mode_s[static_cast<std::size_t>(m)];
+        t[dynamics::to_string(m)] = time_in_mode_s[static_cast<std::size_t>(m)];
     return t;
 }
 

@@ -152,7 +152,7 @@ std::string planar_series_csv(const dynamics::SimulationResult& r, const std::st
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}\n", s.time_s,
                            s.slide_m, s.slide_velocity_mps, s.rotation_rad,
-                           s.angular_velocity_radps, dynamics::mode_name(s.mode),
+                           s.angular_velocity_radps, dynamics::to_string(s.mode),
                            s.normal_force_N, s.friction_force_N, s.top_accel_mps2);
     return out;
 }
@@ -179,7 +179,7 @@ void print_planar(const api::PlanarRun& run) {
         m.mu_s, m.mu_k, s.wall_s);
     std::cout << "time in mode         ";
     for (std::size_t i = 0; i < dynamics::mode_count; ++i)
-        std::cout << fmt::format(" {} {:.3f} s", dynamics::mode_name(static_cast<dynamics::Mode>(i)),
+        std::cout << fmt::format(" {} {:.3f} s", dynamics::to_string(static_cast<dynamics::Mode>(i)),
                                  s.time_in_mode_s[i]);
     std::cout << "\n";
 }

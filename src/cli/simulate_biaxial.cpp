@@ -30,7 +30,7 @@ std::string biaxial_series_csv(const api::BiaxialRun& run, const std::string& la
         r.summary.integrator, label);
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slip_x_m,
-                           s.slip_y_m, s.v_x_mps, s.v_y_mps, dynamics::mode_name(s.mode));
+                           s.slip_y_m, s.v_x_mps, s.v_y_mps, dynamics::to_string(s.mode));
     return out;
 }
 

@@ -20,7 +20,7 @@ std::string flexible_series_csv(const api::FlexibleRun& run, const std::string& 
         r.summary.base.integrator, label);
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slide_m,
-                           s.rotation_rad, s.modal_m, dynamics::mode_name(s.mode));
+                           s.rotation_rad, s.modal_m, dynamics::to_string(s.mode));
     return out;
 }
 

@@ -329,7 +329,7 @@ public:
             if (h < 1e-14 && h < h_full)
                 throw NumericalError(fmt::format(
                     "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
-                    mode_name(st_.mode)));
+                    to_string(st_.mode)));
             h_cap_ = h < h_full ? 1.25 * h : std::min(2.0 * h_cap_, 1.0);
             rec_.step();
             const double t1 = (h == stop_at - t) ? stop_at : t + h;

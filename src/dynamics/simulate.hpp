@@ -22,8 +22,8 @@ namespace freestand::dynamics {
 /// Contact state of the block. Rock and slide-rock carry an active edge (Sample::edge).
 using Mode = block::Mode;
 using block::mode_count;
-/// "rest", "slide", "rock", "slide_rock", "flight".
-using block::mode_name;
+/// "rest", "slide", "rock", "slide-rock", "flight".
+using block::to_string;
 
 /// The block and its contact with the base.
 struct BlockModel {

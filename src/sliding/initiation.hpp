@@ -10,7 +10,7 @@
 
 namespace freestand::sliding {
 
-/// Initiating mode of a rigid block at rest: rest, slide, rock or slide_rock (never flight).
+/// Initiating mode of a rigid block at rest: rest, slide, rock or slide-rock (never flight).
 using Mode = block::Mode;
 /// "rest", "slide", "rock", "slide-rock".
 using block::to_string;

@@ -65,6 +65,15 @@ TEST_CASE("simulate runs the model its request describes", "[api][simulate]") {
     CHECK(api::to_json(pair)["tunnel_height_m"] == 0.5);
 }
 
+TEST_CASE("simulate's time-in-mode keys are the modes' one spelling", "[api][simulate]") {
+    api::SimulateRequest rocker = slider();
+    rocker.box.half_height_m = 1.2;  // tan(alpha) = 0.25 < mu_s = 0.3: it can rock
+    rocker.mu_s = 0.3;
+    const auto keys = api::to_json(api::simulate(rocker))["time_in_mode_s"];
+    for (const char* word : {"rest", "slide", "rock", "slide-rock", "flight"}) CHECK(keys.contains(word));
+    CHECK_FALSE(keys.contains("slide_rock"));
+}
+
 TEST_CASE("simulate labels a record run with the record's name and scales its samples",
           "[api][simulate]") {
     api::SimulateRequest r = slider();

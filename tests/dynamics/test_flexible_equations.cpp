@@ -245,7 +245,7 @@ TEST_CASE("the flexible body's structured solve matches the full system", "[dyna
             }
             const Base base{ax(rng), G(rng)};
             const FlexAccel a = flex_accel(g, m, p, base), r = full_system(g, m, p, base);
-            INFO("mode " << dynamics::mode_name(m.mode) << ", case " << i);
+            INFO("mode " << dynamics::to_string(m.mode) << ", case " << i);
             const double scale = 10.0;  // m/s^2, rad/s^2 of these states
             CHECK(a.Xdd == Approx(r.Xdd).margin(1e-10 * scale));
             CHECK(a.Ydd == Approx(r.Ydd).margin(1e-10 * scale));
@@ -335,7 +335,7 @@ TEST_CASE("each mode's own equations agree with the general formulation",
                 const Base base{ax(rng), G(rng)};
                 const FlexAccel a = flex_accel(g, m, p, base);
                 const FlexAccel r = flex_accel_general(g, m, p, base);
-                INFO("mode " << dynamics::mode_name(m.mode) << " s " << m.s << " sigma "
+                INFO("mode " << dynamics::to_string(m.mode) << " s " << m.s << " sigma "
                              << m.sigma << ", case " << i);
                 const double force_scale = g.M * kAccelScale;
                 CHECK(a.Xdd == exact(r.Xdd).margin(kRel * kAccelScale));

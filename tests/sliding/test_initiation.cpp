@@ -160,9 +160,7 @@ TEST_CASE("initiation input errors name the field", "[sliding][initiation]") {
     CHECK_THROWS_WITH(mu_crit(quarter, Edge::left, -1.0), Catch::Contains("A"));
 }
 
-TEST_CASE("mode and criterion names", "[sliding][initiation]") {
-    CHECK(to_string(Mode::slide_rock) == "slide-rock");
-    CHECK(to_string(Mode::rest) == "rest");
+TEST_CASE("criterion names", "[sliding][initiation]") {
     CHECK(describe(Criterion::friction_fails_at_uplift) ==
           "A > tan(alpha) and tan(alpha) < mu_s < mu_crit(A)");
 }
