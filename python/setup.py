@@ -2,12 +2,22 @@
 folder's CMakeLists.txt, target freestand_python) and puts it into the wheel beside the package
 python/freestand/. Run by `pip install --no-build-isolation ./python` (README "Python").
 
-FREESTAND_BUILD_BASE, when set, is the folder setuptools builds in (its build/ and egg-info),
-so that a build leaves nothing in the source tree; by default it is python/build/ (ignored by
-git), where a second install reuses the CMake build.
+Environment:
+  FREESTAND_CMAKE_BUILD_DIR  the CMake build folder; a relative path is taken from the project
+                             folder. By default build/pip, which git ignores and where a second
+                             install reuses the build. Setuptools' own build files and egg-info
+                             go in its setuptools/ subfolder, so python/ gains nothing.
+  FREESTAND_CMAKE_ARGS       more arguments for the CMake configure step (shell-quoted, after this
+                             file's own, so they override them), e.g. "-DFREESTAND_WERROR=ON".
+
+The compiler cache reuses another build's objects only when the compile command is the same once
+CCACHE_BASEDIR (the project folder) is taken out of it: the same options that change compile flags
+(FREESTAND_WERROR, the build type, FREESTAND_PYTHON's position-independent code) and a build folder
+at the same depth below the project, as build/pip is beside the presets' build/<preset>.
 """
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -18,7 +28,8 @@ from setuptools.command.build_ext import build_ext
 
 PYTHON_DIR = Path(__file__).resolve().parent
 PROJECT_DIR = PYTHON_DIR.parent
-BUILD_BASE = Path(os.environ.get("FREESTAND_BUILD_BASE") or PYTHON_DIR / "build").resolve()
+CMAKE_BUILD_DIR = (PROJECT_DIR / (os.environ.get("FREESTAND_CMAKE_BUILD_DIR") or "build/pip")).resolve()
+SETUPTOOLS_DIR = CMAKE_BUILD_DIR / "setuptools"
 
 
 def project_version() -> str:
@@ -32,7 +43,7 @@ def project_version() -> str:
 
 def compiler_cache_env() -> dict:
     """The presets' compiler-cache settings (CMakePresets.json): objects compile the same from any
-    clone and build folder, so an install reuses what other builds compiled."""
+    clone and build folder of the same depth, so an install reuses what other builds compiled."""
     env = dict(os.environ)
     env.setdefault("CCACHE_BASEDIR", str(PROJECT_DIR))
     env.setdefault("CCACHE_NOHASHDIR", "1")
@@ -45,32 +56,35 @@ class CMakeBuild(build_ext):
     the _freestand shared object where setuptools packs the extension."""
 
     def build_extension(self, ext: Extension) -> None:
-        cmake_dir = Path(self.build_temp).resolve() / "cmake"
-        configure = ["cmake", "-S", str(PROJECT_DIR), "-B", str(cmake_dir),
+        configure = ["cmake", "-S", str(PROJECT_DIR), "-B", str(CMAKE_BUILD_DIR),
                      "-DCMAKE_BUILD_TYPE=Release", "-DFREESTAND_TESTS=OFF", "-DFREESTAND_BENCH=OFF",
                      "-DFREESTAND_PYTHON=ON", f"-DPython_EXECUTABLE={sys.executable}"]
-        if shutil.which("ninja") and not (cmake_dir / "CMakeCache.txt").exists():
+        # The presets' generator: with Make the compiler runs in each target's folder, a depth
+        # the compiler cache would not match.
+        if shutil.which("ninja") and not (CMAKE_BUILD_DIR / "CMakeCache.txt").exists():
             configure += ["-G", "Ninja"]
-        build = ["cmake", "--build", str(cmake_dir), "--target", "freestand_python"]
+        configure += shlex.split(os.environ.get("FREESTAND_CMAKE_ARGS", ""))
+        build = ["cmake", "--build", str(CMAKE_BUILD_DIR), "--target", "freestand_python"]
         if "CMAKE_BUILD_PARALLEL_LEVEL" not in os.environ:
             build += ["--parallel", str(os.cpu_count() or 1)]
         env = compiler_cache_env()
         subprocess.run(configure, check=True, env=env)
         subprocess.run(build, check=True, env=env)
 
-        built = sorted((cmake_dir / "python" / "freestand").glob("_freestand*.so"))
+        package_dir = CMAKE_BUILD_DIR / "python" / "freestand"
+        built = sorted(package_dir.glob("_freestand*.so"))
         if len(built) != 1:
-            raise RuntimeError(f"expected one _freestand*.so in {cmake_dir / 'python' / 'freestand'}, "
+            raise RuntimeError(f"expected one _freestand*.so in {package_dir}, "
                                f"found {[p.name for p in built]}")
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(built[0], target)
 
 
-BUILD_BASE.mkdir(parents=True, exist_ok=True)
+SETUPTOOLS_DIR.mkdir(parents=True, exist_ok=True)
 setup(
     version=project_version(),
     ext_modules=[Extension("freestand._freestand", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
-    options={"build": {"build_base": str(BUILD_BASE)}, "egg_info": {"egg_base": str(BUILD_BASE)}},
+    options={"build": {"build_base": str(SETUPTOOLS_DIR)}, "egg_info": {"egg_base": str(SETUPTOOLS_DIR)}},
 )

@@ -1,20 +1,25 @@
 #!/usr/bin/env bash
 # ctest "python: pip install --no-build-isolation ./python ..." (tests/CMakeLists.txt): installs
 # python/ with pip into a fresh venv in WORK_DIR (system site packages, for Debian's numpy), the
-# way README "Python" tells users to, then imports freestand from WORK_DIR and calls it. Setuptools
-# builds in WORK_DIR too (FREESTAND_BUILD_BASE, python/setup.py), so python/ gains nothing.
-# Usage: pip_install_check.sh PYTHON WORK_DIR VERSION
+# way README "Python" tells users to, then imports freestand from WORK_DIR and calls it.
+# CMAKE_DIR and CMAKE_ARGS go to python/setup.py (FREESTAND_CMAKE_BUILD_DIR, FREESTAND_CMAKE_ARGS):
+# a folder at the depth of the calling build and that build's flags, so the compiler cache holds
+# every object and the install only links. Setuptools builds in CMAKE_DIR, so python/ gains nothing.
+# Usage: pip_install_check.sh PYTHON WORK_DIR CMAKE_DIR VERSION [CMAKE_ARGS...]
 set -euo pipefail
-python=$1 work=$2 version=$3
+python=$1 work=$2 cmake_dir=$3 version=$4
+shift 4
 project=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 before=$(ls -A "$project/python")
 
 rm -rf "$work"
 mkdir -p "$work"
-"$python" -m venv --system-site-packages "$work/venv"
+# Debian's pip from the system site packages serves the venv: installing pip into it (the README's
+# venv) costs the test more than the install it checks.
+"$python" -m venv --system-site-packages --without-pip "$work/venv"
 unset PYTHONPATH
-FREESTAND_BUILD_BASE="$work/setup" "$work/venv/bin/python" -m pip install --quiet \
-  --no-build-isolation --no-index "$project/python"
+FREESTAND_CMAKE_BUILD_DIR="$cmake_dir" FREESTAND_CMAKE_ARGS="${*@Q}" \
+  "$work/venv/bin/python" -m pip install --quiet --no-build-isolation --no-index "$project/python"
 
 cd "$work"
 "$work/venv/bin/python" - "$work/venv" "$version" <<'PY'
