@@ -11,6 +11,7 @@ packages=(g++ cmake make ninja-build pkg-config ccache git
   libopenmpi-dev openmpi-bin
   python3-pytest python3-jsonschema
   pybind11-dev python3-dev python3-numpy python3-matplotlib
+  python3-pip python3-venv python3-setuptools python3-wheel
   weasyprint fonts-dejavu-core poppler-utils
   chromium chromium-driver python3-selenium python3-pil)
 missing=()
