@@ -111,7 +111,7 @@ BiaxialResult run_biaxial_cd(const BiaxialModel& m, const BiaxialBase& base, con
     BiaxialCdStepper stepper(m, rec, st);
     std::size_t k_seg = 0;
     BiaxialSegment seg = base.segment(0);
-    const FixedRun run = run_fixed_steps(
+    const RunEnd run = run_fixed_steps(
         base.dt(), h, n_seg,
         [&](std::size_t k, double t, double dt) {
             if (k != k_seg) seg = base.segment(k_seg = k);

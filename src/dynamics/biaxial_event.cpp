@@ -21,7 +21,8 @@
 
 #include "core/errors.hpp"
 #include "core/steps.hpp"
-#include "dynamics/roots.hpp"
+#include "dynamics/engine.hpp"
+#include "dynamics/event_search.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/dopri5.hpp"
 
@@ -167,7 +168,7 @@ private:
             const double r = roots[i];
             if (!(r > 0.0 && r <= span)) continue;
             const double next = (i == 0 && roots[1] > r && roots[1] <= span) ? roots[1] : span;
-            if (q(0.5 * (r + next)) > 0.0 || (next == r && q(r + 1e-9) > 0.0)) {
+            if (q(0.5 * (r + next)) > 0.0 || (next == r && q(r + probe_delay_s) > 0.0)) {
                 t_ev = std::min(t_ev, r);
                 break;
             }
@@ -295,12 +296,10 @@ private:
         double ta = t, fa = dot(vel(x0), d);
         if (!(fa > 0.0)) {
             // A restart from v = 0: look for the excursion along d inside the step.
-            fa = 0.0;
-            for (int j = 1; j < 8 && !(fa > 0.0); ++j) {
-                ta = t + (t1 - t) * j / 8.0;
-                fa = f(ta);
-            }
-            if (!(fa > 0.0)) return t;  // pushed against d at once: a stop now
+            const RiseStart rise = rise_scan(f, t, t1, BelowZero::scan_on);
+            if (!(rise.f > 0.0)) return t;  // pushed against d at once: a stop now
+            ta = rise.t_s;
+            fa = rise.f;
         }
         const double ts = toms748_root(f, ta, t1, fa, f1);
         const double vmax = std::max(norm(vel(x0)), norm(vel(x1)));
@@ -346,20 +345,19 @@ private:
         const BiaxialState s0 = st_;
         const double span = tb_ - t;
         auto height = [&](double tau) { return flight_at(s0, t, tau).Y; };
-        double prev = 0.0, hprev = s0.Y, tau_land = -1.0;
+        double hprev = s0.Y, tau_land = -1.0;
         if (hprev > 0.0) armed_ = true;
-        for (int j = 1; j <= flight_probes; ++j) {
-            const double tau = span * j / flight_probes;
+        scan_flight(span, flight_probes, [&](double prev, double tau) {
             const double hj = height(tau);
             rec_.observe(flight_at(s0, t, tau).u);
             if (armed_ && hj <= 0.0) {
                 tau_land = hprev > 0.0 ? toms748_root(height, prev, tau, hprev, hj) : prev;
-                break;
+                return true;
             }
             if (hj > 0.0) armed_ = true;
-            prev = tau;
             hprev = hj;
-        }
+            return false;
+        });
         if (tau_land < 0.0) {
             st_ = flight_at(s0, t, span);
             rec_.time_in(Mode::flight, span);
@@ -401,24 +399,43 @@ private:
     std::size_t stalled_ = 0;
 };
 
+// The biaxial engine as run_segments drives it: one segment at a time, no rest runs (the rest
+// test is a quadratic per segment) and no overturning (the body only slides).
+class BiaxialBody {
+public:
+    BiaxialBody(const BiaxialBase& base, BiaxialRecorder& rec, BiaxialState& st,
+                BiaxialEngine& engine)
+        : base_(base), rec_(rec), st_(st), engine_(engine) {}
+
+    double t_k(std::size_t k) const { return base_.t_k(k); }
+    RestRun rest_run(std::size_t k, std::size_t) const { return {k, false}; }
+    bool overturned() const { return false; }
+    void sample(std::size_t, double tb) { rec_.sample(tb, st_); }
+    bool ends_at(double tb) const { return st_.mode == Mode::rest && tb >= base_.quiet_from_s(); }
+    double advance(std::size_t& k, double t, double tb) {
+        if (k != k_seg_) seg_ = base_.segment(k_seg_ = k);
+        return engine_.advance(seg_, t, tb);
+    }
+
+private:
+    const BiaxialBase& base_;
+    BiaxialRecorder& rec_;
+    BiaxialState& st_;
+    BiaxialEngine& engine_;
+    std::size_t k_seg_ = std::numeric_limits<std::size_t>::max();
+    BiaxialSegment seg_;
+};
+
 }  // namespace
 
 BiaxialResult run_biaxial_event(const BiaxialModel& m, const BiaxialBase& base,
                                 const Options& o) {
-    constexpr const char* name = "event";
     BiaxialRecorder rec(o, 0.0);
-    const std::size_t n_seg = base.segments(o.tail_s);
     BiaxialState st;
     rec.sample(0.0, st);
     BiaxialEngine engine(m, o, rec, st);
-    for (std::size_t k = 0; k < n_seg; ++k) {
-        const BiaxialSegment seg = base.segment(k);
-        const double tb = base.t_k(k + 1);
-        for (double t = base.t_k(k); t < tb;) t = engine.advance(seg, t, tb);
-        rec.sample(tb, st);
-        if (st.mode == Mode::rest && tb >= base.quiet_from_s()) return rec.finish(st, tb, name);
-    }
-    return rec.finish(st, base.t_k(n_seg), name);
+    BiaxialBody body(base, rec, st, engine);
+    return rec.finish(st, run_segments(body, base.segments(o.tail_s)).end_s, "event");
 }
 
 }  // namespace freestand::dynamics::detail

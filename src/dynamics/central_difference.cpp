@@ -46,13 +46,7 @@ public:
 private:
     void enter(const Start& k, double t) {
         (void)t;
-        rec_.transition(st_.mode, k.mode);
-        if (k.mode == Mode::flight && st_.mode != Mode::flight)
-            st_.fl = to_flight(g_, st_.s, st_.u, st_.v, st_.th, st_.om);
-        st_.mode = k.mode;
-        st_.s = k.s;
-        st_.sigma = k.sigma;
-        if (k.mode == Mode::rest) st_.v = 0.0;
+        enter_mode(g_, rec_, st_, k);
         th_dd_prev_ = 0.0;
     }
 
@@ -188,24 +182,16 @@ SimulationResult run_central_difference(const Geometry& g, const BaseMotion& bm,
     const double h = central_difference_step_s(bm.dt(), o.cd_dt_s);
     const std::size_t n_seg = bm.segments(o.tail_s);
     const Base b0 = bm.at(0, 0.0);
-    BlockState st = initial_state(g, o, b0, b0);
-    rec.transition(Mode::rest, st.mode);
-    if (st.mode == Mode::flight) st.fl = to_flight(g, st.s, st.u, st.v, st.th, st.om);
-    rec.observe(st);
-    rec.sample(0.0, st, b0);
+    BlockState st = start_block(g, o, rec, b0, b0);
     CdStepper stepper(g, bm, o, rec, st);
-    const char* name = integrator_name(Integrator::central_difference);
-    const FixedRun run = run_fixed_steps(
+    const RunEnd run = run_fixed_steps(
         bm.dt(), h, n_seg,
         [&](std::size_t k, double t, double dt) { return stepper.step(k, t, dt); },
         [&](std::size_t k, double tb) {
             rec.sample(tb, st, bm.at(k, tb));
             return st.mode == Mode::rest && tb >= bm.min_end_s();
         });
-    if (run.stopped) return rec.finish(st, run.end_s, name);
-    // The run ends with the body as it is: the rule applies to that state too.
-    rec.check_overturn(st, run.end_s, run.end_s >= bm.quiet_from_s());
-    return rec.finish(st, run.end_s, name);
+    return finish_block(rec, st, bm, run, integrator_name(Integrator::central_difference));
 }
 
 }  // namespace freestand::dynamics::detail

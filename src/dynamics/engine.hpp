@@ -8,16 +8,26 @@
 ///   - its contact states (Mode: rest, slide, rock, slide-rock, flight) and the functions whose
 ///     sign change ends one (docs/methods.md s.2, s.3, s.10),
 ///   - its impact rule (what a contact or landing does to the rates, and the settling rule),
+///   - a body for the driver: how it advances within one input segment, passes segments at
+///     rest, samples and tells that it has settled or overturned (SegmentBody),
 /// and takes from the skeleton
+///   - the drivers: run_segments() for the event-driven engines (segment by segment, event by
+///     event, the rest runs, the sample at each segment's end, the early end once settled for
+///     good or overturned), run_fixed_steps() for the fixed-step baselines (n_sub steps per
+///     segment, then the segment-end sample); both return the RunEnd the engine finishes with;
 ///   - the input: piecewise-linear base acceleration per sample segment (BaseMotion and its
 ///     Segment, BiaxialBase and its BiaxialSegment, integrators.hpp and biaxial_detail.hpp);
 ///     every step ends at a sample time, where the input's slope jumps;
-///   - step control: run_fixed_steps() for the fixed-step baselines (n_sub steps per segment,
-///     then the segment-end sample), AdaptiveStep for an error-controlled stepper (dopri5.hpp)
-///     with its step limits (1e-14 s floor, Options::max_contact_step_s, the snap onto the
-///     segment's end);
-///   - event location: toms748_root / newton_root / first_quadratic_root (roots.hpp) on the
-///     step's dense output, and probe_time() to classify a start exactly at a threshold;
+///   - step control: AdaptiveStep for an error-controlled stepper (dopri5.hpp) with its step
+///     limits (min_step_s floor, Options::max_contact_step_s, the snap onto the segment's end);
+///     SeriesStep for a stepper that sizes its own step (taylor.hpp; SeriesStep says why it is
+///     not an AdaptiveStep), on the same request and floor;
+///   - event location (event_search.hpp): the first of the engine's events in a step at one
+///     tie order (first_event), the sign change and the dip below 0 of an event function on the
+///     step's dense output (sign_change, dip_below_zero), the rise out of 0 of a function an
+///     event has just set (rise_scan), the probes of a flight for its landing (scan_flight),
+///     on the root finders of roots.hpp; and probe_time() to classify a start exactly at a
+///     threshold;
 ///   - the chatter rule (ChatterGuard: a burst of events inside Options::settle_interval_s
 ///     settles the body, a longer one is a NumericalError);
 ///   - the recorder's shared bookkeeping (ModeTally: mode changes, time in each mode, steps;
@@ -29,6 +39,7 @@
 /// (no wall-clock, no unordered iteration, one fixed order of the events at a tie).
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <fmt/format.h>
 #include <limits>
@@ -36,15 +47,27 @@
 
 #include "core/errors.hpp"
 #include "core/steps.hpp"
+#include "dynamics/event_search.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace freestand::dynamics::detail {
 
-/// How far after t a start is classified (at most 1e-9 s, never past half the way to the
-/// segment's end tb): docs/methods.md s.2 leaves rest by strict inequalities, so at a threshold
-/// itself the body still holds; just after it, the sign decides.
+/// How far after a threshold a start is classified, s: docs/methods.md s.2 leaves rest by strict
+/// inequalities, so at a threshold itself the body still holds; just after it, the sign decides.
+inline constexpr double probe_delay_s = 1e-9;
+
+/// Shortest step an engine takes, s (relative to t beyond 1 s): a step the error control cuts
+/// below it means the integration is stuck.
+inline constexpr double min_step_s = 1e-14;
+
+/// A contact state's rotation theta is not negative to within this, rad: the event search
+/// stops on the impact theta = 0 to round-off.
+inline constexpr double theta_round_off_rad = 1e-9;
+
+/// The time a start at t_s is classified at: probe_delay_s after it, never past half the way
+/// to the segment's end tb_s.
 inline double probe_time(double t_s, double tb_s) {
-    return t_s + std::min(1e-9, 0.5 * (tb_s - t_s));
+    return t_s + std::min(probe_delay_s, 0.5 * (tb_s - t_s));
 }
 
 /// How long a body settled by the chatter rule stays at rest before the rest criteria are
@@ -76,6 +99,12 @@ private:
     std::size_t burst_ = 0;
 };
 
+/// The step to try from t_s towards end_s (a segment's end or an event horizon): at most cap_s
+/// and max_step_s; a step within round-off of end_s is stretched onto it.
+inline double step_towards(double t_s, double end_s, double max_step_s, double cap_s) {
+    return core::step_to_sample(t_s, std::min({cap_s, end_s - t_s, max_step_s}), end_s);
+}
+
 /// Step size of an error-controlled stepper (dopri5.hpp) between events: the step to try, then
 /// accept or reject by the error it measured.
 class AdaptiveStep {
@@ -83,13 +112,12 @@ public:
     /// The step to try from t_s towards end_s (a segment's end or an event horizon), at most
     /// max_step_s and the proposal of the last step; a step within round-off of end_s is
     /// stretched onto it. Throws NumericalError naming the integrator when the proposal fell
-    /// below 1e-14 s (relative to t_s beyond 1 s).
+    /// below min_step_s.
     double propose(double t_s, double end_s, double max_step_s, const char* integrator) {
-        if (h_next_s_ < 1e-14 * std::max(1.0, t_s))
+        if (h_next_s_ < min_step_s * std::max(1.0, t_s))
             throw NumericalError(fmt::format(
                 "{}: the step fell below 1e-14 s at t = {} s", integrator, t_s));
-        h_s_ = std::min({h_next_s_, end_s - t_s, max_step_s});
-        h_s_ = core::step_to_sample(t_s, h_s_, end_s);
+        h_s_ = step_towards(t_s, end_s, max_step_s, h_next_s_);
         clipped_ = h_s_ < h_next_s_;
         return h_s_;
     }
@@ -113,19 +141,42 @@ private:
     bool clipped_ = false;
 };
 
-/// Where a fixed-step run stopped: at end_s, early (step or at_sample asked) or after the last
-/// segment.
-struct FixedRun {
+/// Step size of a stepper that sizes its own step from its series (the Taylor stepper,
+/// taylor.hpp). It cannot run under AdaptiveStep: the series' tail bounds the error before the
+/// step is taken, so the stepper returns the step asked or a shorter one its tolerance allows
+/// and never rejects one; there is no error after the step to accept or reject by, and the
+/// step it shortened is the one to start the next from. It shares AdaptiveStep's request
+/// (step_towards) and its floor (min_step_s, which the engine checks on the shortened step).
+class SeriesStep {
+public:
+    explicit SeriesStep(double cap_s) : cap_s_(cap_s) {}
+    /// The step to ask for from t_s towards end_s: at most max_step_s and the cap.
+    double request(double t_s, double end_s, double max_step_s) const {
+        return step_towards(t_s, end_s, max_step_s, cap_s_);
+    }
+    /// The stepper took h_s of the h_asked_s: the cap is 1.25 x a step the tolerance shortened,
+    /// and doubles (up to 1 s) after a step it did not.
+    void took(double h_s, double h_asked_s) {
+        cap_s_ = h_s < h_asked_s ? 1.25 * h_s : std::min(2.0 * cap_s_, 1.0);
+    }
+
+private:
+    double cap_s_;
+};
+
+/// Where a run ended: at end_s, stopped early (the body settled for good or overturned) or at
+/// the end of its last input segment (then the overturning rule still applies to the state).
+struct RunEnd {
     double end_s = 0.0;
     bool stopped = false;
 };
 
-/// The fixed-step skeleton (the central-difference baselines): in each of n_seg input segments
+/// The fixed-step driver (the central-difference baselines): in each of n_seg input segments
 /// of dt_s, n_sub = dt_s / h_s steps step(k, t, h_s) (false: the run ends at t + h_s), then
 /// at_sample(k, tb) at the segment's end tb (true: the run ends at tb).
 template <class Step, class AtSample>
-FixedRun run_fixed_steps(double dt_s, double h_s, std::size_t n_seg, Step&& step,
-                         AtSample&& at_sample) {
+RunEnd run_fixed_steps(double dt_s, double h_s, std::size_t n_seg, Step&& step,
+                       AtSample&& at_sample) {
     const auto n_sub = static_cast<std::size_t>(std::lround(dt_s / h_s));
     for (std::size_t k = 0; k < n_seg; ++k) {
         const double tk = dt_s * static_cast<double>(k);
@@ -137,6 +188,56 @@ FixedRun run_fixed_steps(double dt_s, double h_s, std::size_t n_seg, Step&& step
         if (at_sample(k, tb)) return {tb, true};
     }
     return {dt_s * static_cast<double>(n_seg), false};
+}
+
+/// A body's pass over input segments it holds at rest without stepping: the first segment k
+/// still to take, or ended: the run ends at the sample time t_k(k).
+struct RestRun {
+    std::size_t k = 0;
+    bool ended = false;
+};
+
+/// What an event-driven engine supplies to run_segments (B a body of planar, biaxial, flexible
+/// or a later kind), k indexing input segments [t_k(k), t_k(k + 1)]:
+///   - t_k(k): the sample time k;
+///   - rest_run(k, n_seg): the segments from k it passes at rest in one go (recording their
+///     samples), or {k, false} when it is not at rest;
+///   - advance(k, t, tb): from t towards the segment's end tb to the time reached (tb, or an
+///     event it handled before returning); a run that records the samples it passes may move
+///     k on (the segment that holds the time reached, its start sample recorded);
+///   - overturned(): the run ends at the time reached;
+///   - sample(k, tb): the output sample at the end tb of segment k;
+///   - ends_at(tb): after that sample, the body has settled for good (the run ends at tb).
+template <class B>
+concept SegmentBody = requires(B& body, const B& cbody, std::size_t& k, double t) {
+    { cbody.t_k(k) } -> std::same_as<double>;
+    { body.rest_run(k, k) } -> std::same_as<RestRun>;
+    { body.advance(k, t, t) } -> std::same_as<double>;
+    { cbody.overturned() } -> std::same_as<bool>;
+    body.sample(k, t);
+    { cbody.ends_at(t) } -> std::same_as<bool>;
+};
+
+/// The event-driven driver: each of n_seg input segments is passed at rest, or advanced event
+/// by event to its end and sampled there; the run stops at an overturn or once the body has
+/// settled for good.
+template <SegmentBody B>
+RunEnd run_segments(B& body, std::size_t n_seg) {
+    for (std::size_t k = 0; k < n_seg; ++k) {
+        const RestRun rest = body.rest_run(k, n_seg);
+        if (rest.ended) return {body.t_k(rest.k), true};
+        k = rest.k;
+        if (k == n_seg) break;
+        double t = body.t_k(k), tb = body.t_k(k + 1);
+        while (t < tb) {
+            t = body.advance(k, t, tb);
+            if (body.overturned()) return {t, true};
+            tb = body.t_k(k + 1);
+        }
+        body.sample(k, tb);
+        if (body.ends_at(tb)) return {tb, true};
+    }
+    return {body.t_k(n_seg), false};
 }
 
 /// The recorder's bookkeeping of modes on an engine's summary (Summary, BiaxialSummary): mode

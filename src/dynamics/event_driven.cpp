@@ -7,12 +7,13 @@
 #include <fmt/format.h>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include "core/errors.hpp"
 #include "core/steps.hpp"
 #include "dynamics/engine.hpp"
-#include "dynamics/roots.hpp"
+#include "dynamics/event_search.hpp"
 #include "dynamics/integrators.hpp"
 #include "dynamics/taylor.hpp"
 
@@ -61,13 +62,7 @@ private:
     Base probe(double t) const { return seg_.at(t < tb_ ? probe_time(t, tb_) : t); }
 
     void set_mode(const Start& k, double t) {
-        rec_.transition(st_.mode, k.mode);
-        if (k.mode == Mode::flight && st_.mode != Mode::flight)
-            st_.fl = to_flight(g_, st_.s, st_.u, st_.v, st_.th, st_.om);
-        st_.mode = k.mode;
-        st_.s = k.s;
-        st_.sigma = k.sigma;
-        if (k.mode == Mode::rest) st_.v = 0.0;
+        enter_mode(g_, rec_, st_, k);
         note_event(t);
     }
 
@@ -119,44 +114,59 @@ private:
         return t_ev;
     }
 
+    // Flat sliding, in closed form: u'' = -xg'' - sigma mu_k G is linear in tau on the segment,
+    // u a cubic; to the segment's end or to the first event (slide_piece).
     double advance_slide(double t) {
         rec_.step();
         const Base a = seg_.at(t);
         const double dsig = static_cast<double>(st_.sigma);
-        // u'' = -xg'' - sigma mu_k G is linear in tau on the segment: u is a cubic.
         const double c0 = -a.ax - dsig * g_.mu_k * a.G;
         const double c1 = -seg_.ax1 - dsig * g_.mu_k * seg_.G1;
-        const double span = tb_ - t;
-        double tau = span;
-        Ev ev = Ev::none;
-        // G = 0 (lift-off) at t + t_fly; never while G does not fall.
-        const double t_fly = seg_.G1 < 0.0 ? -a.G / seg_.G1 : std::numeric_limits<double>::infinity();
-        // Most segments of a slide can neither stop nor lift off (the hot path of sliding
-        // records): the searches are skipped.
-        const bool stop_possible = may_stop(st_.v, c0, c1, span, dsig);
-        if (stop_possible || !(t_fly >= span)) {
-            // Starting from u' = 0 the direction was chosen at the probe time t + delta (the
-            // start may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots
-            // before it.
-            const double delta = st_.v == 0.0 ? std::min(1e-9, 0.5 * span) : 0.0;
-            tau = stop_possible ? first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span)
-                                : std::numeric_limits<double>::infinity();
-            ev = tau <= span ? Ev::stop : Ev::none;
-            if (st_.v == 0.0 && !(dsig * (c0 + c1 * delta) > 0.0)) {
-                tau = 0.0;  // pushed against its slip direction: a stop now
-                ev = Ev::stop;
-            }
-            if (t_fly >= 0.0 && t_fly < std::min(tau, span)) {
-                tau = t_fly;
-                ev = Ev::lift;
-            }
-            if (ev == Ev::none) tau = span;
-        }
+        const SlidePiece piece = slide_piece(a.G, c0, c1, tb_ - t);
+        const double tau = piece.tau_s;
         st_.u += tau * (st_.v + tau * (0.5 * c0 + tau * c1 / 6.0));
         st_.v += tau * (c0 + 0.5 * c1 * tau);
         rec_.time_in(Mode::slide, tau);
-        const double te = ev == Ev::none ? tb_ : t + tau;
+        const double te = piece.ev == Ev::none ? tb_ : t + tau;
         rec_.observe(st_);
+        end_slide(piece.ev, te);
+        return te;
+    }
+
+    struct SlidePiece {
+        double tau_s = 0.0;
+        Ev ev = Ev::none;
+    };
+
+    // How long a flat slide lasts on the segment (span_s to its end, G0 at its start, u'' = c0
+    // + c1 tau) and the event that ends it: a stop, lift-off (G = 0), or none at the end.
+    SlidePiece slide_piece(double G0, double c0, double c1, double span_s) const {
+        const double dsig = static_cast<double>(st_.sigma);
+        // G = 0 (lift-off) at t + t_fly; never while G does not fall.
+        const double t_fly = seg_.G1 < 0.0 ? -G0 / seg_.G1 : std::numeric_limits<double>::infinity();
+        // Most segments of a slide can neither stop nor lift off (the hot path of sliding
+        // records): the searches are skipped.
+        const bool stop_possible = may_stop(st_.v, c0, c1, span_s, dsig);
+        if (!stop_possible && t_fly >= span_s) return {span_s, Ev::none};
+        // Starting from u' = 0 the direction was chosen at the probe time t + delta (the start
+        // may sit exactly on the threshold, where u'' = 0 to round-off): ignore roots before it.
+        const double delta = st_.v == 0.0 ? std::min(probe_delay_s, 0.5 * span_s) : 0.0;
+        double tau = stop_possible ? first_quadratic_root(st_.v, c0, 0.5 * c1, delta, span_s)
+                                   : std::numeric_limits<double>::infinity();
+        Ev ev = tau <= span_s ? Ev::stop : Ev::none;
+        if (st_.v == 0.0 && !(dsig * (c0 + c1 * delta) > 0.0)) {
+            tau = 0.0;  // pushed against its slip direction: a stop now
+            ev = Ev::stop;
+        }
+        if (t_fly >= 0.0 && t_fly < std::min(tau, span_s)) {
+            tau = t_fly;
+            ev = Ev::lift;
+        }
+        return {ev == Ev::none ? span_s : tau, ev};
+    }
+
+    // The mode after a slide's event at te: from rest after a stop, flight after lift-off.
+    void end_slide(Ev ev, double te) {
         if (ev == Ev::stop) {
             st_.v = 0.0;
             set_mode(classify_from_rest(g_, probe(te)), te);
@@ -164,7 +174,6 @@ private:
             st_.th = 0.0;
             set_mode({Mode::flight, 1, 1}, te);
         }
-        return te;
     }
 
     double event_value(Ev e, const Vec& x, const Accel& a) const {
@@ -214,12 +223,6 @@ public:
         return x0;
     }
 
-    // The step to try from t towards stop_at: the longest contact step and the last step's cap.
-    double contact_step_request(double t, double stop_at) const {
-        double h = std::min({stop_at - t, o_.max_contact_step_s, h_cap_});
-        return core::step_to_sample(t, h, stop_at);
-    }
-
     // Peak rotation inside a step (theta' from + to -): Newton on theta' with theta'' from the
     // same polynomial; recorded unless an event ends the step before it.
     void observe_peak_in_step(const ContactSeries& S, double t, double t1, double om0,
@@ -238,20 +241,13 @@ public:
         }
     }
 
-    struct StepEvent {
-        Ev first = Ev::none;
-        double t = 0.0;
-    };
-
     // The first event of `events` inside the step [t, t1] (or none, at t1): the step-end values
     // flag whether any can have happened; only then is each located on the step's polynomials.
     template <class Dense, class AccelOnStep>
-    StepEvent first_contact_event(const std::array<Ev, 5>& events, const ContactSeries& S,
+    EventAt<Ev> first_contact_event(const std::array<Ev, 5>& events, const ContactSeries& S,
                                   double t, double t1, double h, const Vec& x, const Vec& xn,
                                   const Accel& acc0, const Accel& acc1, double alpha,
                                   const Dense& dense, const AccelOnStep& accel_on_step) const {
-        Ev first = Ev::none;
-        double t_ev = t1;
         // The event functions of `events` at the step end, written out: on a routine step
         // none is negative and the loop below is skipped.
         // sigma u' of a slide-rock step, whose zero is the stop event.
@@ -275,25 +271,18 @@ public:
             (st_.mode == Mode::rock ? g_.mu_s * acc1.N < std::abs(acc1.F)
                                     : may_cross(slip_poly, sig * xn[1])) ||
             (events[4] == Ev::past_alpha && xn[2] > alpha);
-        for (Ev e : events) {
-            if (!flagged) break;
-            if (e == Ev::none) continue;
-            double te;
+        if (!flagged) return {Ev::none, t1};
+        return first_event(events, t1, [&](Ev e) -> std::optional<double> {
             if (e == Ev::impact || e == Ev::stop) {
-                te = first_zero(e, e == Ev::impact ? S.theta_poly() : slip_poly, t, t1, h,
-                                dense, accel_on_step, S);
-                if (te < 0.0) continue;
-            } else {
-                const double v1 = event_value(e, xn, acc1);
-                if (!(v1 < 0.0)) continue;
-                te = locate_event(e, t, t1, event_value(e, x, acc0), v1, dense, accel_on_step, S);
+                const double te = first_zero(e, e == Ev::impact ? S.theta_poly() : slip_poly, t,
+                                             t1, h, dense, accel_on_step, S);
+                if (te < 0.0) return std::nullopt;
+                return te;
             }
-            if (te < t_ev || first == Ev::none) {
-                t_ev = te;
-                first = e;
-            }
-        }
-        return {first, t_ev};
+            const double v1 = event_value(e, xn, acc1);
+            if (!(v1 < 0.0)) return std::nullopt;
+            return locate_event(e, t, t1, event_value(e, x, acc0), v1, dense, accel_on_step, S);
+        });
     }
 
     double advance_contact(std::size_t k, double t, double horizon) {
@@ -311,27 +300,9 @@ public:
         Accel acc0 = contact_accel(x0, x0.sn, x0.c, st_.om, seg_.at(t));
         ContactSeries S;
         while (t < horizon) {
-            x0.u = st_.u;
-            x0.v = st_.v;
-            x0.th = st_.th;
-            x0.om = st_.om;
-            const Base b0 = seg_.at(t);
-            x0.ax0 = b0.ax;
-            x0.G0 = b0.G;
-            x0.ax1 = seg_.ax1;
-            x0.G1 = seg_.G1;
+            load_step_start(x0, t);
             const double stop_at = tail ? horizon : std::min(tb_, horizon);
-            const double h_full = contact_step_request(t, stop_at);
-            double h = h_full;
-            h = taylor_contact_step(g_, x0, h, o_.rel_tol, o_.abs_tol, S, rock_degree_);
-            // A tiny remainder up to a sample (an event an ulp before it) is stepped over; only
-            // a step the tolerance itself cut below 1e-14 s means the integration is stuck.
-            if (h < 1e-14 && h < h_full)
-                throw NumericalError(fmt::format(
-                    "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
-                    to_string(st_.mode)));
-            h_cap_ = h < h_full ? 1.25 * h : std::min(2.0 * h_cap_, 1.0);
-            rec_.step();
+            const double h = taylor_step(x0, t, stop_at, S);
             const double t1 = (h == stop_at - t) ? stop_at : t + h;
             const Vec x = {x0.u, x0.v, x0.th, x0.om};
             const Vec xn = {S.slip(h), S.slip_velocity(h), S.th_end, S.om_end};
@@ -347,28 +318,15 @@ public:
                 sin_cos_shift(x0.sn, x0.c, phi0, y[2] - x0.th, sn, c);
                 return contact_accel(x0, sn, c, y[3], seg_.at(tt));
             };
-            const StepEvent ev = first_contact_event(events, S, t, t1, h, x, xn, acc0, acc1, alpha,
-                                                     dense, accel_on_step);
-            const Ev first = ev.first;
-            const double t_ev = ev.t;
+            const EventAt<Ev> ev = first_contact_event(events, S, t, t1, h, x, xn, acc0, acc1,
+                                                       alpha, dense, accel_on_step);
+            const Ev first = ev.event;
+            const double t_ev = ev.t_s;
             observe_peak_in_step(S, t, t1, x[3], xn[3], first, t_ev);
             // Steps cross sample times only after the excitation.
             if (tail) record_samples(dense, first == Ev::none ? t1 : t_ev);
-            if (first != Ev::none) {
-                const Vec y = t_ev == t1 ? xn : dense(t_ev);
-                rec_.time_in(st_.mode, t_ev - t);
-                set_contact(y);
-                rec_.observe(st_);
-                handle_contact_event(first, t_ev);
-                return t_ev;
-            }
-            rec_.time_in(st_.mode, t1 - t);
-            set_contact(xn);
-            rec_.observe(st_);
-            // Rock's pass beyond alpha is located as an event; a slide-rock's energy is only
-            // checked at step ends.
-            if (tail) rec_.check_overturn(st_, t1, true);
-            if (rec_.overturned()) return t1;
+            if (first != Ev::none) return end_at_event(first, t, t_ev, t_ev == t1 ? xn : dense(t_ev));
+            if (commit_step(t, t1, xn, tail)) return t1;
             t = t1;
             x0.sn = sn1;
             x0.c = c1;
@@ -382,11 +340,64 @@ public:
                 enter_segment(++kseg);
             }
         }
+        keep_known(horizon);
+        return horizon;
+    }
+
+    // A step from t without event, to t1 in state xn; true when the body overturned there.
+    bool commit_step(double t, double t1, const Vec& xn, bool tail) {
+        rec_.time_in(st_.mode, t1 - t);
+        set_contact(xn);
+        rec_.observe(st_);
+        // Rock's pass beyond alpha is located as an event; a slide-rock's energy is only
+        // checked at step ends.
+        if (tail) rec_.check_overturn(st_, t1, true);
+        return rec_.overturned();
+    }
+
+    // The step's start from the state at t and the segment's input.
+    void load_step_start(ContactStart& x0, double t) const {
+        x0.u = st_.u;
+        x0.v = st_.v;
+        x0.th = st_.th;
+        x0.om = st_.om;
+        const Base b0 = seg_.at(t);
+        x0.ax0 = b0.ax;
+        x0.G0 = b0.G;
+        x0.ax1 = seg_.ax1;
+        x0.G1 = seg_.G1;
+    }
+
+    // One Taylor step (taylor.hpp) from x0 at t towards stop_at; returns its length. A tiny
+    // remainder up to a sample (an event an ulp before it) is stepped over; only a step the
+    // tolerance itself cut below min_step_s means the integration is stuck.
+    double taylor_step(const ContactStart& x0, double t, double stop_at, ContactSeries& S) {
+        const double h_full = step_.request(t, stop_at, o_.max_contact_step_s);
+        const double h = taylor_contact_step(g_, x0, h_full, o_.rel_tol, o_.abs_tol, S, rock_degree_);
+        if (h < min_step_s && h < h_full)
+            throw NumericalError(fmt::format(
+                "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
+                mode_name(st_.mode)));
+        step_.took(h, h_full);
+        rec_.step();
+        return h;
+    }
+
+    // The contact run from t ends at its event e at t_ev, in state y.
+    double end_at_event(Ev e, double t, double t_ev, const Vec& y) {
+        rec_.time_in(st_.mode, t_ev - t);
+        set_contact(y);
+        rec_.observe(st_);
+        handle_contact_event(e, t_ev);
+        return t_ev;
+    }
+
+    // The accelerations of the state a contact run ended in at horizon stay valid (known_at).
+    void keep_known(double horizon) {
         known_ok_ = true;
         known_t_ = horizon;
         known_x_ = {st_.u, st_.v, st_.th, st_.om};
         known_mode_ = st_.mode;
-        return horizon;
     }
 
     /// Flat sliding from t (inside segment k) until an event or `horizon` (a sample time), one
@@ -465,16 +476,9 @@ private:
         double ta = t, fa = v0;
         if (v0 == 0.0) {
             // Starting on the boundary: look for the excursion inside the step.
-            for (int j = 1; j < 8; ++j) {
-                const double tm = t + (t1 - t) * j / 8.0;
-                const double fm = f(tm);
-                if (fm > 0.0) {
-                    ta = tm;
-                    fa = fm;
-                    break;
-                }
-                if (fm < 0.0) break;
-            }
+            const RiseStart rise = rise_scan(f, t, t1, BelowZero::ends_scan);
+            ta = rise.t_s;
+            fa = rise.f;
         }
         if (fa < 0.0) return t;
         if (force) return toms748_root(f, ta, t1, fa, v1);
@@ -590,26 +594,25 @@ private:
             return half_pi - std::abs(flight_at(f0, tau, a.ax, seg_.ax1, a.G, seg_.G1).phi);
         };
         // Armed once the lowest corner has risen: the lift-off point itself is at height 0.
-        double prev = 0.0, hprev = height(0.0);
+        double hprev = height(0.0);
         if (hprev > 0.0) armed_ = true;
         double tau_ev = -1.0;
         bool over = false;
-        for (int j = 1; j <= landing_probes; ++j) {
-            const double tau = span * j / landing_probes;
+        scan_flight(span, landing_probes, [&](double prev, double tau) {
             const double hj = height(tau);
             if (tilt(tau) < 0.0) {
                 tau_ev = toms748_root(tilt, prev, tau, tilt(prev), tilt(tau));
                 over = true;
-                break;
+                return true;
             }
             if (armed_ && hj < 0.0) {
                 tau_ev = toms748_root(height, prev, tau, hprev, hj);
-                break;
+                return true;
             }
             if (hj > 0.0) armed_ = true;
-            prev = tau;
             hprev = hj;
-        }
+            return false;
+        });
         if (tau_ev < 0.0) {
             st_.fl = flight_at(f0, span, a.ax, seg_.ax1, a.G, seg_.G1);
             rec_.time_in(Mode::flight, span);
@@ -624,6 +627,12 @@ private:
             rec_.overturn(te, OverturnCriterion::angle_half_pi);
             return te;
         }
+        land_at(te);
+        return te;
+    }
+
+    // The landing at te (mechanics.hpp land): an impact onto an edge, or flat.
+    void land_at(double te) {
         armed_ = false;
         const Contact c = land(g_, st_.fl, o_.flat_landing_window_s);
         rec_.impact(te, std::abs(st_.fl.phid), std::abs(c.om), false);
@@ -637,7 +646,6 @@ private:
         } else {
             set_mode(classify_on_edge(g_, c.s, c.th, c.om, 0.0, seg_.at(te)), te);
         }
-        return te;
     }
 
     const Geometry& g_;
@@ -647,9 +655,7 @@ private:
     BlockState& st_;
     Segment seg_;
     double tb_ = 0.0;
-    // Longest contact step to try next: 1.25 x the last step the tolerance shortened, doubling
-    // after each step it did not.
-    double h_cap_ = o_.max_contact_step_s;
+    SeriesStep step_{o_.max_contact_step_s};  // the contact steps' cap
     RockDegree rock_degree_;  // Taylor degree carried between rock steps
     std::size_t next_sample_ = 0;
     Known known_;
@@ -662,61 +668,72 @@ private:
     bool armed_ = false;
 };
 
+// The planar engine as run_segments drives it: rest runs over raw samples, contact and slide
+// runs that record the samples they pass, the other modes one segment at a time.
+class PlanarBody {
+public:
+    PlanarBody(const Geometry& g, const BaseMotion& bm, const Options& o, Recorder& rec,
+               BlockState& st, std::size_t n_seg)
+        : g_(g), bm_(bm), rec_(rec), st_(st), engine_(g, bm, o, rec, st), n_seg_(n_seg) {}
+
+    double t_k(std::size_t k) const { return bm_.t_k(k); }
+    bool overturned() const { return rec_.overturned(); }
+    bool ends_at(double tb) const { return st_.mode == Mode::rest && tb >= bm_.min_end_s(); }
+    void sample(std::size_t k, double tb) {
+        rec_.sample(tb, st_, bm_.sample(k + 1), engine_.known_at(tb));
+    }
+
+    // The rest inequalities are linear on a segment: holding at both samples, they hold
+    // throughout, so whole runs of such segments are passed without the engine.
+    RestRun rest_run(std::size_t k, std::size_t n_seg) {
+        if (st_.mode != Mode::rest || !rest_holds(g_, bm_.sample(k))) return {k, false};
+        const double min_end = bm_.min_end_s(), dt = bm_.dt();
+        // Last segment end the run may reach: the first sample at or after min_end.
+        const auto j_max = std::min<std::size_t>(
+            n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(core::steps_covering(min_end / dt))));
+        double peak = 0.0;
+        // Segments k..j-1 stay at rest: samples k+1..j hold.
+        const std::size_t j = bm_.rest_until(k + 1, j_max + 1, g_, peak) - 1;
+        rec_.rest_samples(bm_, k + 1, j + 1, st_, peak);
+        rec_.time_in(Mode::rest, dt * static_cast<double>(j - k));
+        return {j, j == n_seg || (j > k && bm_.t_k(j) >= min_end)};
+    }
+
+    double advance(std::size_t& k, double t, double tb) {
+        if (st_.mode == Mode::rock || st_.mode == Mode::slide_rock) {
+            // Contact runs stop where the excitation ends (their steps then stop ending at
+            // samples) and at events.
+            const double quiet = bm_.quiet_from_s();
+            t = engine_.advance_contact(k, t, t < quiet ? quiet : bm_.t_k(n_seg_));
+            k = engine_.next_sample() - 1;
+            return t;
+        }
+        if (st_.mode == Mode::slide) {
+            t = engine_.advance_slide_run(k, t, bm_.t_k(n_seg_));
+            k = engine_.next_sample() - 1;
+            return t;
+        }
+        return engine_.advance(k, t, tb);
+    }
+
+private:
+    const Geometry& g_;
+    const BaseMotion& bm_;
+    Recorder& rec_;
+    BlockState& st_;
+    Engine engine_;
+    std::size_t n_seg_;
+};
+
 }  // namespace
 
 SimulationResult run_event_driven(const Geometry& g, const BaseMotion& bm, const Options& o) {
     Recorder rec(g, o, bm.pga_mps2());
     const std::size_t n_seg = bm.segments(o.tail_s);
-    const Base b0 = bm.at(0, 0.0);
-    BlockState st = initial_state(g, o, b0, bm.at(0, probe_time(0.0, bm.dt())));
-    rec.transition(Mode::rest, st.mode);
-    if (st.mode == Mode::flight) st.fl = to_flight(g, st.s, st.u, st.v, st.th, st.om);
-    rec.observe(st);
-    rec.sample(0.0, st, b0);
-    Engine engine(g, bm, o, rec, st);
-    const double dt = bm.dt(), min_end = bm.min_end_s(), t_end = bm.t_k(n_seg);
-    for (std::size_t k = 0; k < n_seg; ++k) {
-        // The rest inequalities are linear on a segment: holding at both samples, they hold
-        // throughout, so whole runs of such segments are passed without the engine.
-        if (st.mode == Mode::rest && rest_holds(g, bm.sample(k))) {
-            // Last segment end the run may reach: the first sample at or after min_end.
-            const auto j_max = std::min<std::size_t>(
-                n_seg, std::max<std::size_t>(k + 1, static_cast<std::size_t>(core::steps_covering(min_end / dt))));
-            double peak = 0.0;
-            // Segments k..j-1 stay at rest: samples k+1..j hold.
-            const std::size_t j = bm.rest_until(k + 1, j_max + 1, g, peak) - 1;
-            rec.rest_samples(bm, k + 1, j + 1, st, peak);
-            rec.time_in(Mode::rest, dt * static_cast<double>(j - k));
-            if (j == n_seg || (j > k && bm.t_k(j) >= min_end))
-                return rec.finish(st, bm.t_k(j), integrator_name(Integrator::event));
-            k = j;
-        }
-        double t = bm.t_k(k);
-        double tb = bm.t_k(k + 1);
-        while (t < tb) {
-            if (st.mode == Mode::rock || st.mode == Mode::slide_rock) {
-                // Contact runs stop where the excitation ends (their steps then stop ending at
-                // samples) and at events.
-                const double quiet = bm.quiet_from_s();
-                t = engine.advance_contact(k, t, t < quiet ? quiet : t_end);
-                k = engine.next_sample() - 1;
-                tb = bm.t_k(k + 1);
-            } else if (st.mode == Mode::slide) {
-                t = engine.advance_slide_run(k, t, t_end);
-                k = engine.next_sample() - 1;
-                tb = bm.t_k(k + 1);
-            } else {
-                t = engine.advance(k, t, tb);
-            }
-            if (rec.overturned()) return rec.finish(st, t, integrator_name(Integrator::event));
-        }
-        rec.sample(tb, st, bm.sample(k + 1), engine.known_at(tb));
-        if (st.mode == Mode::rest && tb >= bm.min_end_s())
-            return rec.finish(st, tb, integrator_name(Integrator::event));
-    }
-    // The run ends with the body as it is: the rule applies to that state too.
-    rec.check_overturn(st, t_end, t_end >= bm.quiet_from_s());
-    return rec.finish(st, t_end, integrator_name(Integrator::event));
+    BlockState st = start_block(g, o, rec, bm.at(0, 0.0), bm.at(0, probe_time(0.0, bm.dt())));
+    PlanarBody body(g, bm, o, rec, st, n_seg);
+    return finish_block(rec, st, bm, run_segments(body, n_seg),
+                        integrator_name(Integrator::event));
 }
 
 }  // namespace freestand::dynamics::detail

@@ -260,7 +260,7 @@ FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, cons
     FlexCdStepper stepper(g, bm, o, rec);
     stepper.start(bm.at(0, 0.0));
     stepper.sample(0.0, bm.sample(0));
-    const FixedRun run = run_fixed_steps(
+    const RunEnd run = run_fixed_steps(
         bm.dt(), h, n_seg,
         [&](std::size_t k, double t, double dt) {
             stepper.step(k, t, dt);
@@ -270,11 +270,7 @@ FlexibleResult run_flexible_cd(const FlexGeometry& g, const BaseMotion& bm, cons
             stepper.sample(tb, bm.sample(k + 1));
             return tb >= bm.min_end_s() && stepper.settled(o.g_mps2);
         });
-    double t_end = run.end_s;
-    // The run ends with the body as it is: the rule applies to that state too.
-    if (!rec.overturned()) rec.check_overturn(stepper.mode(), stepper.state(), t_end, t_end >= bm.quiet_from_s());
-    if (rec.overturned()) t_end = out.summary.base.overturn_time_s.value_or(t_end);
-    rec.finish("cd", t_end, bm.pga_mps2(), std::abs(stepper.state()[0]), 0.0);
+    rec.end_run(stepper.mode(), stepper.state(), run.end_s, bm, "cd");
     return out;
 }
 

@@ -6,7 +6,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "core/errors.hpp"
 #include "dynamics/engine.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/integrators.hpp"
@@ -109,6 +111,18 @@ inline void with_phi(Pose& p, double phi) {
 struct FlexAccel {
     double Xdd = 0, Ydd = 0, phidd = 0, qdd = 0, F = 0, N = 0, NL = 0, NR = 0;
 };
+
+/// (phi'', q'') of the two-unknown systems [[k00, k01], [k01, k11]] (phi'', q'') = (r0, r1) the
+/// equations of motion reduce to; NumericalError naming `matrix` when it is not positive
+/// definite.
+inline std::array<double, 2> solve_phi_q(double k00, double k01, double k11, double r0,
+                                         double r1, const char* matrix) {
+    const double det = k00 * k11 - k01 * k01;
+    if (!(det > 0.0))
+        throw NumericalError(std::string("flexible-body equations: the ") + matrix +
+                             " is not positive definite");
+    return {(r0 * k11 - k01 * r1) / det, (k00 * r1 - k01 * r0) / det};
+}
 
 /// Newton-Euler equations of the two bodies (linear and angular momentum of the whole about O,
 /// the modal mass along the body's x axis: m_s a_s . e1 = -k q - c q' + forces . e1) with the
@@ -329,6 +343,10 @@ public:
     void settlement() { log_.settlement(); }
     void overturn(double t_s, OverturnCriterion criterion) { log_.overturn(t_s, criterion); }
     bool overturned() const { return log_.overturned(); }
+    /// Ends a run at end_s with the body in mode m at x: the overturning rule applies to that
+    /// state too, an overturned run ends at its overturn; then finish().
+    void end_run(const FlexMode& m, const FlexState& x, double end_s, const BaseMotion& bm,
+                 const char* integrator);
     /// Fills the summary's totals; slide_residual_m from the final state.
     void finish(const char* integrator, double end_time_s, double pga_mps2, double residual_m,
                 double wall_s);

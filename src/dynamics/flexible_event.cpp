@@ -11,11 +11,13 @@
 #include <fmt/format.h>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/contract.hpp"
 #include "core/errors.hpp"
 #include "core/steps.hpp"
-#include "dynamics/roots.hpp"
+#include "core/tolerances.hpp"
+#include "dynamics/event_search.hpp"
 #include "dynamics/dopri5.hpp"
 #include "dynamics/flexible_detail.hpp"
 
@@ -94,7 +96,7 @@ public:
         for (; k < n_seg; ++k) {
             seg_ = bm.linear_segment(k);
             tb_ = bm.t_k(k + 1);
-            if (std::abs(tb_ - seg_.tk - full_step_.tau) > 1e-9 * full_step_.tau) return k;
+            if (!is_full_step(seg_.tk, tb_)) return k;
             double q = x_[4], qd = x_[5];
             full_step_.apply(q, qd, seg_.ax0, seg_.ax1);
             const Base b = seg_.at(tb_);
@@ -143,6 +145,11 @@ private:
         hold_until_ = t + settle_hold_s;
     }
 
+    // [t, tb] is the whole input step full_step_ advances over.
+    bool is_full_step(double t, double tb) const {
+        return std::abs(tb - t - full_step_.tau) <= core::tol::relative * full_step_.tau;
+    }
+
     Base probe(double t) const { return seg_.at(std::min(tb_, probe_time(t, tb_))); }
 
     // Rest: the exact oscillator to the segment's end, or to the first failure of rest.
@@ -154,7 +161,7 @@ private:
         }
         const double q0 = x_[4], qd0 = x_[5];
         const Base b0 = seg_.at(t);
-        const bool full = t == seg_.tk && std::abs(tb_ - t - full_step_.tau) <= 1e-9 * full_step_.tau;
+        const bool full = t == seg_.tk && is_full_step(t, tb_);
         auto state_at = [&](double tt) {
             double q = q0, qd = qd0;
             if (full && tt == tb_)
@@ -236,62 +243,58 @@ private:
     // unloading, located by TOMS 748 on the exact solution.
     double advance_slide(double t) {
         const SlideSegment sl(g_, m_.sigma, x_, seg_.at(t), seg_.ax1, seg_.G1);
-        const double sg = static_cast<double>(m_.sigma), tau1 = tb_ - t;
+        const double tau1 = tb_ - t;
         const SlideSegment::Point p0 = sl.at(0.0), p1 = sl.at(tau1);
+        const EventAt<Ev> ev = slide_event(sl, p0, p1, tau1);
+        const SlideSegment::Point pe = ev.event == Ev::none ? p1 : sl.at(ev.t_s);
+        commit_slide(sl, p0, pe, ev.t_s);
+        if (ev.event == Ev::none) {
+            a_end_ = pe.a;
+            end_valid_ = true;
+            end_t_ = tb_;
+            return tb_;
+        }
+        const double te = t + ev.t_s;
+        end_valid_ = false;
+        handle(ev.event, te);
+        return te;
+    }
+
+    // The first event of the slide sl over (0, tau1] (p0, p1 its ends): an edge unloading or
+    // the slip stopping, also where sigma u' dips below 0 inside the segment.
+    EventAt<Ev> slide_event(const SlideSegment& sl, const SlideSegment::Point& p0,
+                            const SlideSegment::Point& p1, double tau1) const {
+        const double sg = static_cast<double>(m_.sigma);
         auto value = [&](Ev e, const SlideSegment::Point& p) {
             return e == Ev::stop ? sg * p.v : e == Ev::unload_left ? p.a.NL : p.a.NR;
         };
-        Ev first = Ev::none;
-        double tau_ev = tau1;
-        for (Ev e : {Ev::unload_left, Ev::unload_right, Ev::stop}) {
+        const std::array<Ev, 3> events = {Ev::unload_left, Ev::unload_right, Ev::stop};
+        return first_event(events, tau1, [&](Ev e) -> std::optional<double> {
             auto f = [&](double tau) { return value(e, sl.at(tau)); };
             const double f0 = value(e, p0), f1 = value(e, p1);
-            bool hit = false;
-            double te = 0.0;
-            if (f1 < 0.0) {
-                hit = true;
-                if (f0 > 0.0) {
-                    te = toms748_root(f, 0.0, tau1, f0, f1);
-                } else if (f0 == 0.0) {  // a slip starting from 0: its next stop
-                    const double ta = 1e-6 * tau1, fa = f(ta);
-                    if (fa > 0.0) te = toms748_root(f, ta, tau1, fa, f1);
-                }
-            } else if (e == Ev::stop && f0 > 0.0 && sg * p0.a.Xdd < 0.0 && sg * p1.a.Xdd > 0.0) {
-                auto slope = [&](double tau) { return sg * sl.at(tau).a.Xdd; };
-                const double tm = toms748_root(slope, 0.0, tau1, sg * p0.a.Xdd, sg * p1.a.Xdd);
-                const double fm = f(tm);
-                if (fm < 0.0) {
-                    hit = true;
-                    te = toms748_root(f, 0.0, tm, f0, fm);
-                }
-            }
-            if (hit && (first == Ev::none || te < tau_ev)) {
-                first = e;
-                tau_ev = te;
-            }
-        }
-        const SlideSegment::Point pe = first == Ev::none ? p1 : sl.at(tau_ev);
-        if ((p0.qd > 0.0) != (pe.qd > 0.0) && p0.qd != 0.0 && tau_ev > 0.0) {
+            // A slip starting from 0 (a reversal) stops at its next crossing.
+            if (f1 < 0.0) return sign_change(f, 0.0, tau1, f0, f1);
+            if (e != Ev::stop) return std::nullopt;
+            auto slope = [&](double tau) { return sg * sl.at(tau).a.Xdd; };
+            return dip_below_zero(f, slope, 0.0, tau1, f0, sg * p0.a.Xdd, sg * p1.a.Xdd);
+        });
+    }
+
+    // The slide sl taken from p0 to pe, tau_s later: the state, the peak of |q| where q'
+    // changes sign inside it, the time and the step.
+    void commit_slide(const SlideSegment& sl, const SlideSegment::Point& p0,
+                      const SlideSegment::Point& pe, double tau_s) {
+        if ((p0.qd > 0.0) != (pe.qd > 0.0) && p0.qd != 0.0 && tau_s > 0.0) {
             auto rate = [&](double tau) { return sl.at(tau).qd; };
-            rec_.modal_peak(sl.at(toms748_root(rate, 0.0, tau_ev, p0.qd, pe.qd)).q);
+            rec_.modal_peak(sl.at(toms748_root(rate, 0.0, tau_s, p0.qd, pe.qd)).q);
         }
         x_[0] = pe.u;
         x_[1] = pe.v;
         x_[4] = pe.q;
         x_[5] = pe.qd;
         rec_.observe(m_, x_);
-        rec_.time_in(Mode::slide, tau_ev);
+        rec_.time_in(Mode::slide, tau_s);
         rec_.step();
-        if (first == Ev::none) {
-            a_end_ = pe.a;
-            end_valid_ = true;
-            end_t_ = tb_;
-            return tb_;
-        }
-        const double te = t + tau_ev;
-        end_valid_ = false;
-        handle(first, te);
-        return te;
     }
 
     // Event functions of the mode, positive while it holds; a the accelerations at x (a state,
@@ -366,8 +369,9 @@ private:
             const FlexState& x1 = dp_.x1();
             const FlexAccel& a1 = a_last_;  // f(x1, t1), the last stage
             const StepExtension dense{dp_, t, h};
-            double t_ev = t1;
-            const Ev first = first_event(dense, x0, x1, a1, t, t1, t_ev);
+            const EventAt<Ev> ev = first_event_in(dense, x0, x1, a1, t, t1);
+            const Ev first = ev.event;
+            const double t_ev = ev.t_s;
             x_ = first == Ev::none ? x1 : dense(t_ev);
             observe_peaks(dense, x0, x_, t, t_ev);
             rec_.time_in(m_.mode, t_ev - t);
@@ -407,43 +411,17 @@ private:
     // The first event inside the accepted step [t, t1]: a sign change of its function from
     // positive (or from 0 while rising: the state an event just set) to negative; an impact
     // also where theta dips below 0 and rises again inside the step.
-    Ev first_event(const StepExtension& dense, const FlexState& x0, const FlexState& x1,
-                   const FlexAccel& a1, double t, double t1, double& t_ev) const {
-        Ev first = Ev::none;
-        t_ev = t1;
-        for (Ev e : events()) {
-            if (e == Ev::none) continue;
-            const double f1 = event_value(e, x1, a1);
+    EventAt<Ev> first_event_in(const StepExtension& dense, const FlexState& x0,
+                               const FlexState& x1, const FlexAccel& a1, double t,
+                               double t1) const {
+        return first_event(events(), t1, [&](Ev e) -> std::optional<double> {
             auto fe = [&](double tq) { return event_at(e, dense, tq); };
-            bool hit = false;
-            double te = t;
-            if (f1 < 0.0) {
-                const double f0 = event_value(e, x0, a0_);
-                hit = true;
-                if (f0 > 0.0) {
-                    te = toms748_root(fe, t, t1, f0, f1);
-                } else if (f0 == 0.0) {
-                    // Rising out of 0 (theta after an impact, a slip after a reversal, a
-                    // corner at lift-off) the event is the next crossing, not this instant.
-                    const double ta = t + 1e-6 * (t1 - t);
-                    const double fa = fe(ta);
-                    if (fa > 0.0) te = toms748_root(fe, ta, t1, fa, f1);
-                }
-            } else if (e == Ev::impact && x0[2] > 0.0 && x0[3] < 0.0 && x1[3] > 0.0) {
-                auto rate = [&](double tq) { return dense.at(tq, 3); };
-                const double tm = toms748_root(rate, t, t1, x0[3], x1[3]);
-                const double th_m = dense.at(tm, 2);
-                if (th_m < 0.0) {
-                    hit = true;
-                    te = toms748_root(fe, t, tm, x0[2], th_m);
-                }
-            }
-            if (hit && (first == Ev::none || te < t_ev)) {
-                first = e;
-                t_ev = te;
-            }
-        }
-        return first;
+            const double f1 = event_value(e, x1, a1);
+            if (f1 < 0.0) return sign_change(fe, t, t1, event_value(e, x0, a0_), f1);
+            if (e != Ev::impact) return std::nullopt;
+            auto rate = [&](double tq) { return dense.at(tq, 3); };
+            return dip_below_zero(fe, rate, t, t1, x0[2], x0[3], x1[3]);
+        });
     }
 
     // Peaks of theta and |q| inside a step: where theta' or q' changes sign.
@@ -558,6 +536,36 @@ private:
     double hold_until_ = -1.0;
 };
 
+// The flexible engine as run_segments drives it: rest runs on the exact oscillator, the other
+// modes one segment at a time.
+class FlexBody {
+public:
+    FlexBody(const BaseMotion& bm, const Options& o, FlexRecorder& rec, FlexEngine& engine)
+        : bm_(bm), g_mps2_(o.g_mps2), rec_(rec), engine_(engine) {}
+
+    double t_k(std::size_t k) const { return bm_.t_k(k); }
+    bool overturned() const { return rec_.overturned(); }
+    void sample(std::size_t k, double tb) { engine_.sample(tb, bm_.sample(k + 1)); }
+    bool ends_at(double tb) const { return tb >= bm_.min_end_s() && engine_.settled(g_mps2_); }
+    RestRun rest_run(std::size_t k, std::size_t n_seg) {
+        double settled_at = -1.0;
+        const std::size_t next = engine_.rest_run(bm_, k, n_seg, settled_at);
+        return {next, settled_at >= 0.0};
+    }
+    double advance(std::size_t& k, double t, double tb) {
+        if (k != k_seg_) seg_ = bm_.linear_segment(k_seg_ = k);
+        return engine_.advance(seg_, t, tb);
+    }
+
+private:
+    const BaseMotion& bm_;
+    const double g_mps2_;
+    FlexRecorder& rec_;
+    FlexEngine& engine_;
+    std::size_t k_seg_ = std::numeric_limits<std::size_t>::max();
+    Segment seg_;
+};
+
 }  // namespace
 
 FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, const Options& o,
@@ -565,36 +573,11 @@ FlexibleResult run_flexible_event(const FlexGeometry& g, const BaseMotion& bm, c
     FlexibleResult out;
     FlexRecorder rec(g, o, out);
     FlexEngine engine(g, o, bm, rec, rigid_limit_hz);
-    const std::size_t n_seg = bm.segments(o.tail_s);
-    auto segment = [&](std::size_t k) { return bm.linear_segment(k); };
-    engine.start(segment(0).at(probe_time(0.0, bm.dt())));
+    engine.start(bm.linear_segment(0).at(probe_time(0.0, bm.dt())));
     engine.sample(0.0, bm.sample(0));
-    double t_end = bm.t_k(n_seg);
-    for (std::size_t k = 0; k < n_seg; ++k) {
-        double settled_at = -1.0;
-        k = engine.rest_run(bm, k, n_seg, settled_at);
-        if (settled_at >= 0.0) {
-            t_end = settled_at;
-            break;
-        }
-        if (k == n_seg) break;
-        const Segment s = segment(k);
-        const double tb = bm.t_k(k + 1);
-        for (double t = bm.t_k(k); t < tb && !rec.overturned();) t = engine.advance(s, t, tb);
-        if (rec.overturned()) {
-            t_end = out.summary.base.overturn_time_s.value_or(tb);
-            break;
-        }
-        engine.sample(tb, bm.sample(k + 1));
-        if (tb >= bm.min_end_s() && engine.settled(o.g_mps2)) {
-            t_end = tb;
-            break;
-        }
-    }
-    // The run ends with the body as it is: the rule applies to that state too.
-    if (!rec.overturned()) rec.check_overturn(engine.mode(), engine.state(), t_end, t_end >= bm.quiet_from_s());
-    if (rec.overturned()) t_end = out.summary.base.overturn_time_s.value_or(t_end);
-    rec.finish("event", t_end, bm.pga_mps2(), std::abs(engine.state()[0]), 0.0);
+    FlexBody body(bm, o, rec, engine);
+    const RunEnd run = run_segments(body, bm.segments(o.tail_s));
+    rec.end_run(engine.mode(), engine.state(), run.end_s, bm, "event");
     return out;
 }
 

@@ -146,12 +146,10 @@ FlexAccel rock_by_projection(const Mat4& A, const std::array<double, 4>& f, Vec2
     // J^T A J = [[jphi . A jphi, A jphi . e_q], [., A_qq]]; J^T r = [jphi . r, r_q].
     const double k00 = dot4(jphi, ajphi), k01 = ajphi[3], k11 = A[3][3];
     const double r0 = dot4(jphi, r), r1 = r[3];
-    const double det = k00 * k11 - k01 * k01;
-    if (!(det > 0.0))
-        throw NumericalError("flexible-body equations: the rocking mass matrix is not positive definite");
+    const auto [phidd, qdd] = solve_phi_q(k00, k01, k11, r0, r1, "rocking mass matrix");
     FlexAccel a;
-    a.phidd = (r0 * k11 - k01 * r1) / det;
-    a.qdd = (k00 * r1 - k01 * r0) / det;
+    a.phidd = phidd;
+    a.qdd = qdd;
     a.Xdd = c[0] + jphi[0] * a.phidd;
     a.Ydd = c[1] + jphi[1] * a.phidd;
     const std::array<double, 4> acc = {a.Xdd, a.Ydd, a.phidd, a.qdd};

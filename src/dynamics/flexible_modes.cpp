@@ -161,12 +161,10 @@ FlexAccel flex_flight_accel(const FlexGeometry& g, const Attitude& p, Base base)
     const double a12 = g.ms * (g.Mh / g.M - g.hs), a22 = g.ms * rm;
     const double r1 = -2.0 * g.ms * rm * p.q * p.qd * p.phid;
     const double r2 = g.ms * rm * p.q * p.phid * p.phid - g.k * p.q - g.c * p.qd;
-    const double det = a11 * a22 - a12 * a12;
-    if (!(det > 0.0))
-        throw NumericalError("flexible-body equations: the mass matrix is not positive definite");
+    const auto [phidd, qdd] = solve_phi_q(a11, a12, a22, r1, r2, "mass matrix");
     FlexAccel a;
-    a.phidd = (r1 * a22 - a12 * r2) / det;
-    a.qdd = (a11 * r2 - a12 * r1) / det;
+    a.phidd = phidd;
+    a.qdd = qdd;
     const auto B = momentum_rate(g, p, e, a.phidd, a.qdd);
     a.Xdd = -base.ax - B[0] / g.M;
     a.Ydd = -base.G - B[1] / g.M;

@@ -90,6 +90,13 @@ FlexRecorder::FlexRecorder(const FlexGeometry& g, const Options& o, FlexibleResu
     : g_(g), o_(o), out_(out),
       ridge_energy_J_{ridge_energy_J(g, -1, o.g_mps2), ridge_energy_J(g, 1, o.g_mps2)} {}
 
+void FlexRecorder::end_run(const FlexMode& m, const FlexState& x, double end_s,
+                           const BaseMotion& bm, const char* integrator) {
+    if (!overturned()) check_overturn(m, x, end_s, end_s >= bm.quiet_from_s());
+    if (overturned()) end_s = out_.summary.base.overturn_time_s.value_or(end_s);
+    finish(integrator, end_s, bm.pga_mps2(), std::abs(x[0]), 0.0);
+}
+
 void FlexRecorder::check_overturn(const FlexMode& m, const FlexState& x, double t_s,
                                   bool input_ended) {
     if (m.mode != Mode::rock && m.mode != Mode::slide_rock) return;

@@ -118,7 +118,7 @@ public:
                              std::isfinite(st.om),
                          "integrator state is finite");
         FREESTAND_EXPECT(st.s == 1 || st.s == -1, "active edge is +1 or -1");
-        FREESTAND_EXPECT(st.mode == Mode::flight || st.th >= -1e-9,
+        FREESTAND_EXPECT(st.mode == Mode::flight || st.th >= -theta_round_off_rad,
                          "uplift angle is not negative in contact");
         FREESTAND_EXPECT(st.mode != Mode::rest || (st.v == 0.0 && st.th == 0.0 && st.om == 0.0),
                          "a block at rest does not move");
@@ -184,8 +184,29 @@ private:
     ContactLog log_{summary_, impacts_};
 };
 
+/// Enters the mode k starts (a transition on rec): a body leaving contact takes its flight
+/// state, one coming to rest stops slipping.
+inline void enter_mode(const Geometry& g, Recorder& rec, BlockState& st, const Start& k) {
+    rec.transition(st.mode, k.mode);
+    if (k.mode == Mode::flight && st.mode != Mode::flight)
+        st.fl = to_flight(g, st.s, st.u, st.v, st.th, st.om);
+    st.mode = k.mode;
+    st.s = k.s;
+    st.sigma = k.sigma;
+    if (k.mode == Mode::rest) st.v = 0.0;
+}
+
 /// Initial mode from Options (initial rotation / slide velocity) or from rest.
 BlockState initial_state(const Geometry& g, const Options& o, Base base0, Base probe);
+
+/// The initial state (initial_state) entered, observed and sampled at t = 0 on rec.
+BlockState start_block(const Geometry& g, const Options& o, Recorder& rec, Base base0,
+                       Base probe);
+
+/// The result of a run that ended as run says: a run that reached its input's end applies the
+/// overturning rule to the state it ends in.
+SimulationResult finish_block(Recorder& rec, const BlockState& st, const BaseMotion& bm,
+                              RunEnd run, const char* integrator);
 
 SimulationResult run_event_driven(const Geometry& g, const BaseMotion& base, const Options& o);
 SimulationResult run_central_difference(const Geometry& g, const BaseMotion& base,

@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/steps.hpp"
 #include "core/limits.hpp"
+#include "core/tolerances.hpp"
 #include "core/units.hpp"
 #include "dynamics/resample.hpp"
 #include "dynamics/simulate.hpp"
@@ -66,7 +67,7 @@ double sample_at(const core::Record& rec, double t) {
     const double x = t / rec.dt_s;
     const auto i = static_cast<std::size_t>(std::floor(x));
     if (i + 1 >= rec.accel_mps2.size())
-        return i + 1 == rec.accel_mps2.size() && x - static_cast<double>(i) < 1e-9
+        return i + 1 == rec.accel_mps2.size() && x - static_cast<double>(i) < core::tol::relative
                    ? rec.accel_mps2.back()
                    : 0.0;
     const double w = x - static_cast<double>(i);

@@ -209,4 +209,21 @@ BlockState initial_state(const Geometry& g, const Options& o, Base base0, Base p
     return st;
 }
 
+BlockState start_block(const Geometry& g, const Options& o, Recorder& rec, Base base0,
+                       Base probe) {
+    BlockState st = initial_state(g, o, base0, probe);
+    rec.transition(Mode::rest, st.mode);
+    if (st.mode == Mode::flight) st.fl = to_flight(g, st.s, st.u, st.v, st.th, st.om);
+    rec.observe(st);
+    rec.sample(0.0, st, base0);
+    return st;
+}
+
+SimulationResult finish_block(Recorder& rec, const BlockState& st, const BaseMotion& bm,
+                              RunEnd run, const char* integrator) {
+    // The run ends with the body as it is: the rule applies to that state too.
+    if (!run.stopped) rec.check_overturn(st, run.end_s, run.end_s >= bm.quiet_from_s());
+    return rec.finish(st, run.end_s, integrator);
+}
+
 }  // namespace freestand::dynamics::detail

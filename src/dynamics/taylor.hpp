@@ -288,13 +288,9 @@ inline double shortened(double h, double excess) {
     return f < 1.0 ? h * f : 0.5 * h;
 }
 
-// Rock: I_O theta'' = -M R [G s + s_edge xg'' c] (docs/methods.md s.3), G and xg'' linear in tau.
-inline double rock_step(const Geometry& g, const ContactStart& x0, double h, double rel_tol,
-                        double abs_tol, ContactSeries& S) {
-    const auto i = static_cast<std::size_t>(Geometry::index(x0.s));
-    const double kr = g.k_rock[i];
-    const double A0 = static_cast<double>(x0.s) * x0.ax0, A1 = static_cast<double>(x0.s) * x0.ax1;
-    double sn[K], c[K];
+// The rock series' constant terms from x0: theta, theta' and the slip's u (held: degree 0), sin
+// and cos of alpha - theta; returns theta's coefficients.
+inline double* start_rock_series(const ContactStart& x0, ContactSeries& S, double* sn, double* c) {
     double* th = S.th.data();
     th[0] = x0.th;
     th[1] = x0.om;
@@ -302,6 +298,17 @@ inline double rock_step(const Geometry& g, const ContactStart& x0, double h, dou
     S.nu = 0;
     sn[0] = x0.sn;
     c[0] = x0.c;
+    return th;
+}
+
+// Rock: I_O theta'' = -M R [G s + s_edge xg'' c] (docs/methods.md s.3), G and xg'' linear in tau.
+inline double rock_step(const Geometry& g, const ContactStart& x0, double h, double rel_tol,
+                        double abs_tol, ContactSeries& S) {
+    const auto i = static_cast<std::size_t>(Geometry::index(x0.s));
+    const double kr = g.k_rock[i];
+    const double A0 = static_cast<double>(x0.s) * x0.ax0, A1 = static_cast<double>(x0.s) * x0.ax1;
+    double sn[K], c[K];
+    double* th = start_rock_series(x0, S, sn, c);
     const Tolerance tol(x0.th, x0.om, rel_tol, abs_tol);
     th[2] = -kr * (x0.G0 * sn[0] + A0 * c[0]) * 0.5;
     double hn2 = 1.0, hn1 = h, hn = h * h;  // h^(n-2), h^(n-1), h^n for n = k + 2
@@ -408,13 +415,7 @@ bool rock_step_fixed(const Geometry& g, const ContactStart& x0, double h, const 
     const double kr = -g.k_rock[i];
     const double A0 = static_cast<double>(x0.s) * x0.ax0, A1 = static_cast<double>(x0.s) * x0.ax1;
     double sn[D - 1], c[D - 1], hp[D + 1];
-    double* th = S.th.data();
-    th[0] = x0.th;
-    th[1] = x0.om;
-    S.u[0] = x0.u;
-    S.nu = 0;
-    sn[0] = x0.sn;
-    c[0] = x0.c;
+    double* th = start_rock_series(x0, S, sn, c);
     hp[0] = 1.0;
 #pragma GCC unroll 16
     for (int k = 1; k <= D; ++k) hp[k] = hp[k - 1] * h;
