@@ -377,7 +377,7 @@ public:
         if (h < min_step_s && h < h_full)
             throw NumericalError(fmt::format(
                 "event-driven integrator: step below 1e-14 s at t = {} s ({})", t,
-                mode_name(st_.mode)));
+                to_string(st_.mode)));
         step_.took(h, h_full);
         rec_.step();
         return h;
