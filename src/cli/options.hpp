@@ -64,6 +64,12 @@ inline std::optional<std::string> opt_string(const po::variables_map& vm, const 
     return vm[name].as<std::string>();
 }
 
+/// The option's number (parse_double of its text, UsageError naming --name), when given.
+inline std::optional<double> opt_number(const po::variables_map& vm, const char* name) {
+    if (!vm.count(name)) return std::nullopt;
+    return parse_double(vm[name].as<std::string>(), std::string("--") + name);
+}
+
 /// The box of --block b=HALF_WIDTH,h=HALF_HEIGHT[,m=KG], --cg and --inertia, one parser for
 /// classify, rock and simulate (the api's requests check it with sliding::make_block: a uniform
 /// box unless a CG or an inertia is given; m defaults to 1 kg). --cg is x=OFFSET,h=HEIGHT (x
