@@ -39,7 +39,7 @@ std::vector<double> parse_levels(const std::string& text, const std::string& opt
 /// "K/N" with 1 <= K <= N <= 100000 -> {K, N}; UsageError naming option otherwise.
 std::array<int, 2> parse_shard(const std::string& text, const std::string& option);
 
-/// One number; accepts a trailing unit suffix listed in allowed_suffixes ("g", "Hz", "s").
+/// One finite number (core::text::parse_number); UsageError naming option otherwise.
 double parse_double(const std::string& text, const std::string& option);
 
 /// A whole number in [lo, hi] (counts, seeds, thread numbers; "1e2" is 100); UsageError naming
