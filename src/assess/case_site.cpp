@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/limits.hpp"
+#include "core/tolerances.hpp"
 #include "core/units.hpp"
 #include "spectra/design.hpp"
 
@@ -35,7 +36,7 @@ std::optional<TargetFile> read_target(TableReader& r, const std::string& key,
     } catch (const Error& e) {
         r.fail(key, fmt::format("cannot use target file \"{}\": {}", *given, e.what()));
     }
-    if (std::abs(t.spectrum.damping - expected_damping) > 1e-9) {
+    if (std::abs(t.spectrum.damping - expected_damping) > core::tol::damping_equal) {
         r.fail(key, fmt::format("target file \"{}\" has damping {}; expected {}", *given,
                                 t.spectrum.damping, expected_damping));
     }

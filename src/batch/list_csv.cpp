@@ -3,40 +3,18 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <map>
-#include <optional>
 
 #include "batch/list.hpp"
 #include "batch/list_detail.hpp"
 #include "core/csv_table.hpp"
+#include "core/text_parse.hpp"
 
 namespace freestand::batch {
 
 namespace {
 
-std::string trim(const std::string& s) {
-    const std::size_t a = s.find_first_not_of(" \t");
-    if (a == std::string::npos) return "";
-    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
-std::optional<double> to_number(const std::string& token) {
-    double v = 0.0;
-    const char* end = token.data() + token.size();
-    const auto [ptr, ec] = std::from_chars(token.data(), end, v);
-    if (ec != std::errc() || ptr != end || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
-
-std::optional<long long> to_integer(const std::string& token) {
-    long long v = 0;
-    const char* end = token.data() + token.size();
-    const auto [ptr, ec] = std::from_chars(token.data(), end, v);
-    if (ec != std::errc() || ptr != end) return std::nullopt;
-    return v;
-}
+std::string trim(const std::string& s) { return std::string(core::text::trim(s)); }
 
 // Column name -> index, from the header row.
 std::map<std::string, std::size_t> read_header(const core::CsvRecord& header,
@@ -63,27 +41,26 @@ std::map<std::string, std::size_t> read_header(const core::CsvRecord& header,
 
 std::vector<double> read_levels(const std::string& cell, const SourceLocation& at) {
     std::vector<double> out;
-    std::size_t start = 0;
-    for (int item = 1;; ++item) {
-        const std::size_t semi = cell.find(';', start);
-        const std::string token = trim(cell.substr(start, semi == std::string::npos ? semi
-                                                                                    : semi - start));
-        const auto v = to_number(token);
+    int item = 0;
+    for (const std::string& text : core::text::split(cell, ';')) {
+        ++item;
+        const std::string token = trim(text);
+        const auto v = core::text::parse_number(token);
         if (!v) {
             throw InputError(at, fmt::format("item {} \"{}\" of \"{}\" is not a number; expected "
                                              "levels in g separated by ';', e.g. 0.1;0.2;0.3",
                                              item, token, cell));
         }
         out.push_back(*v);
-        if (semi == std::string::npos) return out;
-        start = semi + 1;
     }
+    return out;
 }
 
 long long read_integer(const std::string& cell, const SourceLocation& at) {
-    const auto v = to_integer(cell);
-    if (!v) throw InputError(at, fmt::format("\"{}\" is not a whole number", cell));
-    return *v;
+    long long v = 0;
+    if (!core::text::parse_integer(cell, v))
+        throw InputError(at, fmt::format("\"{}\" is not a whole number", cell));
+    return v;
 }
 
 // One row's entry: the cells of the columns given, empty cells keeping the case's values.

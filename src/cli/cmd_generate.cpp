@@ -52,11 +52,6 @@ po::options_description generate_options() {
     return desc;
 }
 
-std::optional<double> number(const po::variables_map& vm, const char* option) {
-    if (!vm.count(option)) return std::nullopt;
-    return parse_double(vm[option].as<std::string>(), std::string("--") + option);
-}
-
 std::optional<motion::Range> range(const po::variables_map& vm, const char* option) {
     if (!vm.count(option)) return std::nullopt;
     const std::vector<double> v =
@@ -73,17 +68,17 @@ api::GenerateRequest generate_request(const po::variables_map& vm) {
     r.design = design_values(vm);
     if (vm.count("target-file")) r.target_file = vm["target-file"].as<std::string>();
     if (vm.count("target-file-10")) r.target_file_10 = vm["target-file-10"].as<std::string>();
-    r.vertical_ratio = number(vm, "vertical-ratio");
+    r.vertical_ratio = opt_number(vm, "vertical-ratio");
     if (vm.count("seed-record"))
         for (const std::string& group : vm["seed-record"].as<std::vector<std::string>>())
             for (const std::string& file : split_list(group)) r.seed_records.emplace_back(file);
     if (vm.count("components")) r.components = split_list(vm["components"].as<std::string>());
-    r.duration_s = number(vm, "duration");
-    r.dt_s = number(vm, "dt");
+    r.duration_s = opt_number(vm, "duration");
+    r.dt_s = opt_number(vm, "dt");
     r.seed = parse_whole(vm["seed"].as<std::string>(), "--seed", 0, 9.0e15);
     r.va_range_mps_per_g = range(vm, "va-range");
     r.adv2_range = range(vm, "adv2-range");
-    r.da_max_m_per_g = number(vm, "da-max");
+    r.da_max_m_per_g = opt_number(vm, "da-max");
     r.timing = !vm["no-timing"].as<bool>();
     return r;
 }

@@ -35,11 +35,6 @@ po::options_description rock_options() {
     return desc;
 }
 
-std::optional<double> opt_number(const po::variables_map& vm, const char* option) {
-    if (!vm.count(option)) return std::nullopt;
-    return parse_double(vm[option].as<std::string>(), std::string("--") + option);
-}
-
 std::vector<std::filesystem::path> opt_paths(const po::variables_map& vm, const char* option) {
     if (!vm.count(option)) return {};
     return spectrum_paths(vm[option].as<std::string>(), std::string("--") + option);

@@ -27,11 +27,6 @@ po::options_description slide_options() {
     return desc;
 }
 
-std::optional<double> opt_number(const po::variables_map& vm, const char* option) {
-    if (!vm.count(option)) return std::nullopt;
-    return parse_double(vm[option].as<std::string>(), std::string("--") + option);
-}
-
 api::SlideRequest slide_request(const po::variables_map& vm) {
     if (vm.count("fes-hz") == vm.count("spectrum10"))
         throw UsageError("give exactly one of --fes-hz and --spectrum10 (see freestand slide --help)");

@@ -2,15 +2,6 @@
 
 namespace freestand::cli {
 
-namespace design_options_detail {
-
-std::optional<double> number(const po::variables_map& vm, const char* name) {
-    if (!vm.count(name)) return std::nullopt;
-    return parse_double(vm[name].as<std::string>(), std::string("--") + name);
-}
-
-}  // namespace design_options_detail
-
 void add_design_options(po::options_description& desc) {
     desc.add_options()("pga", po::value<std::string>(),
                        "rg1.60, is1893: peak ground acceleration, g (> 0)")(
@@ -24,13 +15,12 @@ void add_design_options(po::options_description& desc) {
 }
 
 api::DesignValues design_values(const po::variables_map& vm) {
-    using design_options_detail::number;
     api::DesignValues v;
-    v.pga_g = number(vm, "pga");
-    v.sds_g = number(vm, "sds");
-    v.sd1_g = number(vm, "sd1");
-    v.tl_s = number(vm, "tl");
-    v.ag_g = number(vm, "ag");
+    v.pga_g = opt_number(vm, "pga");
+    v.sds_g = opt_number(vm, "sds");
+    v.sd1_g = opt_number(vm, "sd1");
+    v.tl_s = opt_number(vm, "tl");
+    v.ag_g = opt_number(vm, "ag");
     v.type = opt_string(vm, "type");
     v.ground = opt_string(vm, "ground");
     v.soil = opt_string(vm, "soil");

@@ -3,13 +3,13 @@
 #include "sliding/block_spec.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
+#include "core/text_parse.hpp"
 #include "cli/usage_error.hpp"
 
 namespace freestand::cli {
@@ -39,13 +39,10 @@ std::optional<po::variables_map> parse_options(const std::string& command, const
 }
 
 double parse_double(const std::string& text, const std::string& option) {
-    double value = 0.0;
-    const char* first = text.data();
-    const char* last = text.data() + text.size();
-    auto [ptr, ec] = std::from_chars(first, last, value);
-    if (ec != std::errc() || ptr != last || !std::isfinite(value))
+    const std::optional<double> value = core::text::parse_number(text);
+    if (!value)
         throw UsageError(fmt::format("{}: expected a finite number; got \"{}\"", option, text));
-    return value;
+    return *value;
 }
 
 std::uint64_t parse_whole(const std::string& text, const std::string& option, double lo, double hi) {
@@ -57,15 +54,7 @@ std::uint64_t parse_whole(const std::string& text, const std::string& option, do
 }
 
 std::vector<std::string> split_list(const std::string& text) {
-    std::vector<std::string> items;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = text.find(',', start);
-        items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos
-                                                                       : comma - start));
-        if (comma == std::string::npos) return items;
-        start = comma + 1;
-    }
+    return core::text::split(text, ',');
 }
 
 std::vector<double> parse_double_list(const std::string& text, const std::string& option) {
@@ -76,15 +65,7 @@ std::vector<double> parse_double_list(const std::string& text, const std::string
 
 std::vector<double> parse_levels(const std::string& text, const std::string& option) {
     if (text.find(':') == std::string::npos) return parse_double_list(text, option);
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t colon = text.find(':', start);
-        parts.push_back(text.substr(start, colon == std::string::npos ? std::string::npos
-                                                                       : colon - start));
-        if (colon == std::string::npos) break;
-        start = colon + 1;
-    }
+    const std::vector<std::string> parts = core::text::split(text, ':');
     if (parts.size() != 3)
         throw UsageError(fmt::format("{}: expected START:STOP:STEP or a comma list; got \"{}\"",
                                      option, text));
@@ -103,12 +84,9 @@ std::vector<double> parse_levels(const std::string& text, const std::string& opt
 std::array<int, 2> parse_shard(const std::string& text, const std::string& option) {
     const std::size_t slash = text.find('/');
     int k = 0, n = 0;
-    const auto whole = [&](const std::string& t, int& v) {
-        const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-        return r.ec == std::errc() && r.ptr == t.data() + t.size();
-    };
-    if (slash == std::string::npos || !whole(text.substr(0, slash), k) ||
-        !whole(text.substr(slash + 1), n) || n < 1 || n > 100000 || k < 1 || k > n)
+    if (slash == std::string::npos || !core::text::parse_integer(text.substr(0, slash), k) ||
+        !core::text::parse_integer(text.substr(slash + 1), n) || n < 1 || n > 100000 || k < 1 ||
+        k > n)
         throw UsageError(
             fmt::format("{}: expected K/N with 1 <= K <= N <= 100000; got \"{}\"", option, text));
     return {k, n};

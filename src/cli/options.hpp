@@ -39,7 +39,7 @@ std::vector<double> parse_levels(const std::string& text, const std::string& opt
 /// "K/N" with 1 <= K <= N <= 100000 -> {K, N}; UsageError naming option otherwise.
 std::array<int, 2> parse_shard(const std::string& text, const std::string& option);
 
-/// One number; accepts a trailing unit suffix listed in allowed_suffixes ("g", "Hz", "s").
+/// One finite number (core::text::parse_number); UsageError naming option otherwise.
 double parse_double(const std::string& text, const std::string& option);
 
 /// A whole number in [lo, hi] (counts, seeds, thread numbers; "1e2" is 100); UsageError naming
@@ -62,6 +62,12 @@ std::map<std::string, double> parse_key_values(const std::string& text, const st
 inline std::optional<std::string> opt_string(const po::variables_map& vm, const char* name) {
     if (!vm.count(name)) return std::nullopt;
     return vm[name].as<std::string>();
+}
+
+/// The option's number (parse_double of its text, UsageError naming --name), when given.
+inline std::optional<double> opt_number(const po::variables_map& vm, const char* name) {
+    if (!vm.count(name)) return std::nullopt;
+    return parse_double(vm[name].as<std::string>(), std::string("--") + name);
 }
 
 /// The box of --block b=HALF_WIDTH,h=HALF_HEIGHT[,m=KG], --cg and --inertia, one parser for

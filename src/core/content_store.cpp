@@ -20,6 +20,7 @@
 #include "core/errors.hpp"
 #include "core/printable.hpp"
 #include "core/sha256.hpp"
+#include "core/text_parse.hpp"
 
 namespace freestand::core {
 
@@ -146,9 +147,7 @@ std::uint64_t cache_max_bytes_from_environment() {
     if (v == nullptr) return default_cache_max_bytes;
     const std::string text(v);
     std::uint64_t mb = 0;
-    const bool digits = !text.empty() && text.size() <= 8 &&
-                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (digits) mb = std::stoull(text);
+    const bool digits = text.size() <= 8 && text::parse_integer(text, mb);
     if (!digits || mb < 1 || mb > 10'000'000)
         throw InputError(SourceLocation{"", 0, "FREESTAND_CACHE_MAX_MB"},
                          fmt::format("'{}'; expected a whole number of MiB from 1 to 10000000",

@@ -16,6 +16,7 @@
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
+#include "core/text_parse.hpp"
 
 namespace freestand::core {
 
@@ -146,10 +147,10 @@ bool left_by_dead_process(std::string_view name, std::string_view prefix) {
     if (name.substr(0, prefix.size()) != prefix) return false;
     const std::string_view rest = name.substr(prefix.size());
     const std::size_t dash = rest.find('-');
-    if (dash == 0 || dash == std::string_view::npos || dash > 9 ||
-        rest.find_first_not_of("0123456789") != dash)
+    pid_t pid = 0;
+    if (dash == std::string_view::npos || dash > 9 ||
+        !text::parse_integer(rest.substr(0, dash), pid))
         return false;
-    const auto pid = static_cast<pid_t>(std::stol(std::string(rest.substr(0, dash))));
     // kill(pid, 0) sends nothing: ESRCH says no process has the id (EPERM: one does).
     return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
 }

@@ -20,7 +20,8 @@ inline double steps_covering(double ratio) { return std::ceil(ratio - tol::round
 /// sample would leave a step of ~1e-15 s after it (an ulp of t is 7e-15 s at 32 s).
 inline double step_to_sample(double t, double h, double sample_t) {
     constexpr double eps = std::numeric_limits<double>::epsilon();
-    return sample_t - (t + h) < 1e-12 * h + 8.0 * eps * sample_t ? sample_t - t : h;
+    constexpr double step_rounding = 1e-12;  // of h, the "1e-12 h" above
+    return sample_t - (t + h) < step_rounding * h + 8.0 * eps * sample_t ? sample_t - t : h;
 }
 
 }  // namespace freestand::core

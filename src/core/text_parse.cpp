@@ -4,6 +4,7 @@
 #include <cctype>
 #include <climits>
 #include <charconv>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,25 @@ bool parse_double(std::string_view token, double& value) {
     if (first != last && *first == '+') ++first;
     const auto [ptr, ec] = std::from_chars(first, last, value);
     return first != last && ec == std::errc() && ptr == last;
+}
+
+std::optional<double> parse_number(std::string_view token) {
+    double value = 0.0;
+    const char* last = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), last, value);
+    if (ec != std::errc() || ptr != last || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::vector<std::string> split(std::string_view text, char separator) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find(separator, start);
+        items.emplace_back(text.substr(start, end == std::string_view::npos ? end : end - start));
+        if (end == std::string_view::npos) return items;
+        start = end + 1;
+    }
 }
 
 std::string_view trim(std::string_view s) {

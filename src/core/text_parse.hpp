@@ -3,6 +3,7 @@
 /// reader of a token (record files, batch lists, command-line values) parses through these.
 #include <charconv>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,11 @@ namespace freestand::core::text {
 /// Parses a whole token as a double (leading '+' allowed). std::from_chars rejects what strtod
 /// would half-accept ("0.3x"); "nan" and "inf" parse, so callers check std::isfinite.
 bool parse_double(std::string_view token, double& value);
+
+/// The finite number a whole token spells in std::from_chars's syntax ("-0.25", ".5", "1e-3"),
+/// as command-line values and batch-list cells are read; std::nullopt for anything else: a
+/// leading '+' or blank, trailing text ("0.3x"), "nan", "inf", an empty token.
+std::optional<double> parse_number(std::string_view token);
 
 /// Parses a whole token as an integer of type Int (decimal digits, a leading '-' for signed
 /// types; no '+', no blanks): false for anything else or a value out of Int's range.
@@ -24,6 +30,10 @@ bool parse_integer(std::string_view token, Int& value) {
 
 /// Token without leading and trailing blanks (space, tab, CR).
 std::string_view trim(std::string_view s);
+
+/// "a,b,,c" split at ',' -> {"a", "b", "", "c"}: the items between separators, empty ones
+/// kept so that each caller can name them in its error; "" gives {""}.
+std::vector<std::string> split(std::string_view text, char separator);
 
 /// ASCII lower-case copy.
 std::string lower(std::string_view s);

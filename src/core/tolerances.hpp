@@ -15,6 +15,14 @@ inline constexpr double damping_equal = 1e-9;
 /// (n - 1) dt lands a rounding below it, still meets it.
 inline constexpr double duration_s = 1e-9;
 
+/// A time step meets a maximum within this, s: a dt read back from a file or taken as a mean
+/// of sample times lands an ulp above the 0.01 s it was written as, and is still that step.
+inline constexpr double dt_s = 1e-12;
+
+/// A frequency on a band's edge counts as inside within this, Hz: log-spaced check frequencies
+/// land a rounding off the band's round-number edges (0.2 Hz, 25 Hz).
+inline constexpr double band_edge_hz = 1e-12;
+
 /// Relative tolerance of "the same value" for quantities of one scale (axis ticks against
 /// their step, a grid's last point against its end).
 inline constexpr double relative = 1e-9;

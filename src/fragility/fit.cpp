@@ -20,7 +20,8 @@ using detail::mills;
 
 constexpr double kMinBeta = detail::min_beta;
 constexpr int kMaxIterations = 200;
-constexpr double kTolerance = 1e-12;
+// Fisher scoring stops once the log-likelihood moves by less than this fraction of itself.
+constexpr double kLogLikelihoodRelTol = 1e-12;
 
 struct Levels {
     std::vector<double> x;  // ln a
@@ -78,7 +79,7 @@ std::optional<Params> maximise(const Levels& l, Params start) {
         p[0] += step[0];
         p[1] += step[1];
         if (!finite(p)) return std::nullopt;
-        const bool done = std::abs(next - current) <= kTolerance * (1.0 + std::abs(next));
+        const bool done = std::abs(next - current) <= kLogLikelihoodRelTol * (1.0 + std::abs(next));
         current = next;
         if (done || 1.0 / p[1] < kMinBeta * 0.5) break;
     }

@@ -23,6 +23,10 @@ struct Centred {
 constexpr double kZ = 9.0;
 constexpr double kMaxSlope = 1.0 / detail::min_beta;
 constexpr int kMaxIterations = 200;
+// The profile's slope c is solved to this fraction of itself: far below the digits written.
+constexpr double kSlopeRelTol = 1e-13;
+// A probability this close to 0 or 1 is written as 0 or 1 (fit.hpp: level probabilities).
+constexpr double kWrittenCertain = 1e-15;
 
 double log_likelihood(const Centred& l, double z0, double c) {
     double sum = 0.0;
@@ -64,7 +68,8 @@ class Profile {
             (d1 > 0.0 ? lo : hi) = c;
             double next = d2 < 0.0 ? c - d1 / d2 : 0.5 * (lo + hi);
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            const bool done = std::abs(next - c) <= 1e-13 * (1.0 + c) || hi - lo <= 1e-13 * hi;
+            const bool done = std::abs(next - c) <= kSlopeRelTol * (1.0 + c) ||
+                              hi - lo <= kSlopeRelTol * hi;
             c = next;
             if (done) break;
         }
@@ -108,7 +113,7 @@ double probability_of(double z0) {
     if (z0 <= -kZ) return 0.0;
     if (z0 >= kZ) return 1.0;
     const double p = core::normal_cdf(z0);
-    return p < 1e-15 ? 0.0 : (p > 1.0 - 1e-15 ? 1.0 : p);
+    return p < kWrittenCertain ? 0.0 : (p > 1.0 - kWrittenCertain ? 1.0 : p);
 }
 
 }  // namespace

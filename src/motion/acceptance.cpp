@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "core/measures.hpp"
 #include "core/units.hpp"
@@ -87,7 +86,7 @@ RatioStats ratio_stats(const std::vector<double>& f, const std::vector<double>& 
         s.mean += r / static_cast<double>(f.size());
         run = r < 1.0 ? run + 1 : 0;
         s.longest_below = std::max(s.longest_below, run);
-        if (f[i] >= criteria::cap_low_hz - 1e-12 && f[i] <= criteria::cap_high_hz + 1e-12)
+        if (criteria::in_cap_band(f[i]))
             s.max_cap_band = std::max(s.max_cap_band, r);
     }
     return s;
@@ -149,9 +148,9 @@ namespace {
 // The SRP 3.7.1 reasons a record fails for, in the report's order.
 std::string srp_failures(const Acceptance& a) {
     std::string why;
-    if (a.dt_s > criteria::max_dt_s + 1e-12)
+    if (criteria::dt_too_coarse(a.dt_s))
         add_reason(why, fmt::format("dt {} s > {} s", a.dt_s, criteria::max_dt_s));
-    if (a.duration_s < criteria::min_duration_s - core::tol::duration_s)
+    if (criteria::too_short(a.duration_s))
         add_reason(why,
                    fmt::format("duration {:.3f} s < {} s", a.duration_s, criteria::min_duration_s));
     if (a.min_ratio < criteria::floor_ratio)
@@ -176,8 +175,8 @@ std::string srp_failures(const Acceptance& a) {
 
 // The criteria of srp_failures by what they need: the record's measures, its 5% spectrum, its PSD.
 bool measures_fail(const Acceptance& a) {
-    return a.dt_s > criteria::max_dt_s + 1e-12 ||
-           a.duration_s < criteria::min_duration_s - core::tol::duration_s ||
+    return criteria::dt_too_coarse(a.dt_s) ||
+           criteria::too_short(a.duration_s) ||
            std::abs(a.final_velocity_mps) >= criteria::max_final_velocity_mps ||
            std::abs(a.final_displacement_m) >= criteria::max_final_displacement_m;
 }

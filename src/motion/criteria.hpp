@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/record.hpp"
+#include "core/tolerances.hpp"
 
 namespace freestand::motion::criteria {
 
@@ -23,6 +24,19 @@ inline constexpr double min_duration_s = 20.0;
 inline constexpr double max_abs_correlation = 0.16;
 inline constexpr double max_final_velocity_mps = 1e-4;
 inline constexpr double max_final_displacement_m = 1e-4;
+
+/// True when dt is coarser than max_dt_s by more than core::tol::dt_s.
+inline bool dt_too_coarse(double dt_s) { return dt_s > max_dt_s + core::tol::dt_s; }
+/// True when a record is shorter than min_duration_s by more than core::tol::duration_s.
+inline bool too_short(double duration_s) {
+    return duration_s < min_duration_s - core::tol::duration_s;
+}
+/// True when f lies in the cap band cap_low_hz..cap_high_hz, its edges within
+/// core::tol::band_edge_hz.
+inline bool in_cap_band(double f_hz) {
+    return f_hz >= cap_low_hz - core::tol::band_edge_hz &&
+           f_hz <= cap_high_hz + core::tol::band_edge_hz;
+}
 
 /// Top of the acceptance band: 50 Hz or the Nyquist frequency 1 / (2 dt), whichever is lower.
 double band_high_for(double dt_s);

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 
-#include "core/tolerances.hpp"
 #include "core/errors.hpp"
 #include "core/random.hpp"
 #include "core/limits.hpp"
@@ -66,13 +65,13 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
     if (o.seed_records.empty()) {
         require_positive(o.dt_s, SourceLocation{"", 0, "dt_s"});
         require_positive(o.duration_s, SourceLocation{"", 0, "duration_s"});
-        if (o.dt_s > criteria::max_dt_s + 1e-12)
+        if (criteria::dt_too_coarse(o.dt_s))
             throw InputError(
                 SourceLocation{"", 0, "dt_s"},
                 fmt::format("dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s, and the Nyquist "
                             "frequency {} Hz is below the {} Hz top of the acceptance band",
                             o.dt_s, criteria::max_dt_s, 0.5 / o.dt_s, criteria::band_high_hz));
-        if (o.duration_s < criteria::min_duration_s - core::tol::duration_s)
+        if (criteria::too_short(o.duration_s))
             throw InputError(SourceLocation{"", 0, "duration_s"},
                              fmt::format("duration {} s is too short: SRP 3.7.1 needs >= {} s",
                                          o.duration_s, criteria::min_duration_s));
@@ -100,13 +99,13 @@ void check_request(const TargetSet& targets, const GenerateOptions& o) {
                                          "record needs motion to match",
                                          r.name, r.accel_mps2.size()));
         const SourceLocation where{r.source, 0, "dt"};
-        if (r.dt_s > criteria::max_dt_s + 1e-12)
+        if (criteria::dt_too_coarse(r.dt_s))
             throw InputError(
                 where,
                 fmt::format("seed record dt {} s is too coarse: SRP 3.7.1 needs dt <= {} s "
                             "(Nyquist {} Hz below the {} Hz acceptance band)",
                             r.dt_s, criteria::max_dt_s, 0.5 / r.dt_s, criteria::band_high_hz));
-        if (r.duration_s() < criteria::min_duration_s - core::tol::duration_s)
+        if (criteria::too_short(r.duration_s()))
             throw InputError(SourceLocation{r.source, 0, "duration"},
                              fmt::format("seed record lasts {:.3f} s; SRP 3.7.1 needs >= {} s",
                                          r.duration_s(), criteria::min_duration_s));

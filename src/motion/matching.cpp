@@ -76,7 +76,9 @@ double value_at(const SampledWavelet& w, std::size_t i) {
 // sinc^2(f dt); the closed-form response is of the continuous wavelet.
 double interpolation_gain(double f_hz, double dt_s) {
     const double x = units::pi * f_hz * dt_s;
-    return x < 1e-8 ? 1.0 : std::pow(std::sin(x) / x, 2);
+    // Below this sin(x) / x = 1 - x^2 / 6 is 1 in double precision (and 0 / 0 is avoided).
+    constexpr double sinc_is_one_below = 1e-8;
+    return x < sinc_is_one_below ? 1.0 : std::pow(std::sin(x) / x, 2);
 }
 
 // Samples of the `count` largest local maxima of |a|, largest first (ties by sample: the order

@@ -17,9 +17,11 @@ std::vector<double> design_grid(double control_c_hz) {
     std::vector<double> f = spectra::log_frequencies(0.01, 200.0, 100);
     for (double c : {0.25, control_c_hz, 9.0, 33.0}) f.push_back(c);
     std::sort(f.begin(), f.end());
-    f.erase(std::unique(f.begin(), f.end(),
-                        [](double a, double b) { return std::abs(a - b) <= 1e-12 * b; }),
-            f.end());
+    // A control point that meets another or a grid point is kept once; the two are the same
+    // frequency computed two ways, equal but for rounding.
+    constexpr double same_frequency_rel = 1e-12;
+    const auto same = [](double a, double b) { return std::abs(a - b) <= same_frequency_rel * b; };
+    f.erase(std::unique(f.begin(), f.end(), same), f.end());
     return f;
 }
 

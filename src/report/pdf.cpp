@@ -21,6 +21,7 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/printable.hpp"
+#include "core/text_parse.hpp"
 
 extern char** environ;
 
@@ -278,11 +279,7 @@ std::string convert(const std::filesystem::path& converter, const std::string& h
 std::filesystem::path find_pdf_converter() {
     const char* path_env = std::getenv("PATH");
     const std::string path = path_env != nullptr ? path_env : "";
-    std::size_t start = 0;
-    while (start <= path.size()) {
-        const std::size_t end = std::min(path.find(':', start), path.size());
-        const std::string dir = path.substr(start, end - start);
-        start = end + 1;
+    for (const std::string& dir : core::text::split(path, ':')) {
         if (dir.empty()) continue;  // an empty entry would mean the working folder: not searched
         const std::filesystem::path candidate = std::filesystem::path(dir) / pdf_converter_program;
         std::error_code ec;

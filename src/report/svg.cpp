@@ -83,7 +83,11 @@ constexpr std::size_t max_ticks = 12;
 std::vector<double> log_ticks(const Scale& s) {
     std::vector<double> out;
     if (!(s.lo > 0.0 && s.hi >= s.lo && std::isfinite(s.hi))) return out;
-    const double decades = std::floor(std::log10(s.hi) - std::log10(s.lo) + 1e-7) + 1.0;
+    // A span of whole decades (0.1 to 100) whose logarithms differ by a rounding short of 3
+    // still counts all of them.
+    constexpr double whole_decade_guard = 1e-7;
+    const double decades =
+        std::floor(std::log10(s.hi) - std::log10(s.lo) + whole_decade_guard) + 1.0;
     const int stride = static_cast<int>(std::ceil(decades / static_cast<double>(max_ticks)));
     for (double v = s.lo; v <= s.hi * 1.0000001 && out.size() < max_ticks;) {
         out.push_back(v);

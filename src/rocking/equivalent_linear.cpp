@@ -17,6 +17,14 @@ namespace {
 
 SourceLocation field(const char* name) { return SourceLocation{"", 0, name}; }
 
+// The roots f_e and theta0 are solved to this fraction of their scale (f_g, alpha): far below
+// any digit a report prints, yet a few hundred ulps, so that the iterations end.
+constexpr double root_rel_tol = 1e-13;
+
+// The spectral margin, a factor on the spectra, is bisected to this fraction of itself
+// (equivalent_linear.hpp: "to relative 1e-6"); reports print it to 4 significant digits.
+constexpr double margin_rel_tol = 1e-6;
+
 // Everything one trial angle needs, at one scale of the spectra.
 struct Scan {
     double p_radps;
@@ -43,12 +51,12 @@ struct Scan {
         double lo = 0.0, hi = fg, f = fg, width = fg;
         for (int it = 0; it < 200; ++it) {
             const double next = image(f);
-            if (std::abs(next - f) <= 1e-13 * fg) return next;
+            if (std::abs(next - f) <= root_rel_tol * fg) return next;
             (f - next < 0.0 ? lo : hi) = f;
             const bool shrunk = hi - lo <= 0.5 * width;
             if (shrunk) width = hi - lo;
             f = (next > lo && next < hi && (shrunk || it % 2 == 0)) ? next : 0.5 * (lo + hi);
-            if (hi - lo <= 1e-13 * fg) return f;
+            if (hi - lo <= root_rel_tol * fg) return f;
         }
         return f;
     }
@@ -65,7 +73,7 @@ struct Scan {
     }
 
     // First grid angle with demand <= capacity, refined by bisection against the previous one.
-    // The grid is alpha k / n, k = 1..n-1, closed by alpha (1 - 1e-9) so that the last interval
+    // The grid is alpha k / n, k = 1..n-1, closed by alpha (1 - core::tol::relative) so that the last interval
     // below alpha is not skipped (a demand just inside the block's reach).
     std::optional<double> theta0(int n) const {
         double prev = 0.0;
@@ -74,7 +82,7 @@ struct Scan {
                                     : alpha * (1.0 - core::tol::relative);
             if (excess_g(th) <= 0.0) {
                 double lo = prev, hi = th;
-                for (int it = 0; it < 100 && hi - lo > 1e-13 * alpha; ++it) {
+                for (int it = 0; it < 100 && hi - lo > root_rel_tol * alpha; ++it) {
                     const double mid = 0.5 * (lo + hi);
                     (excess_g(mid) <= 0.0 ? hi : lo) = mid;
                 }
@@ -121,7 +129,7 @@ void spectral_margin(const Context& c, ElResult& r) {
             }
         }
     }
-    while (hi - lo > 1e-6 * hi) {
+    while (hi - lo > margin_rel_tol * hi) {
         const double mid = 0.5 * (lo + hi);
         (c.finds(mid) ? lo : hi) = mid;
     }

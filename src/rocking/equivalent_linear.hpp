@@ -38,7 +38,8 @@ struct ElOptions {
     std::optional<double> pga_v_g;      ///< default: vertical zpa_g(), or ratio * pga_h
     std::optional<double> restitution;  ///< measured r overriding Housner's (docs/methods.md s.7)
     double fs_required = 1.5;           ///< required alpha / theta0
-    int grid_points = 2000;             ///< trial angles alpha k / n, k = 1..n-1, alpha (1 - 1e-9)
+    /// Trial angles alpha k / n, k = 1..n-1, then alpha (1 - core::tol::relative).
+    int grid_points = 2000;
 };
 
 /// Result about one edge. Every empty optional has its reason set.

@@ -63,8 +63,12 @@ StepMatrices step_matrices(double omega, double zeta, double h) {
 int substeps(double f_hz, double dt_s, int min_steps_per_period) {
     if (min_steps_per_period <= 0) return 1;
     // Step h = dt / n <= T / m  <=>  n >= dt m f.
+    // A product meant to be whole (0.005 s x 10 x 200 Hz) is not rounded one sub-step up. Not
+    // core::steps_covering: its larger guard could take a sub-step off a product a little above
+    // a whole number and move the shipped spectra.
+    constexpr double substep_rounding_guard = 1e-12;
     const double need = dt_s * static_cast<double>(min_steps_per_period) * f_hz;
-    return std::max(1, static_cast<int>(std::ceil(need - 1e-12)));
+    return std::max(1, static_cast<int>(std::ceil(need - substep_rounding_guard)));
 }
 
 Stepper make_stepper(double f_hz, double zeta, double dt_s, int min_steps_per_period) {

@@ -199,7 +199,10 @@ void write_spectrum_csv(const Spectrum& s, const std::filesystem::path& path,
 }
 
 Spectrum combine_vector_horizontal(const Spectrum& h1, const Spectrum& h2) {
-    if (std::abs(h1.damping - h2.damping) > 1e-12)
+    // The components' spectra are computed at, or read with, one stated damping: equal to
+    // their last digits, a far tighter test than core::tol::damping_equal's against a method.
+    constexpr double same_damping = 1e-12;
+    if (std::abs(h1.damping - h2.damping) > same_damping)
         throw InputError(SourceLocation{"", 0, "damping"},
                          fmt::format("cannot combine spectra at dampings {} and {}; expected equal",
                                      h1.damping, h2.damping));

@@ -213,8 +213,12 @@ Row mode_row(const assess::AssessmentResult& r, const std::string& base_key,
 }  // namespace
 
 const assess::LevelResult& level_x(const assess::AssessmentResult& r, double pga_g) {
+    // A level's pga_g is the number its case lists, so it equals the one asked for but for
+    // rounding in its last bits.
+    constexpr double same_level_g = 1e-12;
     for (const assess::LevelResult& l : r.levels) {
-        if (l.direction == assess::Direction::x && std::fabs(l.pga_g - pga_g) < 1e-12) return l;
+        if (l.direction == assess::Direction::x && std::fabs(l.pga_g - pga_g) < same_level_g)
+            return l;
     }
     throw std::logic_error(fmt::format("validate: no level {} g in {}", pga_g, r.input.file));
 }

@@ -7,6 +7,7 @@
 #include "core/measures.hpp"
 #include "core/readers.hpp"
 #include "core/units.hpp"
+#include "support/sampled_record.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_core_test_measures {
@@ -18,22 +19,14 @@ namespace {
 
 constexpr double tight_rel = 1e-12;  // closed forms the trapezoid reproduces exactly (rounding only)
 
-core::Record make_record(double dt_s, std::size_t n, double (*accel)(double)) {
-    core::Record rec;
-    rec.name = "synthetic";
-    rec.source = "test";
-    rec.dt_s = dt_s;
-    rec.accel_mps2.resize(n);
-    for (std::size_t i = 0; i < n; ++i) rec.accel_mps2[i] = accel(rec.time_s(i));
-    return rec;
-}
+using freestand::test::sampled_record;
 
 }  // namespace
 
 TEST_CASE("Constant acceleration integrates exactly: v = a t, d = a t^2 / 2", "[core][measures]") {
     // The trapezoid is exact for linear v; for d it sums a dt^2 (2i - 1) / 2 = a (i dt)^2 / 2.
     const double a = 2.0;
-    const auto rec = make_record(0.01, 101, [](double) { return 2.0; });
+    const auto rec = sampled_record(0.01, 101, [](double) { return 2.0; });
     const auto v = core::velocity_mps(rec);
     const auto d = core::displacement_m(rec);
     for (std::size_t i = 0; i < rec.size(); ++i) {
@@ -59,7 +52,8 @@ TEST_CASE("Sine acceleration: PGV, PGD and Arias intensity against closed forms"
     // dt = 1 ms it is (w dt)^2 / 12 ~ 3e-6 relative, so 1e-5 is the stated tolerance.
     const double a0 = 3.0;
     const double w = units::two_pi;
-    const auto rec = make_record(0.001, 10001, [](double t) { return 3.0 * std::sin(units::two_pi * t); });
+    const auto rec =
+        sampled_record(0.001, 10001, [](double t) { return 3.0 * std::sin(units::two_pi * t); });
     const auto gm = core::measure(rec);
     CHECK(gm.pga_g == Approx(a0 / units::g_mps2).epsilon(1e-6));
     CHECK(gm.pgv_mps == Approx(2.0 * a0 / w).epsilon(1e-5));

@@ -1,6 +1,8 @@
 // The project's token parsers (core/text_parse.hpp).
 #include <catch2/catch.hpp>
 #include <cstddef>
+#include <string>
+#include <vector>
 
 #include "core/text_parse.hpp"
 
@@ -31,6 +33,28 @@ TEST_CASE("parse_double takes a whole token, a leading plus allowed", "[core][te
     CHECK_FALSE(text::parse_double("0.3x", v));
     CHECK_FALSE(text::parse_double("", v));
     CHECK(text::trim(" \t0.1\r") == "0.1");
+}
+
+TEST_CASE("parse_number takes a whole finite token without a plus sign", "[core][text]") {
+    CHECK(text::parse_number("-0.25") == -0.25);
+    CHECK(text::parse_number(".5") == 0.5);
+    CHECK(text::parse_number("1e-3") == 0.001);
+    CHECK_FALSE(text::parse_number("+1").has_value());
+    CHECK_FALSE(text::parse_number(" 1").has_value());
+    CHECK_FALSE(text::parse_number("1 ").has_value());
+    CHECK_FALSE(text::parse_number("0.3x").has_value());
+    CHECK_FALSE(text::parse_number("").has_value());
+    CHECK_FALSE(text::parse_number("nan").has_value());
+    CHECK_FALSE(text::parse_number("inf").has_value());
+    CHECK_FALSE(text::parse_number("1e400").has_value());
+}
+
+TEST_CASE("split keeps every item between separators, empty ones too", "[core][text]") {
+    using Items = std::vector<std::string>;
+    CHECK(text::split("a,b,,c", ',') == Items{"a", "b", "", "c"});
+    CHECK(text::split("0.1:1:0.1", ':') == Items{"0.1", "1", "0.1"});
+    CHECK(text::split("", ';') == Items{""});
+    CHECK(text::split("x;", ';') == Items{"x", ""});
 }
 
 }  // namespace freestand_test_core_test_text_parse

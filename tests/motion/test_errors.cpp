@@ -4,6 +4,7 @@
 #include "support/paths.hpp"
 #include "core/errors.hpp"
 #include "core/readers.hpp"
+#include "motion/criteria.hpp"
 #include "motion/motion.hpp"
 #include "spectra/design.hpp"
 
@@ -153,6 +154,22 @@ TEST_CASE("RG 1.60's vertical target: its own spectrum, scaled to a ZPA ratio up
     CHECK_THROWS_MATCHES(
         motion::rg160_vertical_target(0.3, 0.0, f), InputError,
         Catch::Message("vertical_ratio: value 0 is out of range; expected (0, 2]"));
+}
+
+TEST_CASE("the SRP limits on dt, duration and the cap band hold within their tolerances",
+          "[motion][errors]") {
+    namespace criteria = motion::criteria;
+    // An ulp above 0.01 s is still the 0.01 s step; a step 1e-9 s coarser is refused.
+    CHECK_FALSE(criteria::dt_too_coarse(0.01));
+    CHECK_FALSE(criteria::dt_too_coarse(std::nextafter(0.01, 1.0)));
+    CHECK(criteria::dt_too_coarse(0.01 + 1e-9));
+    // (n - 1) dt a rounding below 20 s still meets the minimum; 1e-6 s short does not.
+    CHECK_FALSE(criteria::too_short(20.0 - 1e-12));
+    CHECK(criteria::too_short(20.0 - 1e-6));
+    CHECK(criteria::in_cap_band(0.2 - 1e-15));
+    CHECK(criteria::in_cap_band(25.0 + 1e-15));
+    CHECK_FALSE(criteria::in_cap_band(0.2 - 1e-9));
+    CHECK_FALSE(criteria::in_cap_band(25.0 + 1e-9));
 }
 
 }  // namespace freestand_test_motion_test_errors

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "sliding/table_displacement.hpp"
+#include "support/sampled_record.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_sliding_test_table_displacement {
@@ -14,13 +15,15 @@ namespace freestand_test_sliding_test_table_displacement {
 using namespace freestand;
 
 namespace {
+// Samples from t = 0 to duration_s inclusive.
+std::size_t samples(double duration_s, double dt_s) {
+    return static_cast<std::size_t>(std::round(duration_s / dt_s)) + 1;
+}
+
 core::Record sine(double amplitude_mps2, double f_hz, double duration_s, double dt_s = 0.005) {
-    core::Record r;
-    r.dt_s = dt_s;
-    const auto n = static_cast<std::size_t>(std::round(duration_s / dt_s)) + 1;
-    for (std::size_t i = 0; i < n; ++i)
-        r.accel_mps2.push_back(amplitude_mps2 * std::sin(2.0 * std::numbers::pi * f_hz * r.time_s(i)));
-    return r;
+    const double w = 2.0 * std::numbers::pi * f_hz;
+    return freestand::test::sampled_record(
+        dt_s, samples(duration_s, dt_s), [&](double t) { return amplitude_mps2 * std::sin(w * t); });
 }
 }  // namespace
 
@@ -34,20 +37,15 @@ TEST_CASE("the zero-phase response is one half at the corner and goes as f^4 bel
 
 // Acceleration of the drift-free displacement d(t) = D sin^2(pi t / T) sin(w t), exactly.
 static core::Record windowed_burst(double d_m, double f_hz, double duration_s, double dt_s = 0.005) {
-    core::Record r;
-    r.dt_s = dt_s;
     const double w = 2.0 * std::numbers::pi * f_hz;
     const double u = 2.0 * std::numbers::pi / duration_s;
-    const auto n = static_cast<std::size_t>(std::round(duration_s / dt_s)) + 1;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double t = r.time_s(i);
+    return freestand::test::sampled_record(dt_s, samples(duration_s, dt_s), [&](double t) {
         const double win = (1.0 - std::cos(u * t)) / 2.0;
         const double win1 = u * std::sin(u * t) / 2.0;
         const double win2 = u * u * std::cos(u * t) / 2.0;
-        r.accel_mps2.push_back(d_m * (win2 * std::sin(w * t) + 2.0 * win1 * w * std::cos(w * t) -
-                                      win * w * w * std::sin(w * t)));
-    }
-    return r;
+        return d_m * (win2 * std::sin(w * t) + 2.0 * win1 * w * std::cos(w * t) -
+                      win * w * w * std::sin(w * t));
+    });
 }
 
 TEST_CASE("a drift-free burst well above the corner keeps its displacement",

@@ -13,6 +13,7 @@
 #include "core/units.hpp"
 #include "spectra/response.hpp"
 #include "support/paths.hpp"
+#include "support/sampled_record.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_spectra_test_response {
@@ -23,15 +24,7 @@ using freestand::units::pi;
 
 namespace {
 
-core::Record make_record(double dt_s, std::size_t count, double (*a)(double)) {
-    core::Record r;
-    r.name = "synthetic";
-    r.source = "test";
-    r.dt_s = dt_s;
-    r.accel_mps2.resize(count);
-    for (std::size_t i = 0; i < count; ++i) r.accel_mps2[i] = a(dt_s * static_cast<double>(i));
-    return r;
-}
+using freestand::test::sampled_record;
 
 constexpr double step_a = 2.0;  // m/s^2
 double step_load(double) { return step_a; }
@@ -49,7 +42,7 @@ double step_response_m(double a, double w, double z, double t) {
 
 TEST_CASE("undamped SDOF under a step peaks at 2 a / w^2 at t = T/2", "[spectra][response]") {
     // f = 1 Hz, dt = 0.01 s: the first peak t = pi / w = 0.5 s falls on sample 50.
-    const auto rec = make_record(0.01, 301, step_load);
+    const auto rec = sampled_record(0.01, 301, step_load);
     const double w = 2.0 * pi;
     const auto peaks = spectra::peak_responses(rec, 0.0, {1.0});
     CHECK(peaks[0].sd_m == Approx(-2.0 * step_a / (w * w)).epsilon(1e-10));
@@ -74,12 +67,12 @@ TEST_CASE("damped SDOF under a step follows the closed form before its first pea
     // |u| rises monotonically up to the first peak, so the peak of a record cut at sample k is
     // |u(t_k)|: this checks the recurrence at every sample up to the peak.
     for (std::size_t k = 2; k <= 51; k += 7) {
-        const auto rec = make_record(0.01, k, step_load);
+        const auto rec = sampled_record(0.01, k, step_load);
         const double t = rec.duration_s();
         const auto rs = spectra::response_spectra(rec, {z}, {f});
         CHECK(rs.sd_m[0][0] == Approx(std::abs(step_response_m(step_a, w, z, t))).epsilon(1e-10));
     }
-    const auto rec = make_record(0.01, 400, step_load);
+    const auto rec = sampled_record(0.01, 400, step_load);
     const auto peaks = spectra::peak_responses(rec, z, {f});
     const double overshoot = 1.0 + std::exp(-z * pi / std::sqrt(1.0 - z * z));
     CHECK(peaks[0].sd_m == Approx(-step_a / (w * w) * overshoot).epsilon(1e-10));
@@ -114,7 +107,7 @@ TEST_CASE("SDOF under a sine matches the exact steady plus transient solution",
     // Input sampled at dt = 2e-4 s: the piecewise-linear error in the load is ~(W dt)^2 / 8 =
     // 1.6e-7 relative; sub-steps of T/2000 resolve the peak to 1 - cos(pi/2000) = 1.2e-6.
     const double dt = 2e-4;
-    const auto rec = make_record(dt, 50001, sine_load);  // 10 s
+    const auto rec = sampled_record(dt, 50001, sine_load);  // 10 s
     for (double z : {0.0, 0.02, 0.05}) {
         for (double f : {0.5, 1.0, 3.0}) {
             const double w = 2.0 * pi * f;
@@ -245,8 +238,8 @@ TEST_CASE("psa_g, response_spectra and peak_responses agree, SD, PSV, PSA are co
 }
 
 TEST_CASE("response spectra reject bad dampings, frequencies and records", "[spectra][response]") {
-    const auto rec = make_record(0.01, 10, step_load);
-    const auto one = make_record(0.01, 1, step_load);
+    const auto rec = sampled_record(0.01, 10, step_load);
+    const auto one = sampled_record(0.01, 1, step_load);
     CHECK_THROWS_WITH(spectra::psa_g(one, 0.05, {1.0}),
                       Catch::Contains("test: samples: record \"synthetic\" has 1 sample; expected "
                                       "at least 2"));
@@ -388,12 +381,12 @@ TEST_CASE("an OscillatorSet rejects bad set-up values and a record of another ti
     CHECK(set.dt_s() == 0.01);
     CHECK(set.damping() == 0.05);
     CHECK(set.frequency_hz() == std::vector<double>{1.0});
-    const auto rec = make_record(0.02, 10, step_load);
+    const auto rec = sampled_record(0.02, 10, step_load);
     CHECK_THROWS_AS(set.psa_g(rec), InputError);
     CHECK_THROWS_WITH(set.peak_responses(rec),
                       Catch::Contains("test: dt: record \"synthetic\" is sampled at dt 0.02 s; "
                                       "these oscillators were set up for dt 0.01 s"));
-    CHECK_THROWS_WITH(set.sd_m(make_record(0.01, 1, step_load)), Catch::Contains("1 sample"));
+    CHECK_THROWS_WITH(set.sd_m(sampled_record(0.01, 1, step_load)), Catch::Contains("1 sample"));
 }
 
 }  // namespace freestand_test_spectra_test_response
