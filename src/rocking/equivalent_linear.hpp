@@ -6,6 +6,7 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "core/units.hpp"
 #include "rocking/demand.hpp"
 
 namespace freestand::rocking {
@@ -39,6 +40,8 @@ struct ElOptions {
     std::optional<double> restitution;  ///< measured r overriding Housner's (docs/methods.md s.7)
     double fs_required = 1.5;           ///< required alpha / theta0
     int grid_points = 2000;             ///< trial angles alpha k / n, k = 1..n-1, alpha (1 - 1e-9)
+    /// Gravity, and the unit g of the spectra and PGAs, m/s^2 (a case's site.g_mps2).
+    double g_mps2 = units::g_mps2;
 };
 
 /// Result about one edge. Every empty optional has its reason set.
