@@ -10,6 +10,7 @@
 #include "assess/pipeline.hpp"
 #include "report/json.hpp"
 #include "report/render.hpp"
+#include "support/case_text.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_report_test_gravity_echo {
@@ -17,20 +18,9 @@ namespace freestand_test_report_test_gravity_echo {
 using namespace freestand;
 
 TEST_CASE("a case at standard gravity is reported at standard gravity", "[report][gravity]") {
-    const std::string text = R"([component]
-name = "Box"
-mass_kg = 100.0
-cg_height_m = 1.0
-cg_to_edge_x_m = [0.4, 0.5]
-cg_to_edge_y_m = [0.3, 0.3]
-mu_s = 0.3
-allowable_slide_m = 0.05
-[site]
-pga_g = [0.05]
-g_mps2 = 9.80665
-[options]
-simulate = "never"
-)";
+    const std::string text = test::box_component +
+                             "[site]\npga_g = [0.05]\ng_mps2 = 9.80665\n"
+                             "[options]\nsimulate = \"never\"\n";
     const assess::AssessmentResult r =
         assess::assess(assess::parse_case(text, "case.toml"), assess::RunSettings(1));
     const report::Rendered out =
