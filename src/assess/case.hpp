@@ -120,7 +120,9 @@ struct Site {
     /// RG 1.60 the vertical histories match its vertical spectrum scaled to this ZPA.
     double vertical_ratio = 2.0 / 3.0;
     double sliding_damping = 0.10;      ///< damping of the spectrum the sliding method reads
-    double g_mps2 = units::g_mps2;      ///< gravity used throughout the case
+    /// Gravity of every computation of the case, and the size of its unit g (PGA levels,
+    /// spectra and records in g), m/s^2, in [9.78, 9.84] (docs/methods.md, Conventions).
+    double g_mps2 = units::g_mps2;
     /// Corner of the zero-phase high-pass that turns a history's displacement into the energy
     /// method's DeltaD (docs/methods.md s.4: the thesis's test band started at 0.5 Hz), Hz.
     double energy_highpass_hz = 0.5;

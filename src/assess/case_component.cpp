@@ -99,11 +99,11 @@ double uniform_inertia(double mass_kg, const PlanarGeometry& g, double height_m)
 // p_radps, one value for both directions or [p_x, p_y]. p^2 = M g R / I_O (docs/methods.md
 // s.1), so I_O = M g R / p^2 and I_c = I_O - M R^2 > 0 needs p < sqrt(g / R), R about the
 // critical (smaller-alpha) edge of the direction.
-std::array<double, 2> read_p(TableReader& r, const Component& c) {
+std::array<double, 2> read_p(TableReader& r, const Component& c, double g_mps2) {
     std::array<double, 2> p_max{};
     for (const Direction d : {Direction::x, Direction::y}) {
         const block::Block b = c.block(d);
-        p_max[d == Direction::x ? 0 : 1] = std::sqrt(units::g_mps2 / b.R_m(b.critical_edge()));
+        p_max[d == Direction::x ? 0 : 1] = std::sqrt(g_mps2 / b.R_m(b.critical_edge()));
     }
     if (!r.holds_array("p_radps")) {
         const double p =
@@ -122,7 +122,8 @@ std::array<double, 2> read_p(TableReader& r, const Component& c) {
     return {p[0], p[1]};
 }
 
-void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assumptions) {
+void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assumptions,
+                  double g_mps2) {
     const bool given_i = r.has("inertia_cg_x_kgm2") || r.has("inertia_cg_y_kgm2");
     if (given_i && r.has("p_radps")) {
         r.fail("p_radps", "give either p_radps or inertia_cg_x_kgm2/inertia_cg_y_kgm2, not both");
@@ -135,13 +136,13 @@ void read_inertia(TableReader& r, Component& c, std::vector<std::string>& assump
         return;
     }
     if (r.has("p_radps")) {
-        const std::array<double, 2> p = read_p(r, c);
+        const std::array<double, 2> p = read_p(r, c, g_mps2);
         for (const Direction d : {Direction::x, Direction::y}) {
             PlanarGeometry& g = d == Direction::x ? c.x : c.y;
             const double p_d = p[d == Direction::x ? 0 : 1];
             const double b = std::min(g.b_left_m, g.b_right_m);
             const double R2 = b * b + c.cg_height_m * c.cg_height_m;
-            const double i_edge = c.mass_kg * units::g_mps2 * std::sqrt(R2) / (p_d * p_d);
+            const double i_edge = c.mass_kg * g_mps2 * std::sqrt(R2) / (p_d * p_d);
             g.inertia_cg_kgm2 = i_edge - c.mass_kg * R2;
             g.inertia_source = fmt::format("from p = {} rad/s: I_O = M g R / p^2", p_d);
         }
@@ -351,7 +352,7 @@ std::array<double, 2> default_mu_s_range(double mu_s) { return {0.8 * mu_s, 1.2 
 
 namespace case_detail {
 
-Component read_component(TableReader& r, std::vector<std::string>& assumptions) {
+Component read_component(TableReader& r, std::vector<std::string>& assumptions, double g_mps2) {
     Component c;
     // The case's own assumptions (data not published, chosen by the author) come first.
     for (const std::string& a : r.strings("assumptions").value_or(std::vector<std::string>{})) {
@@ -367,7 +368,7 @@ Component read_component(TableReader& r, std::vector<std::string>& assumptions) 
             "of the simulated top acceleration; docs/methods.md s.1).",
             c.body_height_m()));
     }
-    read_inertia(r, c, assumptions);
+    read_inertia(r, c, assumptions, g_mps2);
     c.footprint = r.string("footprint").value_or("");
     c.fixed_base_frequency_hz = r.number("fixed_base_frequency_hz", frequency_range);
     read_modal(r, c, assumptions);

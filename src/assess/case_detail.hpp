@@ -22,11 +22,14 @@ const toml::table* subtable(const toml::table& root, const std::string& name,
 int line_of(const toml::node& n);
 
 /// [component] (or one [[unit]]): geometry, inertia, mode, free-rocking bands, base contact and
-/// allowables.
-Component read_component(TableReader& r, std::vector<std::string>& assumptions);
+/// allowables. g_mps2: the case's gravity (site.g_mps2), which turns a given p_radps into inertia.
+Component read_component(TableReader& r, std::vector<std::string>& assumptions, double g_mps2);
 /// [[unit]] x 2 and [tunnel] (docs/methods.md s.10), each unit read as a [component], into out.
 void read_units(const toml::table& root, const toml::node& units, const std::string& file,
-                Case& out);
+                Case& out, double g_mps2);
+/// site.g_mps2: the case's gravity, m/s^2, in Earth's surface range, else the thesis's 9.81.
+/// Read on its own too, before [component], whose p_radps needs it.
+double read_gravity_mps2(TableReader& r);
 /// [site]: design spectrum or target files (relative to case_dir), PGA levels, vertical ratio,
 /// energy method and realism ranges.
 Site read_site(TableReader& r, std::vector<std::string>& assumptions,

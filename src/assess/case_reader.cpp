@@ -35,6 +35,7 @@ void check_line_lengths(const std::string& text, const std::string& file_label) 
 
 using case_detail::line_of;
 using case_detail::read_component;
+using case_detail::read_gravity_mps2;
 using case_detail::read_options;
 using case_detail::read_site;
 using case_detail::read_uncertainty;
@@ -74,8 +75,11 @@ Case parse_case(const std::string& text, const std::string& file_label,
     }
     const toml::table* comp = subtable(root, "component", file_label);
     const toml::table* site = subtable(root, "site", file_label);
+    // The components' p_radps needs the case's gravity, which [site] holds.
+    TableReader gravity_reader(site, file_label, "site");
+    const double g_mps2 = read_gravity_mps2(gravity_reader);
     if (const toml::node* units = root.get("unit")) {
-        read_units(root, *units, file_label, out);
+        read_units(root, *units, file_label, out, g_mps2);
     } else if (const toml::node* tunnel = root.get("tunnel")) {
         throw InputError(SourceLocation{file_label, line_of(*tunnel), "tunnel"},
                          "[tunnel] joins two [[unit]] tables; a [component] has none (a braced "
@@ -88,7 +92,7 @@ Case parse_case(const std::string& text, const std::string& file_label,
         throw InputError(SourceLocation{file_label, 0, "site"}, "missing required table [site]");
     if (out.units.empty()) {
         TableReader rc(comp, file_label, "component");
-        out.component = read_component(rc, out.assumptions);
+        out.component = read_component(rc, out.assumptions, g_mps2);
     }
     TableReader rs(site, file_label, "site");
     out.site = read_site(rs, out.assumptions, std::filesystem::path(file_label).parent_path());

@@ -176,6 +176,12 @@ std::optional<std::string> weightless_level(const std::vector<double>& pga_g,
 
 namespace case_detail {
 
+double read_gravity_mps2(TableReader& r) {
+    // Earth's surface gravity runs from 9.780 m/s^2 at the equator to 9.832 at the poles
+    // (docs/methods.md, Conventions): anything outside is a typo or another unit.
+    return r.number("g_mps2", Range{9.78, 9.84}).value_or(units::g_mps2);
+}
+
 Site read_site(TableReader& r, std::vector<std::string>& assumptions,
                const std::filesystem::path& case_dir) {
     Site s;
@@ -222,7 +228,7 @@ Site read_site(TableReader& r, std::vector<std::string>& assumptions,
     }
     // RG 1.60 tabulates 0.5% to 10%; the design function interpolates inside that range only.
     s.sliding_damping = r.number("sliding_damping", Range{0.005, 0.10}).value_or(0.10);
-    s.g_mps2 = r.number("g_mps2", Range{units::g_mps2, units::g_mps2}).value_or(units::g_mps2);
+    s.g_mps2 = read_gravity_mps2(r);
     read_energy_displacement(r, s, assumptions);
     read_realism(r, s, assumptions);
     s.dbe_pga_g = r.number("dbe_pga_g", core::limits::pga_level_g);

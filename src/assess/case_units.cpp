@@ -9,7 +9,7 @@ namespace case_detail {
 
 // [[unit]] x 2 and [tunnel] (docs/methods.md s.10), each unit read as a [component].
 void read_units(const toml::table& root, const toml::node& units, const std::string& file,
-                Case& out) {
+                Case& out, double g_mps2) {
     const toml::array* arr = units.as_array();
     if (arr == nullptr || !arr->is_array_of_tables())
         throw InputError(SourceLocation{file, line_of(units), "unit"},
@@ -26,7 +26,7 @@ void read_units(const toml::table& root, const toml::node& units, const std::str
         TableReader r((*arr)[i].as_table(), file, name);
         if (r.has("allowable_relative_m"))
             r.fail("allowable_relative_m", "give the relative allowable once, in [tunnel]");
-        out.units.push_back(read_component(r, out.assumptions));
+        out.units.push_back(read_component(r, out.assumptions, g_mps2));
     }
     const toml::table* tunnel = subtable(root, "tunnel", file);
     if (tunnel == nullptr)

@@ -35,7 +35,7 @@ motion::TargetSet user_unit_targets(const Site& site, const UserTargets& u) {
     if (u.h10) h10 = scaled_target(u.h10->spectrum, factor, f);
     motion::TargetSet t = motion::ratio_targets(fmt::format("target file {}, PGA 1 g", u.h5.given),
                                                 scaled_target(u.h5.spectrum, factor, f), h10,
-                                                site.vertical_ratio);
+                                                site.vertical_ratio, site.g_mps2);
     if (u.v) {
         t.vertical.psa_5pct = scaled_target(u.v->spectrum, factor, f);
         t.vertical.psa_10pct.reset();
@@ -59,10 +59,11 @@ motion::TargetSet rg160_unit_targets(const Site& site) {
     motion::TargetSet t;
     t.label = fmt::format("RG 1.60 horizontal and vertical, vertical ZPA {:.4f} x PGA, PGA 1 g",
                           site.vertical_ratio);
-    t.horizontal.psa_5pct = spectra::rg160(1.0, 0.05, false, f);
-    t.horizontal.psa_10pct = spectra::rg160(1.0, 0.10, false, f);
+    t.horizontal.psa_5pct = spectra::rg160(1.0, 0.05, false, f, site.g_mps2);
+    t.horizontal.psa_10pct = spectra::rg160(1.0, 0.10, false, f, site.g_mps2);
     t.horizontal.rg160_psd_pga_g = 1.0;  // the RG 1.60 target PSD applies to the horizontals
-    t.vertical = motion::rg160_vertical_target(1.0, site.vertical_ratio, f);
+    t.horizontal.g_mps2 = site.g_mps2;
+    t.vertical = motion::rg160_vertical_target(1.0, site.vertical_ratio, f, site.g_mps2);
     return t;
 }
 
@@ -111,7 +112,8 @@ motion::GenerateOptions generate_options(const Case& c, std::size_t k) {
     motion::GenerateOptions go;
     go.seed = HistoryBank::history_seed(c.options.seed, static_cast<int>(k));
     for (std::size_t j = 0; j < 3 && !c.options.seed_records.empty(); ++j) {
-        go.seed_records.push_back(core::read_record(c.options.seed_records[3 * k + j]));
+        go.seed_records.push_back(
+            core::read_record(c.options.seed_records[3 * k + j], c.site.g_mps2));
     }
     return go;
 }
@@ -234,8 +236,8 @@ void HistoryBank::measure_sets(std::size_t first) {
         const HistorySet& s = sets_[k];
         unit_hp_disp_x_m_[k] = sliding::highpass_peak_displacement_m(s.h1, corner_hz);
         unit_hp_disp_y_m_[k] = sliding::highpass_peak_displacement_m(s.h2, corner_hz);
-        unit_pgv_x_mps_[k] = core::measure(s.h1).pgv_mps;
-        unit_pgv_y_mps_[k] = core::measure(s.h2).pgv_mps;
+        unit_pgv_x_mps_[k] = core::measure(s.h1, case_->site.g_mps2).pgv_mps;
+        unit_pgv_y_mps_[k] = core::measure(s.h2, case_->site.g_mps2).pgv_mps;
     });
 }
 

@@ -29,8 +29,9 @@ namespace freestand::assess {
 
 namespace {
 
-spectra::Spectrum vector_horizontal_target(double pga_g, double damping) {
-    const spectra::Spectrum h = spectra::rg160(pga_g, damping, false, design_frequencies());
+spectra::Spectrum vector_horizontal_target(double pga_g, double damping, double g_mps2) {
+    const spectra::Spectrum h =
+        spectra::rg160(pga_g, damping, false, design_frequencies(), g_mps2);
     // Both horizontals follow the same RG 1.60 target: SA_VH = sqrt(1 + 0.16) SA_H.
     return sliding::vector_horizontal({h, h}, damping);
 }
@@ -104,7 +105,8 @@ Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction 
     Sliding out;
     out.mu_s = lower.mu_s;
     out.mu_e = sliding::effective_friction(lower.mu_s, dem.pga_v_g);
-    out.c_s_mps2 = 2.0 * out.mu_e * units::g_mps2;
+    out.c_s_mps2 = 2.0 * out.mu_e * c.site.g_mps2;
+    out.c_s_g = out.c_s_mps2 / c.site.g_mps2;
     out.sa_vh_peak_g =
         *std::max_element(dem.sa_vh_slide.psa_g.begin(), dem.sa_vh_slide.psa_g.end());
     if (mode == Mode::rest || mode == Mode::rock) {
@@ -119,7 +121,7 @@ Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction 
         return out;
     }
     const sliding::Crossing cross =
-        sliding::lowest_crossing(dem.sa_vh_slide, out.c_s_mps2 / units::g_mps2);
+        sliding::lowest_crossing(dem.sa_vh_slide, out.c_s_g);
     if (!cross.f_hz) {
         out.reason = "ASCE 4: " + cross.reason;
         return out;
@@ -128,6 +130,7 @@ Sliding closed_form_sliding(const Case& c, const ContactBound& lower, Direction 
     in.mu_s = lower.mu_s;
     in.av_g = dem.pga_v_g;
     in.pga_h_g = dem.pga_of(d);
+    in.g_mps2 = c.site.g_mps2;
     const std::optional<double> delta_d = energy_delta_d(c, d, dem, bank, histories_used, out);
     if (delta_d) {
         out.delta_d_m = *delta_d;
@@ -160,6 +163,7 @@ rocking::ElBlockResult equivalent_linear(const Case& c, const ContactBound& uppe
     opt.pga_v_g = dem.pga_v_g;
     opt.restitution = r;
     opt.fs_required = c.component.required_overturn_fs;
+    opt.g_mps2 = c.site.g_mps2;
     rocking::VerticalDemand vertical;
     vertical.ratio = c.site.vertical_ratio;
     vertical.spectra = dem.sa_v_damped;
@@ -177,10 +181,10 @@ Rocking closed_form_rocking(const Case& c, const ContactBound& upper, const bloc
     const block::Edge e = blk.critical_edge();
     out.alpha_rad = blk.alpha_rad(e);
     out.R_m = blk.R_m(e);
-    out.p_radps = blk.p_radps(e);
+    out.p_radps = blk.p_radps(e, c.site.g_mps2);
     out.restitution = upper.restitution;
     out.uplift_a_g = rocking::uplift_threshold_g(blk, e, dem.pga_v_g);
-    out.ishiyama_v_mps = rocking::ishiyama_velocity_mps(blk, e);
+    out.ishiyama_v_mps = rocking::ishiyama_velocity_mps(blk, e, c.site.g_mps2);
     const double A = dem.pga_of(d) / (1.0 - dem.pga_v_g);
     if (mode == Mode::rock || mode == Mode::slide_rock) {
         const rocking::ElBlockResult el = equivalent_linear(c, upper, blk, d, dem);
@@ -282,15 +286,15 @@ LevelDemand rg160_level_demand(const Site& site, double pga_g) {
     damped.reserve(spectra::rg160_dampings.size());
     const double pga_v_g = site.vertical_ratio * pga_g;
     for (double d : spectra::rg160_dampings) {
-        damped.push_back(vector_horizontal_target(pga_g, d));
+        damped.push_back(vector_horizontal_target(pga_g, d, site.g_mps2));
         // RG 1.60's vertical spectrum, its ZPA the vertical PGA (docs/methods.md s.8): the
         // vertical demand of the equivalent-linear estimate (s.5a), as of the histories.
-        vertical.push_back(spectra::rg160(pga_v_g, d, true, design_frequencies()));
+        vertical.push_back(spectra::rg160(pga_v_g, d, true, design_frequencies(), site.g_mps2));
     }
     LevelDemand out{pga_g,
                     pga_v_g,
-                    spectra::rg160(pga_g, 0.05, false, design_frequencies()),
-                    vector_horizontal_target(pga_g, site.sliding_damping),
+                    spectra::rg160(pga_g, 0.05, false, design_frequencies(), site.g_mps2),
+                    vector_horizontal_target(pga_g, site.sliding_damping, site.g_mps2),
                     rocking::DampedSpectra(std::move(damped)),
                     {},
                     std::nullopt,

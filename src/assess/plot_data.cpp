@@ -59,8 +59,8 @@ void add_histories(PlotData& p, const AssessmentResult& r, const LevelResult& lv
     const dynamics::Excitation ex = excitation(set, lvl.direction, lvl.pga_g);
     std::vector<double> t(ex.horizontal_mps2.size());
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = ex.dt_s * static_cast<double>(i);
-    auto in_g = [](std::vector<double> a) {
-        for (double& v : a) v /= units::g_mps2;
+    auto in_g = [g_mps2 = r.input.site.g_mps2](std::vector<double> a) {
+        for (double& v : a) v /= g_mps2;
         return a;
     };
     p.ground_motion.push_back(history_series("horizontal", t, in_g(ex.horizontal_mps2)));
@@ -142,7 +142,8 @@ PlotData plot_data(const AssessmentResult& r, const std::vector<LevelDemand>& de
             const core::Record& h = shown.direction == Direction::x ? sets[k].h1 : sets[k].h2;
             p.spectra.push_back(
                 Series{fmt::format("history {}", k + 1), f,
-                       spectra::psa_g(HistoryBank::scaled(h, shown.pga_g), 0.05, f)});
+                       spectra::psa_g(HistoryBank::scaled(h, shown.pga_g), 0.05, f,
+                                      r.input.site.g_mps2)});
         }
     }
     if (gov) add_histories(p, r, r.levels[*gov], bank);

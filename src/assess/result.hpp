@@ -124,6 +124,7 @@ struct Sliding {
     double mu_s = 0.0;  ///< the friction they used (the lower bound)
     double mu_e = 0.0;
     double c_s_mps2 = 0.0;
+    double c_s_g = 0.0;         ///< C_s in the case's unit g (site.g_mps2)
     double sa_vh_peak_g = 0.0;  ///< peak of SA_VH at the sliding damping, g
     /// DeltaD of the energy method (docs/methods.md s.4): the table displacement, m; 0 when the
     /// estimate was not made.

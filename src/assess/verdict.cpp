@@ -196,9 +196,9 @@ ScreenCheck slide_check(const Sliding& s, double allowable_m) {
         // the spectrum could scale before it does.
         Verdict v = no_motion(Model::asce4_sliding, "ASCE 4: SA_VH never reaches C_s");
         if (s.sa_vh_peak_g > 0.0) {
-            v.margin = s.c_s_mps2 / units::g_mps2 / s.sa_vh_peak_g;
+            v.margin = s.c_s_g / s.sa_vh_peak_g;
             v.margin_basis = fmt::format("ASCE 4: C_s {:.3f} g / peak SA_VH {:.3f} g (no sliding)",
-                                         s.c_s_mps2 / units::g_mps2, s.sa_vh_peak_g);
+                                         s.c_s_g, s.sa_vh_peak_g);
         }
         return check(std::move(v),
                      fmt::format("ASCE 4 at mu_s {:.3f}: SA_VH never reaches C_s = {:.3f} m/s^2, "

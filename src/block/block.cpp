@@ -62,8 +62,8 @@ double Block::inertia_edge_kgm2(Edge e) const {
     return inertia_cg_kgm2 + mass_kg * r * r;
 }
 
-double Block::p_radps(Edge e) const {
-    return std::sqrt(mass_kg * units::g_mps2 * R_m(e) / inertia_edge_kgm2(e));
+double Block::p_radps(Edge e, double g_mps2) const {
+    return std::sqrt(mass_kg * g_mps2 * R_m(e) / inertia_edge_kgm2(e));
 }
 
 double Block::housner_restitution(Edge impact_edge) const {

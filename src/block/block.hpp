@@ -1,6 +1,8 @@
 #pragma once
 /// Planar rigid-block geometry shared by the closed-form checks and the simulator
 /// (docs/methods.md s.1). One horizontal direction; the block rocks about a left or right edge.
+#include "core/units.hpp"
+
 namespace freestand::block {
 
 /// Which rocking edge. The block tips over the right edge when the base accelerates left.
@@ -37,8 +39,8 @@ struct Block {
     double tan_alpha(Edge e) const { return b(e) / h_m; }
     /// I_O = I_c + M R^2, kg m^2.
     double inertia_edge_kgm2(Edge e) const;
-    /// Frequency parameter p = sqrt(M g R / I_O), rad/s.
-    double p_radps(Edge e) const;
+    /// Frequency parameter p = sqrt(M g R / I_O), rad/s, under gravity g_mps2, m/s^2.
+    double p_radps(Edge e, double g_mps2 = units::g_mps2) const;
     /// Restitution on angular velocity when the block, rocking about the other edge, strikes
     /// the floor with edge `impact_edge` and goes on rotating about it. Angular momentum about
     /// the impact edge is conserved: r = (I_c + M (h^2 - b_L b_R)) / I_O(impact_edge), which for a

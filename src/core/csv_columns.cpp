@@ -32,7 +32,8 @@ struct Unit {
 constexpr std::array<Unit, 11> unit_table{{{"s", Quantity::time, 1.0},
                                            {"sec", Quantity::time, 1.0},
                                            {"ms", Quantity::time, 1e-3},
-                                           {"g", Quantity::accel, units::g_mps2},
+                                           // to_si of g is the reader's unit_g_mps2
+                                           {"g", Quantity::accel, 0.0},
                                            {"m/s2", Quantity::accel, 1.0},
                                            {"mps2", Quantity::accel, 1.0},
                                            {"ms-2", Quantity::accel, 1.0},
@@ -97,7 +98,7 @@ std::string normalise_unit(std::string_view unit) {
 
 }  // namespace
 
-NameReading read_column_name(std::string_view field) {
+NameReading read_column_name(std::string_view field, double unit_g_mps2) {
     const Split split = split_name(normalise(field));
     NameReading reading;
     const Word* word = nullptr;
@@ -113,7 +114,8 @@ NameReading read_column_name(std::string_view field) {
     }
     const std::string unit = normalise_unit(split.unit);
     for (const Unit& u : unit_table)
-        if (u.quantity == word->quantity && unit == u.text) reading.column = Column{u.quantity, u.to_si};
+        if (u.quantity == word->quantity && unit == u.text)
+            reading.column = Column{u.quantity, u.text == "g" ? unit_g_mps2 : u.to_si};
     return reading;
 }
 

@@ -26,8 +26,9 @@ struct NameReading {
 /// Reads one header field. Time: `time` or `t`, unit s (also `sec`) or ms, seconds when no unit
 /// is written. Acceleration: `acceleration`, `accel`, `acc` or `a`, unit g, m/s2 (`mps2`,
 /// `ms-2`) or cm/s2 (`cmps2`, `cms-2`, `gal`); an acceleration must state its unit. The unit
-/// follows the word after '_' or ' ', or stands in "(...)" or "[...]".
-NameReading read_column_name(std::string_view field);
+/// follows the word after '_' or ' ', or stands in "(...)" or "[...]". The unit g is
+/// unit_g_mps2 m/s^2 (the case's g; docs/methods.md, Conventions).
+NameReading read_column_name(std::string_view field, double unit_g_mps2);
 
 /// The accepted names as one sentence, for error messages.
 const std::string& accepted_names();

@@ -43,14 +43,14 @@ std::vector<double> displacement_m(const std::vector<double>& accel_mps2, double
     return cumulative_trapezoid(cumulative_trapezoid(accel_mps2, dt_s), dt_s);
 }
 
-std::vector<double> arias_intensity_mps(const Record& record) {
+std::vector<double> arias_intensity_mps(const Record& record, double g_mps2) {
     validate(record);
     std::vector<double> a2(record.size());
     std::transform(record.accel_mps2.begin(), record.accel_mps2.end(), a2.begin(),
                    [](double a) { return a * a; });
     std::vector<double> cumulative = cumulative_trapezoid(a2, record.dt_s);
     // Arias (1970): I_a = pi / (2 g) * integral a(t)^2 dt.
-    for (double& v : cumulative) v *= units::pi / (2.0 * units::g_mps2);
+    for (double& v : cumulative) v *= units::pi / (2.0 * g_mps2);
     return cumulative;
 }
 
@@ -94,14 +94,14 @@ double significant_duration_s(const Record& record, double from_fraction, double
     return duration_from_husid(husid(record), record.dt_s, from_fraction, to_fraction);
 }
 
-GroundMotion measure(const Record& record) {
+GroundMotion measure(const Record& record, double g_mps2) {
     validate(record);
     const std::vector<double> v = velocity_mps(record);
     const std::vector<double> d = cumulative_trapezoid(v, record.dt_s);
-    const std::vector<double> arias = arias_intensity_mps(record);
+    const std::vector<double> arias = arias_intensity_mps(record, g_mps2);
     const std::vector<double> h = normalised(arias);
     GroundMotion gm;
-    gm.pga_g = units::mps2_to_g(max_abs(record.accel_mps2));
+    gm.pga_g = units::mps2_to_g(max_abs(record.accel_mps2), g_mps2);
     gm.pgv_mps = max_abs(v);
     gm.pgd_m = max_abs(d);
     gm.arias_mps = arias.back();

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/record.hpp"
+#include "core/units.hpp"
 
 namespace freestand::core {
 
@@ -21,8 +22,8 @@ struct GroundMotion {
 };
 
 /// All measures of a record. Throws InputError if the record is empty, has dt <= 0 or a
-/// non-finite sample (core::validate).
-GroundMotion measure(const Record& record);
+/// non-finite sample (core::validate). g_mps2 is gravity (Arias) and the unit g (PGA), m/s^2.
+GroundMotion measure(const Record& record, double g_mps2 = units::g_mps2);
 
 /// Ground velocity at each sample, m/s: v_0 = 0, v_i = v_{i-1} + dt (a_{i-1} + a_i) / 2.
 std::vector<double> velocity_mps(const Record& record);
@@ -37,7 +38,7 @@ std::vector<double> displacement_m(const std::vector<double>& accel_mps2, double
 
 /// Cumulative Arias intensity at each sample, m/s: I_0 = 0,
 /// I_i = I_{i-1} + pi / (2 g) * dt (a_{i-1}^2 + a_i^2) / 2. The last value is I_a.
-std::vector<double> arias_intensity_mps(const Record& record);
+std::vector<double> arias_intensity_mps(const Record& record, double g_mps2 = units::g_mps2);
 
 /// Husid curve: cumulative Arias intensity divided by its final value (0..1 at each sample).
 /// All zeros when the record has no energy.

@@ -12,11 +12,11 @@
 
 namespace freestand::core {
 
-Record read_at2(const std::filesystem::path& path) {
-    return parse_at2(read_input_file(path), path.string());
+Record read_at2(const std::filesystem::path& path, double unit_g_mps2) {
+    return parse_at2(read_input_file(path), path.string(), unit_g_mps2);
 }
 
-Record parse_at2(const std::string& text, const std::string& file) {
+Record parse_at2(const std::string& text, const std::string& file, double unit_g_mps2) {
     const std::filesystem::path path(file);
     std::istringstream in(std::string(text::utf8_text(text, file)));
     std::string line;
@@ -67,7 +67,7 @@ Record parse_at2(const std::string& text, const std::string& file) {
             if (!std::isfinite(a_g))
                 throw InputError({file, line_no, "acceleration"},
                                  "value \"" + token + "\" is not finite");
-            rec.accel_mps2.push_back(units::g_to_mps2(a_g));
+            rec.accel_mps2.push_back(units::g_to_mps2(a_g, unit_g_mps2));
             // NPTS bounds the reading, not only the check after it: the values beyond it are
             // never stored (a 512 MiB file holds 2.5e8 of them).
             if (static_cast<long>(rec.accel_mps2.size()) > npts)

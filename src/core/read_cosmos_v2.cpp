@@ -44,17 +44,17 @@ struct Unit {
     std::string label;
 };
 
-std::optional<Unit> unit_from_code(long code) {
-    if (code == 2) return Unit{units::g_mps2, "g"};
+std::optional<Unit> unit_from_code(long code, double unit_g_mps2) {
+    if (code == 2) return Unit{unit_g_mps2, "g"};
     if (code == 4 || code == 10) return Unit{units::cm_to_m, "cm/s/s"};
     return std::nullopt;
 }
 
-std::optional<Unit> unit_from_text(std::string_view label) {
+std::optional<Unit> unit_from_text(std::string_view label, double unit_g_mps2) {
     std::string key;
     for (char c : text::lower(label))
         if (c != ' ') key += c;
-    if (key == "g") return Unit{units::g_mps2, "g"};
+    if (key == "g") return Unit{unit_g_mps2, "g"};
     for (const char* cm : {"cm/s/s", "cm/s^2", "cm/s2", "cm/sec2", "cm/sec/sec", "cm/sec^2", "gal"})
         if (key == cm) return Unit{units::cm_to_m, "cm/s/s"};
     return std::nullopt;
@@ -62,8 +62,8 @@ std::optional<Unit> unit_from_text(std::string_view label) {
 
 class CosmosParser {
 public:
-    CosmosParser(std::string file, std::vector<std::string> lines)
-        : file_(std::move(file)), lines_(std::move(lines)) {}
+    CosmosParser(std::string file, std::vector<std::string> lines, double unit_g_mps2)
+        : file_(std::move(file)), lines_(std::move(lines)), unit_g_mps2_(unit_g_mps2) {}
 
     Record parse();
 
@@ -87,6 +87,7 @@ private:
 
     std::string file_;
     std::vector<std::string> lines_;
+    double unit_g_mps2_;
     std::size_t next_ = 0;  // index of the next unread line
     double unknown_int_ = -999.0;
     double unknown_real_ = -999.0;
@@ -197,7 +198,8 @@ Unit CosmosParser::data_unit(std::size_t data_index, const std::vector<double>& 
     if (std::regex_search(text, m, re)) {
         stated_as = std::string(text::trim(m[1].str()));
         if (m[2].matched) stated_as = fmt::format("{} {}", stated_as, m[2].str());
-        stated = m[3].matched ? unit_from_code(static_cast<long>(count(m[3].str(), data_index, "units"))) : unit_from_text(m[1].str());
+        stated = m[3].matched ? unit_from_code(static_cast<long>(count(m[3].str(), data_index, "units")), unit_g_mps2_)
+                              : unit_from_text(m[1].str(), unit_g_mps2_);
         if (!stated)
             throw InputError(at(data_index, "units"),
                              fmt::format("unsupported units \"{}\"; expected g (code 2) or cm/s/s (code 4 or 10)",
@@ -205,7 +207,7 @@ Unit CosmosParser::data_unit(std::size_t data_index, const std::vector<double>& 
     }
     const double code = ints[int_units_code];
     if (known_int(code)) {
-        const std::optional<Unit> coded = unit_from_code(std::lround(code));
+        const std::optional<Unit> coded = unit_from_code(std::lround(code), unit_g_mps2_);
         if (!coded)
             throw InputError(at(data_index, "units"),
                              fmt::format("integer-header #3 gives units code {}; expected 2 (g) or 4/10 (cm/s/s)", code));
@@ -311,12 +313,14 @@ Record CosmosParser::parse() {
 }  // namespace
 
 Record parse_cosmos_v2(const std::string& text, const std::string& file_label,
-                       std::size_t max_lines) {
-    return CosmosParser(file_label, text::split_lines(text, file_label, max_lines)).parse();
+                       std::size_t max_lines, double unit_g_mps2) {
+    return CosmosParser(file_label, text::split_lines(text, file_label, max_lines), unit_g_mps2)
+        .parse();
 }
 
-Record read_cosmos_v2(const std::filesystem::path& path) {
-    return parse_cosmos_v2(read_input_file(path), path.string());
+Record read_cosmos_v2(const std::filesystem::path& path, double unit_g_mps2) {
+    return parse_cosmos_v2(read_input_file(path), path.string(), limits::max_cosmos_lines,
+                           unit_g_mps2);
 }
 
 }  // namespace freestand::core

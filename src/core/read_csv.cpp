@@ -72,8 +72,9 @@ struct CsvHeader {
 /// first row beyond them.
 class CsvParser {
 public:
-    CsvParser(std::string file, std::string_view text, double max_samples)
-        : file_(std::move(file)), text_(text), max_samples_(max_samples) {}
+    CsvParser(std::string file, std::string_view text, double max_samples, double unit_g_mps2)
+        : file_(std::move(file)), text_(text), max_samples_(max_samples),
+          unit_g_mps2_(unit_g_mps2) {}
     Record parse();
 
 private:
@@ -92,6 +93,7 @@ private:
     std::string file_;
     std::string_view text_;
     double max_samples_;
+    double unit_g_mps2_;
     std::optional<double> comment_dt_s_;
     std::size_t comment_dt_index_ = 0;
     double first_step_s_ = 0.0;
@@ -126,7 +128,7 @@ void CsvParser::read_dt_comment(std::size_t index, std::string_view value) {
 }
 
 void CsvParser::place_column(CsvHeader& h, std::size_t column, std::string_view name) const {
-    const csv::NameReading reading = csv::read_column_name(name);
+    const csv::NameReading reading = csv::read_column_name(name, unit_g_mps2_);
     const std::string& header = h.text;
     if (!reading.quantity)
         throw InputError(at(h.line_index, "header"),
@@ -273,12 +275,14 @@ Record CsvParser::parse() {
 
 }  // namespace
 
-Record parse_csv(const std::string& text, const std::string& file_label, double max_samples) {
-    return CsvParser(file_label, text::utf8_text(text, file_label), max_samples).parse();
+Record parse_csv(const std::string& text, const std::string& file_label, double max_samples,
+                 double unit_g_mps2) {
+    return CsvParser(file_label, text::utf8_text(text, file_label), max_samples, unit_g_mps2)
+        .parse();
 }
 
-Record read_csv(const std::filesystem::path& path) {
-    return parse_csv(read_input_file(path), path.string());
+Record read_csv(const std::filesystem::path& path, double unit_g_mps2) {
+    return parse_csv(read_input_file(path), path.string(), limits::max_samples, unit_g_mps2);
 }
 
 }  // namespace freestand::core

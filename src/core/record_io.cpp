@@ -9,14 +9,14 @@
 
 namespace freestand::core {
 
-Record read_record(const std::filesystem::path& path) {
+Record read_record(const std::filesystem::path& path, double unit_g_mps2) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw IoError(path.string() + ": is a folder; expected a record file");
     const std::string ext = text::lower(path.extension().string());
-    if (ext == ".at2") return read_at2(path);
-    if (ext == ".v2" || ext == ".v2c") return read_cosmos_v2(path);
-    if (ext == ".csv") return read_csv(path);
+    if (ext == ".at2") return read_at2(path, unit_g_mps2);
+    if (ext == ".v2" || ext == ".v2c") return read_cosmos_v2(path, unit_g_mps2);
+    if (ext == ".csv") return read_csv(path, unit_g_mps2);
     throw InputError({path.string(), 0, "extension"},
                      fmt::format("unknown record format \"{}\"; expected .AT2 (PEER NGA), .V2 (COSMOS) or .csv",
                                  path.extension().string()));

@@ -153,7 +153,7 @@ void Runner::prepare(const assess::RunSettings& run) {
         m.sets.assign(pool.begin(), pool.end());
     } else {
         for (const std::string& f : m.config.record_files) {
-            core::Record r = core::read_record(f);
+            core::Record r = core::read_record(f, m.c.site.g_mps2);
             double pga = 0.0;
             for (double a : r.accel_mps2) pga = std::max(pga, std::abs(a));
             if (!(pga > 0.0))

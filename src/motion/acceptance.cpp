@@ -121,7 +121,7 @@ std::string realism_failures(Acceptance& a, const Target& target) {
         a.va_mps_per_g = a.pgv_mps / a.pga_g;
         a.da_m_per_g = a.pgd_m / a.pga_g;
     }
-    if (a.pgv_mps > 0.0) a.adv2 = a.pga_g * units::g_mps2 * a.pgd_m / (a.pgv_mps * a.pgv_mps);
+    if (a.pgv_mps > 0.0) a.adv2 = a.pga_g * target.g_mps2 * a.pgd_m / (a.pgv_mps * a.pgv_mps);
     std::string why;
     const auto outside = [](double v, const Range& r) { return v < r.min || v > r.max; };
     if (outside(a.pga_over_zpa, lim.pga_over_zpa))
@@ -208,7 +208,7 @@ Acceptance evaluate(const core::Record& record, const Target& target, bool stop_
     Acceptance a;
     a.dt_s = record.dt_s;
     a.duration_s = record.duration_s();
-    const core::GroundMotion gm = core::measure(record);
+    const core::GroundMotion gm = core::measure(record, target.g_mps2);
     a.pga_g = gm.pga_g;
     a.pgv_mps = gm.pgv_mps;
     a.pgd_m = gm.pgd_m;
@@ -221,7 +221,7 @@ Acceptance evaluate(const core::Record& record, const Target& target, bool stop_
 
     const std::vector<double> f = criteria::check_frequencies(record.dt_s);
     a.check_points = f.size();
-    const RatioStats r5 = ratio_stats(f, spectra::psa_g(record, 0.05, f), target.psa_5pct);
+    const RatioStats r5 = ratio_stats(f, spectra::psa_g(record, 0.05, f, target.g_mps2), target.psa_5pct);
     a.min_ratio = r5.min;
     a.max_ratio = r5.max;
     a.mean_ratio = r5.mean;
@@ -233,7 +233,8 @@ Acceptance evaluate(const core::Record& record, const Target& target, bool stop_
     if (stop_early && psd_fails(a)) return rejected();
     // Reported, not a criterion.
     if (target.psa_10pct) {
-        const RatioStats r10 = ratio_stats(f, spectra::psa_g(record, 0.10, f), *target.psa_10pct);
+        const RatioStats r10 = ratio_stats(f, spectra::psa_g(record, 0.10, f, target.g_mps2),
+                                            *target.psa_10pct);
         a.ratio_10pct_min = r10.min;
         a.ratio_10pct_max = r10.max;
     }

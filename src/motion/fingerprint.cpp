@@ -78,6 +78,7 @@ void write_target(core::ByteWriter& w, const Target& t) {
     w.opt_f64(t.rg160_psd_pga_g);
     write_realism(w, t.realism);
     w.flag(t.horizontal);
+    w.f64(t.g_mps2);
 }
 
 }  // namespace

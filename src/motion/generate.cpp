@@ -225,7 +225,7 @@ MatchResult match_record(const core::Record& seed, const Target& target,
     // reshape; then match.
     const std::vector<double> f =
         spectra::log_frequencies(criteria::band_low_hz, criteria::band_high_for(seed.dt_s), 20);
-    const std::vector<double> psa = spectra::psa_g(seed, 0.05, f);
+    const std::vector<double> psa = spectra::psa_g(seed, 0.05, f, target.g_mps2);
     double log_sum = 0.0;
     for (std::size_t i = 0; i < f.size(); ++i)
         log_sum += std::log(target.psa_5pct.psa_at(f[i]) / psa[i]);

@@ -169,7 +169,7 @@ struct Matcher {
                                                              : kMaxWaveletCyclesPerSample;
             f_wave.push_back(std::min(fi, cycles / rec.dt_s));
             gain.push_back(interpolation_gain(f_wave.back(), rec.dt_s));
-            q.push_back(target.psa_5pct.psa_at(fi) * units::g_mps2);
+            q.push_back(target.psa_5pct.psa_at(fi) * target.g_mps2);
             // No cap outside 0.2-25 Hz: holding a tight band there only makes competing peaks of
             // the long-period oscillators alternate.
             const bool capped = fi >= criteria::cap_low_hz && fi <= criteria::cap_high_hz;
@@ -184,7 +184,7 @@ struct Matcher {
             pulse_v[k] = dot_support(pulse_samples[k], ends.velocity);
             pulse_d[k] = dot_support(pulse_samples[k], ends.displacement);
         }
-        zpa_mps2 = zero_period_g(target.psa_5pct) * units::g_mps2;
+        zpa_mps2 = zero_period_g(target.psa_5pct) * target.g_mps2;
         const Range& band = target.realism.pga_over_zpa;
         const double width = band.max - band.min;
         pga_low = band.min + kPgaBandLow * width;
@@ -340,7 +340,7 @@ struct Matcher {
         // Baseline rows held firmly (kBaselineDisplacement_m_per_g, and that over the duration
         // in velocity): drift the wavelets added would otherwise be removed afterwards by the
         // baseline correction, and with it the long-period part of the match.
-        const double d_unit = kBaselineDisplacement_m_per_g * zpa_mps2 / units::g_mps2;
+        const double d_unit = kBaselineDisplacement_m_per_g * zpa_mps2 / target.g_mps2;
         const double v_unit = d_unit / rec.duration_s();
         for (std::size_t j = 0; j < m; ++j) {
             c(mv, static_cast<Eigen::Index>(j)) = columns[j].now.end_v / v_unit;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/record.hpp"
+#include "core/units.hpp"
 #include "spectra/spectrum.hpp"
 
 namespace freestand::motion {
@@ -51,6 +52,9 @@ struct Target {
     /// V/A, AD/V^2 and D/A are checked on horizontal components only (the NUREG/CR-6728 ratios
     /// describe horizontal motion); PGA / ZPA and D5-75 on every component.
     bool horizontal = true;
+    /// Size of the unit g of the spectra (and of the records' PGA), and gravity of the Arias
+    /// intensity, m/s^2: a case's site.g_mps2 (docs/methods.md, Conventions).
+    double g_mps2 = units::g_mps2;
 };
 
 /// Zero-period acceleration of a target, g: its PSA at the highest tabulated frequency (RG 1.60:
@@ -69,25 +73,29 @@ struct TargetSet {
 
 /// RG 1.60 horizontal and vertical (5% and 10%), with the RG 1.60 target PSD on horizontals.
 /// The vertical is rg160_vertical_target at vertical_zpa_ratio (1: RG 1.60's own vertical).
-TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio = 1.0);
+/// g_mps2: the unit g of every target, m/s^2.
+TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio = 1.0,
+                        double g_mps2 = units::g_mps2);
 
 /// RG 1.60's vertical target (5% and 10%, tabulated on frequency_hz) at the horizontal PGA
 /// pga_g, scaled so its zero-period acceleration is zpa_ratio x pga_g. RG 1.60's own vertical
 /// spectrum (zpa_ratio = spectra::rg160_vertical_zpa_ratio, 1) is 2/3 of the horizontal below
 /// 0.25 Hz and equal to it above 3.5 Hz, its ZPA the horizontal PGA (docs/methods.md s.8).
 /// A vertical component: no target PSD, realism limited to PGA / ZPA and D5-75. InputError
-/// (field "vertical_ratio") unless zpa_ratio is in (0, 2].
+/// (field "vertical_ratio") unless zpa_ratio is in (0, 2]. g_mps2: the unit g, m/s^2.
 Target rg160_vertical_target(double pga_g, double zpa_ratio,
-                             const std::vector<double>& frequency_hz);
+                             const std::vector<double>& frequency_hz,
+                             double g_mps2 = units::g_mps2);
 
 /// Sets the realism limits of every target of the set (validated).
 void set_realism(TargetSet& targets, const RealismLimits& limits);
 
 /// Targets from a horizontal 5% spectrum (and optionally 10%); the vertical is
-/// vertical_ratio times the horizontal (2/3 is common). No target PSD.
+/// vertical_ratio times the horizontal (2/3 is common). No target PSD. g_mps2: the unit g of
+/// the spectra, m/s^2.
 TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5pct,
                         const std::optional<spectra::Spectrum>& horizontal_10pct,
-                        double vertical_ratio);
+                        double vertical_ratio, double g_mps2 = units::g_mps2);
 
 /// Throws InputError (field = the spectrum's label) unless the spectrum has >= 2 points,
 /// strictly increasing finite positive frequencies, finite positive PSA, and the damping

@@ -154,7 +154,7 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
         p.envelope[i] = envelope_at(envelope, static_cast<double>(i) * dt_s, duration_s);
     const Range& band = target.realism.pga_over_zpa;
     const double cap_mps2 = (band.min + kClipFraction * (band.max - band.min)) *
-                            zero_period_g(target.psa_5pct) * units::g_mps2;
+                            zero_period_g(target.psa_5pct) * target.g_mps2;
 
     core::Record rec;
     rec.dt_s = dt_s;
@@ -166,7 +166,7 @@ core::Record synthesize(const Target& target, double duration_s, double dt_s, st
     const spectra::OscillatorSet oscillators(0.05, f, dt_s);
     for (int pass = 0; pass < kPasses; ++pass) {
         p.build(rec);
-        const std::vector<double> psa = oscillators.psa_g(rec);
+        const std::vector<double> psa = oscillators.psa_g(rec, target.g_mps2);
         if (pass == 0) {
             fix_level(p, target_psa, psa);
             continue;

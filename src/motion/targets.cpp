@@ -63,20 +63,21 @@ void validate_target(const spectra::Spectrum& s, double expected_damping) {
 }
 
 Target rg160_vertical_target(double pga_g, double zpa_ratio,
-                             const std::vector<double>& frequency_hz) {
+                             const std::vector<double>& frequency_hz, double g_mps2) {
     require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
     require_in_range(zpa_ratio, 0.0, 2.0, SourceLocation{"", 0, "vertical_ratio"}, false, true);
     Target t;
     // The shape is linear in the PGA it is drawn for (D scales the ground displacement, itself
     // proportional to the PGA), so scaling the argument scales the whole spectrum.
-    t.psa_5pct = spectra::rg160(zpa_ratio * pga_g, 0.05, true, frequency_hz);
-    t.psa_10pct = spectra::rg160(zpa_ratio * pga_g, 0.10, true, frequency_hz);
+    t.psa_5pct = spectra::rg160(zpa_ratio * pga_g, 0.05, true, frequency_hz, g_mps2);
+    t.psa_10pct = spectra::rg160(zpa_ratio * pga_g, 0.10, true, frequency_hz, g_mps2);
     t.horizontal = false;
+    t.g_mps2 = g_mps2;
     t.realism = rg160_realism();
     return t;
 }
 
-TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio) {
+TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio, double g_mps2) {
     require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
     TargetSet t;
     t.label =
@@ -84,17 +85,18 @@ TargetSet rg160_targets(double pga_g, double vertical_zpa_ratio) {
             ? fmt::format("RG 1.60, PGA {} g", pga_g)
             : fmt::format("RG 1.60, PGA {} g, vertical ZPA {} x PGA", pga_g, vertical_zpa_ratio);
     const auto fh = design_grid(2.5);
-    t.horizontal.psa_5pct = spectra::rg160(pga_g, 0.05, false, fh);
-    t.horizontal.psa_10pct = spectra::rg160(pga_g, 0.10, false, fh);
+    t.horizontal.psa_5pct = spectra::rg160(pga_g, 0.05, false, fh, g_mps2);
+    t.horizontal.psa_10pct = spectra::rg160(pga_g, 0.10, false, fh, g_mps2);
     t.horizontal.rg160_psd_pga_g = pga_g;
     t.horizontal.realism = rg160_realism();
-    t.vertical = rg160_vertical_target(pga_g, vertical_zpa_ratio, design_grid(3.5));
+    t.horizontal.g_mps2 = g_mps2;
+    t.vertical = rg160_vertical_target(pga_g, vertical_zpa_ratio, design_grid(3.5), g_mps2);
     return t;
 }
 
 TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5pct,
                         const std::optional<spectra::Spectrum>& horizontal_10pct,
-                        double vertical_ratio) {
+                        double vertical_ratio, double g_mps2) {
     validate_target(horizontal_5pct, 0.05);
     if (horizontal_10pct) validate_target(*horizontal_10pct, 0.10);
     require_in_range(vertical_ratio, 0.0, 2.0, SourceLocation{"", 0, "vertical_ratio"}, false,
@@ -103,6 +105,7 @@ TargetSet ratio_targets(std::string label, const spectra::Spectrum& horizontal_5
     t.label = std::move(label);
     t.horizontal.psa_5pct = horizontal_5pct;
     t.horizontal.psa_10pct = horizontal_10pct;
+    t.horizontal.g_mps2 = t.vertical.g_mps2 = g_mps2;
     const std::string vlabel = fmt::format("{} x {}", vertical_ratio, horizontal_5pct.label);
     t.vertical.psa_5pct = scaled(horizontal_5pct, vertical_ratio, vlabel);
     t.vertical.horizontal = false;

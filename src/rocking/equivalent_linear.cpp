@@ -34,6 +34,7 @@ struct Scan {
     const DampedDemand* v;  // vertical spectra, or null: SA_V = ratio * SA_H
     double ratio;
     double scale;
+    double g_mps2;
 
     double sa_v_g(double f) const { return scale * (v ? v->psa_g(f) : ratio * h.psa_g(f)); }
     bool has_vertical() const { return v != nullptr || ratio > 0.0; }
@@ -65,7 +66,7 @@ struct Scan {
     double excess_g(double theta, double* f_out = nullptr, double* demand_out = nullptr) const {
         const double f = frequency_hz(theta);
         const double w = units::hz_to_radps(f);
-        const double capacity = w * w * rocking_displacement_m(R_m, alpha, theta) / units::g_mps2;
+        const double capacity = w * w * rocking_displacement_m(R_m, alpha, theta) / g_mps2;
         const double demand = scale * h.psa_g(f);
         if (f_out) *f_out = f;
         if (demand_out) *demand_out = demand;
@@ -103,9 +104,10 @@ struct Context {
     double pga_h;
     double pga_v;
     int n;
+    double g_mps2;
 
     Scan scan(double scale) const {
-        return Scan{blk.p_radps(e), blk.alpha_rad(e), blk.R_m(e), h, v, ratio, scale};
+        return Scan{blk.p_radps(e, g_mps2), blk.alpha_rad(e), blk.R_m(e), h, v, ratio, scale, g_mps2};
     }
     bool gate_exceeded(double scale) const {
         return scale * pga_h > (1.0 - 0.4 * scale * pga_v) * blk.tan_alpha(e);
@@ -241,7 +243,7 @@ ElResult equivalent_linear_rocking(const Block& blk, Edge e, const DampedSpectra
     if (vertical.spectra) v = vertical.spectra->at(*r.beta_e);
     r.damping_note = h.note;
     const Context c{blk, e, h, v ? &*v : nullptr, vertical.ratio, r.pga_h_g, r.pga_v_g,
-                    o.grid_points};
+                    o.grid_points, o.g_mps2};
     estimate_theta0(c, r);
     spectral_margin(c, r);
     return r;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "core/units.hpp"
 #include "rocking/demand.hpp"
 
 namespace freestand::rocking {
@@ -40,6 +41,8 @@ struct ElOptions {
     double fs_required = 1.5;           ///< required alpha / theta0
     /// Trial angles alpha k / n, k = 1..n-1, then alpha (1 - core::tol::relative).
     int grid_points = 2000;
+    /// Gravity, and the unit g of the spectra and PGAs, m/s^2 (a case's site.g_mps2).
+    double g_mps2 = units::g_mps2;
 };
 
 /// Result about one edge. Every empty optional has its reason set.

@@ -36,7 +36,7 @@ SlidingEstimate finish(SlidingEstimate est, const SlidingInput& in) {
         est.slide_energy_reason = fmt::format(
             "not applied below the sliding threshold: PGA {} g <= mu_e = {}", *in.pga_h_g, est.mu_e);
     } else {
-        est.slide_energy_m = energy_displacement_m(est.mu_e, *est.f_es_hz, *in.pgd_m);
+        est.slide_energy_m = energy_displacement_m(est.mu_e, *est.f_es_hz, *in.pgd_m, in.g_mps2);
     }
     return est;
 }
@@ -46,7 +46,7 @@ SlidingEstimate start(const SlidingInput& in) {
     if (in.pga_h_g) require_in_range(*in.pga_h_g, 0.0, HUGE_VAL, field("pga_h_g"), true, false);
     SlidingEstimate est;
     est.mu_e = effective_friction(in.mu_s, in.av_g);
-    est.c_s_mps2 = 2.0 * est.mu_e * units::g_mps2;
+    est.c_s_mps2 = 2.0 * est.mu_e * in.g_mps2;
     return est;
 }
 
@@ -113,14 +113,14 @@ double asce_displacement_m(double c_s_mps2, double f_es_hz) {
     return c_s_mps2 / (w * w);
 }
 
-double energy_displacement_m(double mu_e, double f_es_hz, double pgd_m) {
+double energy_displacement_m(double mu_e, double f_es_hz, double pgd_m, double g_mps2) {
     require_in_range(mu_e, 0.0, HUGE_VAL, field("mu_e"), true, false);
     require_positive(f_es_hz, field("f_es_hz"));
     require_in_range(pgd_m, 0.0, HUGE_VAL, field("pgd_m"), true, false);
     const double w = units::hz_to_radps(f_es_hz);
     const double qa = 0.5 * w * w;
-    const double qb = 4.0 * mu_e * units::g_mps2;
-    const double qc = units::g_mps2 * pgd_m;
+    const double qb = 4.0 * mu_e * g_mps2;
+    const double qc = g_mps2 * pgd_m;
     // Positive root of qa d^2 + qb d - qc = 0 in the cancellation-free form 2c / (b + sqrt(.)).
     const double disc = std::sqrt(qb * qb + 4.0 * qa * qc);
     return disc + qb > 0.0 ? 2.0 * qc / (qb + disc) : 0.0;
@@ -140,7 +140,7 @@ SlidingEstimate estimate_sliding(const SlidingInput& in, const spectra::Spectrum
     require_damping(sa_vh10, expected_damping);
     SlidingEstimate est = start(in);
     if (frictionless(est, in)) return est;
-    const Crossing c = lowest_crossing(sa_vh10, est.c_s_mps2 / units::g_mps2);
+    const Crossing c = lowest_crossing(sa_vh10, est.c_s_mps2 / in.g_mps2);
     est.f_es_hz = c.f_hz;
     if (!c.f_hz)
         est.f_es_reason = fmt::format("{:g}% SA_VH never reaches C_s ({}): does not slide (ASCE 4)",

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "core/units.hpp"
 #include "spectra/spectrum.hpp"
 
 namespace freestand::sliding {
@@ -35,8 +36,10 @@ Crossing lowest_crossing(const spectra::Spectrum& s, double level_g);
 double asce_displacement_m(double c_s_mps2, double f_es_hz);
 
 /// Energy-conservation displacement, m: positive root of
-/// g DeltaD = 4 mu_e g delta + (1/2) (2 pi f_es)^2 delta^2. mu_e >= 0, f_es_hz > 0, pgd_m >= 0.
-double energy_displacement_m(double mu_e, double f_es_hz, double pgd_m);
+/// g DeltaD = 4 mu_e g delta + (1/2) (2 pi f_es)^2 delta^2. mu_e >= 0, f_es_hz > 0, pgd_m >= 0;
+/// g_mps2 is gravity, m/s^2.
+double energy_displacement_m(double mu_e, double f_es_hz, double pgd_m,
+                             double g_mps2 = units::g_mps2);
 
 /// What the sliding estimate needs besides the spectrum or f_es.
 struct SlidingInput {
@@ -46,6 +49,8 @@ struct SlidingInput {
     /// Peak horizontal ground acceleration, g. When given and <= mu_e, the energy method is not
     /// applied (the rigid block does not slide at all).
     std::optional<double> pga_h_g;
+    /// Gravity, and the unit g of av_g, pga_h_g and the spectrum, m/s^2 (a case's site.g_mps2).
+    double g_mps2 = units::g_mps2;
 };
 
 /// Both sliding estimates. Every empty optional has its "<field>_reason" set.

@@ -78,13 +78,13 @@ Rg160Factors rg160_factors(double damping, bool vertical) {
 }
 
 Spectrum rg160(double pga_g, double damping, bool vertical,
-               const std::vector<double>& frequency_hz) {
+               const std::vector<double>& frequency_hz, double g_mps2) {
     require_positive(pga_g, SourceLocation{"", 0, "pga_g"});
     const Rg160Factors k = rg160_factors(damping, vertical);
     const double fa = 33.0, fb = 9.0, fc = vertical ? 3.5 : 2.5, fd = 0.25;
     const double wd = units::hz_to_radps(fd);
     // D multiplies the ground displacement; as PSA at 0.25 Hz: omega^2 SD / g.
-    const double psa_d = k.d * rg_ground_displacement_m_per_g * pga_g * wd * wd / units::g_mps2;
+    const double psa_d = k.d * rg_ground_displacement_m_per_g * pga_g * wd * wd / g_mps2;
     const double psa_a = k.a * pga_g, psa_b = k.b * pga_g, psa_c = k.c * pga_g;
     const std::string label =
         fmt::format("RG 1.60 {}, PGA {} g, {}% damping", vertical ? "vertical" : "horizontal",

@@ -3,6 +3,7 @@
 #include <array>
 #include <vector>
 
+#include "core/units.hpp"
 #include "spectra/spectrum.hpp"
 
 namespace freestand::spectra {
@@ -20,8 +21,10 @@ inline constexpr double rg160_vertical_zpa_ratio = 1.0;
 /// vertical control points (A 33 Hz, B 9 Hz, C 2.5 Hz or 3.5 Hz vertical, D 0.25 Hz), straight
 /// lines on log-log axes, PSA = PGA above 33 Hz, constant spectral displacement below 0.25 Hz.
 /// pga_g is the horizontal design PGA for both directions (the vertical factors include the
-/// vertical/horizontal ratio).
-Spectrum rg160(double pga_g, double damping, bool vertical, const std::vector<double>& frequency_hz);
+/// vertical/horizontal ratio). PSA is in the unit g of size g_mps2, m/s^2 (the case's), which
+/// converts the D point's ground displacement (m per g of PGA) to PSA.
+Spectrum rg160(double pga_g, double damping, bool vertical, const std::vector<double>& frequency_hz,
+               double g_mps2 = units::g_mps2);
 
 /// ASCE 7 two-period spectrum (5%, ASCE 7-16 11.4.6); tl_s in s. T0 = 0.2 SD1/SDS,
 /// TS = SD1/SDS; requires sds_g, sd1_g > 0 and tl_s > TS.

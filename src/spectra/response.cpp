@@ -633,11 +633,11 @@ std::vector<double> OscillatorSet::sd_m(const core::Record& record) const {
     return prepared_->peaks(record.accel_mps2);
 }
 
-std::vector<double> OscillatorSet::psa_g(const core::Record& record) const {
+std::vector<double> OscillatorSet::psa_g(const core::Record& record, double g_mps2) const {
     std::vector<double> out = sd_m(record);
     for (std::size_t i = 0; i < out.size(); ++i) {
         const double w = units::hz_to_radps(prepared_->frequency_hz[i]);
-        out[i] = w * w * out[i] / units::g_mps2;
+        out[i] = w * w * out[i] / g_mps2;
     }
     return out;
 }
@@ -674,7 +674,7 @@ Spectrum ResponseSpectra::spectrum(std::size_t damping_index) const {
 
 ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
                                  const std::vector<double>& frequency_hz,
-                                 const ResponseOptions& options) {
+                                 const ResponseOptions& options, double g_mps2) {
     check_inputs(record, dampings, frequency_hz);
     ResponseSpectra out;
     out.frequency_hz = frequency_hz;
@@ -686,7 +686,7 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
         for (std::size_t i = 0; i < sd.size(); ++i) {
             const double w = units::hz_to_radps(frequency_hz[i]);
             psv[i] = w * sd[i];
-            psa[i] = w * w * sd[i] / units::g_mps2;
+            psa[i] = w * w * sd[i] / g_mps2;
         }
         out.sd_m.push_back(sd);
         out.psv_mps.push_back(std::move(psv));
@@ -701,9 +701,9 @@ ResponseSpectra response_spectra(const core::Record& record, const std::vector<d
 }
 
 std::vector<double> psa_g(const core::Record& record, double damping,
-                          const std::vector<double>& frequency_hz) {
+                          const std::vector<double>& frequency_hz, double g_mps2) {
     check_inputs(record, {damping}, frequency_hz);
-    return OscillatorSet(damping, frequency_hz, record.dt_s).psa_g(record);
+    return OscillatorSet(damping, frequency_hz, record.dt_s).psa_g(record, g_mps2);
 }
 
 std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/record.hpp"
+#include "core/units.hpp"
 #include "spectra/spectrum.hpp"
 
 namespace freestand::spectra {
@@ -41,10 +42,11 @@ struct ResponseOptions {
     int max_lanes = 8;
 };
 
-/// As above with explicit integration controls (benchmarks, convergence tests).
+/// As above with explicit integration controls (benchmarks, convergence tests), PSA in the unit
+/// g of size g_mps2, m/s^2 (a case's site.g_mps2).
 ResponseSpectra response_spectra(const core::Record& record, const std::vector<double>& dampings,
                                  const std::vector<double>& frequency_hz,
-                                 const ResponseOptions& options);
+                                 const ResponseOptions& options, double g_mps2 = units::g_mps2);
 
 /// Peak relative displacement of one oscillator and when it happens: what time-domain spectral
 /// matching (RspMatch-style wavelet adjustment) needs.
@@ -58,9 +60,10 @@ struct OscillatorPeak {
 std::vector<OscillatorPeak> peak_responses(const core::Record& record, double damping,
                                            const std::vector<double>& frequency_hz);
 
-/// PSA only, one damping: the hot path for matching loops.
+/// PSA only, one damping, in the unit g of size g_mps2, m/s^2: the hot path for matching loops.
 std::vector<double> psa_g(const core::Record& record, double damping,
-                          const std::vector<double>& frequency_hz);
+                          const std::vector<double>& frequency_hz,
+                          double g_mps2 = units::g_mps2);
 
 /// Oscillators of one damping at fixed frequencies for records sampled at dt_s, set up once
 /// (their exact one-sample maps, packed for the vector loops): for loops that take many spectra
@@ -80,8 +83,8 @@ class OscillatorSet {
     /// The record must be sampled at dt_s (InputError otherwise), as validate() accepts, with at
     /// least 2 samples. Peak relative displacement |u|, m, at each frequency.
     std::vector<double> sd_m(const core::Record& record) const;
-    /// PSA = omega^2 SD / g at each frequency, g.
-    std::vector<double> psa_g(const core::Record& record) const;
+    /// PSA = omega^2 SD / g at each frequency, in the unit g of size g_mps2, m/s^2.
+    std::vector<double> psa_g(const core::Record& record, double g_mps2 = units::g_mps2) const;
     /// Signed peak displacement and its time at each frequency.
     std::vector<OscillatorPeak> peak_responses(const core::Record& record) const;
 

@@ -52,6 +52,21 @@ const HistorySet& reference_set() {
     return set;
 }
 
+// The shipped block-ts1 case with n history sets per level.
+Case ts1_with_histories(int n) {
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "block-ts1.toml");
+    c.options.histories_per_level = n;
+    c.options.max_histories_per_level = n;
+    return c;
+}
+
+// An empty folder for a store, named after the test and the process.
+fs::path empty_folder(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    return dir;
+}
+
 }  // namespace
 
 TEST_CASE("a history set encoded and decoded is the same set, bit for bit", "[assess][cache]") {
@@ -142,15 +157,42 @@ TEST_CASE("every input of a generation moves the cache key", "[assess][cache]") 
     tt = t;
     tt.horizontal_2 = t.horizontal;
     CHECK(add(tt, go, 1, 0));
+    // The targets' unit g (a case's site.g_mps2): alone, and with the RG 1.60 spectra drawn in it.
+    tt = t;
+    tt.vertical.g_mps2 = 9.80665;
+    CHECK(add(tt, go, 1, 0));
+    CHECK(add(motion::rg160_targets(1.0, 1.0, 9.80665), go, 1, 0));
+}
+
+TEST_CASE("a set cached for one gravity is never served to a case at another",
+          "[assess][cache][gravity]") {
+    const fs::path dir = empty_folder("freestand_bank_g");
+    const core::ContentStore store(dir);
+    Case c = ts1_with_histories(1);
+    RunSettings run(2);
+    run.cache = &store;
+    REQUIRE(c.site.g_mps2 == 9.81);
+    HistoryBank thesis(c, run);
+    const auto at_thesis_g = thesis.sets();
+    CHECK(thesis.generated_sets() == 1);
+    c.site.g_mps2 = 9.80665;
+    HistoryBank standard(c, run);
+    const auto at_standard_g = standard.sets();
+    CHECK(standard.cache_hits() == 0);
+    CHECK(standard.generated_sets() == 1);
+    // Matched to the same spectrum in a smaller unit g: a weaker record in m/s^2.
+    CHECK(encode_history(at_standard_g[0]) != encode_history(at_thesis_g[0]));
+    c.site.g_mps2 = 9.81;
+    HistoryBank again(c, run);
+    CHECK(encode_history(again.sets()[0]) == encode_history(at_thesis_g[0]));
+    CHECK(again.cache_hits() == 1);
+    fs::remove_all(dir);
 }
 
 TEST_CASE("the bank reads what the cache holds and generates the rest", "[assess][cache]") {
-    const fs::path dir = fs::temp_directory_path() / ("freestand_bank_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
+    const fs::path dir = empty_folder("freestand_bank");
     const core::ContentStore store(dir);
-    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "block-ts1.toml");
-    c.options.histories_per_level = 2;
-    c.options.max_histories_per_level = c.options.histories_per_level;
+    Case c = ts1_with_histories(2);
     RunSettings run(2);
     run.cache = &store;
     HistoryBank first(c, run);
