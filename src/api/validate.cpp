@@ -16,7 +16,7 @@ ValidateResult validate(const ValidateRequest& request) {
                                   request.cases_dir.string(), names));
     }
     validate::Validation v = validate::run(request.cases_dir);
-    report::Stamp stamp = report::validation_stamp(v, request.build_commit);
+    report::Stamp stamp = report::validation_stamp(v, request.commit);
     report::ValidationReport reports = report::render_validation(v, stamp);
     return {request, std::move(v), std::move(stamp), std::move(reports)};
 }

@@ -12,7 +12,7 @@ namespace freestand::api {
 
 struct ValidateRequest {
     std::filesystem::path cases_dir = "cases";  ///< folder of the shipped glove-box cases
-    std::string build_commit;                   ///< stamped into the reports
+    std::string commit;                         ///< the build's commit, stamped into the reports
 };
 
 struct ValidateResult {

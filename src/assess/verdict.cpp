@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/units.hpp"
 #include "core/steps.hpp"
 
 namespace freestand::assess {

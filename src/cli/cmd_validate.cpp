@@ -30,7 +30,7 @@ int run(const std::vector<std::string>& args) {
     if (!vm) return 0;
     api::ValidateRequest request;
     request.cases_dir = (*vm)["cases"].as<std::string>();
-    request.build_commit = build_commit;
+    request.commit = build_commit;
     const fs::path out = (*vm)["out"].as<std::string>();
     const auto start = std::chrono::steady_clock::now();
     const api::ValidateResult result = api::validate(request);

@@ -18,7 +18,7 @@ struct StampedInput {
 
 struct Stamp {
     std::string tool_version;  ///< core::version()
-    /// The CLI's build_commit: 12 hex digits, "-dirty" appended when the build's tree had
+    /// The build's commit (api::build_commit): 12 hex digits, "-dirty" appended when the build's tree had
     /// uncommitted changes; "unknown" outside git.
     std::string commit;
     std::string input_sha256;  ///< of the case file's bytes
