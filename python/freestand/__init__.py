@@ -33,7 +33,8 @@ IoError = _fs.IoError
 
 __version__: str = _fs.version
 commit: str = _fs.commit
-#: Gravity, m/s^2: the thesis's 9.81 (docs/methods.md, Conventions), as in every computation.
+#: Default gravity and size of the unit g, m/s^2: the thesis's 9.81 (docs/methods.md, Conventions);
+#: a case may set its own (site.g_mps2).
 g_mps2: float = _fs.g_mps2
 #: Names of the simulation's contact modes, indexed by the codes in simulate()'s series["mode"].
 mode_names: tuple = tuple(_fs.mode_names)

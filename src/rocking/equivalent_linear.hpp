@@ -6,6 +6,7 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "block/edge_pair.hpp"
 #include "core/units.hpp"
 #include "rocking/demand.hpp"
 
@@ -85,14 +86,7 @@ ElResult equivalent_linear_rocking(const block::Block& blk, block::Edge e,
 
 /// Both edges (one computation for a symmetric block) and the governing one: the smaller
 /// spectral margin (an empty margin counts as infinite); ties go to the critical edge.
-struct ElBlockResult {
-    ElResult left;
-    ElResult right;
-    block::Edge governing_edge = block::Edge::right;
-    const ElResult& governing() const {
-        return governing_edge == block::Edge::left ? left : right;
-    }
-};
+struct ElBlockResult : block::EdgePair<ElResult> {};
 
 ElBlockResult equivalent_linear_rocking(const block::Block& blk, const DampedSpectra& horizontal,
                                         const VerticalDemand& vertical, const ElOptions& options);

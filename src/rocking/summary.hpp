@@ -5,6 +5,7 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "block/edge_pair.hpp"
 #include "rocking/checks.hpp"
 #include "rocking/demand.hpp"
 #include "rocking/equivalent_linear.hpp"
@@ -46,14 +47,9 @@ struct EdgeChecks {
     std::optional<ElResult> el;
 };
 
-struct RockingChecks {
-    EdgeChecks left;
-    EdgeChecks right;
-    /// The equivalent-linear governing edge when a spectrum was given, else the critical edge.
-    block::Edge governing_edge = block::Edge::right;
-    const EdgeChecks& governing() const {
-        return governing_edge == block::Edge::left ? left : right;
-    }
+/// Both edges; the governing one is the equivalent-linear governing edge when a spectrum was
+/// given, else the critical edge.
+struct RockingChecks : block::EdgePair<EdgeChecks> {
     std::optional<double> pga_h_g;
     std::string pga_h_source;        ///< "given", "spectrum ZPA", or a caution when the
                                      ///< spectrum stops below 33 Hz

@@ -101,7 +101,7 @@ PeakInitiation classify_peak(const Block& blk, double mu_s, double peak_h_g, dou
     PeakInitiation out;
     out.left = classify_edge(blk, Edge::left, mu_s, peak_h_g, -peak_v_g);
     out.right = classify_edge(blk, Edge::right, mu_s, peak_h_g, -peak_v_g);
-    out.critical_edge = blk.critical_edge();
+    out.governing_edge = blk.critical_edge();
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "block/block.hpp"
+#include "block/edge_pair.hpp"
 #include "block/mode.hpp"
 
 namespace freestand::sliding {
@@ -65,14 +66,10 @@ Initiation classify_signed(const block::Block& blk, double mu_s, double a_h_g, d
 /// Both edges under peak accelerations of unknown sign: horizontal peak_h_g >= 0 in either
 /// direction, vertical peak_v_g >= 0 applied downward (the worst case for every mode, since it
 /// lowers the effective gravity): A = peak_h / (1 - peak_v).
-struct PeakInitiation {
-    Initiation left;
-    Initiation right;
-    block::Edge critical_edge = block::Edge::right;  ///< smaller alpha: tips first
-    /// Classification about the critical edge. It always shows the most motion of the two
-    /// (rest < slide < rock family), because tan(alpha) is smaller there.
-    const Initiation& governing() const { return critical_edge == block::Edge::left ? left : right; }
-};
+/// The governing edge is the critical edge (smaller alpha: tips first). Its classification
+/// always shows the most motion of the two (rest < slide < rock family), because tan(alpha) is
+/// smaller there.
+struct PeakInitiation : block::EdgePair<Initiation> {};
 
 /// See PeakInitiation. Throws InputError for peak_h_g < 0, peak_v_g < 0 or peak_v_g >= 1.
 PeakInitiation classify_peak(const block::Block& blk, double mu_s, double peak_h_g,

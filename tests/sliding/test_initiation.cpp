@@ -133,7 +133,7 @@ TEST_CASE("asymmetric block classifies each edge, the slenderer edge governs",
     // tan(alpha_L) = 0.2, tan(alpha_R) = 0.4; mu 0.3, A 0.5.
     const Block blk = Block::general(0.2, 0.4, 1.0, 100.0, 20.0);
     const PeakInitiation p = classify_peak(blk, 0.3, 0.5, 0.0);
-    CHECK(p.critical_edge == Edge::left);
+    CHECK(p.governing_edge == Edge::left);
     CHECK(p.left.mode == Mode::rock);  // mu_crit_L(0.5) = 0.246 < 0.3
     CHECK(*p.left.mu_crit == Approx(32.0 / 130.0).epsilon(1e-13));
     CHECK(p.right.mode == Mode::slide);  // mu 0.3 <= tan(alpha_R) 0.4
