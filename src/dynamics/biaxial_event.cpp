@@ -313,10 +313,10 @@ private:
     template <class Dense>
     void observe_peaks(const Dense& dense, const State& x0, const State& xe, double t,
                        double te) {
-        auto rate = [](const State& x, int which) {
+        auto rate = [](const State& x, std::size_t which) {
             return which == 0 ? x[0] * x[2] + x[1] * x[3] : x[which - 1] * x[which + 1];
         };
-        for (int which = 0; which < 3; ++which) {
+        for (std::size_t which = 0; which < 3; ++which) {
             const double f0 = rate(x0, which), f1 = rate(xe, which);
             if (!(f0 > 0.0 && f1 <= 0.0)) continue;
             auto f = [&](double tt) { return rate(dense(tt), which); };
@@ -331,7 +331,7 @@ private:
         const double G = seg_.G(t0), G1 = seg_.G1;
         const double t2 = tau * tau, t3 = t2 * tau;
         BiaxialState s = s0;
-        for (int i = 0; i < 2; ++i) {
+        for (std::size_t i = 0; i < 2; ++i) {
             s.u[i] += s0.v[i] * tau - a[i] * t2 / 2.0 - a1[i] * t3 / 6.0;
             s.v[i] += -a[i] * tau - a1[i] * t2 / 2.0;
         }
