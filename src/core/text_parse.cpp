@@ -12,19 +12,29 @@
 
 namespace freestand::core::text {
 
-bool parse_double(std::string_view token, double& value) {
-    const char* first = token.data();
-    const char* last = token.data() + token.size();
-    if (first != last && *first == '+') ++first;
+namespace text_parse_detail {
+
+// The whole of [first, last) as one std::from_chars double; false for an empty range or
+// trailing text.
+bool whole_double(const char* first, const char* last, double& value) {
     const auto [ptr, ec] = std::from_chars(first, last, value);
     return first != last && ec == std::errc() && ptr == last;
 }
 
+}  // namespace text_parse_detail
+
+bool parse_double(std::string_view token, double& value) {
+    const char* first = token.data();
+    const char* last = token.data() + token.size();
+    if (first != last && *first == '+') ++first;
+    return text_parse_detail::whole_double(first, last, value);
+}
+
 std::optional<double> parse_number(std::string_view token) {
     double value = 0.0;
-    const char* last = token.data() + token.size();
-    const auto [ptr, ec] = std::from_chars(token.data(), last, value);
-    if (ec != std::errc() || ptr != last || !std::isfinite(value)) return std::nullopt;
+    if (!text_parse_detail::whole_double(token.data(), token.data() + token.size(), value) ||
+        !std::isfinite(value))
+        return std::nullopt;
     return value;
 }
 
