@@ -64,7 +64,7 @@ class Record:
 
     @property
     def accel_g(self) -> np.ndarray:
-        """The samples in g (g = g_mps2, the value everywhere in freestand)."""
+        """The samples in g of g_mps2 m/s^2 (freestand's default unit g; a case may set its own)."""
         return self.accel_mps2 / g_mps2
 
 
