@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/paths.hpp"
+#include "support/shipped_validation.hpp"
 #include "assess/verdict.hpp"
 #include "core/errors.hpp"
 #include "validate/specimens.hpp"
@@ -25,10 +26,7 @@ using namespace freestand::validate;
 
 namespace {
 
-const Validation& shipped() {
-    static const Validation v = run(fs::path(freestand::test::source_dir()) / "cases");
-    return v;
-}
+const Validation& shipped() { return freestand::test::shipped_validation(); }
 
 const Row& row(const std::string& id) {
     const auto& rows = shipped().rows;
