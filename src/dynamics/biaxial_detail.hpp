@@ -169,6 +169,10 @@ private:
     ModeTally<BiaxialSummary> tally_{summary_};
 };
 
+/// Throws InputError naming the excitation's field that is not valid: dt_s, sample counts,
+/// accelerations (core::limits).
+void require_biaxial_excitation(const BiaxialExcitation& e);
+
 BiaxialResult run_biaxial_event(const BiaxialModel& m, const BiaxialBase& base, const Options& o);
 BiaxialResult run_biaxial_cd(const BiaxialModel& m, const BiaxialBase& base, const Options& o);
 

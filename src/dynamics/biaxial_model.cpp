@@ -107,9 +107,7 @@ std::optional<std::string> biaxial_rocking_reason(const block::Block& block,
     return std::nullopt;
 }
 
-namespace {
-
-void require_excitation(const BiaxialExcitation& e) {
+void detail::require_biaxial_excitation(const BiaxialExcitation& e) {
     require_positive(e.dt_s, {"", 0, "excitation dt_s"});
     if (e.x_mps2.empty())
         throw InputError({"", 0, "excitation x_mps2"}, "expected at least one sample");
@@ -125,6 +123,8 @@ void require_excitation(const BiaxialExcitation& e) {
     core::limits::require_within(static_cast<double>(e.x_mps2.size()), core::limits::max_samples,
                                  {"", 0, "excitation"}, "the excitation's samples");
 }
+
+namespace {
 
 void require_options(const BiaxialExcitation& e, const Options& o) {
     require_positive(o.rel_tol, {"", 0, "rel_tol"});
@@ -157,7 +157,7 @@ Options biaxial_options() {
 
 BiaxialResult simulate_biaxial(const BiaxialModel& model, const BiaxialExcitation& excitation,
                                const Options& options) {
-    require_excitation(excitation);
+    detail::require_biaxial_excitation(excitation);
     require_options(excitation, options);
     const auto start = std::chrono::steady_clock::now();
     const detail::BiaxialBase base(excitation, options.g_mps2);

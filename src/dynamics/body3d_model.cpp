@@ -1,0 +1,98 @@
+// The 3D body, its footprint's geometry and its model (docs/methods.md s.11).
+#include <algorithm>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "core/limits.hpp"
+#include "dynamics/body3d.hpp"
+
+namespace freestand::dynamics {
+
+namespace {
+
+void require_length(double v_m, const char* field) {
+    const SourceLocation where{"", 0, field};
+    require_positive(v_m, where);
+    core::limits::require_within(v_m, core::limits::max_length_m, where, "length (m)");
+}
+
+}  // namespace
+
+double Body3d::reach_m(double psi_rad) const {
+    const Eigen::Vector2d e(std::cos(psi_rad), std::sin(psi_rad));
+    double reach = -std::numeric_limits<double>::infinity();
+    for (const auto& v : footprint_m) reach = std::max(reach, v.dot(e));
+    return reach;
+}
+
+double Body3d::critical_tilt_rad(double psi_rad) const {
+    return std::atan2(std::max(reach_m(psi_rad), 0.0), h_m);
+}
+
+Body3d box_body(double half_x_m, double half_y_m, double cg_height_m, double mass_kg,
+                std::optional<double> total_height_m) {
+    require_length(half_x_m, "half_x_m");
+    require_length(half_y_m, "half_y_m");
+    require_length(cg_height_m, "h_m");
+    core::limits::require_in(mass_kg, {core::limits::min_mass_kg, core::limits::max_mass_kg},
+                             {"", 0, "mass_kg"});
+    const double H = total_height_m.value_or(2.0 * cg_height_m);
+    require_length(H, "total_height_m");
+    if (H < cg_height_m)
+        throw InputError({"", 0, "total_height_m"},
+                         fmt::format("must be at least the CG height {} m; got {} m", cg_height_m, H));
+    Body3d b;
+    b.mass_kg = mass_kg;
+    b.h_m = cg_height_m;
+    b.footprint_m = {{half_x_m, -half_y_m}, {half_x_m, half_y_m}, {-half_x_m, half_y_m},
+                     {-half_x_m, -half_y_m}};
+    const double M = mass_kg;
+    // A uniform box 2 half_x x 2 half_y x H about its centre.
+    b.inertia_cg_kgm2 = Eigen::Vector3d(M * (4.0 * half_y_m * half_y_m + H * H) / 12.0,
+                                        M * (4.0 * half_x_m * half_x_m + H * H) / 12.0,
+                                        M * (half_x_m * half_x_m + half_y_m * half_y_m) / 3.0)
+                            .asDiagonal();
+    return b;
+}
+
+Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<double> mu_k,
+                              double normal_restitution) {
+    core::limits::require_in(mu_s, core::limits::friction, {"", 0, "mu_s"});
+    const double k = mu_k.value_or(mu_s);
+    if (!std::isfinite(k) || k < 0.0 || k > mu_s)
+        throw InputError({"", 0, "mu_k"},
+                         fmt::format("kinetic friction must be in [0, mu_s = {}]; got {}", mu_s, k));
+    core::limits::require_in(normal_restitution, core::limits::restitution,
+                             {"", 0, "normal_restitution"});
+    if (body.footprint_m.size() < 3)
+        throw InputError({"", 0, "footprint_m"},
+                         fmt::format("expected at least 3 vertices; got {}", body.footprint_m.size()));
+    require_length(body.h_m, "h_m");
+    core::limits::require_in(body.mass_kg, {core::limits::min_mass_kg, core::limits::max_mass_kg},
+                             {"", 0, "mass_kg"});
+    // The CG must stand over the footprint: every direction has a vertex beyond it.
+    for (int q = 0; q < 8; ++q)
+        if (body.reach_m(q * units::pi / 4.0) <= 0.0)
+            throw InputError({"", 0, "footprint_m"}, "must surround the CG's plan position");
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(body.inertia_cg_kgm2);
+    if (!body.inertia_cg_kgm2.isApprox(body.inertia_cg_kgm2.transpose()) ||
+        eig.eigenvalues().minCoeff() <= 0.0)
+        throw InputError({"", 0, "inertia_cg_kgm2"}, "must be symmetric and positive definite");
+    return {body, mu_s, k, normal_restitution};
+}
+
+const char* to_string(ContactState state) {
+    switch (state) {
+        case ContactState::rest: return "rest";
+        case ContactState::slide: return "slide";
+        case ContactState::edge: return "edge";
+        case ContactState::vertex: return "vertex";
+        case ContactState::flight: return "flight";
+    }
+    return "?";
+}
+
+}  // namespace freestand::dynamics

@@ -1,0 +1,248 @@
+// The 3D body's time stepping (docs/methods.md s.11): Moreau-Jean's midpoint scheme, the
+// contact states it passes through, the samples and the summary.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/limits.hpp"
+#include "core/steps.hpp"
+#include "dynamics/biaxial_detail.hpp"
+#include "dynamics/body3d_detail.hpp"
+
+namespace freestand::dynamics {
+
+namespace {
+
+using detail::BodyState;
+using detail::VertexContact;
+
+/// Fastest free rocking frequency parameter of the body, rad/s: sqrt(M g R / I) about each
+/// footprint edge (R the CG's distance from it, I the inertia about it) and each vertex (R its
+/// distance, I the least about an axis through it).
+double fastest_rocking_radps(const Body3d& b, double g_mps2) {
+    double p = 0.0;
+    const auto& f = b.footprint_m;
+    const double least_inertia_kgm2 =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(b.inertia_cg_kgm2).eigenvalues().minCoeff();
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        const Eigen::Vector3d a(f[i].x(), f[i].y(), -b.h_m);
+        const Eigen::Vector3d c(f[(i + 1) % f.size()].x(), f[(i + 1) % f.size()].y(), -b.h_m);
+        const Eigen::Vector3d n = (c - a).normalized();
+        const double R = (a - a.dot(n) * n).norm();
+        const double I_edge = n.dot(b.inertia_cg_kgm2 * n) + b.mass_kg * R * R;
+        p = std::max(p, std::sqrt(b.mass_kg * g_mps2 * R / I_edge));
+        const double I_vertex = least_inertia_kgm2;
+        const double R_v = a.norm();
+        p = std::max(p, std::sqrt(b.mass_kg * g_mps2 * R_v / (I_vertex + b.mass_kg * R_v * R_v)));
+    }
+    return p;
+}
+
+void require_options(const Body3dModel& m, const BiaxialExcitation& e, const Body3dOptions& o) {
+    require_positive(o.dt_s, {"", 0, "dt_s"});
+    require_positive(o.solver_tol, {"", 0, "solver_tol"});
+    require_positive(o.regularization, {"", 0, "regularization"});
+    require_positive(o.max_step_p, {"", 0, "max_step_p"});
+    if (o.max_sweeps == 0) throw InputError({"", 0, "max_sweeps"}, "must be at least 1");
+    if (!std::isfinite(o.tail_s) || o.tail_s < 0.0)
+        throw InputError({"", 0, "tail_s"}, fmt::format("must be >= 0 s; got {}", o.tail_s));
+    const double p = fastest_rocking_radps(m.body, o.g_mps2);
+    if (o.dt_s * p > o.max_step_p)
+        throw InputError({"", 0, "dt_s"},
+                         fmt::format("{} s is too coarse for this body: its fastest rocking has "
+                                     "p = {:.4g} rad/s, and a step must keep dt p <= {} "
+                                     "(dt <= {:.3g} s)",
+                                     o.dt_s, p, o.max_step_p, o.max_step_p / p));
+    const double steps = (e.duration_s() + o.tail_s) / o.dt_s;
+    core::limits::require_within(steps, core::limits::max_fixed_steps, {"", 0, "dt_s"},
+                                 "3D steps (duration / dt)");
+}
+
+/// What a step needs from the body that does not change.
+struct Fixed {
+    const Body3dModel& model;
+    Eigen::Matrix3d inverse_inertia_body;
+    std::vector<Eigen::Vector3d> vertices_body;  ///< from the CG, body axes
+    Eigen::Vector3d footprint_centre_body;
+    const Body3dOptions& options;
+};
+
+Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o) {
+    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, Eigen::Vector3d::Zero(), o};
+    for (const auto& v : m.body.footprint_m) {
+        f.vertices_body.emplace_back(v.x(), v.y(), -m.body.h_m);
+        f.footprint_centre_body += f.vertices_body.back();
+    }
+    f.footprint_centre_body /= static_cast<double>(f.vertices_body.size());
+    return f;
+}
+
+/// What one step did, for the recorder.
+struct StepOutcome {
+    ContactState state = ContactState::rest;
+    bool converged = true;
+};
+
+class Stepper {
+public:
+    explicit Stepper(const Fixed& f) : f_(f), impulses_(f.vertices_body.size(), Eigen::Vector3d::Zero()),
+                                       slipping_(f.vertices_body.size(), false) {}
+
+    /// One Moreau-Jean step of dt_s from the state, under the base's a (horizontal) and
+    /// G = g + yg'' at the step's midpoint.
+    StepOutcome step(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) {
+        const double h = dt_s;
+        const Eigen::Vector3d p_mid = s.p_m + 0.5 * h * s.twist.v_mps;
+        const Eigen::Quaterniond q_mid = detail::turned(s.q, s.twist.w_radps, 0.5 * h);
+        const Eigen::Matrix3d R = q_mid.toRotationMatrix();
+        detail::MassMatrix mass{f_.model.body.mass_kg,
+                                R * f_.inverse_inertia_body * R.transpose()};
+        const Eigen::Matrix3d I_world = R * f_.model.body.inertia_cg_kgm2 * R.transpose();
+        auto contacts = contacts_at(p_mid, R, s.twist);
+        // The free motion: gravity and the base's inertia force (the body's frame moves with the
+        // base), and the gyroscopic moment.
+        detail::Twist t = s.twist;
+        t.v_mps += h * Eigen::Vector3d(-a_mps2.x(), -a_mps2.y(), -G_mps2);
+        const Eigen::Vector3d& w = s.twist.w_radps;
+        t.w_radps += h * (mass.inverse_inertia * (-w.cross(I_world * w)));
+        const auto solve = detail::solve_impulses(
+            contacts, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
+            f_.options.max_sweeps, f_.options.regularization);
+        remember(contacts, t);
+        s.twist = t;
+        s.p_m = p_mid + 0.5 * h * t.v_mps;
+        s.q = detail::turned(q_mid, t.w_radps, 0.5 * h);
+        return {state_of(contacts, t), solve.converged || contacts.empty()};
+    }
+
+private:
+    std::vector<VertexContact> contacts_at(const Eigen::Vector3d& p_mid, const Eigen::Matrix3d& R,
+                                           const detail::Twist& twist) const {
+        std::vector<VertexContact> out;
+        for (std::size_t i = 0; i < f_.vertices_body.size(); ++i) {
+            const Eigen::Vector3d r = R * f_.vertices_body[i];
+            if (p_mid.z() + r.z() > 0.0) continue;
+            VertexContact c;
+            c.vertex = i;
+            c.r_m = r;
+            c.mu = slipping_[i] ? f_.model.mu_k : f_.model.mu_s;
+            c.restitution = f_.model.normal_restitution;
+            c.approach_mps = twist.at(r).z();
+            c.impulse_Ns = impulses_[i];
+            out.push_back(c);
+        }
+        return out;
+    }
+
+    void remember(const std::vector<VertexContact>& contacts, const detail::Twist& t) {
+        std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
+        std::fill(slipping_.begin(), slipping_.end(), false);
+        for (const auto& c : contacts) {
+            impulses_[c.vertex] = c.impulse_Ns;
+            slipping_[c.vertex] = t.at(c.r_m).head<2>().norm() > detail::stick_speed_mps;
+        }
+    }
+
+    ContactState state_of(const std::vector<VertexContact>& contacts, const detail::Twist& t) const {
+        std::size_t carrying = 0;
+        bool moving = false;
+        for (const auto& c : contacts) {
+            if (c.impulse_Ns.z() <= 0.0) continue;
+            ++carrying;
+            moving = moving || t.at(c.r_m).norm() > detail::stick_speed_mps;
+        }
+        if (carrying == 0) return ContactState::flight;
+        if (carrying == 1) return ContactState::vertex;
+        if (carrying == 2) return ContactState::edge;
+        return moving ? ContactState::slide : ContactState::rest;
+    }
+
+    const Fixed& f_;
+    std::vector<Eigen::Vector3d> impulses_;  ///< last step's, per vertex (the warm start)
+    std::vector<bool> slipping_;             ///< per vertex, at the last step's end
+};
+
+/// Tilt, tilt over the critical tilt in the direction of the lean, twist and slide of a state.
+Body3dSample sample_of(const BodyState& s, const Fixed& f, double t_s, ContactState state) {
+    const Eigen::Matrix3d R = s.q.toRotationMatrix();
+    Body3dSample out;
+    out.time_s = t_s;
+    out.state = state;
+    out.tilt_rad = std::acos(std::clamp(R(2, 2), -1.0, 1.0));
+    // The world's vertical in body axes leans away from the body's lean.
+    const Eigen::Vector3d up_body = R.transpose() * Eigen::Vector3d::UnitZ();
+    if (out.tilt_rad > 0.0) {
+        const double psi = std::atan2(-up_body.y(), -up_body.x());
+        out.tilt_over_critical = out.tilt_rad / f.model.body.critical_tilt_rad(psi);
+    }
+    // Swing-twist decomposition about the vertical.
+    out.twist_rad = 2.0 * std::atan2(s.q.z(), s.q.w());
+    if (out.twist_rad > units::pi) out.twist_rad -= units::two_pi;
+    if (out.twist_rad < -units::pi) out.twist_rad += units::two_pi;
+    const Eigen::Vector3d centre = s.p_m + R * f.footprint_centre_body;
+    out.slide_x_m = centre.x() - f.footprint_centre_body.x();
+    out.slide_y_m = centre.y() - f.footprint_centre_body.y();
+    return out;
+}
+
+void take_peaks(Body3dSummary& sum, const Body3dSample& x) {
+    sum.tilt_max_rad = std::max(sum.tilt_max_rad, x.tilt_rad);
+    sum.tilt_max_over_critical = std::max(sum.tilt_max_over_critical, x.tilt_over_critical);
+    sum.twist_max_rad = std::max(sum.twist_max_rad, std::abs(x.twist_rad));
+    sum.slide_max_m = std::max(sum.slide_max_m, std::hypot(x.slide_x_m, x.slide_y_m));
+}
+
+}  // namespace
+
+Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& excitation,
+                             const Body3dOptions& options) {
+    detail::require_biaxial_excitation(excitation);
+    require_options(model, excitation, options);
+    const auto wall0 = std::chrono::steady_clock::now();
+    const detail::BiaxialBase base(excitation, options.g_mps2);
+    const double n_sub = std::max(1.0, core::steps_covering(excitation.dt_s / options.dt_s));
+    const double h = excitation.dt_s / n_sub;
+    const Fixed fixed = fixed_of(model, options);
+    Stepper stepper(fixed);
+    BodyState s;
+    s.p_m = Eigen::Vector3d(0.0, 0.0, model.body.h_m);
+
+    Body3dResult out;
+    auto& sum = out.summary;
+    sum.pga_g = excitation.pga_mps2() / options.g_mps2;
+    const auto first = sample_of(s, fixed, 0.0, ContactState::rest);
+    if (options.record_series) out.series.push_back(first);
+    const std::size_t segments = base.segments(options.tail_s);
+    const auto n = static_cast<std::size_t>(n_sub);
+    for (std::size_t k = 0; k < segments && !sum.overturned; ++k) {
+        const auto seg = base.segment(k);
+        ContactState state = ContactState::rest;
+        for (std::size_t j = 0; j < n; ++j) {
+            const double t_mid = seg.tk + (static_cast<double>(j) + 0.5) * h;
+            const auto a = seg.a(t_mid);
+            const auto step = stepper.step(s, {a[0], a[1]}, seg.G(t_mid), h);
+            state = step.state;
+            ++sum.steps;
+            if (!step.converged) ++sum.unconverged_steps;
+            sum.time_in_state_s[static_cast<std::size_t>(state)] += h;
+        }
+        const double t_end = seg.tk + excitation.dt_s;
+        const auto x = sample_of(s, fixed, t_end, state);
+        take_peaks(sum, x);
+        if (options.record_series) out.series.push_back(x);
+        sum.end_time_s = t_end;
+        if (x.tilt_rad >= 0.5 * units::pi) {
+            sum.overturned = true;
+            sum.overturn_time_s = t_end;
+        }
+        // Once the base is quiet, a body at rest stays there.
+        if (t_end >= base.quiet_from_s() && state == ContactState::rest) break;
+    }
+    sum.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    return out;
+}
+
+}  // namespace freestand::dynamics
