@@ -137,6 +137,54 @@ SimulateResult run_pair(const JoinedUnit& u, const dynamics::BlockModel& unit1,
     return {exc.label, std::move(run)};
 }
 
+// The 3D body's base motion: the biaxial excitation when a y component is given, else x (and
+// the vertical) with y at rest.
+dynamics::BiaxialExcitation body3d_excitation(const SimulateExcitation& e) {
+    if (biaxial(e)) return biaxial_excitation(e);
+    const dynamics::Excitation x = planar_excitation(e);
+    dynamics::BiaxialExcitation out =
+        dynamics::biaxial_excitation(x, std::vector<double>(x.horizontal_mps2.size(), 0.0));
+    return out;
+}
+
+void require_body3d_request(const SimulateRequest& r) {
+    if (r.restitution)
+        throw InputError(field("restitution"),
+                         "not used by the 3D body, whose impacts keep the angular momentum about "
+                         "the new contact (docs/methods.md s.11)");
+    if (r.top_height_m) throw InputError(field("top_height_m"), "not used by the 3D body");
+    if (r.flexible || r.unit2)
+        throw InputError(field("body3d"), "the 3D body runs alone (no flexible mode, no second unit)");
+    if (r.integrator != dynamics::Integrator::event)
+        throw InputError(field("integrator"), "the 3D body has one integrator (Moreau-Jean)");
+}
+
+// The body's errors named body3d.*.
+dynamics::Body3d body_of(const Body3dSpec& b) {
+    try {
+        return dynamics::box_body(b.half_x_m, b.half_y_m, b.cg_height_m, b.mass_kg,
+                                  b.total_height_m);
+    } catch (const InputError& e) {
+        if (!e.where().file.empty()) throw;
+        throw InputError(field("body3d." + e.where().field), e.message());
+    }
+}
+
+SimulateResult run_body3d(const SimulateRequest& r) {
+    require_body3d_request(r);
+    const dynamics::Body3dModel model = dynamics::make_body3d_model(body_of(*r.body3d), r.mu_s, r.mu_k);
+    dynamics::Body3dOptions options;
+    options.dt_s = r.body3d->dt_s;
+    options.record_series = r.record_series;
+    const dynamics::BiaxialExcitation exc = body3d_excitation(r.excitation);
+    try {
+        return {exc.label, Body3dRun{model, options, dynamics::simulate_body3d(model, exc, options)}};
+    } catch (const InputError& e) {
+        if (!e.where().file.empty() || e.where().field != "dt_s") throw;
+        throw InputError(field("body3d.dt_s"), e.message());
+    }
+}
+
 }  // namespace simulate_detail
 
 std::optional<dynamics::Integrator> integrator_named(const std::string& name) {
@@ -148,6 +196,7 @@ std::optional<dynamics::Integrator> integrator_named(const std::string& name) {
 SimulateResult simulate(const SimulateRequest& r) {
     using namespace simulate_detail;
     require_consistent(r);
+    if (r.body3d) return run_body3d(r);
     const block::Block blk = sliding::make_block(r.box);
     const dynamics::Options options = run_options(r);
     if (biaxial(r.excitation)) return run_biaxial(r, blk, options);

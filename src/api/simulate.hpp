@@ -1,8 +1,9 @@
 #pragma once
 /// simulate: the time history of a free-standing block under a record or a sine
-/// (docs/methods.md s.6-s.10). One request runs one of four models: the planar rigid block;
+/// (docs/methods.md s.6-s.11). One request runs one of five models: the planar rigid block;
 /// biaxial sliding when a second horizontal component is given (s.10); the reduced-order
-/// flexible body (s.10); or two rigid units joined by a tunnel (s.10).
+/// flexible body (s.10); two rigid units joined by a tunnel (s.10); or the rigid body in three
+/// dimensions under all components at once (s.11).
 #include <array>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include "api/json.hpp"
 #include "core/record.hpp"
 #include "dynamics/biaxial.hpp"
+#include "dynamics/body3d.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/pair.hpp"
 #include "dynamics/simulate.hpp"
@@ -39,6 +41,17 @@ struct JoinedUnit {
     double tunnel_height_m = 0.0;   ///< tunnel_height_m above the base, in [0, 1000]
 };
 
+/// The 3D body (docs/methods.md s.11): a box footprint 2 half_x x 2 half_y centred under the
+/// CG, uniform inertia of a box of height total_height_m. Errors name body3d.*.
+struct Body3dSpec {
+    double half_x_m = 0.0;
+    double half_y_m = 0.0;
+    double cg_height_m = 0.0;
+    double mass_kg = 1.0;
+    std::optional<double> total_height_m;  ///< default 2 cg_height_m
+    double dt_s = 1e-4;                    ///< time step, s
+};
+
 /// An InputError about a request names its field (`mu_s`, `box.half_width_m`, `flexible.f`,
 /// `unit2.mu_s`, `sine_y.amplitude_g`), never a command-line option.
 struct SimulateRequest {
@@ -52,6 +65,10 @@ struct SimulateRequest {
     SimulateExcitation excitation;
     std::optional<dynamics::FlexibleMode> flexible;  ///< the flexible body (planar, alone)
     std::optional<JoinedUnit> unit2;                 ///< a second unit (planar, no series)
+    /// The 3D body instead of `box`'s planar block: every component (x, y when given, vertical)
+    /// at once. Takes mu_s and mu_k; restitution, top_height_m, integrator, flexible and unit2
+    /// do not apply to it.
+    std::optional<Body3dSpec> body3d;
     bool record_series = false;                      ///< fill the run's series
 };
 
@@ -77,9 +94,15 @@ struct PairRun {
     dynamics::PairResult result;
 };
 
+struct Body3dRun {
+    dynamics::Body3dModel model;
+    dynamics::Body3dOptions options;
+    dynamics::Body3dResult result;
+};
+
 struct SimulateResult {
     std::string excitation_label;  ///< the record's name or the sine's description
-    std::variant<PlanarRun, BiaxialRun, FlexibleRun, PairRun> run;
+    std::variant<PlanarRun, BiaxialRun, FlexibleRun, PairRun, Body3dRun> run;
 };
 
 /// Checks the request (InputError naming the field), builds the model and the excitation and

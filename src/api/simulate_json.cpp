@@ -80,6 +80,31 @@ json pair_json(const PairRun& run) {
     return j;
 }
 
+json body3d_json(const Body3dRun& run) {
+    const dynamics::Body3dSummary& s = run.result.summary;
+    json j;
+    j["model"] = "3d";
+    j["integrator"] = "moreau-jean";
+    j["dt_s"] = run.options.dt_s;
+    j["tilt_max_rad"] = s.tilt_max_rad;
+    j["tilt_max_over_critical"] = s.tilt_max_over_critical;
+    j["overturned"] = s.overturned;
+    j["overturn_time_s"] = number_or_null(s.overturn_time_s);
+    j["slide_max_m"] = s.slide_max_m;
+    j["twist_max_rad"] = s.twist_max_rad;
+    json t;
+    for (std::size_t i = 0; i < dynamics::contact_state_count; ++i)
+        t[dynamics::to_string(static_cast<dynamics::ContactState>(i))] = s.time_in_state_s[i];
+    j["time_in_state_s"] = t;
+    j["pga_g"] = s.pga_g;
+    j["steps"] = s.steps;
+    j["unconverged_steps"] = s.unconverged_steps;
+    j["end_time_s"] = s.end_time_s;
+    j["wall_s"] = s.wall_s;
+    j["friction"] = {{"mu_s", run.model.mu_s}, {"mu_k", run.model.mu_k}};
+    return j;
+}
+
 }  // namespace simulate_json_detail
 
 json to_json(const dynamics::Summary& s) {
@@ -141,6 +166,7 @@ json to_json(const SimulateResult& result, const std::string& top_height_name) {
         json operator()(const BiaxialRun& r) const { return biaxial_json(r.result.summary); }
         json operator()(const FlexibleRun& r) const { return flexible_json(r, top_name); }
         json operator()(const PairRun& r) const { return pair_json(r); }
+        json operator()(const Body3dRun& r) const { return body3d_json(r); }
     };
     return std::visit(Visitor{top_height_name}, result.run);
 }

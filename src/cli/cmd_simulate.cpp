@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/simulate_biaxial.hpp"
+#include "cli/simulate_body3d.hpp"
 #include "cli/simulate_flexible.hpp"
 #include "cli/simulate_pair.hpp"
 #include "core/errors.hpp"
@@ -20,7 +21,7 @@ namespace freestand::cli::simulate_command {
 namespace {
 
 const char* const usage =
-    "--block b=0.15,h=0.6,m=38 [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
+    "[--model planar|3d] --block b=0.15,h=0.6,m=38 (3d: b=0.15,d=0.3,h=0.6,m=38[,height=H]) [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
     "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--motion-y FILE] [--scale S] | "
     "--sine 0.8g,2Hz,5s[,ramp=1s] | --sine-y 0.8g,2Hz,5s[,ramp=1s][,phase=90]) "
     "[--flexible f=HZ[,zeta=Z][,mass=FRACTION][,height=M]] "
@@ -30,7 +31,12 @@ const char* const usage =
 po::options_description simulate_options() {
     po::options_description desc("simulate options");
     desc.add_options()
-        ("block", po::value<std::string>()->required(), "b=half-width,h=CG height,m=mass (m, kg)")
+        ("model", po::value<std::string>()->default_value("planar"),
+         "planar | 3d: the rigid body in three dimensions under every component at once "
+         "(docs/methods.md s.11)")
+        ("block", po::value<std::string>()->required(),
+         "b=half-width,h=CG height,m=mass (m, kg); with --model 3d b=half-width along x,"
+         "d=half-width along y,h=CG height[,m=mass][,height=total height]")
         ("cg", po::value<std::string>(),
          "x,y: CG x from the left edge and y above the base (m); or x=OFFSET,h=HEIGHT: x right "
          "of the base's centre, as classify and rock take it")
@@ -40,7 +46,8 @@ po::options_description simulate_options() {
         ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
         ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
         ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
-        ("dt", po::value<double>()->default_value(1e-4), "central-difference step (s)")
+        ("dt", po::value<double>()->default_value(1e-4),
+         "central-difference step, or the 3D body's step (s)")
         ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
         ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
         ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
@@ -109,10 +116,24 @@ api::SimulateExcitation excitation_of(const po::variables_map& vm) {
     return e;
 }
 
+bool three_d(const po::variables_map& vm) {
+    const std::string model = vm["model"].as<std::string>();
+    if (model != "planar" && model != "3d")
+        throw UsageError(fmt::format("--model: expected planar or 3d; got \"{}\"", model));
+    return model == "3d";
+}
+
 api::SimulateRequest simulate_request(const po::variables_map& vm) {
     api::SimulateRequest r;
-    r.box = box_from_options(vm["block"].as<std::string>(), opt_string(vm, "cg"),
-                             opt_double(vm, "inertia"));
+    if (three_d(vm)) {
+        for (const char* flag : {"cg", "inertia", "top", "restitution", "flexible"})
+            if (vm.count(flag))
+                throw UsageError(fmt::format("--{}: not used by --model 3d", flag));
+        r.body3d = body3d_from_options(vm["block"].as<std::string>(), vm["dt"].as<double>());
+    } else {
+        r.box = box_from_options(vm["block"].as<std::string>(), opt_string(vm, "cg"),
+                                 opt_double(vm, "inertia"));
+    }
     r.mu_s = vm["mu"].as<double>();
     r.mu_k = opt_double(vm, "mu-k");
     r.restitution = opt_double(vm, "restitution");
@@ -191,6 +212,8 @@ std::string series_csv(const api::SimulateResult& result) {
         return planar_series_csv(p->result, label);
     if (const auto* b = std::get_if<api::BiaxialRun>(&result.run))
         return biaxial_series_csv(*b, label);
+    if (const auto* d = std::get_if<api::Body3dRun>(&result.run))
+        return body3d_series_csv(*d, label);
     return flexible_series_csv(std::get<api::FlexibleRun>(result.run), label);
 }
 
@@ -200,6 +223,7 @@ void print_text(const api::SimulateResult& result) {
         void operator()(const api::BiaxialRun& r) const { print_biaxial(r); }
         void operator()(const api::FlexibleRun& r) const { print_flexible(r); }
         void operator()(const api::PairRun& r) const { print_pair(r); }
+        void operator()(const api::Body3dRun& r) const { print_body3d(r); }
     };
     std::visit(Printer{}, result.run);
 }
@@ -221,7 +245,7 @@ int run(const std::vector<std::string>& args) {
 const CommandRegistrar reg{{"simulate",
                             "time history of a rigid block (slide, rock, overturn); with "
                             "--motion-y/--sine-y biaxial sliding, --flexible a flexible body, "
-                            "--block2 two units joined by a tunnel",
+                            "--block2 two units joined by a tunnel, --model 3d the rigid body in three dimensions",
                             &run}};
 
 }  // namespace

@@ -1,0 +1,77 @@
+// `freestand simulate --model 3d`: the JSON fields, the series CSV, the library's numbers, and
+// errors naming the flag or the field.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "dynamics/body3d.hpp"
+#include "support/paths.hpp"
+#include "support/run_cli.hpp"
+
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_dynamics_test_cli_body3d {
+
+using freestand::test::run_cli;
+
+TEST_CASE("simulate --model 3d prints the 3D body's JSON, the library's numbers", "[3d][cli]") {
+    const auto r = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6,m=150 --mu 1 "
+                           "--sine 0.5g,2Hz,3s --json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j.at("model") == "3d");
+    for (const char* key : {"tilt_max_rad", "tilt_max_over_critical", "overturned", "slide_max_m",
+                            "twist_max_rad", "time_in_state_s", "steps", "unconverged_steps"})
+        CHECK(j.contains(key));
+    for (const char* state : {"rest", "slide", "edge", "vertex", "flight"})
+        CHECK(j.at("time_in_state_s").contains(state));
+    // The same body and sine through the library.
+    using namespace freestand;
+    const auto m = dynamics::make_body3d_model(dynamics::box_body(0.2, 0.35, 0.6, 150.0), 1.0);
+    dynamics::SineSpec spec{0.5, 2.0, 3.0};
+    const auto e = dynamics::biaxial_sine_excitation(spec, 0.0);
+    auto y_at_rest = e;
+    std::fill(y_at_rest.y_mps2.begin(), y_at_rest.y_mps2.end(), 0.0);
+    dynamics::Body3dOptions o;
+    o.record_series = false;
+    const auto lib = dynamics::simulate_body3d(m, y_at_rest, o);
+    CHECK(j.at("tilt_max_rad").get<double>() == lib.summary.tilt_max_rad);
+    CHECK(j.at("time_in_state_s").at("edge").get<double>() > 1.0);
+}
+
+TEST_CASE("simulate --model 3d --sine-y --out writes the series", "[3d][cli]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_body3d";
+    std::filesystem::create_directories(dir);
+    const auto csv = dir / "series.csv";
+    const auto r = run_cli("simulate --model 3d --block b=0.2,d=0.2,h=0.7 --mu 1 "
+                           "--sine-y 0.42g,2Hz,2s,phase=0 --out '" + csv.string() + "'");
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("model                 3D rigid body"));
+    const std::string text = freestand::test::slurp(csv);
+    CHECK_THAT(text, Catch::Contains("time_s,slide_x_m,slide_y_m,tilt_rad,tilt_over_critical,"
+                                     "twist_rad,state\n"));
+    CHECK_THAT(text, Catch::Contains(",vertex\n"));  // diagonal input: on a corner
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("simulate --model 3d names what it does not take", "[3d][cli]") {
+    const std::string base = "simulate --model 3d --mu 1 --sine 0.5g,2Hz,1s ";
+    const auto missing = run_cli(base + "--block b=0.2,h=0.6");
+    CHECK(missing.exit_code == 2);
+    CHECK_THAT(missing.err, Catch::Contains("--block: the 3D body needs b"));
+    const auto restitution = run_cli(base + "--block b=0.2,d=0.2,h=0.6 --restitution 0.5");
+    CHECK(restitution.exit_code == 2);
+    CHECK_THAT(restitution.err, Catch::Contains("--restitution: not used by --model 3d"));
+    const auto bad = run_cli(base + "--block b=-0.2,d=0.2,h=0.6");
+    CHECK(bad.exit_code == 3);
+    CHECK_THAT(bad.err, Catch::Contains("half_x_m"));
+    const auto coarse = run_cli(base + "--block b=0.05,d=0.05,h=0.1 --dt 0.005");
+    CHECK(coarse.exit_code == 3);
+    CHECK_THAT(coarse.err, Catch::Contains("too coarse"));
+    const auto model = run_cli("simulate --model 4d --mu 1 --sine 0.5g,2Hz,1s --block b=0.2,h=0.6");
+    CHECK(model.exit_code == 2);
+    CHECK_THAT(model.err, Catch::Contains("--model: expected planar or 3d"));
+}
+
+}  // namespace freestand_test_dynamics_test_cli_body3d
