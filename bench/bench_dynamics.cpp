@@ -13,7 +13,8 @@
 // against the model's own converged reference and the planar run. Last, biaxial sliding (s.10;
 // biaxial_rows.hpp): El Centro 140 as x and 230 as y, and the histories of
 // cases/glovebox-single.toml, each against the planar run of its x component.
-// `bench_dynamics flexible` runs the flexible rows alone.
+// Then the 3D body (docs/methods.md s.11; body3d_rows.hpp) beside the planar engine.
+// `bench_dynamics flexible` runs the flexible rows alone, `bench_dynamics 3d` the 3D rows.
 #include <algorithm>
 #include <array>
 #include <string>
@@ -33,6 +34,7 @@
 #include "dynamics/simulate.hpp"
 #include "dynamics/taylor.hpp"
 #include "biaxial_rows.hpp"
+#include "body3d_rows.hpp"
 #include "flexible_rows.hpp"
 #include "timing.hpp"
 
@@ -233,8 +235,8 @@ void slammer_row(const core::Record& whole) {
 }
 
 int main(int argc, char** argv) {
-    // An argument names one section to run alone: "flexible" (the flexible-body rows),
-    // "slammer" (the sliding row against USGS SLAMMER).
+    // An argument names one section to run alone: "flexible" (the flexible-body rows), "3d"
+    // (the 3D body's rows), "slammer" (the sliding row against USGS SLAMMER).
     const std::string_view only = argc > 1 ? argv[1] : "";
     auto rec = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12140.AT2");
     slammer_row(rec);
@@ -244,6 +246,10 @@ int main(int argc, char** argv) {
     // between tan(alpha) and mu_crit at the peaks, so the block slide-rocks for ~0.3 s.
     const Case cases[] = {{"slide", 0.15, 0.5, 0.15}, {"rock", 0.3, 0.9, 0.6},
                           {"slide-rock", 0.3, 0.9, 0.525}};
+    if (only == "3d") {
+        bench::body3d_rows(rec);
+        return 0;
+    }
     if (only == "flexible") {
         bench::flexible_rows(rec);
         return 0;
@@ -327,5 +333,6 @@ int main(int argc, char** argv) {
                dynamics::make_block_model(block::Block::uniform(0.5, 1.5, 400.0), 0.6)},
               1.5);
     bench::biaxial_rows(rec);
+    bench::body3d_rows(rec);
     return 0;
 }

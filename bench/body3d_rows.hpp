@@ -1,0 +1,109 @@
+#pragma once
+// The 3D body's rows of bench_dynamics (docs/methods.md s.11): speed against error of the
+// Moreau-Jean step, next to the planar event-driven engine, on the rock case (b = 0.3 m,
+// h = 0.6 m, mu = 0.6) under the first 20 s of El Centro #12.
+//   - x alone (140 scaled to 0.9 g): the planar engine is the exact reference; the 3D body's
+//     peak tilt error and time at dt = 1e-3, 2.5e-4, 1e-4 and 2.5e-5 s, and its time over the
+//     planar run's (the aim is at most 30x).
+//   - both components (140 as x at 0.9 g, 230 as y on the same scale), on a block 0.3 x 0.4 m:
+//     the error of the peak tilt and slide against the 3D body at dt = 1e-5 s (its converged
+//     reference), and the peak tilt beside the planar runs of each component.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "support/paths.hpp"
+#include "core/readers.hpp"
+#include "dynamics/biaxial.hpp"
+#include "dynamics/body3d.hpp"
+#include "dynamics/simulate.hpp"
+#include "timing.hpp"
+
+namespace freestand::bench {
+
+inline dynamics::Body3dSummary run_3d(const dynamics::Body3dModel& m,
+                                      const dynamics::BiaxialExcitation& e, double dt_s,
+                                      double& best_s, int reps) {
+    dynamics::Body3dOptions o;
+    o.dt_s = dt_s;
+    o.record_series = false;
+    dynamics::Body3dSummary s;
+    for (int i = 0; i < reps; ++i) {
+        const double t0 = thread_cpu_s();
+        s = dynamics::simulate_body3d(m, e, o).summary;
+        best_s = std::min(best_s, thread_cpu_s() - t0);
+    }
+    return s;
+}
+
+inline dynamics::Summary run_planar(const dynamics::BlockModel& m, const dynamics::Excitation& e,
+                                    double& best_s, int reps) {
+    dynamics::Options o;
+    o.record_series = false;
+    dynamics::Summary s;
+    for (int i = 0; i < reps; ++i) {
+        const double t0 = thread_cpu_s();
+        s = dynamics::simulate(m, e, o).summary;
+        best_s = std::min(best_s, thread_cpu_s() - t0);
+    }
+    return s;
+}
+
+inline dynamics::Excitation scaled(const core::Record& r, double factor) {
+    dynamics::Excitation e = dynamics::excitation_from_record(r, factor);
+    return e;
+}
+
+inline void body3d_rows(const core::Record& x140) {
+    auto y230 = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
+    y230.accel_mps2.resize(x140.accel_mps2.size());
+    double peak = 0.0;
+    for (double a : x140.accel_mps2) peak = std::max(peak, std::abs(a));
+    const double factor = 0.9 * 9.81 / peak;
+    const auto x = scaled(x140, factor);
+    const auto y = scaled(y230, factor);
+
+    std::printf("\n3D body (Moreau-Jean) against the planar event-driven engine: rock case, x alone\n"
+                "%-22s %12s %12s %10s %10s\n", "run", "cpu_s", "tilt_error", "steps", "x_planar");
+    const auto planar_model = dynamics::make_block_model(block::Block::uniform(0.3, 0.6, 100.0), 0.6);
+    double t_planar = 1e9;
+    const auto ref = run_planar(planar_model, x, t_planar, 20);
+    std::printf("%-22s %12.3e %12s %10zu %10s   (peak rotation %.4g rad)\n", "planar event",
+                t_planar, "-", ref.steps, "1", ref.rock_max_rad);
+    const auto body_x = dynamics::make_body3d_model(dynamics::box_body(0.3, 0.45, 0.6, 100.0), 0.6);
+    const auto ex = dynamics::biaxial_excitation(x, std::vector<double>(x.horizontal_mps2.size(), 0.0));
+    for (double dt : {1e-3, 2.5e-4, 1e-4, 2.5e-5}) {
+        double t = 1e9;
+        const auto s = run_3d(body_x, ex, dt, t, dt < 1e-4 ? 1 : 3);
+        std::printf("3D dt=%-16.3g %12.3e %12.3e %10zu %9.0fx\n", dt, t,
+                    std::abs(s.tilt_max_rad - ref.rock_max_rad) / ref.rock_max_rad, s.steps,
+                    t / t_planar);
+    }
+
+    std::printf("\n3D body, both components (140 x, 230 y): error against dt = 1e-5 s\n"
+                "%-22s %12s %12s %12s %10s\n", "run", "cpu_s", "tilt_error", "slide_error", "x_planar");
+    const auto body = dynamics::make_body3d_model(dynamics::box_body(0.3, 0.4, 0.6, 100.0), 0.6);
+    const auto exy = dynamics::biaxial_excitation(x, y.horizontal_mps2);
+    double t_ref = 1e9;
+    const auto conv = run_3d(body, exy, 1e-5, t_ref, 1);
+    for (double dt : {1e-3, 2.5e-4, 1e-4}) {
+        double t = 1e9;
+        const auto s = run_3d(body, exy, dt, t, 3);
+        std::printf("3D dt=%-16.3g %12.3e %12.3e %12.3e %9.0fx\n", dt, t,
+                    std::abs(s.tilt_max_rad - conv.tilt_max_rad) / conv.tilt_max_rad,
+                    std::abs(s.slide_max_m - conv.slide_max_m) / std::max(conv.slide_max_m, 1e-12),
+                    t / t_planar);
+    }
+    double t_px = 1e9, t_py = 1e9;
+    const auto px = run_planar(dynamics::make_block_model(block::Block::uniform(0.3, 0.6, 100.0), 0.6),
+                               x, t_px, 5);
+    const auto py = run_planar(dynamics::make_block_model(block::Block::uniform(0.4, 0.6, 100.0), 0.6),
+                               y, t_py, 5);
+    std::printf("peak tilt: 3D %.4g rad (%.3g x critical, twist %.3g rad); planar x %.4g rad, "
+                "planar y %.4g rad\n",
+                conv.tilt_max_rad, conv.tilt_max_over_critical, conv.twist_max_rad, px.rock_max_rad,
+                py.rock_max_rad);
+}
+
+}  // namespace freestand::bench
