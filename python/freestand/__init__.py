@@ -38,11 +38,13 @@ commit: str = _fs.commit
 g_mps2: float = _fs.g_mps2
 #: Names of the simulation's contact modes, indexed by the codes in simulate()'s series["mode"].
 mode_names: tuple = tuple(_fs.mode_names)
+#: Names of the 3D body's contact states, indexed by the codes in simulate_3d()'s series["state"].
+state_names: tuple = tuple(_fs.state_names)
 
 __all__ = [
     "Error", "UsageError", "InputError", "NumericalError", "IoError", "Record", "read_record",
     "response_spectrum", "design_target", "generate", "slide", "classify", "rock", "simulate",
-    "assess", "fragility", "mode_names",
+    "simulate_3d", "assess", "fragility", "mode_names", "state_names",
 ]
 
 PathLike = Union[str, os.PathLike]
@@ -404,6 +406,38 @@ def simulate(block: Mapping[str, float], motion: Union[Record, np.ndarray],
                         _optional_number(top, "top"), integrator, _number(dt, "dt"),
                         _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"), vertical,
                         _number(scale, "scale"), label, bool(series))
+
+
+def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
+                dt_s: Optional[float] = None, *, mu: float, motion_y=None,
+                vertical_mps2: Optional[np.ndarray] = None, scale: float = 1.0,
+                series: bool = True, mu_k: Optional[float] = None, dt: float = 1e-4) -> dict:
+    """Time history of the rigid body in three dimensions (`freestand simulate --model 3d
+    --json`, docs/methods.md s.11) under x (a record, or an array of m/s^2 samples at dt_s),
+    optionally y (motion_y, on the same samples) and the vertical, all times scale. block has
+    b and d (half-widths along x and y, m), h (CG height, m), and optionally m (mass, kg) and
+    height (total height, m); mu and mu_k the friction; dt the time step (s). Returns the
+    summary, and with series=True also "series": NumPy arrays time_s, slide_x_m, slide_y_m,
+    tilt_rad, tilt_over_critical, twist_rad, state (codes into state_names)."""
+    if isinstance(motion, Record):
+        if dt_s is not None and dt_s != motion.dt_s:
+            raise UsageError(f"dt_s {dt_s} s given for a record sampled at {motion.dt_s} s")
+        accel, dt_s, label = motion.accel_mps2, motion.dt_s, motion.name
+    else:
+        if dt_s is None:
+            raise UsageError("simulate_3d: an array of samples needs dt_s (s)")
+        accel, label = motion, "python array"
+    if isinstance(motion_y, Record):
+        motion_y = motion_y.accel_mps2
+    y = None if motion_y is None else _samples(motion_y, "motion_y")
+    vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
+    if not isinstance(block, Mapping):
+        raise TypeError(f"block: expected a mapping of b, d, h[, m, height], got "
+                        f"{type(block).__name__}")
+    spec = {k: _number(v, f"block {k}") for k, v in block.items()}
+    return _fs.simulate_3d(spec, _number(mu, "mu"), _optional_number(mu_k, "mu_k"),
+                           _number(dt, "dt"), _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"),
+                           y, vertical, _number(scale, "scale"), label, bool(series))
 
 
 def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:

@@ -30,6 +30,8 @@ void bind_closed_forms(pybind11::module_& m);
 void bind_motion(pybind11::module_& m);
 /// simulate.
 void bind_runs(pybind11::module_& m);
+/// simulate_3d.
+void bind_body3d(pybind11::module_& m);
 /// assess.
 void bind_case_runs(pybind11::module_& m);
 /// fragility.

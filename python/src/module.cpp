@@ -75,6 +75,7 @@ PYBIND11_MODULE(_freestand, m) {
     freestand::python::bind_closed_forms(m);
     freestand::python::bind_motion(m);
     freestand::python::bind_runs(m);
+    freestand::python::bind_body3d(m);
     freestand::python::bind_case_runs(m);
     freestand::python::bind_fragility(m);
 }

@@ -451,3 +451,34 @@ def test_version_and_commit():
     assert code == 0
     assert out.splitlines()[0].endswith(freestand.__version__)
     assert freestand.commit in out
+
+
+def test_simulate_3d_slides_as_coulomb_under_a_pulse():
+    # A squat box (tan alpha = 2.5 > mu = 0.2: it cannot uplift) under 0.5 g in x for 1 s,
+    # falling linearly to 0 over the next 0.01 s sample: it slips at (a - 0.2 g) relative to the
+    # base, then stops under mu g. At 1 s: u = 0.15 g, v = 0.3 g; over the ramp u gains 0.003 g
+    # (to 1e-6 g) and v 0.0005 g; then (0.3005 g)^2 / (2 x 0.2 g). Peak slip 0.37875 g m.
+    g = freestand.g_mps2
+    accel = np.zeros(301)
+    accel[:101] = 0.5 * g
+    r = freestand.simulate_3d({"b": 0.5, "d": 0.4, "h": 0.2, "m": 50.0}, accel, 0.01, mu=0.2,
+                              series=True)
+    assert r["model"] == "3d"
+    assert r["slide_max_m"] == pytest.approx(0.37875 * g, rel=1e-3)
+    assert r["tilt_max_rad"] < 1e-9
+    assert r["time_in_state_s"]["slide"] > 1.0
+    s = r["series"]
+    assert set(s) == {"time_s", "slide_x_m", "slide_y_m", "tilt_rad", "tilt_over_critical",
+                      "twist_rad", "state"}
+    assert freestand.state_names[int(s["state"][50])] == "slide"
+    assert np.max(np.abs(s["slide_y_m"])) < 1e-9
+
+
+def test_simulate_3d_names_its_arguments():
+    with pytest.raises(freestand.InputError, match="block.d"):
+        freestand.simulate_3d({"b": 0.5, "h": 0.2}, np.zeros(10), 0.01, mu=0.2)
+    with pytest.raises(freestand.InputError, match="accel_y_mps2"):
+        freestand.simulate_3d({"b": 0.5, "d": 0.4, "h": 0.2}, np.zeros(10), 0.01, mu=0.2,
+                              motion_y=np.zeros(9))
+    with pytest.raises(TypeError, match="mu"):
+        freestand.simulate_3d({"b": 0.5, "d": 0.4, "h": 0.2}, np.zeros(10), 0.01, mu="0.2")
