@@ -376,6 +376,17 @@ def rock(block: Mapping[str, float], *, cg=None, inertia: Optional[float] = None
                     _paths(spectrum_v, "spectrum_v"), band)
 
 
+def _motion(motion, dt_s, function: str):
+    """A record's samples, step and name, or an array's with its dt_s."""
+    if isinstance(motion, Record):
+        if dt_s is not None and dt_s != motion.dt_s:
+            raise UsageError(f"dt_s {dt_s} s given for a record sampled at {motion.dt_s} s")
+        return motion.accel_mps2, motion.dt_s, motion.name
+    if dt_s is None:
+        raise UsageError(f"{function}: an array of samples needs dt_s (s)")
+    return motion, dt_s, "python array"
+
+
 def simulate(block: Mapping[str, float], motion: Union[Record, np.ndarray],
              dt_s: Optional[float] = None, *, mu: float, vertical_mps2: Optional[np.ndarray] = None,
              scale: float = 1.0, series: bool = True, cg=None, inertia: Optional[float] = None,
@@ -389,14 +400,7 @@ def simulate(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     "series": NumPy arrays time_s, slide_m, slide_velocity_mps, rotation_rad,
     angular_velocity_radps, mode (codes into mode_names), normal_force_N, friction_force_N,
     top_accel_mps2."""
-    if isinstance(motion, Record):
-        if dt_s is not None and dt_s != motion.dt_s:
-            raise UsageError(f"dt_s {dt_s} s given for a record sampled at {motion.dt_s} s")
-        accel, dt_s, label = motion.accel_mps2, motion.dt_s, motion.name
-    else:
-        if dt_s is None:
-            raise UsageError("simulate: an array of samples needs dt_s (s)")
-        accel, label = motion, "python array"
+    accel, dt_s, label = _motion(motion, dt_s, "simulate")
     if not isinstance(integrator, str):
         raise TypeError(f"integrator: expected \"event\" or \"cd\", got "
                         f"{type(integrator).__name__} {integrator!r}")
@@ -419,14 +423,7 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     height (total height, m); mu and mu_k the friction; dt the time step (s). Returns the
     summary, and with series=True also "series": NumPy arrays time_s, slide_x_m, slide_y_m,
     tilt_rad, tilt_over_critical, twist_rad, state (codes into state_names)."""
-    if isinstance(motion, Record):
-        if dt_s is not None and dt_s != motion.dt_s:
-            raise UsageError(f"dt_s {dt_s} s given for a record sampled at {motion.dt_s} s")
-        accel, dt_s, label = motion.accel_mps2, motion.dt_s, motion.name
-    else:
-        if dt_s is None:
-            raise UsageError("simulate_3d: an array of samples needs dt_s (s)")
-        accel, label = motion, "python array"
+    accel, dt_s, label = _motion(motion, dt_s, "simulate_3d")
     if isinstance(motion_y, Record):
         motion_y = motion_y.accel_mps2
     y = None if motion_y is None else _samples(motion_y, "motion_y")

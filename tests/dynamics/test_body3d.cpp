@@ -55,6 +55,13 @@ double sine(double amplitude_g, double f_hz, double t_s) {
     return amplitude_g * g * std::sin(2.0 * std::numbers::pi * f_hz * t_s);
 }
 
+dynamics::Options planar_options(double tail_s = 2.0) {
+    dynamics::Options o;
+    o.g_mps2 = g;
+    o.tail_s = tail_s;
+    return o;
+}
+
 dynamics::Body3dOptions quick(double tail_s = 2.0) {
     dynamics::Body3dOptions o;
     o.tail_s = tail_s;
@@ -113,10 +120,7 @@ TEST_CASE("3D: input along a principal axis equals the planar event-driven engin
     const auto e = along(0.0, 3.0, 0.005, [](double t) { return sine(0.5, 2.0, t); });
     const auto r3 = dynamics::simulate_body3d(m, e, quick());
     const auto planar_model = dynamics::make_block_model(block::Block::uniform(b, h, M), 1.0);
-    dynamics::Options o;
-    o.g_mps2 = g;
-    o.tail_s = 2.0;
-    const auto r2 = dynamics::simulate(planar_model, planar(e, 1.0), o);
+    const auto r2 = dynamics::simulate(planar_model, planar(e, 1.0), planar_options());
     REQUIRE(r2.summary.rock_max_rad > 0.05);
     CHECK_THAT(r3.summary.tilt_max_rad, WithinRel(r2.summary.rock_max_rad, 0.01));
     CHECK_THAT(r3.summary.tilt_max_over_critical, WithinRel(r2.summary.rock_max_over_alpha, 0.01));
@@ -131,11 +135,8 @@ TEST_CASE("3D: the error against the planar engine falls with the step (first or
     const double b = 0.2, d = 0.35, h = 0.6, M = 150.0;
     const auto m = dynamics::make_body3d_model(dynamics::box_body(b, d, h, M), 1.0);
     const auto e = along(0.0, 2.0, 0.005, [](double t) { return sine(0.5, 2.0, t); });
-    dynamics::Options o;
-    o.g_mps2 = g;
-    o.tail_s = 0.5;
     const double exact = dynamics::simulate(dynamics::make_block_model(block::Block::uniform(b, h, M), 1.0),
-                                            planar(e, 1.0), o)
+                                            planar(e, 1.0), planar_options(0.5))
                              .summary.rock_max_rad;
     std::vector<double> errors;
     for (const double dt : {1e-3, 5e-4, 2.5e-4}) {
@@ -166,10 +167,7 @@ TEST_CASE("3D: a square block under diagonal input rocks about a corner as its p
     const double r = 1.0 - 12.0 * b * b / (7.0 * b * b + 4.0 * h * h);
     const auto planar_model =
         dynamics::make_block_model(block::Block::general(B, B, h, M, I_c), 1.0, std::nullopt, r);
-    dynamics::Options o;
-    o.g_mps2 = g;
-    o.tail_s = 2.0;
-    const auto r2 = dynamics::simulate(planar_model, planar(e, 1.0), o);
+    const auto r2 = dynamics::simulate(planar_model, planar(e, 1.0), planar_options());
     REQUIRE(r2.summary.rock_max_rad > 0.05);
     CHECK_THAT(r3.summary.tilt_max_rad, WithinRel(r2.summary.rock_max_rad, 0.01));
     CHECK_THAT(r3.summary.tilt_max_over_critical, WithinRel(r2.summary.rock_max_over_alpha, 0.01));

@@ -121,14 +121,19 @@ void copy_light_case(const std::string& name, const fs::path& to) {
     text.insert(at + options.size(), "histories_per_level = 7\nmax_histories_per_level = 7\n");
     std::ofstream(to / name) << text;
 }
-}  // namespace
 
-TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][regress][slow]") {
-    const fs::path dir = temp_dir("regress");
+// The four shipped glove-box cases, light, in dir/cases.
+void copy_light_cases(const fs::path& dir) {
     fs::create_directories(dir / "cases");
     for (const char* c : {"glovebox-single.toml", "glovebox-steel-pads.toml", "glovebox-pair.toml",
                           "glovebox-pair-unbraced.toml"})
         copy_light_case(c, dir / "cases");
+}
+}  // namespace
+
+TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][regress][slow]") {
+    const fs::path dir = temp_dir("regress");
+    copy_light_cases(dir);
     const std::string args =
         fmt::format("'{}' --cases '{}' --cache '{}'", (dir / "reports").string(),
                     (dir / "cases").string(), (dir / "cache").string());
@@ -157,10 +162,7 @@ TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][
 
 TEST_CASE("validate --json prints the result.json it writes", "[validate][cli]") {
     const fs::path dir = temp_dir("json");
-    fs::create_directories(dir / "cases");
-    for (const char* c : {"glovebox-single.toml", "glovebox-steel-pads.toml", "glovebox-pair.toml",
-                          "glovebox-pair-unbraced.toml"})
-        copy_light_case(c, dir / "cases");
+    copy_light_cases(dir);
     const auto b = run_cli(fmt::format("validate --json --cases '{}' --out '{}'",
                                        (dir / "cases").string(), (dir / "b").string()));
     REQUIRE(b.exit_code == 0);
