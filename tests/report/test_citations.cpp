@@ -124,7 +124,7 @@ TEST_CASE("docs/methods.md keeps the section numbering the code cites", "[report
     CHECK(o.has_conventions);
     CHECK(o.has_sources);
     const std::set<std::string> expected{"1", "2", "3", "4",  "5",  "5a", "6",
-                                         "7", "8", "9", "10", "12", "13"};
+                                         "7", "8", "9", "10", "11", "12", "13"};
     CHECK(o.sections == expected);
     // The decision policy's steps, cited as "s.6 step K".
     CHECK(o.steps.at("6") == std::set<int>{1, 2, 3, 4, 5, 6, 7, 8});
