@@ -188,6 +188,27 @@ Body3dSample sample_of(const BodyState& s, const Fixed& f, double t_s, ContactSt
     return out;
 }
 
+/// Whether a body at rest, flat on its footprint, stays at rest under the base's a and
+/// G = g + yg'' (docs/methods.md s.2 in three dimensions; strict inequalities leave rest): the
+/// base does not fall away (G > 0), friction holds (|a| <= mu_s G), and the line of the weight
+/// and the inertia force through the CG meets the floor inside the footprint
+/// (n_e . (-h R^T a) <= c_e G for every edge, n_e its outward normal and c_e its distance from
+/// the CG's plan position). Each condition is linear in a and G, so holding at both ends of an
+/// input segment it holds throughout it.
+bool holds_at_rest(const Fixed& f, const Eigen::Matrix3d& R, const Eigen::Vector2d& a_mps2,
+                   double G_mps2) {
+    if (G_mps2 <= 0.0 || a_mps2.norm() > f.model.mu_s * G_mps2) return false;
+    const Eigen::Vector3d a_body = R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0);
+    const Eigen::Vector2d offset = -f.model.body.h_m * a_body.head<2>();
+    const auto& v = f.model.body.footprint_m;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Eigen::Vector2d edge = v[(i + 1) % v.size()] - v[i];
+        const Eigen::Vector2d n = Eigen::Vector2d(edge.y(), -edge.x()).normalized();  // outward (ccw)
+        if (n.dot(offset) > n.dot(v[i]) * G_mps2) return false;
+    }
+    return true;
+}
+
 void take_peaks(Body3dSummary& sum, const Body3dSample& x) {
     sum.tilt_max_rad = std::max(sum.tilt_max_rad, x.tilt_rad);
     sum.tilt_max_over_critical = std::max(sum.tilt_max_over_critical, x.tilt_over_critical);
@@ -217,10 +238,20 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     if (options.record_series) out.series.push_back(first);
     const std::size_t segments = base.segments(options.tail_s);
     const auto n = static_cast<std::size_t>(n_sub);
+    bool at_rest = true;
+    ContactState last_state = ContactState::rest;
     for (std::size_t k = 0; k < segments && !sum.overturned; ++k) {
         const auto seg = base.segment(k);
-        ContactState state = ContactState::rest;
-        for (std::size_t j = 0; j < n; ++j) {
+        ContactState state = at_rest ? ContactState::rest : last_state;
+        // A body at rest that the segment's load cannot move skips the segment's steps, as
+        // the planar engine's rest runs do.
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        const double t_end_s = seg.tk + excitation.dt_s;
+        const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end_s);
+        const bool skip = at_rest && holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
+                          holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end_s));
+        if (skip) sum.time_in_state_s[0] += excitation.dt_s;
+        for (std::size_t j = 0; j < n && !skip; ++j) {
             const double t_mid = seg.tk + (static_cast<double>(j) + 0.5) * h;
             const auto a = seg.a(t_mid);
             const auto step = stepper.step(s, {a[0], a[1]}, seg.G(t_mid), h);
@@ -229,7 +260,12 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
             if (!step.converged) ++sum.unconverged_steps;
             sum.time_in_state_s[static_cast<std::size_t>(state)] += h;
         }
-        const double t_end = seg.tk + excitation.dt_s;
+        last_state = state;
+        // At rest (three or more contacts, every contact point still to stick_speed_mps): the
+        // velocities are set to 0 so that the next segment may skip.
+        at_rest = state == ContactState::rest;
+        if (at_rest) s.twist = {};
+        const double t_end = t_end_s;
         const auto x = sample_of(s, fixed, t_end, state);
         take_peaks(sum, x);
         if (options.record_series) out.series.push_back(x);
