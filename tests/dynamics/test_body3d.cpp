@@ -86,6 +86,25 @@ TEST_CASE("3D: a body at rest stays at rest, below friction and below uplift", "
     CHECK(r.summary.time_in_state_s[0] == Approx(r.summary.end_time_s).epsilon(1e-9));
 }
 
+TEST_CASE("3D: a load exactly at mu_s g or at g b / h holds the body; just above moves it",
+          "[dynamics][3d]") {
+    const double b = 0.3, d = 0.2, h = 0.5;
+    const auto constant = [](double a_mps2) {
+        return along(0.0, 1.0, 0.01, [a_mps2](double) { return a_mps2; });
+    };
+    // Friction's threshold (tan alpha_x = 0.6 > mu = 0.5): |a| = mu_s g holds (s.2's strict
+    // inequality to leave rest).
+    const auto slider = dynamics::make_body3d_model(dynamics::box_body(b, d, h, 80.0), 0.5);
+    CHECK(dynamics::simulate_body3d(slider, constant(0.5 * g), quick()).summary.slide_max_m == 0.0);
+    CHECK(dynamics::simulate_body3d(slider, constant(0.5 * g * 1.001), quick()).summary.slide_max_m >
+          1e-4);
+    // Uplift's threshold (mu = 1 > tan alpha_x): a = g b / h holds, the resultant on the edge.
+    const auto rocker = dynamics::make_body3d_model(dynamics::box_body(b, d, h, 80.0), 1.0);
+    CHECK(dynamics::simulate_body3d(rocker, constant(b / h * g), quick()).summary.tilt_max_rad == 0.0);
+    CHECK(dynamics::simulate_body3d(rocker, constant(b / h * g * 1.001), quick()).summary.tilt_max_rad >
+          1e-6);
+}
+
 TEST_CASE("3D: a slow ramp along phi uplifts at min(b / (h |cos phi|), d / (h |sin phi|)) g",
           "[dynamics][3d]") {
     const double b = 0.25, d = 0.4, h = 0.8;
