@@ -9,9 +9,9 @@
 #include "cli/simulate_body3d.hpp"
 #include "cli/simulate_flexible.hpp"
 #include "cli/simulate_pair.hpp"
+#include "cli/series_label.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
-#include "core/printable.hpp"
 #include "core/readers.hpp"
 #include "cli/usage_error.hpp"
 
@@ -149,16 +149,6 @@ api::SimulateRequest simulate_request(const po::variables_map& vm) {
     r.excitation = excitation_of(vm);
     r.record_series = vm.count("out") > 0;
     return r;
-}
-
-/// The excitation's label (from a file name) on the CSV's comment line: control characters as
-/// \xNN, a line break as a blank, so a file named with ESC or BEL cannot put them raw into the
-/// CSV.
-std::string one_line_label(const std::string& label) {
-    std::string s = core::printable(label);
-    for (char& c : s)
-        if (c == '\n' || c == '\t') c = ' ';
-    return s;
 }
 
 std::string planar_series_csv(const dynamics::SimulationResult& r, const std::string& label) {

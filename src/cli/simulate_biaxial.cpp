@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/options.hpp"
+#include "cli/series_label.hpp"
 #include "core/errors.hpp"
 #include "cli/usage_error.hpp"
 
@@ -27,7 +28,7 @@ std::string biaxial_series_csv(const api::BiaxialRun& run, const std::string& la
         "# freestand simulate (biaxial sliding): {} integrator, excitation {}\n"
         "# units: time s, slip m, slip velocity m/s (relative to the base)\n"
         "time_s,slip_x_m,slip_y_m,v_x_mps,v_y_mps,mode\n",
-        r.summary.integrator, label);
+        r.summary.integrator, one_line_label(label));
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slip_x_m,
                            s.slip_y_m, s.v_x_mps, s.v_y_mps, dynamics::to_string(s.mode));

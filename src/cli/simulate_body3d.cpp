@@ -5,8 +5,8 @@
 #include <iostream>
 
 #include "cli/options.hpp"
+#include "cli/series_label.hpp"
 #include "cli/usage_error.hpp"
-#include "core/printable.hpp"
 
 namespace freestand::cli {
 
@@ -32,7 +32,7 @@ std::string body3d_series_csv(const api::Body3dRun& run, const std::string& labe
         "# freestand simulate (3D body): Moreau-Jean, dt {} s, excitation {}\n"
         "# units: time s, slide m (footprint centre relative to the base), angles rad\n"
         "time_s,slide_x_m,slide_y_m,tilt_rad,tilt_over_critical,twist_rad,state\n",
-        run.options.dt_s, core::printable(label));
+        run.options.dt_s, one_line_label(label));
     for (const auto& s : run.result.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slide_x_m,
                            s.slide_y_m, s.tilt_rad, s.tilt_over_critical, s.twist_rad,

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/options.hpp"
+#include "cli/series_label.hpp"
 #include "core/errors.hpp"
 #include "cli/usage_error.hpp"
 
@@ -17,7 +18,7 @@ std::string flexible_series_csv(const api::FlexibleRun& run, const std::string& 
         "# units: time s, slide m (contact point relative to the base), rotation rad (+ on the "
         "right edge), modal displacement m (relative to the base, along the body)\n"
         "time_s,slide_m,rotation_rad,modal_m,mode\n",
-        r.summary.base.integrator, label);
+        r.summary.base.integrator, one_line_label(label));
     for (const auto& s : r.series)
         out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slide_m,
                            s.rotation_rad, s.modal_m, dynamics::to_string(s.mode));

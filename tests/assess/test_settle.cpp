@@ -191,7 +191,7 @@ TEST_CASE("the glove box's verdict and material do not follow the seed",
     c = with_pga_levels(c, {0.4});
     c.site.dbe_pga_g.reset();
     std::optional<AssessmentResult> first;
-    for (std::uint64_t seed : {1, 4}) {
+    for (const std::uint64_t seed : {std::uint64_t{1}, std::uint64_t{4}}) {
         INFO("seed " << seed);
         c.options.seed = seed;
         const AssessmentResult r = assess(c);

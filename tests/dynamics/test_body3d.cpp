@@ -86,7 +86,7 @@ TEST_CASE("3D: a body at rest stays at rest, below friction and below uplift", "
     CHECK(r.summary.time_in_state_s[0] == Approx(r.summary.end_time_s).epsilon(1e-9));
 }
 
-TEST_CASE("3D: a load exactly at mu_s g or at g b / h holds the body; just above moves it",
+TEST_CASE("3D: a load exactly at mu_s g or at g b / h holds the body, and just above moves it",
           "[dynamics][3d]") {
     const double b = 0.3, d = 0.2, h = 0.5;
     const auto constant = [](double a_mps2) {
@@ -234,6 +234,55 @@ TEST_CASE("3D: the rule for four coplanar contacts does not move the results", "
         CHECK_THAT(r->summary.tilt_max_rad, WithinRel(base.summary.tilt_max_rad, 1e-3));
         CHECK(std::abs(r->summary.slide_max_m - base.summary.slide_max_m) < 1e-4);
         CHECK(std::abs(r->summary.twist_max_rad - base.summary.twist_max_rad) < 1e-4);
+    }
+}
+
+TEST_CASE("3D: hard cases: no friction, flight, a huge pulse, a slender and a squat body",
+          "[dynamics][3d]") {
+    SECTION("mu = 0: the base slides out from under a body that neither moves nor tilts") {
+        // 0.3 g for 1 s, falling linearly to 0 over the next 0.01 s sample: the base moves
+        // a (1/2 + 0.01 + 0.01^2 / 3) = 0.5100333 a under the body, which no force reaches.
+        const auto m = dynamics::make_body3d_model(dynamics::box_body(0.2, 0.2, 0.6, 50.0), 0.0);
+        const auto e = along(0.3, 1.0, 0.01, [](double) { return 0.3 * g; });
+        auto o = quick(0.0);
+        const auto r = dynamics::simulate_body3d(m, e, o);
+        CHECK_THAT(r.summary.slide_max_m, WithinRel((0.5 + 0.01 + 1e-4 / 3.0) * 0.3 * g, 1e-6));
+        CHECK(r.summary.tilt_max_rad < 1e-12);
+        CHECK(r.summary.twist_max_rad < 1e-12);
+    }
+    SECTION("flight: the base drops faster than g, the body lands and comes to rest") {
+        auto e = along(0.0, 2.0, 0.01, [](double) { return 0.0; });
+        e.vertical_mps2.assign(e.x_mps2.size(), 0.0);
+        for (std::size_t i = 10; i < 20; ++i) e.vertical_mps2[i] = -1.5 * g;
+        for (std::size_t i = 20; i < 30; ++i) e.vertical_mps2[i] = 1.5 * g;
+        const auto m = dynamics::make_body3d_model(dynamics::box_body(0.3, 0.3, 0.5, 50.0), 0.5);
+        const auto r = dynamics::simulate_body3d(m, e, quick());
+        CHECK(r.summary.time_in_state_s[4] > 0.05);  // in flight
+        CHECK(r.summary.tilt_max_rad < 1e-9);
+        CHECK_FALSE(r.summary.overturned);
+        REQUIRE_FALSE(r.series.empty());
+        CHECK(r.series.back().state == dynamics::ContactState::rest);
+    }
+    SECTION("a 10 g pulse overturns a block that friction holds, with finite numbers") {
+        const auto m = dynamics::make_body3d_model(dynamics::box_body(0.2, 0.3, 0.6, 50.0), 1.0);
+        const auto e = along(0.2, 1.0, 0.005, [](double t) { return t < 0.2 ? 10.0 * g : 0.0; });
+        const auto r = dynamics::simulate_body3d(m, e, quick());
+        CHECK(r.summary.overturned);
+        REQUIRE(r.summary.overturn_time_s);
+        CHECK(std::isfinite(*r.summary.overturn_time_s));
+        for (const auto& x : r.series) CHECK(std::isfinite(x.tilt_rad + x.slide_x_m + x.twist_rad));
+    }
+    SECTION("slender (h / b = 20) and squat (h / b = 0.1) bodies under a sine") {
+        const auto e = along(0.7, 4.0, 0.005, [](double t) { return sine(0.3, 1.5, t); });
+        const auto slender = dynamics::make_body3d_model(dynamics::box_body(0.05, 0.08, 1.0, 20.0), 0.8);
+        const auto rs = dynamics::simulate_body3d(slender, e, quick());
+        CHECK(rs.summary.tilt_max_rad > 0.0);
+        CHECK(rs.summary.unconverged_steps * 100 < rs.summary.steps);
+        const auto squat = dynamics::make_body3d_model(dynamics::box_body(1.0, 1.0, 0.1, 500.0), 0.2);
+        const auto rq = dynamics::simulate_body3d(squat, e, quick());
+        CHECK(rq.summary.tilt_max_rad < 1e-9);
+        CHECK(rq.summary.slide_max_m > 0.01);
+        CHECK(rq.summary.unconverged_steps * 100 < rq.summary.steps);
     }
 }
 

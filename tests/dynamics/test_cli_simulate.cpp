@@ -120,13 +120,21 @@ TEST_CASE("simulate --out shows control characters of the motion's name as hexad
     fs::create_directories(dir);
     const fs::path motion = dir / "a\x1b]0;pwned\x07" "b.csv";
     std::ofstream(motion) << "# dt_s: 0.01\naccel_g\n0\n0.1\n0\n";
-    const auto r = run_cli("simulate --block b=0.15,h=0.6,m=38 --mu 0.5 --motion '" +
-                           motion.string() + "' --out '" + (dir / "series.csv").string() + "'");
-    REQUIRE(r.exit_code == 0);
-    const std::string csv = freestand::test::slurp(dir / "series.csv");
-    CHECK(csv.rfind("# freestand simulate: event integrator, excitation a\\x1B]0;pwned\\x07b\n", 0) ==
-          0);
-    for (char c : csv) CHECK_FALSE((c != '\n' && static_cast<unsigned char>(c) < 0x20));
+    const std::string m = "'" + motion.string() + "'";
+    // The planar block, biaxial sliding and the 3D body each write the label.
+    for (const std::string& model :
+         {"--block b=0.15,h=0.6,m=38 --motion " + m,
+          "--block b=0.3,h=0.6,m=38 --mu-k 0.2 --motion " + m + " --motion-y " + m,
+          "--model 3d --block b=0.15,d=0.2,h=0.6,m=38 --motion " + m}) {
+        INFO(model);
+        const auto r = run_cli("simulate --mu 0.5 " + model + " --out '" +
+                               (dir / "series.csv").string() + "'");
+        REQUIRE(r.exit_code == 0);
+        const std::string csv = freestand::test::slurp(dir / "series.csv");
+        CHECK_THAT(csv.substr(0, csv.find('\n') + 1),
+                   Catch::Contains("excitation a\\x1B]0;pwned\\x07b"));
+        for (char c : csv) CHECK_FALSE((c != '\n' && static_cast<unsigned char>(c) < 0x20));
+    }
     fs::remove_all(dir);
 }
 
