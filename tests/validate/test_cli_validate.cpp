@@ -160,7 +160,7 @@ TEST_CASE("regress compares and rewrites reports/validation/", "[validate][cli][
     fs::remove_all(dir);
 }
 
-TEST_CASE("validate --json prints the result.json it writes", "[validate][cli]") {
+TEST_CASE("validate --json prints the result.json it writes", "[validate][cli][slow]") {
     const fs::path dir = temp_dir("json");
     copy_light_cases(dir);
     const auto b = run_cli(fmt::format("validate --json --cases '{}' --out '{}'",
