@@ -12,9 +12,7 @@ namespace {
 
 // Positive and within the limits of src/core/limits.hpp (README, Limits).
 void require_length(double v_m, const char* what) {
-    const SourceLocation where{"", 0, what};
-    require_positive(v_m, where);
-    core::limits::require_within(v_m, core::limits::max_length_m, where, "length (m)");
+    core::limits::require_length(v_m, {"", 0, what});
 }
 
 void require_mass(double m_kg) {

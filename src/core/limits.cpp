@@ -72,6 +72,11 @@ void require_within(double needed, double limit, const SourceLocation& where,
                                         texts[0], texts[1]));
 }
 
+void require_length(double length_m, const SourceLocation& where) {
+    require_positive(length_m, where);
+    require_within(length_m, max_length_m, where, "length (m)");
+}
+
 void require_at_least(double given, double limit, const SourceLocation& where,
                       std::string_view what) {
     if (given >= limit) return;

@@ -122,6 +122,9 @@ void require_within(double needed, double limit, const SourceLocation& where,
 void require_at_least(double given, double limit, const SourceLocation& where,
                       std::string_view what);
 
+/// Throws InputError at where unless a block's length is positive and at most max_length_m.
+void require_length(double length_m, const SourceLocation& where);
+
 /// Throws InputError at where unless every sample is finite and within max_abs_accel_mps2
 /// (an excitation's accelerations, after any scaling).
 void require_accelerations(const std::vector<double>& series_mps2, const SourceLocation& where);

@@ -46,19 +46,16 @@ ImpulseSolve solve_impulses(std::vector<VertexContact>& contacts, const MassMatr
                             Twist& twist, double tol_mps, std::size_t max_sweeps,
                             double regularization) {
     const double eps = regularization / mass.mass_kg;
-    std::vector<Eigen::Matrix3d> W;
-    W.reserve(contacts.size());
-    for (const auto& c : contacts) {
-        W.push_back(mass.delassus(c.r_m));
+    for (auto& c : contacts) {
+        c.delassus = mass.delassus(c.r_m);
         mass.apply(twist, c.r_m, c.impulse_Ns);  // the warm start
     }
     ImpulseSolve out;
     while (out.sweeps < max_sweeps) {
         ++out.sweeps;
         const Twist before = twist;
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            auto& c = contacts[i];
-            const Eigen::Vector3d p = updated_impulse(c, W[i], eps, twist.at(c.r_m));
+        for (auto& c : contacts) {
+            const Eigen::Vector3d p = updated_impulse(c, c.delassus, eps, twist.at(c.r_m));
             mass.apply(twist, c.r_m, p - c.impulse_Ns);
             c.impulse_Ns = p;
         }

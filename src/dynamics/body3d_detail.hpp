@@ -22,6 +22,7 @@ struct VertexContact {
     double restitution = 0.0;   ///< Newton's coefficient
     double approach_mps = 0.0;  ///< normal velocity at the step's start (< 0: approaching)
     Eigen::Vector3d impulse_Ns = Eigen::Vector3d::Zero();  ///< the solution (warm start on entry)
+    Eigen::Matrix3d delassus = Eigen::Matrix3d::Zero();    ///< set by solve_impulses
 };
 
 /// The body's velocities, world axes: the CG's relative to the base and the angular one.

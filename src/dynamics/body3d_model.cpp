@@ -14,9 +14,7 @@ namespace freestand::dynamics {
 namespace {
 
 void require_length(double v_m, const char* field) {
-    const SourceLocation where{"", 0, field};
-    require_positive(v_m, where);
-    core::limits::require_within(v_m, core::limits::max_length_m, where, "length (m)");
+    core::limits::require_length(v_m, {"", 0, field});
 }
 
 }  // namespace
@@ -37,8 +35,7 @@ Body3d box_body(double half_x_m, double half_y_m, double cg_height_m, double mas
     require_length(half_x_m, "half_x_m");
     require_length(half_y_m, "half_y_m");
     require_length(cg_height_m, "h_m");
-    core::limits::require_in(mass_kg, {core::limits::min_mass_kg, core::limits::max_mass_kg},
-                             {"", 0, "mass_kg"});
+    core::limits::require_in(mass_kg, core::limits::mass_kg, {"", 0, "mass_kg"});
     const double H = total_height_m.value_or(2.0 * cg_height_m);
     require_length(H, "total_height_m");
     if (H < cg_height_m)
@@ -71,8 +68,7 @@ Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<dou
         throw InputError({"", 0, "footprint_m"},
                          fmt::format("expected at least 3 vertices; got {}", body.footprint_m.size()));
     require_length(body.h_m, "h_m");
-    core::limits::require_in(body.mass_kg, {core::limits::min_mass_kg, core::limits::max_mass_kg},
-                             {"", 0, "mass_kg"});
+    core::limits::require_in(body.mass_kg, core::limits::mass_kg, {"", 0, "mass_kg"});
     // The CG must stand over the footprint: every direction has a vertex beyond it.
     for (int q = 0; q < 8; ++q)
         if (body.reach_m(q * units::pi / 4.0) <= 0.0)

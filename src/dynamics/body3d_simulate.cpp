@@ -29,14 +29,14 @@ double fastest_rocking_radps(const Body3d& b, double g_mps2) {
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(b.inertia_cg_kgm2).eigenvalues().minCoeff();
     for (std::size_t i = 0; i < f.size(); ++i) {
         const Eigen::Vector3d a(f[i].x(), f[i].y(), -b.h_m);
-        const Eigen::Vector3d c(f[(i + 1) % f.size()].x(), f[(i + 1) % f.size()].y(), -b.h_m);
-        const Eigen::Vector3d n = (c - a).normalized();
+        const Eigen::Vector2d& next = f[(i + 1) % f.size()];
+        const Eigen::Vector3d n = (Eigen::Vector3d(next.x(), next.y(), -b.h_m) - a).normalized();
         const double R = (a - a.dot(n) * n).norm();
         const double I_edge = n.dot(b.inertia_cg_kgm2 * n) + b.mass_kg * R * R;
         p = std::max(p, std::sqrt(b.mass_kg * g_mps2 * R / I_edge));
-        const double I_vertex = least_inertia_kgm2;
         const double R_v = a.norm();
-        p = std::max(p, std::sqrt(b.mass_kg * g_mps2 * R_v / (I_vertex + b.mass_kg * R_v * R_v)));
+        p = std::max(p, std::sqrt(b.mass_kg * g_mps2 * R_v /
+                                  (least_inertia_kgm2 + b.mass_kg * R_v * R_v)));
     }
     return p;
 }
@@ -61,20 +61,32 @@ void require_options(const Body3dModel& m, const BiaxialExcitation& e, const Bod
                                  "3D steps (duration / dt)");
 }
 
+/// A footprint edge in plan, body axes: its outward unit normal and its distance from the CG's
+/// plan position.
+struct Edge {
+    Eigen::Vector2d normal;
+    double distance_m = 0.0;
+};
+
 /// What a step needs from the body that does not change.
 struct Fixed {
     const Body3dModel& model;
     Eigen::Matrix3d inverse_inertia_body;
     std::vector<Eigen::Vector3d> vertices_body;  ///< from the CG, body axes
+    std::vector<Edge> edges;                     ///< from vertex i to i + 1 (counter-clockwise)
     Eigen::Vector3d footprint_centre_body;
     const Body3dOptions& options;
 };
 
 Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o) {
-    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, Eigen::Vector3d::Zero(), o};
-    for (const auto& v : m.body.footprint_m) {
-        f.vertices_body.emplace_back(v.x(), v.y(), -m.body.h_m);
+    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o};
+    const auto& v = m.body.footprint_m;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        f.vertices_body.emplace_back(v[i].x(), v[i].y(), -m.body.h_m);
         f.footprint_centre_body += f.vertices_body.back();
+        const Eigen::Vector2d edge = v[(i + 1) % v.size()] - v[i];
+        const Eigen::Vector2d n = Eigen::Vector2d(edge.y(), -edge.x()).normalized();  // outward (ccw)
+        f.edges.push_back({n, n.dot(v[i])});
     }
     f.footprint_centre_body /= static_cast<double>(f.vertices_body.size());
     return f;
@@ -101,7 +113,8 @@ public:
         detail::MassMatrix mass{f_.model.body.mass_kg,
                                 R * f_.inverse_inertia_body * R.transpose()};
         const Eigen::Matrix3d I_world = R * f_.model.body.inertia_cg_kgm2 * R.transpose();
-        auto contacts = contacts_at(p_mid, R, s.twist);
+        fill_contacts(p_mid, R, s.twist);
+        auto& contacts = contacts_;
         // The free motion: gravity and the base's inertia force (the body's frame moves with the
         // base), and the gyroscopic moment.
         detail::Twist t = s.twist;
@@ -115,13 +128,16 @@ public:
         s.twist = t;
         s.p_m = p_mid + 0.5 * h * t.v_mps;
         s.q = detail::turned(q_mid, t.w_radps, 0.5 * h);
-        return {state_of(contacts, t), solve.converged || contacts.empty()};
+        return {state_of(contacts, t), solve.converged};
     }
 
 private:
-    std::vector<VertexContact> contacts_at(const Eigen::Vector3d& p_mid, const Eigen::Matrix3d& R,
-                                           const detail::Twist& twist) const {
-        std::vector<VertexContact> out;
+    /// The vertices on or below the floor at the step's midpoint, into contacts_ (reused from
+    /// step to step: a step allocates nothing).
+    void fill_contacts(const Eigen::Vector3d& p_mid, const Eigen::Matrix3d& R,
+                       const detail::Twist& twist) {
+        auto& out = contacts_;
+        out.clear();
         for (std::size_t i = 0; i < f_.vertices_body.size(); ++i) {
             const Eigen::Vector3d r = R * f_.vertices_body[i];
             if (p_mid.z() + r.z() > 0.0) continue;
@@ -134,7 +150,6 @@ private:
             c.impulse_Ns = impulses_[i];
             out.push_back(c);
         }
-        return out;
     }
 
     void remember(const std::vector<VertexContact>& contacts, const detail::Twist& t) {
@@ -163,6 +178,7 @@ private:
     const Fixed& f_;
     std::vector<Eigen::Vector3d> impulses_;  ///< last step's, per vertex (the warm start)
     std::vector<bool> slipping_;             ///< per vertex, at the last step's end
+    std::vector<VertexContact> contacts_;    ///< this step's
 };
 
 /// Tilt, tilt over the critical tilt in the direction of the lean, twist and slide of a state.
@@ -200,13 +216,9 @@ bool holds_at_rest(const Fixed& f, const Eigen::Matrix3d& R, const Eigen::Vector
     if (G_mps2 <= 0.0 || a_mps2.norm() > f.model.mu_s * G_mps2) return false;
     const Eigen::Vector3d a_body = R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0);
     const Eigen::Vector2d offset = -f.model.body.h_m * a_body.head<2>();
-    const auto& v = f.model.body.footprint_m;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const Eigen::Vector2d edge = v[(i + 1) % v.size()] - v[i];
-        const Eigen::Vector2d n = Eigen::Vector2d(edge.y(), -edge.x()).normalized();  // outward (ccw)
-        if (n.dot(offset) > n.dot(v[i]) * G_mps2) return false;
-    }
-    return true;
+    return std::all_of(f.edges.begin(), f.edges.end(), [&](const Edge& e) {
+        return e.normal.dot(offset) <= e.distance_m * G_mps2;
+    });
 }
 
 void take_peaks(Body3dSummary& sum, const Body3dSample& x) {
@@ -238,18 +250,18 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     if (options.record_series) out.series.push_back(first);
     const std::size_t segments = base.segments(options.tail_s);
     const auto n = static_cast<std::size_t>(n_sub);
-    bool at_rest = true;
-    ContactState last_state = ContactState::rest;
+    // The state at the last segment's end (the body starts at rest).
+    ContactState state = ContactState::rest;
     for (std::size_t k = 0; k < segments && !sum.overturned; ++k) {
         const auto seg = base.segment(k);
-        ContactState state = at_rest ? ContactState::rest : last_state;
         // A body at rest that the segment's load cannot move skips the segment's steps, as
         // the planar engine's rest runs do.
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
-        const double t_end_s = seg.tk + excitation.dt_s;
-        const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end_s);
-        const bool skip = at_rest && holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
-                          holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end_s));
+        const double t_end = seg.tk + excitation.dt_s;
+        const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end);
+        const bool skip = state == ContactState::rest &&
+                          holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
+                          holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end));
         if (skip) sum.time_in_state_s[0] += excitation.dt_s;
         for (std::size_t j = 0; j < n && !skip; ++j) {
             const double t_mid = seg.tk + (static_cast<double>(j) + 0.5) * h;
@@ -260,12 +272,9 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
             if (!step.converged) ++sum.unconverged_steps;
             sum.time_in_state_s[static_cast<std::size_t>(state)] += h;
         }
-        last_state = state;
         // At rest (three or more contacts, every contact point still to stick_speed_mps): the
         // velocities are set to 0 so that the next segment may skip.
-        at_rest = state == ContactState::rest;
-        if (at_rest) s.twist = {};
-        const double t_end = t_end_s;
+        if (state == ContactState::rest) s.twist = {};
         const auto x = sample_of(s, fixed, t_end, state);
         take_peaks(sum, x);
         if (options.record_series) out.series.push_back(x);
