@@ -109,15 +109,21 @@ SimulateResult run_flexible(const dynamics::FlexibleMode& mode, const dynamics::
     return {exc.label, std::move(run)};
 }
 
-// The second unit, its errors named unit2.* (the first unit's ranges, which are a case's).
-dynamics::BlockModel second_unit(const JoinedUnit& u) {
-    block::Block blk;
+// make()'s result, its errors about a request field renamed prefix + field (a part of the
+// request with a name of its own: unit2.*, body3d.*).
+template <class Make>
+auto with_field_prefix(const std::string& prefix, Make make) {
     try {
-        blk = sliding::make_block(u.box);
+        return make();
     } catch (const InputError& e) {
         if (!e.where().file.empty()) throw;
-        throw InputError(field("unit2." + e.where().field), e.message());
+        throw InputError(field(prefix + e.where().field), e.message());
     }
+}
+
+// The second unit, its errors named unit2.* (the first unit's ranges, which are a case's).
+dynamics::BlockModel second_unit(const JoinedUnit& u) {
+    const block::Block blk = with_field_prefix("unit2.", [&] { return sliding::make_block(u.box); });
     core::limits::require_in(u.mu_s, core::limits::friction, field("unit2.mu_s"));
     if (u.mu_k) require_in_range(*u.mu_k, 0.0, u.mu_s, field("unit2.mu_k"));
     if (u.restitution)
@@ -142,9 +148,7 @@ SimulateResult run_pair(const JoinedUnit& u, const dynamics::BlockModel& unit1,
 dynamics::BiaxialExcitation body3d_excitation(const SimulateExcitation& e) {
     if (biaxial(e)) return biaxial_excitation(e);
     const dynamics::Excitation x = planar_excitation(e);
-    dynamics::BiaxialExcitation out =
-        dynamics::biaxial_excitation(x, std::vector<double>(x.horizontal_mps2.size(), 0.0));
-    return out;
+    return dynamics::biaxial_excitation(x, std::vector<double>(x.horizontal_mps2.size(), 0.0));
 }
 
 void require_body3d_request(const SimulateRequest& r) {
@@ -161,13 +165,10 @@ void require_body3d_request(const SimulateRequest& r) {
 
 // The body's errors named body3d.*.
 dynamics::Body3d body_of(const Body3dSpec& b) {
-    try {
+    return with_field_prefix("body3d.", [&] {
         return dynamics::box_body(b.half_x_m, b.half_y_m, b.cg_height_m, b.mass_kg,
                                   b.total_height_m);
-    } catch (const InputError& e) {
-        if (!e.where().file.empty()) throw;
-        throw InputError(field("body3d." + e.where().field), e.message());
-    }
+    });
 }
 
 SimulateResult run_body3d(const SimulateRequest& r) {
