@@ -99,6 +99,8 @@ def _number(value: Any, keyword: str) -> float:
 
 _BOX_KEYS = {"b": "half_width_m", "h": "half_height_m", "m": "mass_kg"}
 _CG_KEYS = {"x": "cg_offset_m", "h": "cg_height_m"}
+#: simulate_3d's block keys, passed on under the same names.
+_BODY3D_KEYS = {key: key for key in ("b", "d", "h", "m", "height")}
 
 
 def _keyed_numbers(values: Mapping[str, Any], keys: Mapping[str, str], keyword: str) -> dict:
@@ -428,11 +430,7 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
         motion_y = motion_y.accel_mps2
     y = None if motion_y is None else _samples(motion_y, "motion_y")
     vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
-    if not isinstance(block, Mapping):
-        raise TypeError(f"block: expected a mapping of b, d, h[, m, height], got "
-                        f"{type(block).__name__}")
-    spec = {k: _number(v, f"block {k}") for k, v in block.items()}
-    return _fs.simulate_3d(spec, _number(mu, "mu"), _optional_number(mu_k, "mu_k"),
+    return _fs.simulate_3d(_keyed_numbers(block, _BODY3D_KEYS, "block"), _number(mu, "mu"), _optional_number(mu_k, "mu_k"),
                            _number(dt, "dt"), _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"),
                            y, vertical, _number(scale, "scale"), label, bool(series))
 

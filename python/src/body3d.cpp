@@ -66,8 +66,8 @@ api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::opt
     spec.half_x_m = number(block, "b");
     spec.half_y_m = number(block, "d");
     spec.cg_height_m = number(block, "h");
-    if (block.contains("m")) spec.mass_kg = block["m"].cast<double>();
-    if (block.contains("height")) spec.total_height_m = block["height"].cast<double>();
+    spec.mass_kg = optional_number(block, "m").value_or(spec.mass_kg);
+    spec.total_height_m = optional_number(block, "height");
     spec.dt_s = step_s;
     r.body3d = spec;
     r.mu_s = mu_s;

@@ -482,3 +482,6 @@ def test_simulate_3d_names_its_arguments():
                               motion_y=np.zeros(9))
     with pytest.raises(TypeError, match="mu"):
         freestand.simulate_3d({"b": 0.5, "d": 0.4, "h": 0.2}, np.zeros(10), 0.01, mu="0.2")
+    with pytest.raises(TypeError, match="unknown key 'mass'"):
+        freestand.simulate_3d({"b": 0.5, "d": 0.4, "h": 0.2, "mass": 9.0}, np.zeros(10), 0.01,
+                              mu=0.2)
