@@ -95,6 +95,15 @@ inline const std::map<std::string, std::string>& flag_names() {
         {"flexible.zeta", "--flexible zeta"},
         {"flexible.mass", "--flexible mass"},
         {"flexible.height", "--flexible height"},
+        {"integrator", "--integrator"},
+        // api::Body3dSpec, behind --model 3d's --block and --dt
+        {"body3d", "--model 3d"},
+        {"body3d.half_x_m", "--block b (half-width along x, m)"},
+        {"body3d.half_y_m", "--block d (half-width along y, m)"},
+        {"body3d.h_m", "--block h (CG height, m)"},
+        {"body3d.mass_kg", "--block m (mass, kg)"},
+        {"body3d.total_height_m", "--block height (total height, m)"},
+        {"body3d.dt_s", "--dt"},
         // api::SlideRequest and api::RockRequest
         {"pgd_m", "--pgd-m"},
         {"pga_h_g", "--pga-g"},

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dynamics/body3d.hpp"
 #include "support/paths.hpp"
@@ -65,7 +68,19 @@ TEST_CASE("simulate --model 3d names what it does not take", "[3d][cli]") {
     CHECK_THAT(restitution.err, Catch::Contains("--restitution: not used by --model 3d"));
     const auto bad = run_cli(base + "--block b=-0.2,d=0.2,h=0.6");
     CHECK(bad.exit_code == 3);
-    CHECK_THAT(bad.err, Catch::Contains("half_x_m"));
+    CHECK_THAT(bad.err, Catch::Contains("--block b (half-width along x, m): "));
+    // Errors of the request name the options they came from, never the request's fields.
+    for (const auto& [extra, flag] : std::vector<std::pair<std::string, std::string>>{
+             {"--block b=0.2,d=0.2,h=0.6 --dt 0", "--dt: "},
+             {"--block b=0.2,d=0.2,h=0.6,height=0.3", "--block height (total height, m): "},
+             {"--block b=0.2,d=0.2,h=0.6 --integrator cd", "--integrator: "},
+             {"--block b=0.2,d=0.2,h=0.6 --block2 b=0.2,h=0.6 --mu2 0.5 --tunnel-height 1",
+              "--model 3d: "}}) {
+        INFO(extra);
+        const auto r = run_cli(base + extra);
+        CHECK(r.exit_code == 3);
+        CHECK_THAT(r.err, Catch::Contains(flag));
+    }
     const auto coarse = run_cli(base + "--block b=0.05,d=0.05,h=0.1 --dt 0.005");
     CHECK(coarse.exit_code == 3);
     CHECK_THAT(coarse.err, Catch::Contains("too coarse"));
