@@ -50,19 +50,14 @@ inline dynamics::Summary run_planar(const dynamics::BlockModel& m, const dynamic
     return s;
 }
 
-inline dynamics::Excitation scaled(const core::Record& r, double factor) {
-    dynamics::Excitation e = dynamics::excitation_from_record(r, factor);
-    return e;
-}
-
 inline void body3d_rows(const core::Record& x140) {
     auto y230 = core::read_at2(freestand::test::data_dir() + "/RSN175_IMPVALL.H_H-E12230.AT2");
     y230.accel_mps2.resize(x140.accel_mps2.size());
     double peak = 0.0;
     for (double a : x140.accel_mps2) peak = std::max(peak, std::abs(a));
     const double factor = 0.9 * 9.81 / peak;
-    const auto x = scaled(x140, factor);
-    const auto y = scaled(y230, factor);
+    const auto x = dynamics::excitation_from_record(x140, factor);
+    const auto y = dynamics::excitation_from_record(y230, factor);
 
     std::printf("\n3D body (Moreau-Jean) against the planar event-driven engine: rock case, x alone\n"
                 "%-22s %12s %12s %10s %10s\n", "run", "cpu_s", "tilt_error", "steps", "x_planar");

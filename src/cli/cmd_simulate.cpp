@@ -21,7 +21,8 @@ namespace freestand::cli::simulate_command {
 namespace {
 
 const char* const usage =
-    "[--model planar|3d] --block b=0.15,h=0.6,m=38 (3d: b=0.15,d=0.3,h=0.6,m=38[,height=H]) [--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
+    "[--model planar|3d] --block b=0.15,h=0.6,m=38 (3d: b=0.15,d=0.3,h=0.6,m=38[,height=H]) "
+    "[--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
     "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--motion-y FILE] [--scale S] | "
     "--sine 0.8g,2Hz,5s[,ramp=1s] | --sine-y 0.8g,2Hz,5s[,ramp=1s][,phase=90]) "
     "[--flexible f=HZ[,zeta=Z][,mass=FRACTION][,height=M]] "
