@@ -2,7 +2,10 @@
 // floor, with Newton's impact law and Coulomb's cone at each (Moreau 1988; Jean 1999; the
 // per-contact splitting of Siconos's nonsmooth Gauss-Seidel solver).
 #include <algorithm>
+#include <array>
 #include <cmath>
+
+#include <Eigen/Cholesky>
 
 #include "dynamics/body3d_detail.hpp"
 
@@ -35,6 +38,138 @@ Eigen::Vector3d updated_impulse(const VertexContact& c, const Eigen::Matrix3d& W
     return {pt.x(), pt.y(), pn};
 }
 
+// Contacts the direct solve takes: a rectangle's four vertices (a 12 x 12 system).
+constexpr std::size_t direct_max_contacts = 4;
+using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3 * direct_max_contacts,
+                             3 * direct_max_contacts>;
+using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3 * direct_max_contacts, 1>;
+
+// The contacts the direct solve keeps loaded, by index (fixed capacity: a step allocates nothing).
+struct Active {
+    std::array<std::size_t, direct_max_contacts> index{};
+    std::size_t count = 0;
+
+    std::size_t size() const { return count; }
+    bool empty() const { return count == 0; }
+    std::size_t operator[](std::size_t i) const { return index[i]; }
+    void erase(std::size_t i) {
+        std::copy(index.begin() + static_cast<std::ptrdiff_t>(i + 1),
+                  index.begin() + static_cast<std::ptrdiff_t>(count),
+                  index.begin() + static_cast<std::ptrdiff_t>(i));
+        --count;
+    }
+    bool contains(std::size_t k) const {
+        return std::find(index.begin(), index.begin() + static_cast<std::ptrdiff_t>(count), k) !=
+               index.begin() + static_cast<std::ptrdiff_t>(count);
+    }
+};
+
+// The impulses when every contact of `active` sticks and keeps its Newton velocity: the
+// regularised system (W + eps I) P = target - u_free over the active contacts, W the Delassus
+// matrix (W_ij = I / M - [r_i]x I^-1 [r_j]x). With four coplanar contacts W is singular and
+// eps picks the least-norm impulses among those giving the same motion (Tikhonov).
+Column sticking_impulses(const std::vector<VertexContact>& contacts,
+                         const Active& active, const MassMatrix& mass,
+                         const Twist& free, double eps) {
+    const auto n = static_cast<Eigen::Index>(active.size());
+    Square W(3 * n, 3 * n);
+    Column rhs(3 * n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const VertexContact& ci = contacts[active[i]];
+        const Eigen::Matrix3d rxi = cross_matrix(ci.r_m);
+        for (Eigen::Index j = 0; j < n; ++j) {
+            const Eigen::Matrix3d rxj = cross_matrix(contacts[active[j]].r_m);
+            W.block<3, 3>(3 * i, 3 * j) =
+                Eigen::Matrix3d::Identity() / mass.mass_kg - rxi * mass.inverse_inertia * rxj;
+        }
+        const Eigen::Vector3d target(0.0, 0.0, -ci.restitution * std::min(ci.approach_mps, 0.0));
+        rhs.segment<3>(3 * i) = target - free.at(ci.r_m);
+    }
+    W.diagonal().array() += eps;
+    return Eigen::LDLT<Square>(W).solve(rhs);
+}
+
+// The same wrench with the tangential impulses shared in proportion to the normal ones: among
+// the tangential impulses with the same resultant force and moment (so the same motion), the
+// one minimising sum |p_t,i|^2 / p_n,i. The least-norm impulses share friction evenly, which a
+// vertex about to lift cannot carry although the body as a whole sticks.
+void share_friction_by_load(const std::vector<VertexContact>& contacts,
+                            const Active& active, Column& P) {
+    const auto n = static_cast<Eigen::Index>(active.size());
+    Eigen::Matrix<double, 5, Eigen::Dynamic, 0, 5, 2 * direct_max_contacts> A(5, 2 * n);
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * direct_max_contacts, 1> load(2 * n), pt(2 * n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Vector3d& r = contacts[active[i]].r_m;
+        // Rows: force x, y; moment x, y, z of (p_x, p_y, 0) at r.
+        A.block<5, 2>(0, 2 * i) << 1.0, 0.0, 0.0, 1.0, 0.0, -r.z(), r.z(), 0.0, -r.y(), r.x();
+        load.segment<2>(2 * i).setConstant(P(3 * i + 2));
+        pt.segment<2>(2 * i) = P.segment<2>(3 * i);
+    }
+    const Eigen::Matrix<double, 5, 1> wrench = A * pt;
+    Eigen::Matrix<double, 5, 5> S = A * load.asDiagonal() * A.transpose();
+    S.diagonal().array() += 1e-12 * S.trace();
+    const Eigen::Matrix<double, 5, 1> y = Eigen::LDLT<Eigen::Matrix<double, 5, 5>>(S).solve(wrench);
+    pt = load.asDiagonal() * (A.transpose() * y);
+    for (Eigen::Index i = 0; i < n; ++i) P.segment<2>(3 * i) = pt.segment<2>(2 * i);
+}
+
+bool inside_cones(const std::vector<VertexContact>& contacts,
+                  const Active& active, const Column& P) {
+    for (std::size_t i = 0; i < active.size(); ++i)
+        if (P.segment<2>(3 * i).norm() > contacts[active[i]].mu * P(3 * i + 2)) return false;
+    return true;
+}
+
+// The step's impulses when every contact carrying load sticks (rest, or rocking about a sticking
+// edge or vertex: most steps). Contacts whose normal impulse comes out negative leave the
+// active set one at a time, as in an active-set method. False, with nothing changed, when the
+// answer leaves a cone or lets a released contact sink: the contact problem then needs the
+// sweeps (slip).
+bool solved_sticking(std::vector<VertexContact>& contacts, const MassMatrix& mass, Twist& twist,
+                     double eps, double tol_mps, double resting_mps) {
+    if (contacts.empty() || contacts.size() > direct_max_contacts) return false;
+    // An impact (a vertex arriving faster than gravity moves it in a step) needs the sweeps:
+    // with friction its solution need not be unique, and the sweeps reach Housner's one (the
+    // arriving vertex takes the load, the pivot releases), which the checks verify.
+    for (const VertexContact& c : contacts)
+        if (c.approach_mps < -resting_mps) return false;
+    Active active;
+    for (std::size_t k = 0; k < contacts.size(); ++k) active.index[active.count++] = k;
+    while (!active.empty()) {
+        const Column sticking = sticking_impulses(contacts, active, mass, twist, eps);
+        std::size_t worst = active.size();
+        for (std::size_t i = 0; i < active.size(); ++i)
+            if (sticking(3 * i + 2) < 0.0 &&
+                (worst == active.size() || sticking(3 * i + 2) < sticking(3 * worst + 2)))
+                worst = i;
+        if (worst != active.size()) {
+            active.erase(worst);
+            continue;
+        }
+        Column P = sticking;
+        if (!inside_cones(contacts, active, P)) {
+            if (active.size() < 2) return false;
+            share_friction_by_load(contacts, active, P);
+            if (!inside_cones(contacts, active, P)) return false;
+        }
+        Twist after = twist;
+        for (std::size_t i = 0; i < active.size(); ++i)
+            mass.apply(after, contacts[active[i]].r_m, P.segment<3>(3 * i));
+        for (std::size_t k = 0; k < contacts.size(); ++k) {
+            const VertexContact& c = contacts[k];
+            if (active.contains(k)) continue;
+            const double floor_mps = -c.restitution * std::min(c.approach_mps, 0.0);
+            if (after.at(c.r_m).z() < floor_mps - tol_mps) return false;
+        }
+        for (auto& c : contacts) c.impulse_Ns.setZero();
+        for (std::size_t i = 0; i < active.size(); ++i)
+            contacts[active[i]].impulse_Ns = P.segment<3>(3 * i);
+        twist = after;
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 Eigen::Matrix3d MassMatrix::delassus(const Eigen::Vector3d& r_m) const {
@@ -43,14 +178,19 @@ Eigen::Matrix3d MassMatrix::delassus(const Eigen::Vector3d& r_m) const {
 }
 
 ImpulseSolve solve_impulses(std::vector<VertexContact>& contacts, const MassMatrix& mass,
-                            Twist& twist, double tol_mps, std::size_t max_sweeps,
-                            double regularization) {
+                            Twist& twist, double tol_mps, double resting_mps,
+                            std::size_t max_sweeps, double regularization) {
     const double eps = regularization / mass.mass_kg;
+    ImpulseSolve out;
+    if (solved_sticking(contacts, mass, twist, eps, tol_mps, resting_mps)) {
+        out.converged = true;
+        out.direct = true;
+        return out;
+    }
     for (auto& c : contacts) {
         c.delassus = mass.delassus(c.r_m);
         mass.apply(twist, c.r_m, c.impulse_Ns);  // the warm start
     }
-    ImpulseSolve out;
     while (out.sweeps < max_sweeps) {
         ++out.sweeps;
         const Twist before = twist;

@@ -51,19 +51,24 @@ struct MassMatrix {
 struct ImpulseSolve {
     std::size_t sweeps = 0;
     bool converged = false;
+    bool direct = false;  ///< every loaded contact sticks: solved directly, no sweeps
 };
 
-/// Solves the step's contact problem by projected Gauss-Seidel over the contacts: for each,
-/// Newton's law on the normal velocity (u_n + e min(approach, 0) >= 0, complementary to the
-/// normal impulse) and Coulomb's cone on the tangential one (|p_t| <= mu p_n, opposing the slip
-/// when it slides), each regularised by regularization / M (Tikhonov, which keeps the sweeps
-/// from drifting along the impulses that do not change the motion). Starts from the contacts' impulses (the warm start), updates `twist` from
-/// free to final, and stops when a sweep changes no contact point's velocity by more than
-/// tol_mps: the motion is then unique to that tolerance, while the impulses of more than three
-/// coplanar contacts are not (their distribution is the one the sweeps reach).
+/// Solves the step's contact problem: Newton's law on each contact's normal velocity
+/// (u_n + e min(approach, 0) >= 0, complementary to the normal impulse) and Coulomb's cone on
+/// the tangential one (|p_t| <= mu p_n, opposing the slip when it slides), regularised by
+/// regularization / M (Tikhonov: among impulses giving the same motion, the least-norm ones).
+/// `twist` goes from free to final.
+///  - Without an impact (no contact approaching faster than resting_mps) and with at most four
+///    contacts, it first tries every loaded contact sticking: one linear solve, contacts with a
+///    negative normal impulse released one by one; kept when the impulses lie in their cones
+///    (friction shared by load if need be) and no released contact sinks.
+///  - Otherwise projected Gauss-Seidel sweeps from the contacts' impulses (the warm start) until
+///    a sweep changes no contact point's velocity by more than tol_mps: the motion is then unique
+///    to that tolerance, while the impulses of more than three coplanar contacts are not.
 ImpulseSolve solve_impulses(std::vector<VertexContact>& contacts, const MassMatrix& mass,
-                            Twist& twist, double tol_mps, std::size_t max_sweeps,
-                            double regularization);
+                            Twist& twist, double tol_mps, double resting_mps,
+                            std::size_t max_sweeps, double regularization);
 
 /// Position and velocities. The CG's position is relative to the base (its plan position at
 /// rest is the origin, its height the CG height), the orientation body-to-world.

@@ -123,7 +123,7 @@ public:
         t.w_radps += h * (mass.inverse_inertia * (-w.cross(I_world * w)));
         const auto solve = detail::solve_impulses(
             contacts, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
-            f_.options.max_sweeps, f_.options.regularization);
+            f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
         remember(contacts, t);
         s.twist = t;
         s.p_m = p_mid + 0.5 * h * t.v_mps;

@@ -177,7 +177,11 @@ TEST_CASE("3D: a square block under diagonal input rocks about a corner as its p
     const auto m = dynamics::make_body3d_model(dynamics::box_body(b, b, h, M), 1.0);
     const auto e = along(std::numbers::pi / 4.0, 3.0, 0.005,
                          [](double t) { return sine(0.6, 2.0, t); });
-    const auto r3 = dynamics::simulate_body3d(m, e, quick());
+    // At dt 1e-4 s one flat landing resolves into a brief rest and the peak comes out 2 % high;
+    // from 5e-5 s on it agrees with the planar equivalent to 3e-5.
+    auto o = quick();
+    o.dt_s = 2.5e-5;
+    const auto r3 = dynamics::simulate_body3d(m, e, o);
     // docs/methods.md s.11: half-width sqrt(2) b, R = sqrt(2 b^2 + h^2),
     // I_O = M (7 b^2 + 4 h^2) / 3, r = 1 - 12 b^2 / (7 b^2 + 4 h^2).
     const double B = std::sqrt(2.0) * b;
