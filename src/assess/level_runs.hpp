@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "assess/case.hpp"
+#include "dynamics/body3d.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/simulate.hpp"
 
@@ -31,6 +32,10 @@ class LevelRuns {
     }
     /// Peak |u| of the biaxial block (one model per level: the sliding bound).
     RunTable<double>& biaxial(std::size_t n) { return sized(biaxial_, n); }
+    /// The 3D body at the sliding (slot 0) or the rocking (slot 1) bound.
+    RunTable<dynamics::Body3dSummary>& body3d(int slot, std::size_t n) {
+        return sized(body3d_[slot], n);
+    }
 
   private:
     template <class T>
@@ -41,6 +46,7 @@ class LevelRuns {
     std::map<std::pair<Direction, int>, RunTable<dynamics::Summary>> rigid_;
     std::map<std::pair<Direction, int>, RunTable<dynamics::FlexibleSummary>> flexible_;
     RunTable<double> biaxial_;
+    std::map<int, RunTable<dynamics::Body3dSummary>> body3d_;
 };
 
 /// table[k], made by `make` on first use; `make` alone without a table.

@@ -27,6 +27,7 @@ enum class Model {
     simulation_rocking,         ///< docs/methods.md s.3 time-history simulation, rocking / overturning
     simulation_biaxial_slide,   ///< docs/methods.md s.10 biaxial sliding simulation, peak |u|
     simulation_flexible,        ///< docs/methods.md s.10 flexible-body simulation (a raised flag)
+    simulation_3d,              ///< docs/methods.md s.11 rigid body in three dimensions
     fragility_goal,             ///< docs/methods.md s.6 step 5: the goal, from the fragility engine
 };
 const char* to_string(Model m);
@@ -231,6 +232,30 @@ struct FlexibleSimulation {
     double height_m = 0.0;
 };
 
+/// The rigid body in three dimensions at a simulated level that can uplift (docs/methods.md
+/// s.11): every history's three components at once, h1 along x and h2 along y. Its runs are
+/// kept as a Simulation (slide: peak |u| of the footprint centre at the sliding bound; rotation:
+/// peak tilt and tilt over the critical tilt in the direction it leaned, at the rocking bound),
+/// so they decide the level by the same rules as the planar runs; the planar runs stay in
+/// LevelResult::simulation, beside it.
+struct Body3dLevel {
+    bool ran = false;     ///< false: the planar model stays, for `reason`
+    std::string reason;   ///< why it ran, or why it does not apply
+    Simulation sim;       ///< the 3D runs, as the planar statistics
+    Stats twist_rad;      ///< peak |twist| about the vertical at the rocking bound, rad
+    /// Mean time per set in each contact state at the rocking bound, s (dynamics::ContactState
+    /// order: rest, slide, edge, vertex, flight).
+    std::array<double, 5> time_in_state_s{};
+    double dt_s = 0.0;    ///< the time step
+    int unconverged_steps = 0;  ///< over every run: steps whose impulses hit the sweep cap
+    /// Governing 84th percentiles of the planar runs of the level's two directions (the larger),
+    /// and 3D over planar (absent when the planar one is 0).
+    double planar_rock_over_alpha = 0.0;
+    double planar_slide_m = 0.0;
+    std::optional<double> rock_ratio;
+    std::optional<double> slide_ratio;
+};
+
 /// The bootstrap of a simulated level's decision (docs/methods.md s.6 step 4): the sets resampled
 /// with replacement, the decision redone on each resample.
 struct Settling {
@@ -264,6 +289,9 @@ struct LevelResult {
     /// The flexible-body simulation, run where the flag is raised; it then decides the level and
     /// `simulation` (the rigid planar one) is reported beside it.
     std::optional<FlexibleSimulation> flexible_simulation;
+    /// The rigid body in three dimensions, where the level can uplift in some direction; it then
+    /// decides the level (with the flexible body, the worse of the two).
+    std::optional<Body3dLevel> body3d;
     /// How settled the decision of a simulated level is (docs/methods.md s.6 step 4).
     std::optional<Settling> settling;
     Verdict verdict;

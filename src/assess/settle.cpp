@@ -6,6 +6,7 @@
 #include <random>
 
 #include "assess/biaxial_level.hpp"
+#include "assess/body3d_level.hpp"
 #include "assess/level_runs.hpp"
 #include "assess/verdict.hpp"
 #include "core/random.hpp"
@@ -90,6 +91,11 @@ bool passes_on(const LevelResult& level, const std::vector<std::size_t>& sets,
         r.biaxial->ran = level.biaxial->ran;
         if (level.biaxial->ran) r.biaxial->slide_m = resample(level.biaxial->slide_m, sets);
     }
+    if (level.body3d && level.body3d->ran) {
+        r.body3d = Body3dLevel{};
+        r.body3d->ran = true;
+        r.body3d->sim = resampled(level.body3d->sim, sets);
+    }
     if (level.flexible_simulation) {
         r.flexible_simulation = FlexibleSimulation{};
         r.flexible_simulation->sim = resampled(level.flexible_simulation->sim, sets);
@@ -146,6 +152,7 @@ std::vector<LevelResult> evaluate_settled(const Case& c, const LevelDemand& dema
         out = {evaluate_level(c, Direction::x, demand, bank),
                evaluate_level(c, Direction::y, demand, bank)};
         apply_biaxial(c, demand, {&out[0], &out[1]}, bank);
+        apply_body3d(c, demand, {&out[0], &out[1]}, bank);
         bool settled = true;
         for (LevelResult& l : out) {
             if (!decided_by_sets(l)) continue;

@@ -31,6 +31,9 @@ const char* to_string(Model m) {
         case Model::simulation_flexible:
             return "time-history simulation of the flexible body, rigid base and one elastic mode "
                    "(docs/methods.md s.10)";
+        case Model::simulation_3d:
+            return "time-history simulation of the rigid body in three dimensions, every "
+                   "component at once (docs/methods.md s.11)";
         case Model::fragility_goal:
             return "performance goal: fragility engine at multiples of the DBE, lognormal fit "
                    "(docs/methods.md s.6 step 5, s.9; ASCE 43-05 s.1.3)";
@@ -389,6 +392,22 @@ Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, doub
 }
 
 namespace {
+std::string body3d_trail_line(const Body3dLevel& b) {
+    if (!b.ran) return "3D body not run: " + b.reason;
+    const Simulation& sim = b.sim;
+    const auto ratio = [](const std::optional<double>& r) {
+        return r ? fmt::format("{:.2f} x the planar", *r) : std::string("the planar is nil");
+    };
+    return fmt::format(
+        "3D body (h1 along x, h2 along y, the vertical; dt {:g} s): {} of {} overturned; peak tilt "
+        "over critical 84th {:.3f} ({}, {:.3f}); peak |u| 84th {:.1f} mm at mu_s {:.3f} ({}, "
+        "{:.1f} mm); peak twist 84th {:.4f} rad",
+        b.dt_s, sim.overturned, sim.histories, sim.governing(sim.rock_over_alpha),
+        ratio(b.rock_ratio), b.planar_rock_over_alpha, mm(sim.governing(sim.slide_m)),
+        sim.sliding_bound.mu_s, ratio(b.slide_ratio), mm(b.planar_slide_m),
+        sim.governing(b.twist_rad));
+}
+
 std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
     if (!b.ran) return "biaxial sliding not run: " + b.reason;
     const std::string vs =
@@ -403,7 +422,30 @@ std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
 }
 }  // namespace
 
+// The 3D body's verdict: its runs under the planar rules, with its name.
+Verdict body3d_verdict(const Body3dLevel& b, double allowable_slide_m, double required_fs) {
+    Verdict v = simulation_verdict(b.sim, allowable_slide_m, required_fs);
+    v.decided_by = Model::simulation_3d;
+    v.margin_basis = "3D body: " + v.margin_basis;
+    return v;
+}
+
+// The worse of two verdicts, the failing or smaller-margin one.
+Verdict worse_of(const Verdict& a, const Verdict& b) {
+    if (passes(a) != passes(b)) return passes(a) ? b : a;
+    if (!a.margin) return a;
+    if (!b.margin) return b;
+    return *b.margin < *a.margin ? b : a;
+}
+
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs) {
+    const Body3dLevel* body3d = level.body3d && level.body3d->ran ? &*level.body3d : nullptr;
+    if (body3d && !level.flexible_simulation) {
+        // The body can uplift: the 3D body decides (docs/methods.md s.11), the planar runs beside.
+        Verdict v = body3d_verdict(*body3d, allowable_slide_m, required_fs);
+        if (level.flexible.raised && passes(v)) v.conditions.push_back(flexible_condition(level));
+        return with_static_margin(v, level);
+    }
     if (level.flexible_simulation) {
         // A raised flag resolved by the flexible model: its result decides (s.10).
         Verdict v = simulation_verdict(level.flexible_simulation->sim, allowable_slide_m, required_fs);
@@ -419,6 +461,8 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
                                fmt::format("simulated biaxial peak |u| of the rigid block ({})",
                                            stat_name(sim))));
         }
+        // Neither has both the mode and the third dimension: the worse of the two governs.
+        if (body3d) v = worse_of(v, body3d_verdict(*body3d, allowable_slide_m, required_fs));
         return with_static_margin(v, level);
     }
     Verdict v = screen_verdict(level.screen);
@@ -450,6 +494,7 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
         const Simulation& sim = *level.simulation;
         out.push_back(simulation_trail_line(sim));
         if (level.biaxial) out.push_back(biaxial_trail_line(sim, *level.biaxial));
+        if (level.body3d) out.push_back(body3d_trail_line(*level.body3d));
         if (level.flexible_simulation) {
             out.push_back(flexible_trail_line(*level.flexible_simulation));
             const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs);
@@ -457,6 +502,14 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
                 "the flexible-body model decides; the rigid planar simulation beside it gives {}, "
                 "margin {}",
                 passes(beside) ? "a pass" : "a FAILURE", margin_text(beside)));
+        } else if (level.body3d && level.body3d->ran) {
+            const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs,
+                                                      level.biaxial ? &*level.biaxial : nullptr);
+            out.push_back(fmt::format(
+                "the 3D body decides; the planar simulation of direction {} beside it gives {}, "
+                "margin {}",
+                to_string(level.direction), passes(beside) ? "a pass" : "a FAILURE",
+                margin_text(beside)));
         } else if (s.passed) {
             // Reported beside the screen, which decides: say so when the two disagree.
             const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs,

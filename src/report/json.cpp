@@ -162,6 +162,33 @@ ordered_json biaxial_json(const std::optional<BiaxialSlide>& b) {
             {"ratio_to_planar", num(b->ratio)}};
 }
 
+// The rigid body in three dimensions at a simulated level (docs/methods.md s.11): null when the
+// level was not simulated; the runs' fields null when it did not apply (reason says why).
+ordered_json body3d_json(const std::optional<Body3dLevel>& b) {
+    if (!b) return nullptr;
+    ordered_json j;
+    j["ran"] = b->ran;
+    j["reason"] = b->reason;
+    if (!b->ran) return j;
+    j["dt_s"] = num(b->dt_s);
+    j["unconverged_steps"] = b->unconverged_steps;
+    j["twist_rad"] = stats_json(b->twist_rad);
+    ordered_json states;
+    const char* names[] = {"rest", "slide", "edge", "vertex", "flight"};
+    for (std::size_t i = 0; i < b->time_in_state_s.size(); ++i)
+        states[names[i]] = num(b->time_in_state_s[i]);
+    j["mean_time_in_state_s"] = states;
+    j["planar_rock_over_alpha"] = num(b->planar_rock_over_alpha);
+    j["planar_slide_m"] = num(b->planar_slide_m);
+    j["rock_ratio_to_planar"] = num(b->rock_ratio);
+    j["slide_ratio_to_planar"] = num(b->slide_ratio);
+    j.update(simulation_json(b->sim));
+    j.erase("amplification");  // not a 3D output
+    j.erase("slide_residual_m");
+    j.erase("rocking_other_restitution");
+    return j;
+}
+
 // The flexible-body simulation of a level (docs/methods.md s.10), null where it did not run.
 ordered_json flexible_simulation_json(const std::optional<FlexibleSimulation>& f) {
     if (!f) return nullptr;
@@ -230,6 +257,7 @@ ordered_json level_json(const LevelResult& l) {
     j["model_reason"] = l.model_reason.empty() ? ordered_json(nullptr) : ordered_json(l.model_reason);
     j["simulation"] = simulation_json(l.simulation);
     j["biaxial"] = biaxial_json(l.biaxial);
+    j["body3d"] = body3d_json(l.body3d);
     j["flexible_simulation"] = flexible_simulation_json(l.flexible_simulation);
     j["n_sets"] = l.settling ? ordered_json(l.settling->n_sets) : ordered_json(nullptr);
     j["settled_fraction"] =

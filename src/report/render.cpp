@@ -216,6 +216,21 @@ std::string biaxial_text(const LevelResult& l) {
                        b.ratio ? fixed(*b.ratio, 2) : none, to_string(b.planar_direction));
 }
 
+// The 3D body's governing demands and their ratios to the planar ones.
+std::string body3d_text(const LevelResult& l) {
+    if (!l.body3d || !l.body3d->ran) return none;
+    const Body3dLevel& b = *l.body3d;
+    const auto ratio = [](const std::optional<double>& r) {
+        return r ? fixed(*r, 2) + " x" : none;
+    };
+    return fmt::format("tilt/critical {} ({}); slide {} mm ({}); {} overturned",
+                       b.sim.overturned < b.sim.histories
+                           ? stats_text(b.sim.rock_over_alpha, 1.0, 3)
+                           : none,
+                       ratio(b.rock_ratio), stats_text(b.sim.slide_m, 1000.0, 1),
+                       ratio(b.slide_ratio), overturned_text(b.sim));
+}
+
 std::string level_verdict_text(const Verdict& v) {
     return passes(v) ? verdict_text(v)
                      : fmt::format("{} ({})", verdict_text(v), to_string(v.failure));
@@ -234,6 +249,7 @@ std::string governing_bound(const LevelResult& l) {
             return l.bounds.rocking.name.empty() ? "upper friction and restitution bounds"
                                                  : l.bounds.rocking.name;
         case Model::simulation_flexible:
+        case Model::simulation_3d:
             return "slip at the lower friction bound, rocking at the upper bounds";
         case Model::fragility_goal:
             return "friction and restitution drawn between their bounds";
@@ -286,6 +302,7 @@ mstch::map level_row(const LevelResult& l) {
              : none},
         {"sim_slide", sim ? stats_text(sim->slide_m, 1000.0, 1) : none},
         {"sim_biaxial", biaxial_text(l)},
+        {"sim_3d", body3d_text(l)},
         {"sim_residual", sim ? mm(sim->slide_residual_m.max) : none},
         {"rock_sim", standing ? stats_text(sim->rock_over_alpha, 1.0, 3) : none},
         {"overturned", sim ? overturned_text(*sim) : none},

@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "support/paths.hpp"
+#include "support/shipped_case.hpp"
 #include "assess/biaxial_level.hpp"
+#include "assess/body3d_level.hpp"
 #include "assess/level.hpp"
 #include "assess/pipeline.hpp"
 #include "assess/verdict.hpp"
@@ -14,18 +15,12 @@
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_assess_test_biaxial_level {
 
-namespace fs = std::filesystem;
 using namespace freestand;
 using namespace freestand::assess;
+using freestand::test::shipped_case;
+using freestand::test::trail_has;
 
 namespace {
-
-Case shipped(const char* name, const std::vector<double>& pga, int histories) {
-    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / name);
-    c.options.histories_per_level = histories;
-    c.options.max_histories_per_level = c.options.histories_per_level;
-    return with_pga_levels(c, pga);
-}
 
 // The shipped glove box carries its fixed-base frequency and free-rocking bands, which raise the
 // flexible-body flag, and the flexible model then decides its levels; without them it is the
@@ -37,17 +32,12 @@ Case rigid(Case c) {
     return c;
 }
 
-bool trail_has(const LevelResult& l, const std::string& start) {
-    return std::any_of(l.trail.begin(), l.trail.end(),
-                       [&](const std::string& t) { return t.rfind(start, 0) == 0; });
-}
-
 }  // namespace
 
 TEST_CASE("a sliding level's verdict uses the biaxial peak, the planar stays for comparison",
           "[assess][biaxial]") {
     // The glove box slides at 0.2 g (mu_s 0.12 at the lower bound, tan(alpha) well above).
-    const AssessmentResult r = assess::assess(rigid(shipped("glovebox-single.toml", {0.2}, 2)));
+    const AssessmentResult r = assess::assess(rigid(shipped_case("glovebox-single.toml", {0.2}, 2)));
     REQUIRE(r.levels.size() == 2);
     const LevelResult& x = r.levels.at(0);
     const LevelResult& y = r.levels.at(1);
@@ -77,19 +67,18 @@ TEST_CASE("a sliding level's verdict uses the biaxial peak, the planar stays for
           (x.simulation->slide_m.max >= y.simulation->slide_m.max ? Direction::x : Direction::y));
 }
 
-TEST_CASE("a rocking level keeps the planar model and says why the biaxial one does not apply",
+TEST_CASE("a rocking level does not take the biaxial model and says why",
           "[assess][biaxial]") {
     // The slender TS1 block rocks at 0.3 g at both friction bounds.
-    const AssessmentResult r = assess::assess(shipped("block-ts1.toml", {0.3}, 1));
+    const AssessmentResult r = assess::assess(shipped_case("block-ts1.toml", {0.3}, 1));
     const LevelResult& x = r.levels.at(0);
     REQUIRE(x.simulation.has_value());
     REQUIRE(x.biaxial.has_value());
     CHECK_FALSE(x.biaxial->ran);
     CHECK(x.biaxial->reason.find("does not slide alone at the sliding bound (mode rock)") !=
           std::string::npos);
-    CHECK(x.model == planar_model_name);
-    CHECK(x.model_reason.find("biaxial sliding does not apply: the block does not slide alone") !=
-          std::string::npos);
+    // It can uplift, so the 3D body decides it (tests/assess/test_body3d_level.cpp).
+    CHECK(x.model == body3d_model_name);
     CHECK(x.verdict.decided_by != Model::simulation_biaxial_slide);
     CHECK(trail_has(x, "biaxial sliding not run: "));
 }

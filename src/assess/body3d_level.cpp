@@ -1,0 +1,196 @@
+#include "assess/body3d_level.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "assess/level_runs.hpp"
+#include "assess/settle.hpp"
+#include "assess/verdict.hpp"
+#include "core/parallel.hpp"
+#include "core/statistics.hpp"
+
+namespace freestand::assess {
+
+namespace {
+
+bool uplifts(Mode m) { return m == Mode::rock || m == Mode::slide_rock || m == Mode::flight; }
+
+// The 3D runs of every set in use at one friction bound (slot 0 sliding, 1 rocking), kept from
+// batch to batch of the settling like the planar runs.
+std::vector<dynamics::Body3dSummary> runs_at(const dynamics::Body3dModel& model,
+                                             const std::vector<dynamics::BiaxialExcitation>& ex,
+                                             const dynamics::Body3dOptions& options, int slot,
+                                             HistoryBank& bank) {
+    std::vector<dynamics::Body3dSummary> out(ex.size());
+    RunTable<dynamics::Body3dSummary>* kept =
+        bank.level_runs() ? &bank.level_runs()->body3d(slot, ex.size()) : nullptr;
+    core::parallel_for(ex.size(), bank.run().threads, [&](std::size_t k) {
+        out[k] = remembered(kept, k, [&] {
+            return dynamics::simulate_body3d(model, ex[k], options).summary;
+        });
+    });
+    return out;
+}
+
+dynamics::Body3dModel model_at(const Component& c, const ContactBound& bound) {
+    return dynamics::make_body3d_model(component_body3d(c), bound.mu_s, bound.mu_k);
+}
+
+// The runs as the planar statistics: slide at the sliding bound, tilt at the rocking bound.
+Simulation as_simulation(const std::vector<dynamics::Body3dSummary>& slide,
+                         const std::vector<dynamics::Body3dSummary>& rock,
+                         const DirectionBounds& bounds, const Component& c) {
+    Simulation sim;
+    sim.histories = static_cast<int>(slide.size());
+    sim.sliding_bound = bounds.sliding;
+    sim.rocking_bound = bounds.rocking;
+    sim.rocking_bound.housner = true;
+    sim.bounds_differ = &slide != &rock;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> slide_m, over, rad;
+    double worst = -1.0;
+    for (std::size_t k = 0; k < slide.size(); ++k) {
+        const bool overturned = slide[k].overturned || rock[k].overturned;
+        sim.overturned_sets.push_back(overturned ? 1 : 0);
+        sim.overturned += overturned ? 1 : 0;
+        // A body that tips over carries its footprint centre with it: no slide to report.
+        slide_m.push_back(slide[k].overturned ? nan : slide[k].slide_max_m);
+        over.push_back(overturned ? nan : rock[k].tilt_max_over_critical);
+        rad.push_back(overturned ? nan : rock[k].tilt_max_rad);
+        const double score = overturned ? 1e9 : rock[k].tilt_max_over_critical;
+        if (score > worst) {
+            worst = score;
+            sim.governing_history = static_cast<int>(k);
+        }
+    }
+    sim.slide_m = stats_of(slide_m);
+    sim.rock_over_alpha = stats_of(over);
+    sim.rock_rad = stats_of(rad);
+    sim.overturn_ci = core::clopper_pearson(sim.overturned, sim.histories);
+    count_exceedances(sim, c.allowable_slide_m, c.required_overturn_fs);
+    return sim;
+}
+
+std::optional<double> ratio(double body3d, double planar) {
+    if (planar > 0.0) return body3d / planar;
+    return std::nullopt;
+}
+
+// Every history with the 3D body at both bounds, with the planar governing demands beside.
+Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResult& x,
+                       const LevelResult& y, HistoryBank& bank) {
+    std::vector<dynamics::BiaxialExcitation> ex;
+    for (const HistorySet& set : bank.sets())
+        ex.push_back(dynamics::biaxial_excitation_from_records(set.h1, set.h2, demand.pga_g,
+                                                               &set.v));
+    const dynamics::Body3dOptions options = body3d_options(c.site.g_mps2);
+    const DirectionBounds& bounds = x.bounds;
+    const bool differ = bounds.sliding.mu_s != bounds.rocking.mu_s ||
+                        bounds.sliding.mu_k != bounds.rocking.mu_k;
+    const auto rock = runs_at(model_at(c.component, bounds.rocking), ex, options, 1, bank);
+    const auto slide =
+        differ ? runs_at(model_at(c.component, bounds.sliding), ex, options, 0, bank) : rock;
+    Body3dLevel b;
+    b.ran = true;
+    b.dt_s = options.dt_s;
+    b.sim = as_simulation(slide, rock, bounds, c.component);
+    b.sim.bounds_differ = differ;
+    std::vector<double> twist;
+    for (const auto& s : rock) {
+        twist.push_back(s.twist_max_rad);
+        for (std::size_t i = 0; i < b.time_in_state_s.size(); ++i)
+            b.time_in_state_s[i] += s.time_in_state_s[i] / static_cast<double>(rock.size());
+    }
+    for (const auto* runs : {&rock, &slide})
+        for (const auto& s : *runs) b.unconverged_steps += static_cast<int>(s.unconverged_steps);
+    b.twist_rad = stats_of(twist);
+    for (const LevelResult* l : {&x, &y}) {
+        if (!l->simulation) continue;
+        const Simulation& p = *l->simulation;
+        b.planar_rock_over_alpha = std::max(b.planar_rock_over_alpha, p.governing(p.rock_over_alpha));
+        b.planar_slide_m = std::max(b.planar_slide_m, p.governing(p.slide_m));
+    }
+    b.rock_ratio = ratio(b.sim.governing(b.sim.rock_over_alpha), b.planar_rock_over_alpha);
+    b.slide_ratio = ratio(b.sim.governing(b.sim.slide_m), b.planar_slide_m);
+    return b;
+}
+
+}  // namespace
+
+dynamics::Body3dOptions body3d_options(double g_mps2) {
+    dynamics::Body3dOptions o;
+    o.dt_s = 1e-3;
+    o.solver_tol = 1e-8;
+    o.record_series = false;
+    o.g_mps2 = g_mps2;
+    return o;
+}
+
+dynamics::Body3d component_body3d(const Component& c) {
+    const block::Block bx = c.block(Direction::x);
+    const block::Block by = c.block(Direction::y);
+    dynamics::Body3d body;
+    body.mass_kg = c.mass_kg;
+    body.h_m = c.cg_height_m;
+    // Counter-clockwise from the corner at the left edges of both planar geometries.
+    body.footprint_m = {{-bx.b_left_m, -by.b_left_m},
+                        {bx.b_right_m, -by.b_left_m},
+                        {bx.b_right_m, by.b_right_m},
+                        {-bx.b_left_m, by.b_right_m}};
+    const double wx = bx.b_left_m + bx.b_right_m;
+    const double wy = by.b_left_m + by.b_right_m;
+    body.inertia_cg_kgm2 = Eigen::Vector3d(by.inertia_cg_kgm2, bx.inertia_cg_kgm2,
+                                           c.mass_kg * (wx * wx + wy * wy) / 12.0)
+                               .asDiagonal();
+    return body;
+}
+
+std::optional<std::string> no_uplift_reason(const LevelResult& x, const LevelResult& y) {
+    if (uplifts(x.initiation.mode) || uplifts(y.initiation.mode)) return std::nullopt;
+    return fmt::format("at the upper friction bound direction x is {} and y is {}: no component "
+                       "reaches its axis's g tan(alpha), so no plan direction uplifts",
+                       to_string(x.initiation.mode), to_string(y.initiation.mode));
+}
+
+void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelResult*> levels,
+                  HistoryBank& bank) {
+    if (levels.size() != 2 || (!levels[0]->simulation && !levels[1]->simulation)) return;
+    const auto why_not = no_uplift_reason(*levels[0], *levels[1]);
+    std::optional<Body3dLevel> runs;
+    for (LevelResult* l : levels) {
+        if (!l->simulation) continue;
+        Body3dLevel b;
+        if (why_not) {
+            b.reason = *why_not;
+        } else if (!decided_by_sets(*l)) {
+            b.reason = "the screen passed and decides this direction";
+        } else {
+            if (!runs) runs = run_body3d(c, demand, *levels[0], *levels[1], bank);
+            b = *runs;
+            b.reason = fmt::format(
+                "the body can uplift at the upper bounds (x {}, y {}): rocking about edges and "
+                "corners, sliding and twisting at once, the 3D body decides (docs/methods.md "
+                "s.11); impacts by Housner's rule generalised (Newton's e = 0 at the vertices)",
+                to_string(levels[0]->initiation.mode), to_string(levels[1]->initiation.mode));
+            if (l->flexible_simulation) {
+                l->model_reason += "; the 3D rigid body ran too (" + b.reason +
+                                   "): the worse of the two verdicts governs";
+            } else {
+                l->model = body3d_model_name;
+                l->model_reason = b.reason + "; the planar runs of each direction stay beside it";
+            }
+        }
+        l->body3d = std::move(b);
+        const double allowable = c.component.allowable_slide_m;
+        const double fs = c.component.required_overturn_fs;
+        l->verdict = decide_level(*l, allowable, fs);
+        l->trail = decision_trail(*l, allowable, fs);
+    }
+}
+
+}  // namespace freestand::assess

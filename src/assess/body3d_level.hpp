@@ -1,0 +1,45 @@
+#pragma once
+/// The rigid body in three dimensions at the simulated levels of one PGA (docs/methods.md s.11):
+/// where the body can uplift in some direction, every history's three components at once.
+#include <vector>
+
+#include "assess/case.hpp"
+#include "assess/histories.hpp"
+#include "assess/level.hpp"
+#include "assess/result.hpp"
+#include "dynamics/body3d.hpp"
+
+namespace freestand::assess {
+
+/// The model name LevelResult::model carries for a level the 3D body decides.
+inline constexpr const char* body3d_model_name =
+    "rigid body in three dimensions, every component at once: rocking about edges and corners, "
+    "sliding and twisting (docs/methods.md s.11), beside the rigid planar block of each "
+    "direction (docs/methods.md s.3)";
+
+/// The 3D body of the component: the rectangle of its two planar geometries' edge distances
+/// around the CG, the CG height, the mass, and the inertia about the CG from the planar blocks
+/// (I_xx from direction y's, I_yy from direction x's) and a uniform box's I_zz.
+dynamics::Body3d component_body3d(const Component& c);
+
+/// The 3D body's options in assess and fragility: dt 1e-3 s, sweeps to 1e-8 g dt, no series.
+/// The step is ten times the engine's default for cost: on the bench's records its peak tilt
+/// is within 2% (one component) and 5% (two) of the converged run (docs/methods.md s.11).
+dynamics::Body3dOptions body3d_options(double g_mps2);
+
+/// Why the body cannot uplift in any direction at the level's upper bounds (either direction's
+/// classification at the upper friction is rest or slide), or nullopt when it can: uplift along
+/// a plan direction needs one horizontal component past its own axis's g tan(alpha), so the
+/// two directions' classifications settle every direction, the diagonal included.
+std::optional<std::string> no_uplift_reason(const LevelResult& x, const LevelResult& y);
+
+/// For the levels of one PGA (directions x and y, as evaluate_level made them, biaxial applied):
+/// every simulated level gets LevelResult::body3d. Where the simulation decides the level (the
+/// screen failed, or the flexible body runs) and the body can uplift, every history runs with
+/// the 3D body at the sliding and the rocking bound (one run when they coincide; Housner's
+/// impacts, Newton's e = 0 at the vertices), shared by both levels; their model, verdict and
+/// trail are then remade with the 3D body deciding. Elsewhere body3d says why not.
+void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelResult*> levels,
+                  HistoryBank& bank);
+
+}  // namespace freestand::assess

@@ -1,0 +1,106 @@
+// The rigid body in three dimensions in assess (docs/methods.md s.11): a simulated level where
+// the body can uplift in some direction is decided by the 3D body, its runs shared by x and y,
+// the planar runs beside with the ratio; a level that cannot uplift keeps its model and says why.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "support/shipped_case.hpp"
+#include "assess/body3d_level.hpp"
+#include "assess/level.hpp"
+#include "assess/pipeline.hpp"
+#include "assess/verdict.hpp"
+
+// The file's own namespace: the test files of a stage compile in unity batches.
+namespace freestand_test_assess_test_body3d_level {
+
+using namespace freestand;
+using namespace freestand::assess;
+using freestand::test::shipped_case;
+using freestand::test::trail_has;
+
+namespace {
+
+
+
+}  // namespace
+
+TEST_CASE("the 3D body of a component: its planar geometries' rectangle and inertias",
+          "[assess][3d]") {
+    const Case c = shipped_case("glovebox-single.toml", {0.2}, 1);
+    const dynamics::Body3d b = component_body3d(c.component);
+    const block::Block bx = c.component.block(Direction::x);
+    const block::Block by = c.component.block(Direction::y);
+    REQUIRE(b.footprint_m.size() == 4);
+    CHECK(b.h_m == c.component.cg_height_m);
+    CHECK(b.mass_kg == c.component.mass_kg);
+    // Leaning along +x it tips over direction x's right edge, along -y over y's left edge.
+    CHECK(b.reach_m(0.0) == Approx(bx.b_right_m));
+    CHECK(b.reach_m(units::pi) == Approx(bx.b_left_m));
+    CHECK(b.reach_m(-units::pi / 2.0) == Approx(by.b_left_m));
+    CHECK(b.critical_tilt_rad(0.0) == Approx(std::atan(bx.b_right_m / bx.h_m)));
+    CHECK(b.inertia_cg_kgm2(0, 0) == by.inertia_cg_kgm2);
+    CHECK(b.inertia_cg_kgm2(1, 1) == bx.inertia_cg_kgm2);
+}
+
+TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs beside it",
+          "[assess][3d]") {
+    // The slender TS1 block rocks at 0.3 g at both friction bounds.
+    const AssessmentResult r = assess::assess(shipped_case("block-ts1.toml", {0.3}, 2));
+    const LevelResult& x = r.levels.at(0);
+    const LevelResult& y = r.levels.at(1);
+    for (const LevelResult* l : {&x, &y}) {
+        INFO(to_string(l->direction));
+        REQUIRE(l->simulation.has_value());
+        REQUIRE(l->body3d.has_value());
+        REQUIRE(l->body3d->ran);
+        CHECK(l->model == body3d_model_name);
+        CHECK(l->model_reason.find("the body can uplift at the upper bounds (x rock, y rock)") !=
+              std::string::npos);
+        CHECK(l->verdict.decided_by == Model::simulation_3d);
+        CHECK(l->verdict.margin_basis.find("3D body: ") != std::string::npos);
+        CHECK(trail_has(*l, "3D body (h1 along x, h2 along y, the vertical; dt 0.001 s)"));
+        CHECK(trail_has(*l, "the 3D body decides; the planar simulation of direction"));
+        CHECK(l->body3d->sim.histories == 2);
+        CHECK(l->body3d->sim.bounds_differ);
+    }
+    // One set of runs per PGA, shared by x and y; the ratio is to the larger planar statistic.
+    const Body3dLevel& b = *x.body3d;
+    CHECK(b.sim.rock_over_alpha.values == y.body3d->sim.rock_over_alpha.values);
+    const double planar = std::max(x.simulation->governing(x.simulation->rock_over_alpha),
+                                   y.simulation->governing(y.simulation->rock_over_alpha));
+    CHECK(b.planar_rock_over_alpha == planar);
+    CHECK(b.rock_ratio.has_value() == (planar > 0.0));
+    if (b.rock_ratio) {
+        CHECK(*b.rock_ratio ==
+              Approx(b.sim.governing(b.sim.rock_over_alpha) / planar).epsilon(1e-12));
+    }
+    // The 3D statistics decide by the planar rules: the same verdict from them directly.
+    const Verdict direct = simulation_verdict(b.sim, r.input.component.allowable_slide_m,
+                                              r.input.component.required_overturn_fs);
+    CHECK(passes(direct) == passes(x.verdict));
+    CHECK(direct.margin == x.verdict.margin);
+    double time_s = 0.0;
+    for (double t : b.time_in_state_s) time_s += t;
+    CHECK(time_s > 1.0);
+    CHECK(b.time_in_state_s[2] + b.time_in_state_s[3] > 0.0);  // on an edge or a vertex
+}
+
+TEST_CASE("a level that cannot uplift keeps its model and says why the 3D body does not run",
+          "[assess][3d]") {
+    // The glove box slides at 0.2 g at both friction bounds (tan(alpha) well above mu_s).
+    const AssessmentResult r = assess::assess(shipped_case("glovebox-single.toml", {0.2}, 1));
+    const LevelResult& x = r.levels.at(0);
+    REQUIRE(x.simulation.has_value());
+    REQUIRE(x.body3d.has_value());
+    CHECK_FALSE(x.body3d->ran);
+    CHECK(x.body3d->reason ==
+          "at the upper friction bound direction x is slide and y is slide: no component reaches "
+          "its axis's g tan(alpha), so no plan direction uplifts");
+    CHECK(x.model != body3d_model_name);
+    CHECK(x.verdict.decided_by != Model::simulation_3d);
+    CHECK(trail_has(x, "3D body not run: at the upper friction bound"));
+}
+
+}  // namespace freestand_test_assess_test_body3d_level
