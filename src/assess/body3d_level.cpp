@@ -92,7 +92,8 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     const DirectionBounds& bounds = x.bounds;
     const bool differ = bounds.sliding.mu_s != bounds.rocking.mu_s ||
                         bounds.sliding.mu_k != bounds.rocking.mu_k;
-    const auto rock = runs_at(model_at(c.component, bounds.rocking), ex, options, 1, bank);
+    const dynamics::Body3dModel rocking_model = model_at(c.component, bounds.rocking);
+    const auto rock = runs_at(rocking_model, ex, options, 1, bank);
     const auto slide =
         differ ? runs_at(model_at(c.component, bounds.sliding), ex, options, 0, bank) : rock;
     Body3dLevel b;
@@ -109,6 +110,16 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     for (const auto* runs : {&rock, &slide})
         for (const auto& s : *runs) b.unconverged_steps += static_cast<int>(s.unconverged_steps);
     b.twist_rad = stats_of(twist);
+    // The step's error on the governing history: the same run at a tenth of the step.
+    const auto k = static_cast<std::size_t>(b.sim.governing_history);
+    dynamics::Body3dOptions fine = options;
+    fine.dt_s = options.dt_s / 10.0;
+    const dynamics::Body3dSummary check = dynamics::simulate_body3d(rocking_model, ex[k], fine).summary;
+    b.check_dt_s = fine.dt_s;
+    b.check_tilt_over_critical = check.tilt_max_over_critical;
+    b.check_overturned = check.overturned;
+    b.run_tilt_over_critical = rock[k].tilt_max_over_critical;
+    b.run_overturned = rock[k].overturned;
     for (const LevelResult* l : {&x, &y}) {
         if (!l->simulation) continue;
         const Simulation& p = *l->simulation;

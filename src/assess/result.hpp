@@ -248,6 +248,14 @@ struct Body3dLevel {
     std::array<double, 5> time_in_state_s{};
     double dt_s = 0.0;    ///< the time step
     int unconverged_steps = 0;  ///< over every run: steps whose impulses hit the sweep cap
+    /// The step's error, estimated on the governing history at the rocking bound: the same run
+    /// at check_dt_s (a tenth of dt_s), its peak tilt over critical and overturn beside the
+    /// level's run of that history.
+    double check_dt_s = 0.0;
+    double check_tilt_over_critical = 0.0;
+    bool check_overturned = false;
+    double run_tilt_over_critical = 0.0;
+    bool run_overturned = false;
     /// Governing 84th percentiles of the planar runs of the level's two directions (the larger),
     /// and 3D over planar (absent when the planar one is 0).
     double planar_rock_over_alpha = 0.0;

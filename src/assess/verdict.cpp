@@ -401,11 +401,14 @@ std::string body3d_trail_line(const Body3dLevel& b) {
     return fmt::format(
         "3D body (h1 along x, h2 along y, the vertical; dt {:g} s): {} of {} overturned; peak tilt "
         "over critical 84th {:.3f} ({}, {:.3f}); peak |u| 84th {:.1f} mm at mu_s {:.3f} ({}, "
-        "{:.1f} mm); peak twist 84th {:.4f} rad",
+        "{:.1f} mm); peak twist 84th {:.4f} rad; step check on the governing history {}: peak "
+        "tilt over critical {:.4f}{} at dt {:g} s, {:.4f}{} at {:g} s",
         b.dt_s, sim.overturned, sim.histories, sim.governing(sim.rock_over_alpha),
         ratio(b.rock_ratio), b.planar_rock_over_alpha, mm(sim.governing(sim.slide_m)),
         sim.sliding_bound.mu_s, ratio(b.slide_ratio), mm(b.planar_slide_m),
-        sim.governing(b.twist_rad));
+        sim.governing(b.twist_rad), sim.governing_history + 1, b.run_tilt_over_critical,
+        b.run_overturned ? " (overturned)" : "", b.dt_s, b.check_tilt_over_critical,
+        b.check_overturned ? " (overturned)" : "", b.check_dt_s);
 }
 
 std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {

@@ -172,6 +172,13 @@ ordered_json body3d_json(const std::optional<Body3dLevel>& b) {
     if (!b->ran) return j;
     j["dt_s"] = num(b->dt_s);
     j["unconverged_steps"] = b->unconverged_steps;
+    j["step_check"] = {{"history", b->sim.governing_history + 1},
+                       {"dt_s", num(b->dt_s)},
+                       {"tilt_max_over_critical", num(b->run_tilt_over_critical)},
+                       {"overturned", b->run_overturned},
+                       {"check_dt_s", num(b->check_dt_s)},
+                       {"check_tilt_max_over_critical", num(b->check_tilt_over_critical)},
+                       {"check_overturned", b->check_overturned}};
     j["twist_rad"] = stats_json(b->twist_rad);
     ordered_json states;
     const char* names[] = {"rest", "slide", "edge", "vertex", "flight"};

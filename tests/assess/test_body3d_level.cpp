@@ -81,6 +81,16 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
                                               r.input.component.required_overturn_fs);
     CHECK(passes(direct) == passes(x.verdict));
     CHECK(direct.margin == x.verdict.margin);
+    // The step check reruns the governing history at a tenth of the step, beside its own run.
+    CHECK(b.check_dt_s == Approx(b.dt_s / 10.0));
+    const auto k = static_cast<std::size_t>(b.sim.governing_history);
+    if (!b.run_overturned)
+        CHECK(b.run_tilt_over_critical == b.sim.rock_over_alpha.values.at(k));
+    if (b.run_overturned) CHECK(b.sim.overturned_sets.at(k) == 1);
+    CHECK(b.check_tilt_over_critical > 0.0);
+    CHECK(x.trail.end() != std::find_if(x.trail.begin(), x.trail.end(), [](const std::string& t) {
+              return t.find("step check on the governing history") != std::string::npos;
+          }));
     double time_s = 0.0;
     for (double t : b.time_in_state_s) time_s += t;
     CHECK(time_s > 1.0);
