@@ -417,12 +417,14 @@ def simulate(block: Mapping[str, float], motion: Union[Record, np.ndarray],
 def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
                 dt_s: Optional[float] = None, *, mu: float, motion_y=None,
                 vertical_mps2: Optional[np.ndarray] = None, scale: float = 1.0,
-                series: bool = True, mu_k: Optional[float] = None, dt: float = 1e-4) -> dict:
+                series: bool = True, mu_k: Optional[float] = None,
+                restitution: Optional[float] = None, dt: float = 1e-4) -> dict:
     """Time history of the rigid body in three dimensions (`freestand simulate --model 3d
     --json`, docs/methods.md s.11) under x (a record, or an array of m/s^2 samples at dt_s),
     optionally y (motion_y, on the same samples) and the vertical, all times scale. block has
     b and d (half-widths along x and y, m), h (CG height, m), and optionally m (mass, kg) and
-    height (total height, m); mu and mu_k the friction; dt the time step (s). Returns the
+    height (total height, m); mu and mu_k the friction; restitution on angular velocity
+    (default: the plastic impact, Housner's rule generalised); dt the time step (s). Returns the
     summary, and with series=True also "series": NumPy arrays time_s, slide_x_m, slide_y_m,
     tilt_rad, tilt_over_critical, twist_rad, state (codes into state_names)."""
     accel, dt_s, label = _motion(motion, dt_s, "simulate_3d")
@@ -431,7 +433,7 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     y = None if motion_y is None else _samples(motion_y, "motion_y")
     vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
     return _fs.simulate_3d(_keyed_numbers(block, _BODY3D_KEYS, "block"), _number(mu, "mu"), _optional_number(mu_k, "mu_k"),
-                           _number(dt, "dt"), _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"),
+                           _optional_number(restitution, "restitution"), _number(dt, "dt"), _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"),
                            y, vertical, _number(scale, "scale"), label, bool(series))
 
 

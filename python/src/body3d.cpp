@@ -58,7 +58,7 @@ double number(const py::dict& d, const char* key) {
 }
 
 api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::optional<double> mu_k,
-                                    double step_s, const py::handle& accel_x, double dt_s,
+                                    std::optional<double> restitution, double step_s, const py::handle& accel_x, double dt_s,
                                     const py::object& accel_y, const py::object& vertical,
                                     double scale, const std::string& label, bool series) {
     api::SimulateRequest r;
@@ -72,6 +72,7 @@ api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::opt
     r.body3d = spec;
     r.mu_s = mu_s;
     r.mu_k = mu_k;
+    r.restitution = restitution;
     r.record_series = series;
     api::SimulateExcitation& e = r.excitation;
     e.horizontal = make_record(accel_x, dt_s, label, "python", "h");
@@ -94,11 +95,12 @@ void bind_body3d(py::module_& m) {
     m.attr("state_names") = state_names();
     m.def(
         "simulate_3d",
-        [](const py::dict& block, double mu_s, std::optional<double> mu_k, double step_s,
+        [](const py::dict& block, double mu_s, std::optional<double> mu_k,
+           std::optional<double> restitution, double step_s,
            const py::handle& accel_x, double dt_s, const py::object& accel_y,
            const py::object& vertical, double scale, const std::string& label, bool series) {
             const api::SimulateRequest request = body3d_request(
-                block, mu_s, mu_k, step_s, accel_x, dt_s, accel_y, vertical, scale, label, series);
+                block, mu_s, mu_k, restitution, step_s, accel_x, dt_s, accel_y, vertical, scale, label, series);
             api::SimulateResult result;
             {
                 py::gil_scoped_release unlocked;
@@ -109,7 +111,8 @@ void bind_body3d(py::module_& m) {
             if (series) out["series"] = body3d_series(run.result.series);
             return out;
         },
-        py::arg("block"), py::arg("mu_s"), py::arg("mu_k"), py::arg("step_s"), py::arg("accel_x"),
+        py::arg("block"), py::arg("mu_s"), py::arg("mu_k"), py::arg("restitution"),
+        py::arg("step_s"), py::arg("accel_x"),
         py::arg("dt_s"), py::arg("accel_y"), py::arg("vertical"), py::arg("scale"),
         py::arg("label"), py::arg("series"));
 }

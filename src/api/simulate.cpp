@@ -153,9 +153,7 @@ dynamics::BiaxialExcitation body3d_excitation(const SimulateExcitation& e) {
 
 void require_body3d_request(const SimulateRequest& r) {
     if (r.restitution)
-        throw InputError(field("restitution"),
-                         "not used by the 3D body, whose impacts keep the angular momentum about "
-                         "the new contact (docs/methods.md s.11)");
+        core::limits::require_in(*r.restitution, core::limits::restitution, field("restitution"));
     if (r.top_height_m) throw InputError(field("top_height_m"), "not used by the 3D body");
     if (r.flexible || r.unit2)
         throw InputError(field("body3d"), "the 3D body runs alone (no flexible mode, no second unit)");
@@ -173,7 +171,10 @@ dynamics::Body3d body_of(const Body3dSpec& b) {
 
 SimulateResult run_body3d(const SimulateRequest& r) {
     require_body3d_request(r);
-    const dynamics::Body3dModel model = dynamics::make_body3d_model(body_of(*r.body3d), r.mu_s, r.mu_k);
+    // Restitution on angular velocity, as the planar block takes it; absent: the plastic
+    // impact (Housner's rule generalised, docs/methods.md s.11).
+    const dynamics::Body3dModel model =
+        dynamics::make_body3d_model(body_of(*r.body3d), r.mu_s, r.mu_k, 0.0, r.restitution);
     dynamics::Body3dOptions options;
     options.dt_s = r.body3d->dt_s;
     options.record_series = r.record_series;

@@ -37,6 +37,9 @@ std::vector<dynamics::Body3dSummary> runs_at(const dynamics::Body3dModel& model,
     return out;
 }
 
+// The bound's friction; impacts by Housner's rule generalised (the plastic impact). A material's
+// restitution near 1 is not applied: at the assessment's step its energy-scaled impacts overturn
+// bodies that the step check at a tenth of the step keeps standing (docs/methods.md s.11).
 dynamics::Body3dModel model_at(const Component& c, const ContactBound& bound) {
     return dynamics::make_body3d_model(component_body3d(c), bound.mu_s, bound.mu_k);
 }
@@ -186,7 +189,8 @@ void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelRes
             b.reason = fmt::format(
                 "the body can uplift at the upper bounds (x {}, y {}): rocking about edges and "
                 "corners, sliding and twisting at once, the 3D body decides (docs/methods.md "
-                "s.11); impacts by Housner's rule generalised (Newton's e = 0 at the vertices)",
+                "s.11); impacts by Housner's rule generalised (the plastic impact), whatever the "
+                "material's restitution",
                 to_string(levels[0]->initiation.mode), to_string(levels[1]->initiation.mode));
             if (l->flexible_simulation) {
                 l->model_reason += "; the 3D rigid body ran too (" + b.reason +

@@ -36,8 +36,8 @@ std::optional<std::string> no_uplift_reason(const LevelResult& x, const LevelRes
 /// For the levels of one PGA (directions x and y, as evaluate_level made them, biaxial applied):
 /// every simulated level gets LevelResult::body3d. Where the simulation decides the level (the
 /// screen failed, or the flexible body runs) and the body can uplift, every history runs with
-/// the 3D body at the sliding and the rocking bound (one run when they coincide; Housner's
-/// impacts, Newton's e = 0 at the vertices), shared by both levels; their model, verdict and
+/// the 3D body at the sliding and the rocking bound (their friction; impacts by Housner's rule
+/// generalised; one run when the frictions coincide), shared by both levels; their model, verdict and
 /// trail are then remade with the 3D body deciding. Elsewhere body3d says why not.
 void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelResult*> levels,
                   HistoryBank& bank);

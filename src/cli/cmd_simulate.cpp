@@ -45,7 +45,9 @@ po::options_description simulate_options() {
         ("top", po::value<double>(), "height of the top corners for top_accel (m; default 2 h)")
         ("mu", po::value<double>()->required(), "static friction coefficient, in [0, 2]")
         ("mu-k", po::value<double>(), "kinetic friction coefficient (default: --mu)")
-        ("restitution", po::value<double>(), "restitution on angular velocity (default Housner)")
+        ("restitution", po::value<double>(),
+         "restitution on angular velocity (default Housner; with --model 3d the generalised "
+         "Housner impact's)")
         ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
         ("dt", po::value<double>()->default_value(1e-4),
          "central-difference step, or the 3D body's step (s)")
@@ -127,7 +129,7 @@ bool three_d(const po::variables_map& vm) {
 api::SimulateRequest simulate_request(const po::variables_map& vm) {
     api::SimulateRequest r;
     if (three_d(vm)) {
-        for (const char* flag : {"cg", "inertia", "top", "restitution", "flexible"})
+        for (const char* flag : {"cg", "inertia", "top", "flexible"})
             if (vm.count(flag))
                 throw UsageError(fmt::format("--{}: not used by --model 3d", flag));
         r.body3d = body3d_from_options(vm["block"].as<std::string>(), vm["dt"].as<double>());

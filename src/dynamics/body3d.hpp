@@ -60,12 +60,21 @@ struct Body3dModel {
     /// vertex stays on the floor, so a body rocking about one edge and striking with the other
     /// keeps its angular momentum about the new edge (Housner's rule, generalised to 3D).
     double normal_restitution = 0.0;
+    /// Restitution on angular velocity, the planar engine's r (docs/methods.md s.1): a step
+    /// with an impact (a vertex arriving faster than gravity moves it in one step) is solved
+    /// as a plastic impact (Housner's rule generalised), then its velocities are scaled so that
+    /// the kinetic energy leaves at r^2 times the energy it arrived with: on an edge of a
+    /// symmetric body, the angular speed at r times. Absent: the plastic impact's own. r = 1
+    /// conserves the energy of free rocking; needs normal_restitution 0.
+    std::optional<double> angular_restitution;
 };
-/// Validated model; mu_k defaults to mu_s. Throws InputError naming mu_s, mu_k or
-/// normal_restitution (ranges of core::limits), or the body's field that is not valid.
+/// Validated model; mu_k defaults to mu_s. Throws InputError naming mu_s, mu_k,
+/// normal_restitution or angular_restitution (ranges of core::limits; not both non-zero), or
+/// the body's field that is not valid.
 Body3dModel make_body3d_model(const Body3d& body, double mu_s,
                               std::optional<double> mu_k = std::nullopt,
-                              double normal_restitution = 0.0);
+                              double normal_restitution = 0.0,
+                              std::optional<double> angular_restitution = std::nullopt);
 
 /// Contact state at a sample, by the vertices on the floor: rest and slide (three or more; slide
 /// when any of them moves), edge (two), vertex (one), flight (none).
@@ -88,6 +97,11 @@ struct Body3dOptions {
     /// The reported motion does not depend on it (docs/methods.md s.11).
     double regularization = 1e-8;
     double tail_s = 10.0;       ///< simulated time after the excitation ends
+    /// Initial condition (the base at rest at t = 0): the body released at rest, leaning by
+    /// initial_tilt_rad along the plan direction initial_lean_rad (from x towards y) on the
+    /// footprint's support line in that direction (its edge, or its vertex on a diagonal).
+    double initial_tilt_rad = 0.0;
+    double initial_lean_rad = 0.0;
     /// Largest dt_s p accepted (see simulate_body3d): 0.02, fifty steps per radian of the
     /// free rocking motion's time scale.
     double max_step_p = 0.02;

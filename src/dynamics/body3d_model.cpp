@@ -56,7 +56,8 @@ Body3d box_body(double half_x_m, double half_y_m, double cg_height_m, double mas
 }
 
 Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<double> mu_k,
-                              double normal_restitution) {
+                              double normal_restitution,
+                              std::optional<double> angular_restitution) {
     core::limits::require_in(mu_s, core::limits::friction, {"", 0, "mu_s"});
     const double k = mu_k.value_or(mu_s);
     if (!std::isfinite(k) || k < 0.0 || k > mu_s)
@@ -64,6 +65,14 @@ Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<dou
                          fmt::format("kinetic friction must be in [0, mu_s = {}]; got {}", mu_s, k));
     core::limits::require_in(normal_restitution, core::limits::restitution,
                              {"", 0, "normal_restitution"});
+    if (angular_restitution) {
+        core::limits::require_in(*angular_restitution, core::limits::restitution,
+                                 {"", 0, "angular_restitution"});
+        if (normal_restitution != 0.0)
+            throw InputError({"", 0, "angular_restitution"},
+                             "give a restitution on angular velocity or Newton's on the "
+                             "vertices' normal speed, not both");
+    }
     if (body.footprint_m.size() < 3)
         throw InputError({"", 0, "footprint_m"},
                          fmt::format("expected at least 3 vertices; got {}", body.footprint_m.size()));
@@ -77,7 +86,7 @@ Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<dou
     if (!body.inertia_cg_kgm2.isApprox(body.inertia_cg_kgm2.transpose()) ||
         eig.eigenvalues().minCoeff() <= 0.0)
         throw InputError({"", 0, "inertia_cg_kgm2"}, "must be symmetric and positive definite");
-    return {body, mu_s, k, normal_restitution};
+    return {body, mu_s, k, normal_restitution, angular_restitution};
 }
 
 const char* to_string(ContactState state) {

@@ -47,6 +47,12 @@ void require_options(const Body3dModel& m, const BiaxialExcitation& e, const Bod
     require_positive(o.regularization, {"", 0, "regularization"});
     require_positive(o.max_step_p, {"", 0, "max_step_p"});
     if (o.max_sweeps == 0) throw InputError({"", 0, "max_sweeps"}, "must be at least 1");
+    if (!std::isfinite(o.initial_tilt_rad) || o.initial_tilt_rad < 0.0 ||
+        o.initial_tilt_rad >= 0.5 * units::pi)
+        throw InputError({"", 0, "initial_tilt_rad"},
+                         fmt::format("must be in [0, pi/2) rad; got {}", o.initial_tilt_rad));
+    if (!std::isfinite(o.initial_lean_rad))
+        throw InputError({"", 0, "initial_lean_rad"}, "must be finite");
     if (!std::isfinite(o.tail_s) || o.tail_s < 0.0)
         throw InputError({"", 0, "tail_s"}, fmt::format("must be >= 0 s; got {}", o.tail_s));
     const double p = fastest_rocking_radps(m.body, o.g_mps2);
@@ -121,9 +127,12 @@ public:
         t.v_mps += h * Eigen::Vector3d(-a_mps2.x(), -a_mps2.y(), -G_mps2);
         const Eigen::Vector3d& w = s.twist.w_radps;
         t.w_radps += h * (mass.inverse_inertia * (-w.cross(I_world * w)));
+        const detail::Twist arriving = t;
         const auto solve = detail::solve_impulses(
             contacts, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
             f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
+        if (f_.model.angular_restitution && impact(contacts, f_.options.g_mps2 * h))
+            leave_at(*f_.model.angular_restitution, arriving, t, mass.mass_kg, I_world);
         remember(contacts, t);
         s.twist = t;
         s.p_m = p_mid + 0.5 * h * t.v_mps;
@@ -150,6 +159,30 @@ private:
             c.impulse_Ns = impulses_[i];
             out.push_back(c);
         }
+    }
+
+    /// A contact arrived faster than gravity moves it in one step.
+    static bool impact(const std::vector<VertexContact>& contacts, double resting_mps) {
+        return std::any_of(contacts.begin(), contacts.end(), [&](const VertexContact& c) {
+            return c.approach_mps < -resting_mps;
+        });
+    }
+
+    /// The plastic impact's velocities scaled so that the kinetic energy relative to the base
+    /// leaves at r^2 times the arriving one: on an edge of a symmetric body, the angular speed
+    /// at r times (the planar r). Every contact point's velocity scales with them, so a contact
+    /// the impact stopped stays stopped.
+    static void leave_at(double r, const detail::Twist& arriving, detail::Twist& t,
+                         double mass_kg, const Eigen::Matrix3d& inertia_kgm2) {
+        const auto energy = [&](const detail::Twist& x) {
+            return 0.5 * mass_kg * x.v_mps.squaredNorm() +
+                   0.5 * x.w_radps.dot(inertia_kgm2 * x.w_radps);
+        };
+        const double leaving_J = energy(t);
+        if (leaving_J == 0.0) return;
+        const double scale = r * std::sqrt(energy(arriving) / leaving_J);
+        t.v_mps *= scale;
+        t.w_radps *= scale;
     }
 
     void remember(const std::vector<VertexContact>& contacts, const detail::Twist& t) {
@@ -228,6 +261,20 @@ void take_peaks(Body3dSummary& sum, const Body3dSample& x) {
     sum.slide_max_m = std::max(sum.slide_max_m, std::hypot(x.slide_x_m, x.slide_y_m));
 }
 
+// At rest, flat, or leaning by the initial tilt about the support line in the lean's direction:
+// the rotation's axis lies in the plan, normal to the lean, through the point at the footprint's
+// reach along it, which stays where it was on the floor.
+BodyState initial_state(const Body3d& body, const Body3dOptions& o) {
+    BodyState s;
+    const double psi = o.initial_lean_rad;
+    const double reach = body.reach_m(psi);
+    const Eigen::Vector3d pivot(reach * std::cos(psi), reach * std::sin(psi), -body.h_m);
+    const Eigen::Vector3d axis(-std::sin(psi), std::cos(psi), 0.0);
+    s.q = Eigen::Quaterniond(Eigen::AngleAxisd(o.initial_tilt_rad, axis));
+    s.p_m = Eigen::Vector3d(pivot.x(), pivot.y(), 0.0) - s.q.toRotationMatrix() * pivot;
+    return s;
+}
+
 }  // namespace
 
 Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& excitation,
@@ -240,8 +287,7 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     const double h = excitation.dt_s / n_sub;
     const Fixed fixed = fixed_of(model, options);
     Stepper stepper(fixed);
-    BodyState s;
-    s.p_m = Eigen::Vector3d(0.0, 0.0, model.body.h_m);
+    BodyState s = initial_state(model.body, options);
 
     Body3dResult out;
     auto& sum = out.summary;
@@ -250,8 +296,8 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     if (options.record_series) out.series.push_back(first);
     const std::size_t segments = base.segments(options.tail_s);
     const auto n = static_cast<std::size_t>(n_sub);
-    // The state at the last segment's end (the body starts at rest).
-    ContactState state = ContactState::rest;
+    // The state at the last segment's end (a body released leaning is on its support line).
+    ContactState state = options.initial_tilt_rad > 0.0 ? ContactState::edge : ContactState::rest;
     for (std::size_t k = 0; k < segments && !sum.overturned; ++k) {
         const auto seg = base.segment(k);
         // A body at rest that the segment's load cannot move skips the segment's steps, as

@@ -67,7 +67,9 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
     }
     // One set of runs per PGA, shared by x and y; the ratio is to the larger planar statistic.
     const Body3dLevel& b = *x.body3d;
-    CHECK(b.sim.rock_over_alpha.values == y.body3d->sim.rock_over_alpha.values);
+    CHECK(b.sim.overturned_sets == y.body3d->sim.overturned_sets);
+    CHECK(b.sim.rock_over_alpha.p84 == y.body3d->sim.rock_over_alpha.p84);
+    CHECK(b.twist_rad.values == y.body3d->twist_rad.values);
     const double planar = std::max(x.simulation->governing(x.simulation->rock_over_alpha),
                                    y.simulation->governing(y.simulation->rock_over_alpha));
     CHECK(b.planar_rock_over_alpha == planar);

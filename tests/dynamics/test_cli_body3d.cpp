@@ -43,6 +43,22 @@ TEST_CASE("simulate --model 3d prints the 3D body's JSON, the library's numbers"
     CHECK(j.at("time_in_state_s").at("edge").get<double>() > 1.0);
 }
 
+TEST_CASE("simulate --model 3d --restitution is the library's restitution on angular velocity",
+          "[3d][cli]") {
+    const auto r = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6,m=150 --mu 1 "
+                           "--restitution 0.6 --sine 0.5g,2Hz,3s --json");
+    REQUIRE(r.exit_code == 0);
+    using namespace freestand;
+    const auto m = dynamics::make_body3d_model(dynamics::box_body(0.2, 0.35, 0.6, 150.0), 1.0,
+                                               std::nullopt, 0.0, 0.6);
+    auto e = dynamics::biaxial_sine_excitation(dynamics::SineSpec{0.5, 2.0, 3.0}, 0.0);
+    std::fill(e.y_mps2.begin(), e.y_mps2.end(), 0.0);
+    dynamics::Body3dOptions o;
+    o.record_series = false;
+    const auto lib = dynamics::simulate_body3d(m, e, o);
+    CHECK(nlohmann::json::parse(r.out).at("tilt_max_rad").get<double>() == lib.summary.tilt_max_rad);
+}
+
 TEST_CASE("simulate --model 3d --sine-y --out writes the series", "[3d][cli]") {
     const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_body3d";
     std::filesystem::create_directories(dir);
@@ -63,9 +79,12 @@ TEST_CASE("simulate --model 3d names what it does not take", "[3d][cli]") {
     const auto missing = run_cli(base + "--block b=0.2,h=0.6");
     CHECK(missing.exit_code == 2);
     CHECK_THAT(missing.err, Catch::Contains("--block: the 3D body needs b"));
-    const auto restitution = run_cli(base + "--block b=0.2,d=0.2,h=0.6 --restitution 0.5");
-    CHECK(restitution.exit_code == 2);
-    CHECK_THAT(restitution.err, Catch::Contains("--restitution: not used by --model 3d"));
+    const auto top = run_cli(base + "--block b=0.2,d=0.2,h=0.6 --top 1.5");
+    CHECK(top.exit_code == 2);
+    CHECK_THAT(top.err, Catch::Contains("--top: not used by --model 3d"));
+    const auto restitution = run_cli(base + "--block b=0.2,d=0.2,h=0.6 --restitution 1.5");
+    CHECK(restitution.exit_code == 3);
+    CHECK_THAT(restitution.err, Catch::Contains("--restitution"));
     const auto bad = run_cli(base + "--block b=-0.2,d=0.2,h=0.6");
     CHECK(bad.exit_code == 3);
     CHECK_THAT(bad.err, Catch::Contains("--block b (half-width along x, m): "));

@@ -485,3 +485,20 @@ def test_simulate_3d_names_its_arguments():
     with pytest.raises(TypeError, match="unknown key 'mass'"):
         freestand.simulate_3d({"b": 0.5, "d": 0.4, "h": 0.2, "mass": 9.0}, np.zeros(10), 0.01,
                               mu=0.2)
+
+
+def test_simulate_3d_restitution_is_on_angular_velocity():
+    # A sine along x rocks the box about its edges: restitution 0.6 on angular velocity gives
+    # what the planar block gives with the same restitution, Housner's (0.90) another answer.
+    g = freestand.g_mps2
+    t = np.arange(0.0, 3.0 + 1e-9, 0.005)
+    accel = 0.5 * g * np.sin(2.0 * math.pi * 2.0 * t)
+    box = {"b": 0.2, "d": 0.35, "h": 0.6, "m": 150.0}
+    r06 = freestand.simulate_3d(box, accel, 0.005, mu=1.0, restitution=0.6, series=False)
+    planar = freestand.simulate({"b": 0.2, "h": 0.6, "m": 150.0}, accel, 0.005, mu=1.0,
+                                restitution=0.6, series=False)
+    housner = freestand.simulate_3d(box, accel, 0.005, mu=1.0, series=False)
+    assert r06["tilt_max_rad"] == pytest.approx(planar["rock_max_rad"], rel=0.01)
+    assert abs(r06["tilt_max_rad"] - housner["tilt_max_rad"]) > 0.005
+    with pytest.raises(freestand.InputError, match="restitution"):
+        freestand.simulate_3d(box, accel, 0.005, mu=1.0, restitution=1.5)
