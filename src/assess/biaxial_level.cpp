@@ -107,10 +107,7 @@ void apply_biaxial(const Case& c, const LevelDemand& demand, std::vector<LevelRe
             }
         }
         l->biaxial = std::move(b);
-        const double allowable = c.component.allowable_slide_m;
-        const double fs = c.component.required_overturn_fs;
-        l->verdict = decide_level(*l, allowable, fs);
-        l->trail = decision_trail(*l, allowable, fs);
+        redecide_level(*l, c.component);
     }
 }
 

@@ -22,7 +22,8 @@ inline constexpr const char* body3d_model_name =
 /// (I_xx from direction y's, I_yy from direction x's) and a uniform box's I_zz.
 dynamics::Body3d component_body3d(const Component& c);
 
-/// The 3D body's options in assess and fragility: dt 1e-3 s, sweeps to 1e-8 g dt, no series.
+/// The 3D body's options in assess: dt 1e-3 s, sweeps to 1e-8 g dt or 100 sweeps (a step that
+/// needs more is counted in unconverged_steps), no series.
 /// The step is ten times the engine's default for cost: on the bench's records its peak tilt
 /// is within 2% (one component) and 5% (two) of the converged run (docs/methods.md s.11).
 dynamics::Body3dOptions body3d_options(double g_mps2);

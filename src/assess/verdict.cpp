@@ -531,6 +531,13 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
     return out;
 }
 
+void redecide_level(LevelResult& level, const Component& component) {
+    level.verdict =
+        decide_level(level, component.allowable_slide_m, component.required_overturn_fs);
+    level.trail =
+        decision_trail(level, component.allowable_slide_m, component.required_overturn_fs);
+}
+
 bool passes(const Verdict& v) {
     return v.kind == VerdictKind::acceptable || v.kind == VerdictKind::acceptable_with_clearance;
 }

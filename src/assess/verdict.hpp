@@ -48,6 +48,10 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
 std::vector<std::string> decision_trail(const LevelResult& level, double allowable_slide_m,
                                         double required_fs);
 
+/// The level's verdict and trail made again from what it now holds (after a later model joined
+/// it), with the component's allowable slide and required factor of safety.
+void redecide_level(LevelResult& level, const Component& component);
+
 /// True for acceptable and acceptable_with_clearance.
 bool passes(const Verdict& v);
 

@@ -131,18 +131,27 @@ double governing_of(const assess::Simulation& sim, const assess::Stats& s) {
 
 bool biaxial_ran(const assess::LevelResult& l) { return l.biaxial && l.biaxial->ran; }
 
+// The 3D body's runs where they decide the level (alone, or beside the flexible body).
+const assess::Simulation* body3d_sim(const assess::LevelResult& l) {
+    return l.body3d && l.body3d->ran ? &l.body3d->sim : nullptr;
+}
+
 // The sliding demand the level's verdict read, as decide_level reads it (assess/verdict.cpp):
 // the flexible body's slip, or the biaxial |u| where that is larger; else, where the simulation
 // decides, the biaxial |u| where it ran and the planar slip where not. None where the screen
 // decides.
 std::optional<double> deciding_slide_m(const assess::LevelResult& l) {
     if (!l.simulation) return std::nullopt;
+    const assess::Simulation* body3d = body3d_sim(l);
     if (l.flexible_simulation) {
         const assess::Simulation& s = l.flexible_simulation->sim;
         double v = governing_of(s, s.slide_m);
         if (biaxial_ran(l)) v = std::max(v, governing_of(s, l.biaxial->slide_m));
+        // With the 3D body beside it, the worse verdict governs: the larger demand here.
+        if (body3d) v = std::max(v, governing_of(*body3d, body3d->slide_m));
         return v;
     }
+    if (body3d) return governing_of(*body3d, body3d->slide_m);
     if (l.screen.passed) return std::nullopt;
     const assess::Simulation& s = *l.simulation;
     return governing_of(s, biaxial_ran(l) ? l.biaxial->slide_m : s.slide_m);
@@ -152,11 +161,16 @@ std::optional<double> deciding_slide_m(const assess::LevelResult& l) {
 // planar block's where the simulation decides; none where every set overturned.
 std::optional<double> deciding_rock_over_alpha(const assess::LevelResult& l) {
     if (!l.simulation) return std::nullopt;
-    const assess::Simulation* s = l.flexible_simulation ? &l.flexible_simulation->sim
-                                  : l.screen.passed     ? nullptr
-                                                        : &*l.simulation;
-    if (!s || s->overturned >= s->histories) return std::nullopt;
-    return governing_of(*s, s->rock_over_alpha);
+    const auto standing = [](const assess::Simulation* s) -> std::optional<double> {
+        if (!s || s->overturned >= s->histories) return std::nullopt;
+        return governing_of(*s, s->rock_over_alpha);
+    };
+    const auto body3d = standing(body3d_sim(l));
+    const auto other = standing(l.flexible_simulation ? &l.flexible_simulation->sim
+                                : l.screen.passed || body3d_sim(l) ? nullptr
+                                                                   : &*l.simulation);
+    if (body3d && other) return std::max(*body3d, *other);
+    return body3d ? body3d : other;
 }
 
 void add_finite(Curve& c, double pga_g, double v, double scale = 1.0) {
@@ -178,7 +192,7 @@ void add_deciding(Plot& p, const Curve& c) {
 // each level; the allowable.
 std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, assess::Direction d) {
     const auto levels = levels_of(r, d);
-    Curve asce, energy, planar, planar_max, biaxial, flexible, deciding;
+    Curve asce, energy, planar, planar_max, biaxial, flexible, body3d, deciding;
     for (const assess::LevelResult* l : levels) {
         if (l->sliding.slide_asce_m) asce.add(l->pga_g, *l->sliding.slide_asce_m * 1000.0);
         if (l->sliding.slide_energy_m) energy.add(l->pga_g, *l->sliding.slide_energy_m * 1000.0);
@@ -192,6 +206,8 @@ std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, ass
             const assess::Simulation& f = l->flexible_simulation->sim;
             add_finite(flexible, l->pga_g, governing_of(f, f.slide_m), 1000.0);
         }
+        if (const assess::Simulation* b = body3d_sim(*l))
+            add_finite(body3d, l->pga_g, governing_of(*b, b->slide_m), 1000.0);
         if (const auto v = deciding_slide_m(*l)) add_finite(deciding, l->pga_g, *v, 1000.0);
     }
     if (asce.empty() && energy.empty() && planar.empty()) return std::nullopt;
@@ -207,6 +223,7 @@ std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, ass
     add_curve(p, "planar rigid block, maximum", planar_max, palette[3], true);
     add_curve(p, "biaxial rigid block |u|, 84th percentile", biaxial, palette[5], false);
     add_curve(p, "flexible body, 84th percentile", flexible, palette[6], false);
+    add_curve(p, "3D body |u|, 84th percentile (standing sets)", body3d, palette[2], false);
     add_deciding(p, deciding);
     add_limit(p, fmt::format("allowable slide {:.1f} mm (clearance)", allowable_mm), allowable_mm,
               pga_max_g(levels));
@@ -215,7 +232,7 @@ std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, ass
                               "friction bound (the screen), energy conservation (dashed, "
                               "informational: it never decides), the 84th percentile of each "
                               "model simulated at a level (planar rigid block, biaxial rigid "
-                              "block, flexible body) with the planar maximum (dashed), the "
+                              "block, flexible body, 3D body) with the planar maximum (dashed), the "
                               "demand that decided each simulated level (black: the deciding "
                               "model's 84th percentile, docs/methods.md s.6), and the allowable "
                               "slide.",
@@ -228,16 +245,21 @@ std::optional<Figure> slide_demand_figure(const assess::AssessmentResult& r, ass
 // body, the planar maximum, and the demand that decided; the limit 1 / FS_required; overturns.
 std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, assess::Direction d) {
     const auto levels = levels_of(r, d);
-    Curve screen, planar, planar_max, flexible, deciding;
+    Curve screen, planar, planar_max, flexible, body3d, deciding;
     std::vector<Marker> overturns;
     for (const assess::LevelResult* l : levels) {
         if (l->rocking.theta_rad && l->rocking.alpha_rad > 0.0)
             screen.add(l->pga_g, *l->rocking.theta_rad / l->rocking.alpha_rad);
         if (!l->simulation) continue;
         const assess::Simulation& sim = *l->simulation;
-        const int over = l->flexible_simulation
-                             ? std::max(sim.overturned, l->flexible_simulation->sim.overturned)
-                             : sim.overturned;
+        int over = l->flexible_simulation
+                       ? std::max(sim.overturned, l->flexible_simulation->sim.overturned)
+                       : sim.overturned;
+        if (const assess::Simulation* b = body3d_sim(*l)) {
+            over = std::max(over, b->overturned);
+            if (b->overturned < b->histories)
+                add_finite(body3d, l->pga_g, governing_of(*b, b->rock_over_alpha));
+        }
         if (over > 0) {
             // Drawn at theta / alpha = 1, where the block goes over.
             overturns.push_back(Marker{fmt::format("{}/{} overturned", over, sim.histories),
@@ -254,7 +276,8 @@ std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, asse
         add_finite(planar, l->pga_g, governing_of(sim, sim.rock_over_alpha));
         add_finite(planar_max, l->pga_g, sim.rock_over_alpha.max);
     }
-    if (screen.empty() && planar.empty() && flexible.empty() && overturns.empty())
+    if (screen.empty() && planar.empty() && flexible.empty() && body3d.empty() &&
+        overturns.empty())
         return std::nullopt;
     const char* dir = assess::to_string(d);
     const double fs = r.input.component.required_overturn_fs;
@@ -270,6 +293,8 @@ std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, asse
     add_curve(p, "planar rigid block, 84th percentile (standing sets)", planar, palette[4], false);
     add_curve(p, "planar rigid block, maximum (standing sets)", planar_max, palette[3], true);
     add_curve(p, "flexible body, 84th percentile (standing sets)", flexible, palette[6], false);
+    add_curve(p, "3D body, tilt over critical, 84th percentile (standing sets)", body3d,
+              palette[2], false);
     add_deciding(p, deciding);
     add_limit(p, fmt::format("1 / FS required = 1 / {:.2f} = {:.3f}", fs, 1.0 / fs), 1.0 / fs,
               p.x.max.value_or(pga_max_g(levels)));
@@ -278,7 +303,8 @@ std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, asse
                   fmt::format("Rocking demand against PGA, direction {}: peak rotation over the "
                               "slenderness angle, the equivalent-linear estimate (dashed, the "
                               "screen), the 84th percentile of the planar rigid block at the "
-                              "worse restitution bound and of the flexible body where it ran, "
+                              "worse restitution bound, of the flexible body and of the 3D body "
+                              "(its tilt over the critical tilt) where they ran, "
                               "the planar maximum (dashed), over the sets that stayed standing, "
                               "the demand that decided each simulated level (black: the deciding "
                               "model's 84th percentile), against the limit 1 / FS required; "
