@@ -58,7 +58,8 @@ double number(const py::dict& d, const char* key) {
 }
 
 api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::optional<double> mu_k,
-                                    std::optional<double> restitution, double step_s, const py::handle& accel_x, double dt_s,
+                                    std::optional<double> restitution, double step_s,
+                                    const py::handle& accel_x, double dt_s,
                                     const py::object& accel_y, const py::object& vertical,
                                     double scale, const std::string& label, bool series) {
     api::SimulateRequest r;
@@ -100,7 +101,8 @@ void bind_body3d(py::module_& m) {
            const py::handle& accel_x, double dt_s, const py::object& accel_y,
            const py::object& vertical, double scale, const std::string& label, bool series) {
             const api::SimulateRequest request = body3d_request(
-                block, mu_s, mu_k, restitution, step_s, accel_x, dt_s, accel_y, vertical, scale, label, series);
+                block, mu_s, mu_k, restitution, step_s, accel_x, dt_s, accel_y, vertical, scale,
+                label, series);
             api::SimulateResult result;
             {
                 py::gil_scoped_release unlocked;

@@ -39,7 +39,7 @@ std::vector<dynamics::Body3dSummary> runs_at(const dynamics::Body3dModel& model,
 
 // The bound's friction; impacts by Housner's rule generalised (the plastic impact). A material's
 // restitution near 1 is not applied: at the assessment's step its energy-scaled impacts overturn
-// bodies that the step check at a tenth of the step keeps standing (docs/methods.md s.11).
+// bodies that a step of 1e-4 s keeps standing (docs/methods.md s.11).
 dynamics::Body3dModel model_at(const Component& c, const ContactBound& bound) {
     return dynamics::make_body3d_model(component_body3d(c), bound.mu_s, bound.mu_k);
 }
@@ -47,13 +47,13 @@ dynamics::Body3dModel model_at(const Component& c, const ContactBound& bound) {
 // The runs as the planar statistics: slide at the sliding bound, tilt at the rocking bound.
 Simulation as_simulation(const std::vector<dynamics::Body3dSummary>& slide,
                          const std::vector<dynamics::Body3dSummary>& rock,
-                         const DirectionBounds& bounds, const Component& c) {
+                         const DirectionBounds& bounds, bool bounds_differ, const Component& c) {
     Simulation sim;
     sim.histories = static_cast<int>(slide.size());
     sim.sliding_bound = bounds.sliding;
     sim.rocking_bound = bounds.rocking;
     sim.rocking_bound.housner = true;
-    sim.bounds_differ = &slide != &rock;
+    sim.bounds_differ = bounds_differ;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     std::vector<double> slide_m, over, rad;
     double worst = -1.0;
@@ -97,21 +97,21 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
                         bounds.sliding.mu_k != bounds.rocking.mu_k;
     const dynamics::Body3dModel rocking_model = model_at(c.component, bounds.rocking);
     const auto rock = runs_at(rocking_model, ex, options, 1, bank);
-    const auto slide =
-        differ ? runs_at(model_at(c.component, bounds.sliding), ex, options, 0, bank) : rock;
+    std::vector<dynamics::Body3dSummary> slide_runs;
+    if (differ) slide_runs = runs_at(model_at(c.component, bounds.sliding), ex, options, 0, bank);
+    const auto& slide = differ ? slide_runs : rock;
     Body3dLevel b;
     b.ran = true;
     b.dt_s = options.dt_s;
-    b.sim = as_simulation(slide, rock, bounds, c.component);
-    b.sim.bounds_differ = differ;
+    b.sim = as_simulation(slide, rock, bounds, differ, c.component);
     std::vector<double> twist;
     for (const auto& s : rock) {
         twist.push_back(s.twist_max_rad);
         for (std::size_t i = 0; i < b.time_in_state_s.size(); ++i)
             b.time_in_state_s[i] += s.time_in_state_s[i] / static_cast<double>(rock.size());
     }
-    for (const auto* runs : {&rock, &slide})
-        for (const auto& s : *runs) b.unconverged_steps += static_cast<int>(s.unconverged_steps);
+    for (const auto& s : rock) b.unconverged_steps += static_cast<int>(s.unconverged_steps);
+    for (const auto& s : slide_runs) b.unconverged_steps += static_cast<int>(s.unconverged_steps);
     b.twist_rad = stats_of(twist);
     // The step's error on the governing history: the same run at a quarter of the step.
     const auto k = static_cast<std::size_t>(b.sim.governing_history);

@@ -10,6 +10,7 @@
 
 #include "assess/case.hpp"
 #include "assess/statistics.hpp"
+#include "dynamics/body3d.hpp"
 #include "sliding/initiation.hpp"
 
 namespace freestand::assess {
@@ -245,7 +246,7 @@ struct Body3dLevel {
     Stats twist_rad;      ///< peak |twist| about the vertical at the rocking bound, rad
     /// Mean time per set in each contact state at the rocking bound, s (dynamics::ContactState
     /// order: rest, slide, edge, vertex, flight).
-    std::array<double, 5> time_in_state_s{};
+    std::array<double, dynamics::contact_state_count> time_in_state_s{};
     double dt_s = 0.0;    ///< the time step
     int unconverged_steps = 0;  ///< over every run: steps whose impulses hit the sweep cap
     /// The step's error, estimated on the governing history at the rocking bound: the same run

@@ -433,14 +433,6 @@ Verdict body3d_verdict(const Body3dLevel& b, double allowable_slide_m, double re
     return v;
 }
 
-// The worse of two verdicts, the failing or smaller-margin one.
-Verdict worse_of(const Verdict& a, const Verdict& b) {
-    if (passes(a) != passes(b)) return passes(a) ? b : a;
-    if (!a.margin) return a;
-    if (!b.margin) return b;
-    return *b.margin < *a.margin ? b : a;
-}
-
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs) {
     const Body3dLevel* body3d = level.body3d && level.body3d->ran ? &*level.body3d : nullptr;
     if (body3d && !level.flexible_simulation) {
@@ -465,7 +457,7 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
                                            stat_name(sim))));
         }
         // Neither has both the mode and the third dimension: the worse of the two governs.
-        if (body3d) v = worse_of(v, body3d_verdict(*body3d, allowable_slide_m, required_fs));
+        if (body3d) v = combine(v, body3d_verdict(*body3d, allowable_slide_m, required_fs));
         return with_static_margin(v, level);
     }
     Verdict v = screen_verdict(level.screen);

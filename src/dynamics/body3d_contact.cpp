@@ -24,7 +24,7 @@ Eigen::Vector3d updated_impulse(const VertexContact& c, const Eigen::Matrix3d& W
                                 const Eigen::Vector3d& u) {
     const Eigen::Vector3d& p = c.impulse_Ns;
     // Newton: the normal velocity to keep non-negative is u_n + e u_n^- (u_n^- the approach).
-    const double target_n = u.z() + c.restitution * std::min(c.approach_mps, 0.0);
+    const double target_n = u.z() - c.newton_floor_mps();
     const double pn = std::max(0.0, p.z() - (target_n + eps * p.z()) / (W(2, 2) + eps));
     // The tangential impulse: a step against the slip, then the projection onto the cone. The
     // step is a scalar multiple of the slip so that the fixed point's friction opposes the slip
@@ -76,13 +76,9 @@ Column sticking_impulses(const std::vector<VertexContact>& contacts,
     Column rhs(3 * n);
     for (Eigen::Index i = 0; i < n; ++i) {
         const VertexContact& ci = contacts[active[i]];
-        const Eigen::Matrix3d rxi = cross_matrix(ci.r_m);
-        for (Eigen::Index j = 0; j < n; ++j) {
-            const Eigen::Matrix3d rxj = cross_matrix(contacts[active[j]].r_m);
-            W.block<3, 3>(3 * i, 3 * j) =
-                Eigen::Matrix3d::Identity() / mass.mass_kg - rxi * mass.inverse_inertia * rxj;
-        }
-        const Eigen::Vector3d target(0.0, 0.0, -ci.restitution * std::min(ci.approach_mps, 0.0));
+        for (Eigen::Index j = 0; j < n; ++j)
+            W.block<3, 3>(3 * i, 3 * j) = mass.delassus(ci.r_m, contacts[active[j]].r_m);
+        const Eigen::Vector3d target(0.0, 0.0, ci.newton_floor_mps());
         rhs.segment<3>(3 * i) = target - free.at(ci.r_m);
     }
     W.diagonal().array() += eps;
@@ -131,8 +127,7 @@ bool solved_sticking(std::vector<VertexContact>& contacts, const MassMatrix& mas
     // An impact (a vertex arriving faster than gravity moves it in a step) needs the sweeps:
     // with friction its solution need not be unique, and the sweeps reach Housner's one (the
     // arriving vertex takes the load, the pivot releases), which the checks verify.
-    for (const VertexContact& c : contacts)
-        if (c.approach_mps < -resting_mps) return false;
+    if (has_impact(contacts, resting_mps)) return false;
     Active active;
     for (std::size_t k = 0; k < contacts.size(); ++k) active.index[active.count++] = k;
     while (!active.empty()) {
@@ -158,8 +153,7 @@ bool solved_sticking(std::vector<VertexContact>& contacts, const MassMatrix& mas
         for (std::size_t k = 0; k < contacts.size(); ++k) {
             const VertexContact& c = contacts[k];
             if (active.contains(k)) continue;
-            const double floor_mps = -c.restitution * std::min(c.approach_mps, 0.0);
-            if (after.at(c.r_m).z() < floor_mps - tol_mps) return false;
+            if (after.at(c.r_m).z() < c.newton_floor_mps() - tol_mps) return false;
         }
         for (auto& c : contacts) c.impulse_Ns.setZero();
         for (std::size_t i = 0; i < active.size(); ++i)
@@ -172,9 +166,10 @@ bool solved_sticking(std::vector<VertexContact>& contacts, const MassMatrix& mas
 
 }  // namespace
 
-Eigen::Matrix3d MassMatrix::delassus(const Eigen::Vector3d& r_m) const {
-    const Eigen::Matrix3d rx = cross_matrix(r_m);
-    return Eigen::Matrix3d::Identity() / mass_kg - rx * inverse_inertia * rx;
+Eigen::Matrix3d MassMatrix::delassus(const Eigen::Vector3d& r_i_m,
+                                     const Eigen::Vector3d& r_j_m) const {
+    return Eigen::Matrix3d::Identity() / mass_kg -
+           cross_matrix(r_i_m) * inverse_inertia * cross_matrix(r_j_m);
 }
 
 ImpulseSolve solve_impulses(std::vector<VertexContact>& contacts, const MassMatrix& mass,
@@ -184,7 +179,6 @@ ImpulseSolve solve_impulses(std::vector<VertexContact>& contacts, const MassMatr
     ImpulseSolve out;
     if (solved_sticking(contacts, mass, twist, eps, tol_mps, resting_mps)) {
         out.converged = true;
-        out.direct = true;
         return out;
     }
     for (auto& c : contacts) {

@@ -1,6 +1,7 @@
 #pragma once
 /// Internal: the 3D body's state, its Moreau-Jean step and the contact impulse problem
 /// (docs/methods.md s.11).
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -23,7 +24,16 @@ struct VertexContact {
     double approach_mps = 0.0;  ///< normal velocity at the step's start (< 0: approaching)
     Eigen::Vector3d impulse_Ns = Eigen::Vector3d::Zero();  ///< the solution (warm start on entry)
     Eigen::Matrix3d delassus = Eigen::Matrix3d::Zero();    ///< set by solve_impulses
+
+    /// Newton's floor on the normal velocity after the step: -e min(approach, 0), m/s.
+    double newton_floor_mps() const { return -restitution * std::min(approach_mps, 0.0); }
 };
+
+/// Some contact arrives faster than resting_mps (an impact, not a contact resting on the floor).
+inline bool has_impact(const std::vector<VertexContact>& contacts, double resting_mps) {
+    return std::any_of(contacts.begin(), contacts.end(),
+                       [&](const VertexContact& c) { return c.approach_mps < -resting_mps; });
+}
 
 /// The body's velocities, world axes: the CG's relative to the base and the angular one.
 struct Twist {
@@ -44,14 +54,16 @@ struct MassMatrix {
         t.v_mps += p_Ns / mass_kg;
         t.w_radps += inverse_inertia * r_m.cross(p_Ns);
     }
-    /// Delassus block of a contact with itself: the velocity at r_m per unit impulse there.
-    Eigen::Matrix3d delassus(const Eigen::Vector3d& r_m) const;
+    /// Delassus block of two contacts: the velocity at r_i per unit impulse at r_j,
+    /// I / M - [r_i]x I^-1 [r_j]x.
+    Eigen::Matrix3d delassus(const Eigen::Vector3d& r_i_m, const Eigen::Vector3d& r_j_m) const;
+    /// Delassus block of a contact with itself.
+    Eigen::Matrix3d delassus(const Eigen::Vector3d& r_m) const { return delassus(r_m, r_m); }
 };
 
 struct ImpulseSolve {
     std::size_t sweeps = 0;
     bool converged = false;
-    bool direct = false;  ///< every loaded contact sticks: solved directly, no sweeps
 };
 
 /// Solves the step's contact problem: Newton's law on each contact's normal velocity

@@ -131,7 +131,7 @@ public:
         const auto solve = detail::solve_impulses(
             contacts, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
             f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
-        if (f_.model.angular_restitution && impact(contacts, f_.options.g_mps2 * h))
+        if (f_.model.angular_restitution && detail::has_impact(contacts, f_.options.g_mps2 * h))
             leave_at(*f_.model.angular_restitution, arriving, t, mass.mass_kg, I_world);
         remember(contacts, t);
         s.twist = t;
@@ -159,13 +159,6 @@ private:
             c.impulse_Ns = impulses_[i];
             out.push_back(c);
         }
-    }
-
-    /// A contact arrived faster than gravity moves it in one step.
-    static bool impact(const std::vector<VertexContact>& contacts, double resting_mps) {
-        return std::any_of(contacts.begin(), contacts.end(), [&](const VertexContact& c) {
-            return c.approach_mps < -resting_mps;
-        });
     }
 
     /// The plastic impact's velocities scaled so that the kinetic energy relative to the base

@@ -10,6 +10,7 @@
 
 #include "assess/verdict.hpp"
 #include "core/file_io.hpp"
+#include "dynamics/body3d.hpp"
 #include "report/history_json.hpp"
 #include "report/references.hpp"
 #include "core/sha256.hpp"
@@ -181,9 +182,9 @@ ordered_json body3d_json(const std::optional<Body3dLevel>& b) {
                        {"check_overturned", b->check_overturned}};
     j["twist_rad"] = stats_json(b->twist_rad);
     ordered_json states;
-    const char* names[] = {"rest", "slide", "edge", "vertex", "flight"};
     for (std::size_t i = 0; i < b->time_in_state_s.size(); ++i)
-        states[names[i]] = num(b->time_in_state_s[i]);
+        states[dynamics::to_string(static_cast<dynamics::ContactState>(i))] =
+            num(b->time_in_state_s[i]);
     j["mean_time_in_state_s"] = states;
     j["planar_rock_over_alpha"] = num(b->planar_rock_over_alpha);
     j["planar_slide_m"] = num(b->planar_slide_m);
