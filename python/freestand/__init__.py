@@ -444,7 +444,7 @@ def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict
     return _fs.assess(os.fspath(case_file), levels)
 
 
-_FRAGILITY_OPTIONS = ("samples", "pool", "seed", "threads", "cache", "no_cache")
+_FRAGILITY_OPTIONS = ("samples", "pool", "seed", "threads", "cache", "no_cache", "models")
 
 
 def _whole(value: Any, keyword: str) -> int:
@@ -473,7 +473,8 @@ def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.
     """P(overturn), P(slide), P(rock) against PGA (`freestand fragility`): fragility.json as a
     dict. pga as "START:STOP:STEP" or a list; samples=, pool=, seed= (default: the case's),
     threads= (0: all cores; the result does not depend on it), whole numbers; cache= a folder or
-    no_cache=True; records=[files] a user suite."""
+    no_cache=True; records=[files] a user suite; models="planar" (the rigid block in x and y) or
+    "case" (as the case's levels decide: flexible body, 3D body, biaxial sliding)."""
     for name in options:
         if name not in _FRAGILITY_OPTIONS:
             raise TypeError(f"fragility() got an unexpected keyword argument {name!r}")
@@ -484,8 +485,11 @@ def fragility(case_file: PathLike, *, pga: Union[str, Sequence[float]] = "0.1:1.
     no_cache = options.get("no_cache", False)
     if not isinstance(no_cache, (bool, np.bool_)):
         raise TypeError(f"no_cache: expected True or False, got {type(no_cache).__name__}")
+    models = options.get("models", "planar")
+    if models not in ("planar", "case"):
+        raise ValueError(f"models: expected \"planar\" or \"case\", got {models!r}")
     return _fs.fragility(
         os.fspath(case_file), levels, pga_range, _whole(options.get("samples", 100), "samples"),
         _whole(options.get("pool", 20), "pool"), None if seed is None else _whole(seed, "seed"),
         [os.fspath(r) for r in records or []], _whole(options.get("threads", 0), "threads"),
-        None if cache is None else os.fspath(cache), bool(no_cache))
+        None if cache is None else os.fspath(cache), bool(no_cache), models == "case")

@@ -25,7 +25,8 @@ api::FragilityRequest request(const std::string& case_file, const std::vector<do
                               const std::optional<std::array<double, 3>>& pga_range, int samples,
                               int pool, std::optional<long long> seed,
                               const std::vector<std::string>& records, int threads,
-                              const std::optional<std::string>& cache, bool no_cache) {
+                              const std::optional<std::string>& cache, bool no_cache,
+                              bool case_models) {
     api::FragilityRequest r;
     r.case_file = case_file;
     r.pga_g = pga_range ? api::pga_range((*pga_range)[0], (*pga_range)[1], (*pga_range)[2])
@@ -38,6 +39,7 @@ api::FragilityRequest request(const std::string& case_file, const std::vector<do
         r.seed = static_cast<std::uint64_t>(*seed);
     }
     r.record_files = records;
+    r.case_models = case_models;
     r.threads = threads;
     if (cache && no_cache)
         throw InputError(SourceLocation{"", 0, "cache"}, "a cache folder with no_cache=True");
@@ -55,12 +57,12 @@ void bind_fragility(py::module_& m) {
         [](const std::string& case_file, const std::vector<double>& pga_g,
            const std::optional<std::array<double, 3>>& pga_range, int samples, int pool,
            std::optional<long long> seed, const std::vector<std::string>& records, int threads,
-           const std::optional<std::string>& cache, bool no_cache) {
+           const std::optional<std::string>& cache, bool no_cache, bool case_models) {
             api::FragilityResult result;
             try {
                 const api::FragilityRequest request = fragility_binding::request(
                     case_file, pga_g, pga_range, samples, pool, seed, records, threads, cache,
-                    no_cache);
+                    no_cache, case_models);
                 py::gil_scoped_release unlocked;
                 result = api::fragility(request);
             } catch (const InputError& e) {
@@ -70,7 +72,7 @@ void bind_fragility(py::module_& m) {
         },
         py::arg("case_file"), py::arg("pga_g"), py::arg("pga_range"), py::arg("samples"),
         py::arg("pool"), py::arg("seed"), py::arg("records"), py::arg("threads"),
-        py::arg("cache"), py::arg("no_cache"));
+        py::arg("cache"), py::arg("no_cache"), py::arg("case_models"));
 }
 
 }  // namespace freestand::python

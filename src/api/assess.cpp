@@ -41,6 +41,8 @@ AssessResult assess(const AssessRequest& request) {
         config.pga_g = c.options.fragility.pga_g;
         config.samples = c.options.fragility.samples;
         config.seed = c.options.seed;
+        // The case's own fragility is decided by the models its levels are.
+        config.models = fragility::case_models(c, config.pga_g).models;
         out.fragility = fragility::run_all(c, config, request.run);
     }
     if (c.site.dbe_pga_g) {

@@ -35,6 +35,7 @@ fragility::Config config(const FragilityRequest& r, const assess::Case& c) {
     cfg.pool = r.pool;
     cfg.seed = r.seed.value_or(c.options.seed);
     cfg.record_files = r.record_files;
+    if (r.case_models) cfg.models = fragility::case_models(c, cfg.pga_g).models;
     return cfg;
 }
 

@@ -23,6 +23,9 @@ struct FragilityRequest {
     int pool = 20;                        ///< generated history sets the samples draw from
     std::optional<std::uint64_t> seed;    ///< none: the case's [options] seed
     std::vector<std::string> record_files;  ///< a user suite instead of generated sets
+    /// The models the case's levels decide with (fragility::case_models) instead of the rigid
+    /// planar block; generated sets only.
+    bool case_models = false;
     /// This process computes the samples whose global index i has i % shard_n == shard_k - 1;
     /// 1 <= shard_k <= shard_n <= 100000.
     int shard_k = 1, shard_n = 1;

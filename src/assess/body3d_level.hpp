@@ -25,7 +25,8 @@ dynamics::Body3d component_body3d(const Component& c);
 /// The 3D body's options in assess: dt 1e-3 s, sweeps to 1e-8 g dt or 100 sweeps (a step that
 /// needs more is counted in unconverged_steps), no series.
 /// The step is ten times the engine's default for cost: on the bench's records its peak tilt
-/// is within 2% (one component) and 5% (two) of the converged run (docs/methods.md s.11).
+/// is within 2% (one component) and 5% (two) of the converged run, and in the step study of
+/// docs/methods.md s.11 its overturn counts were as high as or higher than the converged ones.
 dynamics::Body3dOptions body3d_options(double g_mps2);
 
 /// Why the body cannot uplift in any direction at the level's upper bounds (either direction's
@@ -37,9 +38,10 @@ std::optional<std::string> no_uplift_reason(const LevelResult& x, const LevelRes
 /// For the levels of one PGA (directions x and y, as evaluate_level made them, biaxial applied):
 /// every simulated level gets LevelResult::body3d. Where the simulation decides the level (the
 /// screen failed, or the flexible body runs) and the body can uplift, every history runs with
-/// the 3D body at the sliding and the rocking bound (their friction; impacts by Housner's rule
-/// generalised; one run when the frictions coincide), shared by both levels; their model, verdict and
-/// trail are then remade with the 3D body deciding. Elsewhere body3d says why not.
+/// the 3D body at the sliding and the rocking bound (their friction and restitution; one run
+/// when they coincide) and at the lower restitution when it differs, as the planar runs, shared
+/// by both levels; their model, verdict and trail are then remade with the 3D body deciding.
+/// Elsewhere body3d says why not.
 void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelResult*> levels,
                   HistoryBank& bank);
 

@@ -25,6 +25,7 @@ namespace {
 
 const char* const usage =
     "CASE.toml [--pga 0.1:1.0:0.1] [--samples 100] [--records FILE...] [--pool 20] [--seed S] "
+    "[--models planar|case] "
     "[--threads T] [--cache DIR | --no-cache] [--out DIR] [--json] [--shard K/N] [--pdf]";
 
 po::options_description fragility_options() {
@@ -38,7 +39,11 @@ po::options_description fragility_options() {
         "applied along x and y, no vertical); default: generated sets for the case's target")(
         "pool", po::value<std::string>()->default_value("20"),
         "generated three-component history sets the samples draw from")(
-        "seed", po::value<std::string>(), "run seed (default: the case's [options] seed)");
+        "seed", po::value<std::string>(), "run seed (default: the case's [options] seed)")(
+        "models", po::value<std::string>()->default_value("planar"),
+        "planar: the rigid block in x and in y; case: as the case's levels decide (the flexible "
+        "body where its flag is raised, the 3D body for a sample that rocks, biaxial sliding "
+        "for one that only slides; generated sets only)");
     add_run_options(desc);
     desc.add_options()("case", po::value<std::string>()->required(), "case file (TOML)")(
         "out", po::value<std::string>(), "output folder (default: out/<case stem>-fragility/)")(
@@ -56,6 +61,10 @@ api::FragilityRequest fragility_request(const po::variables_map& vm) {
     api::FragilityRequest r;
     r.case_file = vm["case"].as<std::string>();
     r.pga_g = parse_levels(vm["pga"].as<std::string>(), "--pga");
+    const std::string models = vm["models"].as<std::string>();
+    if (models != "planar" && models != "case")
+        throw UsageError(fmt::format("--models: expected planar or case; got \"{}\"", models));
+    r.case_models = models == "case";
     // Whole numbers here; their ranges are the request's to check (exit 3).
     constexpr double int_max = 2147483647.0;
     r.samples = static_cast<int>(parse_whole(vm["samples"].as<std::string>(), "--samples", 0, int_max));

@@ -60,14 +60,22 @@ struct Body3dModel {
     /// vertex stays on the floor, so a body rocking about one edge and striking with the other
     /// keeps its angular momentum about the new edge (Housner's rule, generalised to 3D).
     double normal_restitution = 0.0;
-    /// Restitution on angular velocity, the planar engine's r (docs/methods.md s.1): a step
-    /// with an impact (a vertex arriving faster than gravity moves it in one step) is solved
-    /// as a plastic impact (Housner's rule generalised), then its velocities are scaled so that
-    /// the kinetic energy leaves at r^2 times the energy it arrived with: on an edge of a
-    /// symmetric body, the angular speed at r times. Absent: the plastic impact's own. r = 1
+    /// Restitution on angular velocity, the planar engine's r (docs/methods.md s.1, s.11): a
+    /// step with an impact (a vertex arriving faster than gravity moves it in one step) is
+    /// solved as a plastic impact (Housner's rule generalised), and then loses only the part
+    /// (1 - r^2) / (1 - r_H^2) of the energy that impact took, r_H being Housner's value of
+    /// the body's critical edge (housner_restitution). On that edge of a symmetric body this is
+    /// the planar r: the angular speed leaves at r times. A glancing landing, which the plastic
+    /// impact barely slows, stays barely slowed whatever r, so the result does not hang on how
+    /// many landings the step resolves as impacts. Absent: the plastic impact's own. r = 1
     /// conserves the energy of free rocking; needs normal_restitution 0.
     std::optional<double> angular_restitution;
 };
+/// Housner's restitution for planar rocking about the footprint edge nearest the CG in plan
+/// (the critical edge, the smallest critical tilt): 1 - 2 M d^2 / I_e, with d the CG's plan
+/// distance from the edge and I_e the inertia about it (docs/methods.md s.1); at least 0.
+double housner_restitution(const Body3d& body);
+
 /// Validated model; mu_k defaults to mu_s. Throws InputError naming mu_s, mu_k,
 /// normal_restitution or angular_restitution (ranges of core::limits; not both non-zero), or
 /// the body's field that is not valid.

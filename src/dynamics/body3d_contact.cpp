@@ -179,6 +179,7 @@ ImpulseSolve solve_impulses(std::vector<VertexContact>& contacts, const MassMatr
     ImpulseSolve out;
     if (solved_sticking(contacts, mass, twist, eps, tol_mps, resting_mps)) {
         out.converged = true;
+        out.sticking = true;
         return out;
     }
     for (auto& c : contacts) {

@@ -64,6 +64,7 @@ struct MassMatrix {
 struct ImpulseSolve {
     std::size_t sweeps = 0;
     bool converged = false;
+    bool sticking = false;  ///< solved directly, every loaded contact sticking
 };
 
 /// Solves the step's contact problem: Newton's law on each contact's normal velocity

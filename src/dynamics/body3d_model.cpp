@@ -55,6 +55,21 @@ Body3d box_body(double half_x_m, double half_y_m, double cg_height_m, double mas
     return b;
 }
 
+double housner_restitution(const Body3d& b) {
+    const auto& f = b.footprint_m;
+    double nearest_m = std::numeric_limits<double>::infinity(), r = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        const Eigen::Vector2d along = (f[(i + 1) % f.size()] - f[i]).normalized();
+        const double d_m = std::abs(along.x() * f[i].y() - along.y() * f[i].x());
+        if (d_m >= nearest_m) continue;
+        nearest_m = d_m;
+        const Eigen::Vector3d n(along.x(), along.y(), 0.0);
+        const double I_edge = n.dot(b.inertia_cg_kgm2 * n) + b.mass_kg * (d_m * d_m + b.h_m * b.h_m);
+        r = std::max(0.0, 1.0 - 2.0 * b.mass_kg * d_m * d_m / I_edge);
+    }
+    return r;
+}
+
 Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<double> mu_k,
                               double normal_restitution,
                               std::optional<double> angular_restitution) {

@@ -82,10 +82,18 @@ struct Fixed {
     std::vector<Edge> edges;                     ///< from vertex i to i + 1 (counter-clockwise)
     Eigen::Vector3d footprint_centre_body;
     const Body3dOptions& options;
+    /// With a restitution r: the part of a plastic impact's energy loss an impact keeps,
+    /// (1 - r^2) / (1 - r_H^2) (Body3dModel::angular_restitution).
+    double impact_loss_ratio = 1.0;
 };
 
 Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o) {
-    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o};
+    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o, 1.0};
+    if (m.angular_restitution) {
+        const double r = *m.angular_restitution;
+        const double r_housner = housner_restitution(m.body);
+        f.impact_loss_ratio = (1.0 - r * r) / (1.0 - r_housner * r_housner);
+    }
     const auto& v = m.body.footprint_m;
     for (std::size_t i = 0; i < v.size(); ++i) {
         f.vertices_body.emplace_back(v[i].x(), v[i].y(), -m.body.h_m);
@@ -112,6 +120,13 @@ public:
     /// One Moreau-Jean step of dt_s from the state, under the base's a (horizontal) and
     /// G = g + yg'' at the step's midpoint.
     StepOutcome step(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) {
+        if (stays_at_rest(s, a_mps2, G_mps2)) {
+            held_ = true;
+            return {ContactState::rest, true};
+        }
+        // The step that moves a held body starts from the static impulses of its loads.
+        if (held_) hold_warm_start(s, a_mps2, G_mps2, dt_s);
+        held_ = false;
         const double h = dt_s;
         const Eigen::Vector3d p_mid = s.p_m + 0.5 * h * s.twist.v_mps;
         const Eigen::Quaterniond q_mid = detail::turned(s.q, s.twist.w_radps, 0.5 * h);
@@ -132,15 +147,65 @@ public:
             contacts, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
             f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
         if (f_.model.angular_restitution && detail::has_impact(contacts, f_.options.g_mps2 * h))
-            leave_at(*f_.model.angular_restitution, arriving, t, mass.mass_kg, I_world);
+            leave_at(f_.impact_loss_ratio, arriving, t, mass.mass_kg, I_world);
         remember(contacts, t);
+        const ContactState state = state_of(contacts, t);
+        // Three or more carrying contacts solved as sticking fix all six velocities at zero:
+        // what is left is the regularisation's creep, and exact zeros let the next steps take
+        // stays_at_rest.
+        if (solve.sticking && state == ContactState::rest) t = detail::Twist{};
         s.twist = t;
         s.p_m = p_mid + 0.5 * h * t.v_mps;
         s.q = detail::turned(q_mid, t.w_radps, 0.5 * h);
-        return {state_of(contacts, t), solve.converged};
+        return {state, solve.converged};
     }
 
 private:
+    /// Whether a body at rest on its whole footprint stays so through the step, which then
+    /// changes nothing: the base's force needs at most mu_s of the weight, and the line of the
+    /// weight and the inertia force, from the CG, meets the floor inside the footprint (every
+    /// vertex then carries a non-negative share). The step's sticking solve gives the same
+    /// zero velocities; this skips it for the long still stretches of a standing body.
+    bool stays_at_rest(const BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2) const {
+        if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0) || !(G_mps2 > 0.0))
+            return false;
+        if (a_mps2.norm() > f_.model.mu_s * G_mps2) return false;
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        for (const Eigen::Vector3d& v : f_.vertices_body)
+            if (s.p_m.z() + R.row(2).dot(v) > 0.0) return false;
+        // Where the resultant's line meets the floor, from the CG's plan position, body axes.
+        const Eigen::Vector3d a_body = R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0);
+        const Eigen::Vector2d meets = -s.p_m.z() / G_mps2 * a_body.head<2>();
+        for (const Edge& e : f_.edges)
+            if (e.normal.dot(meets) > e.distance_m) return false;
+        return true;
+    }
+
+    /// The warm start of the step that moves a held body: the least-norm normal impulses that
+    /// carry the weight and balance the base's force about the CG under the step's loads, each
+    /// vertex taking its load's share of the friction (what the sticking solve gives a body at
+    /// rest).
+    void hold_warm_start(const BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
+                         double dt_s) {
+        const double M_dt = f_.model.body.mass_kg * dt_s;
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        const auto n = static_cast<Eigen::Index>(f_.vertices_body.size());
+        Eigen::Matrix<double, 3, Eigen::Dynamic> A(3, n);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const Eigen::Vector3d r = R * f_.vertices_body[static_cast<std::size_t>(i)];
+            A.col(i) << 1.0, r.x(), r.y();
+        }
+        const double h_m = s.p_m.z();
+        const Eigen::Vector3d load(G_mps2 * M_dt, -h_m * a_mps2.x() * M_dt, -h_m * a_mps2.y() * M_dt);
+        const Eigen::VectorXd normal = A.transpose() * (A * A.transpose()).ldlt().solve(load);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const double share = normal(i) / load.x();
+            impulses_[static_cast<std::size_t>(i)] =
+                Eigen::Vector3d(a_mps2.x() * M_dt * share, a_mps2.y() * M_dt * share, normal(i));
+        }
+        std::fill(slipping_.begin(), slipping_.end(), false);
+    }
+
     /// The vertices on or below the floor at the step's midpoint, into contacts_ (reused from
     /// step to step: a step allocates nothing).
     void fill_contacts(const Eigen::Vector3d& p_mid, const Eigen::Matrix3d& R,
@@ -161,19 +226,21 @@ private:
         }
     }
 
-    /// The plastic impact's velocities scaled so that the kinetic energy relative to the base
-    /// leaves at r^2 times the arriving one: on an edge of a symmetric body, the angular speed
-    /// at r times (the planar r). Every contact point's velocity scales with them, so a contact
-    /// the impact stopped stays stopped.
-    static void leave_at(double r, const detail::Twist& arriving, detail::Twist& t,
+    /// The plastic impact's velocities scaled so that the impact loses loss_ratio times the
+    /// kinetic energy (relative to the base) the plastic impact took, never going below zero.
+    /// Every contact point's velocity scales with them, so a contact the impact stopped stays
+    /// stopped.
+    static void leave_at(double loss_ratio, const detail::Twist& arriving, detail::Twist& t,
                          double mass_kg, const Eigen::Matrix3d& inertia_kgm2) {
         const auto energy = [&](const detail::Twist& x) {
             return 0.5 * mass_kg * x.v_mps.squaredNorm() +
                    0.5 * x.w_radps.dot(inertia_kgm2 * x.w_radps);
         };
         const double leaving_J = energy(t);
-        if (leaving_J == 0.0) return;
-        const double scale = r * std::sqrt(energy(arriving) / leaving_J);
+        const double plastic_loss_J = energy(arriving) - leaving_J;
+        if (leaving_J == 0.0 || plastic_loss_J <= 0.0) return;
+        const double target_J = std::max(0.0, leaving_J + (1.0 - loss_ratio) * plastic_loss_J);
+        const double scale = std::sqrt(target_J / leaving_J);
         t.v_mps *= scale;
         t.w_radps *= scale;
     }
@@ -204,6 +271,7 @@ private:
     const Fixed& f_;
     std::vector<Eigen::Vector3d> impulses_;  ///< last step's, per vertex (the warm start)
     std::vector<bool> slipping_;             ///< per vertex, at the last step's end
+    bool held_ = false;                      ///< the last step was stays_at_rest's
     std::vector<VertexContact> contacts_;    ///< this step's
 };
 

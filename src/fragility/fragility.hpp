@@ -41,7 +41,32 @@ struct Models {
     /// horizontal components at once, instead of the rigid planar runs (a flexible run's slip
     /// still counts: the larger governs, as at a level). Generated sets only.
     bool biaxial_slide = false;
+    /// A sample whose block would rock in x or y under its motion (the same rule) runs the 3D
+    /// rigid body instead (every component at once, docs/methods.md s.11, with the options of a
+    /// simulated level, assess/body3d_level.hpp, and the sample's larger restitution draw as
+    /// its r): its slide, tilt over critical and overturn replace the rigid planar runs' (a
+    /// flexible run still counts: the worse governs, as at a level). Generated sets only.
+    bool body3d = false;
+
+    bool operator==(const Models&) const = default;
 };
+
+/// The default models, in words.
+inline constexpr const char* planar_models_text =
+    "the rigid planar block in x and in y (docs/methods.md s.3)";
+
+/// The models a simulated level of the case runs at each PGA, for samples that should be
+/// decided as the case's levels are (docs/methods.md s.9): the flexible body in a direction
+/// where its flag is raised and the model can run (assess::flexible_model_decides), else the
+/// rigid block; the 3D body for a sample that rocks, biaxial sliding for one that only slides.
+struct CaseModels {
+    Models models;
+    std::string text;                ///< the models, in words
+    std::vector<std::string> notes;  ///< where the samples depart from the case's levels
+};
+CaseModels case_models(const assess::Case& c, const std::vector<double>& pga_g);
+/// The models in words (pga_g names the levels of Models::flexible's entries).
+std::string describe_models(const Models& m, const std::vector<double>& pga_g);
 
 /// What to run. 1 to 1000 levels strictly increasing in [0.001, 3] g; samples >= 1, at most
 /// core::limits::max_fragility_samples over all levels.
@@ -97,6 +122,7 @@ struct Meta {
     std::string mu_s_law;           ///< e.g. "uniform [0.12, 0.18] (the case's friction bounds)"
     std::string restitution_law;
     std::string motion_source;      ///< what the motions are and how they are drawn
+    std::string models;             ///< the models the samples run, in words
 };
 
 /// One event at one level.
@@ -137,7 +163,8 @@ struct Result {
     std::vector<SampleResult> samples;   ///< sorted by (level, sample)
 };
 
-/// The laws and source text for a case and config (mu_s_law, restitution_law, motion_source).
+/// The laws and source text for a case and config (mu_s_law, restitution_law, motion_source,
+/// models: the case's models' text when config.models are case_models', else the default's).
 Meta make_meta(const assess::Case& c, const Config& config);
 
 /// Counts, intervals and fits from complete samples (every (level, sample) exactly once, in any

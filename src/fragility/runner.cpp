@@ -49,10 +49,11 @@ void validate(const Config& c) {
     if (!c.models.flexible.empty() && c.models.flexible.size() != c.pga_g.size())
         throw InputError(models, fmt::format("{} flexible-body entries for {} levels",
                                              c.models.flexible.size(), c.pga_g.size()));
-    if (c.models.biaxial_slide && !c.record_files.empty())
+    if ((c.models.biaxial_slide || c.models.body3d) && !c.record_files.empty())
         throw InputError(models,
-                         "biaxial sliding needs generated three-component sets, not a "
-                         "suite of horizontal records");
+                         fmt::format("{} needs generated three-component sets, not a suite of "
+                                     "horizontal records",
+                                     c.models.body3d ? "the 3D body" : "biaxial sliding"));
 }
 
 namespace {
@@ -84,6 +85,7 @@ Meta make_meta(const assess::Case& c, const Config& config) {
     m.laws = l;
     m.allowable_slide_m = c.component.allowable_slide_m;
     m.required_overturn_fs = c.component.required_overturn_fs;
+    m.models = describe_models(config.models, config.pga_g);
     m.mu_s_law = l.mu_s.describe() + (c.uncertainty.mu_s ? " ([uncertainty] mu_s)"
                                                            : " (the case's friction bounds)");
     if (c.uncertainty.mu_s && c.component.base.kinetic_ratio() != 1.0)
@@ -197,6 +199,14 @@ dynamics::Summary simulate_direction(const assess::Component& comp,
         .summary.base;
 }
 
+// The worse of a sample's peaks so far and one run's.
+void add_peaks(SampleResult& out, double slide_max_m, double rock_max_over_alpha,
+               bool overturned) {
+    out.slide_max_m = std::max(out.slide_max_m, slide_max_m);
+    out.rock_max_over_alpha = std::max(out.rock_max_over_alpha, rock_max_over_alpha);
+    out.overturned = out.overturned || overturned;
+}
+
 }  // namespace
 
 SampleResult Runner::run(std::size_t global_index) const {
@@ -227,10 +237,23 @@ SampleResult Runner::run(std::size_t global_index) const {
             out.level + 1, pga_g, out.sample + 1, out.motion, out.mu_s, out.restitution_x,
             out.restitution_y, direction, e.what()));
     };
-    double flexible_slide_m = 0.0;
+    std::optional<WholeBody> whole;
+    if (!m.sets.empty() && (models.biaxial_slide || models.body3d)) {
+        try {
+            // One restitution for the body: the larger draw, the more energetic.
+            whole = whole_body_sample(m.c, m.sets[dr.pick], pga_g, out.mu_s, mu_k,
+                                      std::max(dr.restitution[0], dr.restitution[1]), models);
+        } catch (const NumericalError& e) {
+            throw where("the whole body", e);
+        }
+    }
+    const bool body3d = whole && whole->model == WholeBody::Model::body3d;
+    SampleResult flexible;  // the flexible runs' peaks alone
     for (const assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
         const std::size_t dir = d == assess::Direction::x ? 0 : 1;
-        const bool flexible = !models.flexible.empty() && models.flexible[level][dir];
+        const bool flexible_here = !models.flexible.empty() && models.flexible[level][dir];
+        // The 3D body replaces the rigid planar runs; a flexible body still runs beside it.
+        if (body3d && !flexible_here) continue;
         const assess::ContactBound contact{out.mu_s, mu_k, dr.restitution[dir], false, ""};
         const dynamics::Excitation ex =
             m.sets.empty() ? dynamics::excitation_from_record(m.records[dr.pick],
@@ -238,22 +261,18 @@ SampleResult Runner::run(std::size_t global_index) const {
                            : assess::excitation(m.sets[dr.pick], d, pga_g);
         dynamics::Summary s;
         try {
-            s = simulate_direction(m.c.component, contact, d, ex, opt, flexible);
+            s = simulate_direction(m.c.component, contact, d, ex, opt, flexible_here);
         } catch (const NumericalError& e) {
             throw where(fmt::format("direction {}", assess::to_string(d)), e);
         }
-        out.slide_max_m = std::max(out.slide_max_m, s.slide_max_m);
-        if (flexible) flexible_slide_m = std::max(flexible_slide_m, s.slide_max_m);
-        out.rock_max_over_alpha = std::max(out.rock_max_over_alpha, s.rock_max_over_alpha);
-        out.overturned = out.overturned || s.overturned;
+        add_peaks(out, s.slide_max_m, s.rock_max_over_alpha, s.overturned);
+        if (flexible_here) add_peaks(flexible, s.slide_max_m, s.rock_max_over_alpha, s.overturned);
     }
-    if (models.biaxial_slide && !m.sets.empty()) {
-        try {
-            if (const auto biaxial = biaxial_slide_m(m.c, m.sets[dr.pick], pga_g, out.mu_s, mu_k))
-                out.slide_max_m = std::max(flexible_slide_m, *biaxial);
-        } catch (const NumericalError& e) {
-            throw where("biaxial sliding", e);
-        }
+    if (body3d) {
+        add_peaks(out, whole->slide_max_m, whole->rock_max_over_alpha, whole->overturned);
+    } else if (whole) {
+        // Biaxial sliding replaces the rigid blocks' slide; a flexible run's slip still counts.
+        out.slide_max_m = std::max(flexible.slide_max_m, whole->slide_max_m);
     }
     return out;
 }

@@ -93,6 +93,7 @@ Meta meta_from(const core::JsonFields& f) {
     m.mu_s_law = f.get<std::string>("mu_s_law");
     m.restitution_law = f.get<std::string>("restitution_law");
     m.motion_source = f.get<std::string>("motion_source");
+    m.models = f.get<std::string>("models");
     return m;
 }
 
@@ -190,7 +191,8 @@ ordered_json to_json(const Meta& m) {
             {"laws", to_json(m.laws)},
             {"mu_s_law", m.mu_s_law},
             {"restitution_law", m.restitution_law},
-            {"motion_source", m.motion_source}};
+            {"motion_source", m.motion_source},
+            {"models", m.models}};
 }
 
 Meta meta_from_json(const nlohmann::json& j, const SourceLocation& at) {

@@ -74,6 +74,7 @@ ordered_json fragility_body_json(const fragility::Result& r) {
                    {"samples_per_level", m.config.samples},
                    {"seed", m.config.seed},
                    {"motions", m.motion_source},
+                   {"models", m.models},
                    {"mu_s", m.mu_s_law},
                    {"restitution", m.restitution_law},
                    {"allowable_slide_m", json_number(m.allowable_slide_m)},

@@ -58,12 +58,12 @@ std::string method_text(const fragility::Meta& m) {
     return fmt::format(
         "Probability of each failure given the PGA (docs/methods.md s.9; FEMA P-58 practice): "
         "at each level, {} samples each draw a ground motion and the uncertain friction and "
-        "restitution from their own random stream (seed, level, sample), simulate the rigid "
-        "block in x and y (docs/methods.md s.3) and count the failures; k / n with its exact "
+        "restitution from their own random stream (seed, level, sample), simulate {} and count "
+        "the failures; k / n with its exact "
         "95% interval (Clopper & Pearson 1934); a lognormal P(a) = Phi(ln(a / theta_m) / beta) "
         "fitted by maximum likelihood over the levels (Baker 2015), with Pearson's chi2 as the "
         "goodness of fit. A fit is omitted, with the reason, where no curve can be fitted.",
-        m.config.samples);
+        m.config.samples, m.models);
 }
 
 std::string levels_text(const std::vector<double>& pga) {
@@ -165,6 +165,7 @@ mstch::map fragility_section_context(const fragility::Result& r, const Figure& f
                       {"frag_samples", std::to_string(m.config.samples)},
                       {"frag_seed", std::to_string(m.config.seed)},
                       {"frag_motion", m.motion_source},
+                      {"frag_models", m.models},
                       {"frag_mu_law", m.mu_s_law},
                       {"frag_r_law", m.restitution_law},
                       {"frag_events", events},

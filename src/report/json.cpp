@@ -193,7 +193,6 @@ ordered_json body3d_json(const std::optional<Body3dLevel>& b) {
     j.update(simulation_json(b->sim));
     j.erase("amplification");  // not a 3D output
     j.erase("slide_residual_m");
-    j.erase("rocking_other_restitution");
     return j;
 }
 

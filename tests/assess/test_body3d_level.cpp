@@ -85,8 +85,15 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
                                               r.input.component.required_overturn_fs);
     CHECK(passes(direct) == passes(x.verdict));
     CHECK(direct.margin == x.verdict.margin);
-    // The step check reruns the governing history at a quarter of the step, beside its own run.
-    CHECK(b.check_dt_s == Approx(b.dt_s / 4.0));
+    // The planar runs' restitution bounds: the steel's measured r and Housner's beside it.
+    const DirectionBounds& bounds = x.bounds;
+    REQUIRE(bounds.rocking_lower.has_value());
+    REQUIRE(b.sim.rocking_other.has_value());
+    CHECK(b.sim.rocking_bound.restitution + b.sim.rocking_other->bound.restitution ==
+          Approx(bounds.rocking.restitution + bounds.rocking_lower->restitution));
+    CHECK(b.sim.rocking_bound.restitution != b.sim.rocking_other->bound.restitution);
+    // The step check reruns the governing history at a sixteenth of the step, beside its own run.
+    CHECK(b.check_dt_s == Approx(b.dt_s / 16.0));
     const auto k = static_cast<std::size_t>(b.sim.governing_history);
     if (b.sim.overturned_sets.at(k) == 0)
         CHECK(b.run_tilt_over_critical == b.sim.rock_over_alpha.values.at(k));

@@ -172,6 +172,30 @@ TEST_CASE("3D: a restitution on angular velocity acts as the planar engine's",
                       Catch::Contains("angular_restitution") && Catch::Contains("not both"));
 }
 
+TEST_CASE("3D: a restitution at Housner's value of the critical edge is the plastic impact, "
+          "on a corner too",
+          "[dynamics][3d]") {
+    // The restitution scales each impact's plastic loss by (1 - r^2) / (1 - r_H^2): at r = r_H
+    // every impact is the plastic one, including the corner's, whose own loss (s.11 check 2)
+    // differs from the edge's. Scaling the energy to r_H^2 of the arriving would not be.
+    const double b = 0.2, d = 0.35, h = 0.7, M = 120.0;
+    const double alpha = std::atan(b / h);
+    CHECK(dynamics::housner_restitution(dynamics::box_body(b, d, h, M)) ==
+          Approx(1.0 - 1.5 * std::sin(alpha) * std::sin(alpha)).epsilon(1e-12));
+    CHECK(dynamics::housner_restitution(dynamics::box_body(d, b, h, M)) ==
+          Approx(1.0 - 1.5 * std::sin(alpha) * std::sin(alpha)).epsilon(1e-12));
+    const auto body = dynamics::box_body(b, b, h, M);
+    const double r_H = dynamics::housner_restitution(body);
+    const auto e = along(std::numbers::pi / 4.0, 3.0, 0.005,
+                         [](double t) { return sine(0.6, 2.0, t); });
+    const auto plastic = dynamics::simulate_body3d(dynamics::make_body3d_model(body, 1.0), e, quick());
+    const auto at_r_H = dynamics::simulate_body3d(
+        dynamics::make_body3d_model(body, 1.0, std::nullopt, 0.0, r_H), e, quick());
+    REQUIRE(plastic.summary.time_in_state_s[3] > 0.1);  // on one vertex
+    CHECK(at_r_H.summary.tilt_max_rad == Approx(plastic.summary.tilt_max_rad).epsilon(1e-9));
+    CHECK(at_r_H.summary.slide_max_m == Approx(plastic.summary.slide_max_m).margin(1e-12));
+}
+
 TEST_CASE("3D: the error against the planar engine falls with the step (first order)",
           "[dynamics][3d]") {
     const double b = 0.2, d = 0.35, h = 0.6, M = 150.0;

@@ -1,6 +1,6 @@
 // The models a fragility sample runs (fragility::Models): the flexible body at the levels and
-// directions asked for, biaxial sliding for a sample that only slides; the default is the rigid
-// planar block.
+// directions asked for, biaxial sliding for a sample that only slides, the 3D body for one that
+// rocks; the default is the rigid planar block.
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include "assess/body3d_level.hpp"
 #include "assess/case.hpp"
 #include "assess/histories.hpp"
 #include "core/content_store.hpp"
 #include "dynamics/biaxial.hpp"
+#include "dynamics/body3d.hpp"
 #include "fragility/fragility.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
@@ -41,6 +43,21 @@ restitution = 0.5
 allowable_slide_m = 0.03
 [site]
 pga_g = [0.3]
+[options]
+histories_per_level = 1
+)";
+
+// A block 0.4 x 0.5 m, 1.6 m tall (tan alpha 0.25 and 0.31) on steel: at 0.5 g it rocks.
+const char* rocker_toml = R"([component]
+name = "rocker"
+mass_kg = 150.0
+width_m = 0.4
+depth_m = 0.5
+height_m = 1.6
+base_material = "steel"
+allowable_slide_m = 0.03
+[site]
+pga_g = [0.5]
 [options]
 histories_per_level = 1
 )";
@@ -92,6 +109,10 @@ TEST_CASE("the flexible body runs at the levels and directions asked for, and on
     cfg.models.biaxial_slide = true;
     CHECK_THROWS_WITH(fragility::validate(cfg),
                       Catch::Contains("models") && Catch::Contains("generated three-component"));
+    cfg.models.biaxial_slide = false;
+    cfg.models.body3d = true;
+    CHECK_THROWS_WITH(fragility::validate(cfg), Catch::Contains("models") &&
+                                                    Catch::Contains("the 3D body needs generated"));
     fs::remove_all(dir);
 }
 
@@ -121,6 +142,52 @@ TEST_CASE("a sample that only slides takes its slide from biaxial sliding", "[fr
         CHECK(biaxial[i].slide_max_m == direct);
         CHECK(biaxial[i].slide_max_m != planar[i].slide_max_m);
         CHECK(biaxial[i].rock_max_over_alpha == planar[i].rock_max_over_alpha);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a sample that rocks runs the 3D body with its friction and restitution, one that "
+          "only slides does not",
+          "[fragility][models]") {
+    const fs::path dir = scratch("body3d");
+    const core::ContentStore cache(dir / "cache");
+    assess::RunSettings settings(1);
+    settings.cache = &cache;
+    fragility::Config cfg;
+    cfg.pga_g = {0.5};
+    cfg.samples = 3;
+    cfg.pool = 1;
+    const assess::Case rocker = assess::parse_case(rocker_toml, (dir / "rocker.toml").string());
+    const auto planar = run(rocker, cfg, settings);
+    cfg.models.biaxial_slide = true;
+    cfg.models.body3d = true;
+    const auto whole = run(rocker, cfg, settings);
+    // The same set (from the cache) run directly with the 3D body of the assessment.
+    assess::HistoryBank bank(rocker, settings);
+    const assess::HistorySet& set = bank.sets().front();
+    const auto ex = dynamics::biaxial_excitation_from_records(set.h1, set.h2, 0.5, &set.v);
+    for (std::size_t i = 0; i < whole.size(); ++i) {
+        INFO("sample " << i << ", mu_s " << whole[i].mu_s << ", r " << whole[i].restitution_x);
+        const double r = std::max(whole[i].restitution_x, whole[i].restitution_y);
+        const auto model = dynamics::make_body3d_model(assess::component_body3d(rocker.component),
+                                                       whole[i].mu_s, whole[i].mu_s, 0.0, r);
+        const auto direct =
+            dynamics::simulate_body3d(model, ex, assess::body3d_options(9.81)).summary;
+        REQUIRE(planar[i].rock_max_over_alpha > 0.01);  // it rocks
+        CHECK(whole[i].rock_max_over_alpha == direct.tilt_max_over_critical);
+        CHECK(whole[i].overturned == direct.overturned);
+        CHECK(whole[i].slide_max_m == (direct.overturned ? 0.0 : direct.slide_max_m));
+        CHECK(whole[i].rock_max_over_alpha != planar[i].rock_max_over_alpha);
+    }
+    // A block that cannot rock keeps the biaxial slide with the 3D body turned on.
+    const assess::Case slider = assess::parse_case(slider_toml, (dir / "slider.toml").string());
+    cfg.pga_g = {0.3};
+    const auto slides = run(slider, cfg, settings);
+    cfg.models.body3d = false;
+    const auto biaxial = run(slider, cfg, settings);
+    for (std::size_t i = 0; i < slides.size(); ++i) {
+        CHECK(slides[i].slide_max_m == biaxial[i].slide_max_m);
+        CHECK(slides[i].rock_max_over_alpha == 0.0);
     }
     fs::remove_all(dir);
 }

@@ -127,6 +127,8 @@ TEST_CASE("the samples run the flexible body where the case's levels would, and 
         {false, false}, {true, true}, {true, true}, {true, true}};
     CHECK(m.models.flexible == expected);
     CHECK(m.models.biaxial_slide);
+    CHECK(m.models.body3d);
+    CHECK_THAT(m.text, Catch::Contains("runs the 3D rigid body"));
     CHECK_THAT(m.text, Catch::Contains("flexible body instead") &&
                            Catch::Contains("x at 0.2, 0.3, 0.4 g; y at 0.2, 0.3, 0.4 g"));
     // simulate = "never" blocks the flexible model at the levels: the goal runs the rigid block
@@ -152,7 +154,8 @@ TEST_CASE("a slender block at a high DBE fails the goal, a squat one at a low DB
     const goal::LimitState& s = slender.governing_state();
     CHECK(s.at_dbe.p > goal::target_dbe);
     CHECK(s.at_dbe.ci95[0] > goal::target_dbe);  // not a near miss
-    CHECK(s.event == fragility::Event::rock);    // on steel it rocks; it does not slide away
+    // On steel it rocks and tips over; it does not slide away.
+    CHECK((s.event == fragility::Event::rock || s.event == fragility::Event::overturn));
     CHECK(slender.meta.config.pga_g.size() == 8);
     CHECK(slender.meta.config.pga_g[2] == 0.33);
     REQUIRE(s.fit.fit.has_value());

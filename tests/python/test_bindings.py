@@ -364,6 +364,23 @@ def test_fragility_of_a_slender_block_against_its_uplift_threshold():
     assert none < fit["theta_m_g"] < every
 
 
+def test_fragility_with_the_case_models_equals_the_command_line_and_runs_the_3d_body():
+    # TS2 at 0.4 g rocks: with models="case" its samples run the 3D body (docs/methods.md s.11).
+    case = ROOT / "cases" / "block-ts2.toml"
+    args = ["--pga", "0.4", "--samples", "2", "--pool", "1", "--seed", "5"]
+    expected = cli_json("fragility", case, *args, "--models", "case", "--json")
+    got = freestand.fragility(case, pga=[0.4], samples=2, pool=1, seed=5, models="case")
+    assert got == expected
+    assert "runs the 3D rigid body" in got["inputs"]["models"]
+    planar = freestand.fragility(case, pga=[0.4], samples=2, pool=1, seed=5)
+    assert planar["inputs"]["models"] == "the rigid planar block in x and in y (docs/methods.md s.3)"
+    with pytest.raises(ValueError, match="models"):
+        freestand.fragility(case, pga=[0.4], samples=1, pool=1, models="3d")
+    code, _, err = cli("fragility", case, "--pga", "0.4", "--samples", "1", "--models", "3d")
+    assert code == 2
+    assert "--models: expected planar or case" in err
+
+
 def test_fragility_takes_a_level_range_as_the_command_line_does():
     case = ROOT / "cases" / "block-ts1.toml"
     expected = cli_json("fragility", case, "--pga", "0.05:0.11:0.03", "--samples", "1",
