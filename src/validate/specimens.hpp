@@ -7,6 +7,7 @@
 
 #include "assess/case.hpp"
 #include "block/block.hpp"
+#include "dynamics/body3d.hpp"
 #include "dynamics/simulate.hpp"
 #include "validate/validate.hpp"
 
@@ -87,6 +88,8 @@ std::vector<Row> rest_rows();
 struct RandomRuns {
     std::string histories;                             ///< where the histories came from, in words
     std::vector<std::vector<dynamics::Summary>> runs;  ///< [specimen][history]
+    /// The 3D body of each specimen under the same records, [specimen][history].
+    std::vector<std::vector<dynamics::Body3dSummary>> runs3d;
     double pgd_mean_m = 0.0;            ///< mean peak ground displacement of the scaled records, m
     double pgd_max_m = 0.0;             ///< largest of them, m
     double highpass_hz = 0.0;           ///< the case's energy high-pass corner, Hz

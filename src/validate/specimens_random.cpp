@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "assess/body3d_level.hpp"
 #include "assess/histories.hpp"
 #include "core/measures.hpp"
 #include "core/parallel.hpp"
@@ -40,6 +41,24 @@ std::string standing_text(const std::vector<dynamics::Summary>& runs) {
                        sig(max_rad), max_alpha);
 }
 
+// The specimen as a 3D body: a square footprint (the thesis gives no depth; the shipped TS cases
+// take it equal to the width), the planar block's I_c about both horizontal axes, a uniform
+// box's about the vertical.
+dynamics::Body3d specimen_body3d(const Specimen& s) {
+    const block::Block blk = specimen_block(s);
+    const double b = blk.b_left_m;
+    dynamics::Body3d body = dynamics::box_body(b, b, blk.h_m, s.mass_kg);
+    body.inertia_cg_kgm2 =
+        Eigen::Vector3d(blk.inertia_cg_kgm2, blk.inertia_cg_kgm2, s.mass_kg * 8.0 * b * b / 12.0)
+            .asDiagonal();
+    return body;
+}
+
+int overturned_count(const std::vector<dynamics::Body3dSummary>& runs) {
+    return static_cast<int>(std::count_if(
+        runs.begin(), runs.end(), [](const dynamics::Body3dSummary& r) { return r.overturned; }));
+}
+
 std::string stroke_text(const RandomRuns& runs) {
     return fmt::format(
         "freestand's histories at {:g} g move the ground +-{:.3f} m on average (peak; {:.2f} m "
@@ -51,7 +70,7 @@ std::string stroke_text(const RandomRuns& runs) {
 }
 
 Row random_row(const Specimen& s, const std::vector<dynamics::Summary>& runs,
-               const RandomRuns& all) {
+               const std::vector<dynamics::Body3dSummary>& runs3d, const RandomRuns& all) {
     const int n = static_cast<int>(runs.size());
     const int k = overturned_count(runs);
     // One test, many histories: the outcome of most histories is the best estimate of it.
@@ -64,8 +83,11 @@ Row random_row(const Specimen& s, const std::vector<dynamics::Summary>& runs,
     row.test = fmt::format("{} on steel, random table motion at {:g} g PGA, horizontal only",
                            s.name, random_pga_g());
     row.thesis = observed ? "overturned" : "stood (sustained the shaking)";
-    row.predicted = fmt::format("overturned in {} of {} histories; {}", k, n,
-                                k == n ? "none stood" : standing_text(runs));
+    row.predicted = fmt::format(
+        "overturned in {} of {} histories; {}; the 3D body (a square footprint assumed): "
+        "overturned in {} of {}",
+        k, n, k == n ? "none stood" : standing_text(runs), overturned_count(runs3d),
+        runs3d.size());
     row.unit = "fraction of histories";
     row.predicted_value = static_cast<double>(k) / n;
     row.sources = {s.key + ".alpha_rad", s.key + ".R_m",     s.key + ".mass_kg",
@@ -98,6 +120,7 @@ RandomRuns run_random(const assess::Case& histories_case, const std::string& cas
     const std::size_t n_sets = sets.size();
     const std::size_t n_specimens = specimens().size();
     out.runs.assign(n_specimens, std::vector<dynamics::Summary>(n_sets));
+    out.runs3d.assign(n_specimens, std::vector<dynamics::Body3dSummary>(n_sets));
     dynamics::Options opt;
     opt.record_series = false;
     opt.g_mps2 = thesis_g_mps2;
@@ -108,6 +131,16 @@ RandomRuns run_random(const assess::Case& histories_case, const std::string& cas
         const dynamics::Excitation x = dynamics::excitation_from_record(set.h1, random_pga_g());
         out.runs[i / n_sets][i % n_sets] =
             dynamics::simulate(specimen_model(s, value("steel.restitution")), x, opt).summary;
+        // The table's one component along the body's x axis: the 3D body should repeat the
+        // planar block (docs/methods.md s.11 check 3), up to its step.
+        const double mu = value("steel.mu_s");
+        const auto model = dynamics::make_body3d_model(specimen_body3d(s), mu, mu, 0.0,
+                                                       value("steel.restitution"));
+        out.runs3d[i / n_sets][i % n_sets] =
+            dynamics::simulate_body3d(model,
+                                      dynamics::biaxial_excitation(x, std::vector<double>{}),
+                                      assess::body3d_options(thesis_g_mps2))
+                .summary;
     });
     return out;
 }
@@ -119,7 +152,8 @@ Group random_group(const RandomRuns& runs) {
     g.method =
         "Time-history simulation of the planar rigid block (docs/methods.md s.3, event-driven "
         "integrator) under each of freestand's spectrum-compatible histories (docs/methods.md "
-        "s.8) scaled to the test's PGA, the horizontal record only.";
+        "s.8) scaled to the test's PGA, the horizontal record only; the 3D rigid body (s.11, "
+        "the options of assess) beside it under the same records.";
     g.tolerance =
         "Outcome rows: freestand predicts overturning when more than half of its histories "
         "overturn the block (the thesis ran one history: the outcome of most histories is the "
@@ -130,6 +164,8 @@ Group random_group(const RandomRuns& runs) {
             "; the thesis's history (the site's 0.3 g history scaled to 0.8 g) and its spectrum "
             "(Fig. 2-3) are lost",
         "horizontal motion only: the specimens' table is uniaxial (s.3.3.2)",
+        "the 3D body: a square footprint (the thesis gives the specimens' width, not their "
+        "depth), the planar block's inertia about both horizontal axes",
     };
     return g;
 }
@@ -137,7 +173,7 @@ Group random_group(const RandomRuns& runs) {
 std::vector<Row> random_rows(const RandomRuns& runs) {
     std::vector<Row> rows;
     for (std::size_t i = 0; i < specimens().size(); ++i)
-        rows.push_back(random_row(specimens()[i], runs.runs[i], runs));
+        rows.push_back(random_row(specimens()[i], runs.runs[i], runs.runs3d[i], runs));
     return rows;
 }
 
