@@ -100,7 +100,7 @@ def _number(value: Any, keyword: str) -> float:
 _BOX_KEYS = {"b": "half_width_m", "h": "half_height_m", "m": "mass_kg"}
 _CG_KEYS = {"x": "cg_offset_m", "h": "cg_height_m"}
 #: simulate_3d's block keys, passed on under the same names.
-_BODY3D_KEYS = {key: key for key in ("b", "d", "h", "m", "height")}
+_BODY3D_KEYS = {key: key for key in ("b", "d", "h", "m", "height", "cgx", "cgy", "ixx", "iyy", "izz")}
 
 
 def _keyed_numbers(values: Mapping[str, Any], keys: Mapping[str, str], keyword: str) -> dict:
@@ -422,8 +422,9 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     """Time history of the rigid body in three dimensions (`freestand simulate --model 3d
     --json`, docs/methods.md s.11) under x (a record, or an array of m/s^2 samples at dt_s),
     optionally y (motion_y, on the same samples) and the vertical, all times scale. block has
-    b and d (half-widths along x and y, m), h (CG height, m), and optionally m (mass, kg) and
-    height (total height, m); mu and mu_k the friction; restitution on angular velocity
+    b and d (half-widths along x and y, m), h (CG height, m), and optionally m (mass, kg),
+    height (total height, m), cgx and cgy (the CG's offset from the footprint's centre, m) and
+    ixx, iyy, izz (all three: the inertia about the CG, kg m^2); mu and mu_k the friction; restitution on angular velocity
     (default: the plastic impact, Housner's rule generalised); dt the time step (s). Returns the
     summary, and with series=True also "series": NumPy arrays time_s, slide_x_m, slide_y_m,
     tilt_rad, tilt_over_critical, twist_rad, state (codes into state_names)."""

@@ -69,6 +69,16 @@ api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::opt
     spec.cg_height_m = number(block, "h");
     spec.mass_kg = optional_number(block, "m").value_or(spec.mass_kg);
     spec.total_height_m = optional_number(block, "height");
+    spec.cg_x_m = optional_number(block, "cgx").value_or(0.0);
+    spec.cg_y_m = optional_number(block, "cgy").value_or(0.0);
+    const auto ixx = optional_number(block, "ixx"), iyy = optional_number(block, "iyy"),
+               izz = optional_number(block, "izz");
+    if (ixx || iyy || izz) {
+        if (!(ixx && iyy && izz))
+            throw InputError(SourceLocation{"", 0, "block.ixx"},
+                             "give all three of ixx, iyy and izz (kg m^2), or none");
+        spec.inertia_cg_kgm2 = std::array<double, 3>{*ixx, *iyy, *izz};
+    }
     spec.dt_s = step_s;
     r.body3d = spec;
     r.mu_s = mu_s;

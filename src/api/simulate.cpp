@@ -163,10 +163,33 @@ void require_body3d_request(const SimulateRequest& r) {
 
 // The body's errors named body3d.*.
 dynamics::Body3d body_of(const Body3dSpec& b) {
-    return with_field_prefix("body3d.", [&] {
+    dynamics::Body3d body = with_field_prefix("body3d.", [&] {
         return dynamics::box_body(b.half_x_m, b.half_y_m, b.cg_height_m, b.mass_kg,
                                   b.total_height_m);
     });
+    // The CG off the footprint's middle: the footprint, measured from the CG, shifts the other
+    // way; the CG must stay strictly inside it.
+    const std::array<std::pair<double, double>, 2> offsets{
+        {{b.cg_x_m, b.half_x_m}, {b.cg_y_m, b.half_y_m}}};
+    const std::array<const char*, 2> names{"body3d.cg_x_m", "body3d.cg_y_m"};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const auto [offset_m, half_m] = offsets[i];
+        if (!std::isfinite(offset_m) || std::abs(offset_m) >= half_m)
+            throw InputError(field(names[i]),
+                             fmt::format("{} m; the CG must stand inside the footprint: "
+                                         "|offset| < {} m",
+                                         offset_m, half_m));
+    }
+    for (Eigen::Vector2d& v : body.footprint_m) v -= Eigen::Vector2d(b.cg_x_m, b.cg_y_m);
+    if (b.inertia_cg_kgm2) {
+        for (const double I : *b.inertia_cg_kgm2)
+            if (!std::isfinite(I) || !(I > 0.0))
+                throw InputError(field("body3d.inertia_cg_kgm2"),
+                                 fmt::format("{} kg m^2; expected three moments > 0", I));
+        const auto& I = *b.inertia_cg_kgm2;
+        body.inertia_cg_kgm2 = Eigen::Vector3d(I[0], I[1], I[2]).asDiagonal();
+    }
+    return body;
 }
 
 SimulateResult run_body3d(const SimulateRequest& r) {

@@ -49,6 +49,12 @@ struct Body3dSpec {
     double cg_height_m = 0.0;
     double mass_kg = 1.0;
     std::optional<double> total_height_m;  ///< default 2 cg_height_m
+    /// The CG's plan offset from the footprint's centre, m: the body then stands on the same
+    /// 2 half_x_m x 2 half_y_m rectangle with the CG off its middle (|offset| < half-width).
+    double cg_x_m = 0.0, cg_y_m = 0.0;
+    /// Principal moments of inertia about the CG along x, y and the vertical, kg m^2 (each > 0);
+    /// default: the uniform box of the footprint and the total height.
+    std::optional<std::array<double, 3>> inertia_cg_kgm2;
     double dt_s = 1e-4;                    ///< time step, s
 };
 

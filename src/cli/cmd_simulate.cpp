@@ -21,7 +21,7 @@ namespace freestand::cli::simulate_command {
 namespace {
 
 const char* const usage =
-    "[--model planar|3d] --block b=0.15,h=0.6,m=38 (3d: b=0.15,d=0.3,h=0.6,m=38[,height=H]) "
+    "[--model planar|3d] --block b=0.15,h=0.6,m=38 (3d: b=0.15,d=0.3,h=0.6,m=38[,height=H][,cgx=X,cgy=Y][,ixx=..,iyy=..,izz=..]) "
     "[--cg x,y] [--inertia I] [--top H] --mu 0.15 [--mu-k MU] "
     "[--restitution R] (--motion FILE[,VERTICAL_FILE] [--motion-y FILE] [--scale S] | "
     "--sine 0.8g,2Hz,5s[,ramp=1s] | --sine-y 0.8g,2Hz,5s[,ramp=1s][,phase=90]) "
@@ -37,7 +37,8 @@ po::options_description simulate_options() {
          "(docs/methods.md s.11)")
         ("block", po::value<std::string>()->required(),
          "b=half-width,h=CG height,m=mass (m, kg); with --model 3d b=half-width along x,"
-         "d=half-width along y,h=CG height[,m=mass][,height=total height]")
+         "d=half-width along y,h=CG height[,m=mass][,height=total height][,cgx=,cgy= CG offset "
+         "from the footprint's centre][,ixx=,iyy=,izz= inertia about the CG, kg m^2]")
         ("cg", po::value<std::string>(),
          "x,y: CG x from the left edge and y above the base (m); or x=OFFSET,h=HEIGHT: x right "
          "of the base's centre, as classify and rock take it")

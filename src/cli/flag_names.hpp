@@ -103,6 +103,9 @@ inline const std::map<std::string, std::string>& flag_names() {
         {"body3d.h_m", "--block h (CG height, m)"},
         {"body3d.mass_kg", "--block m (mass, kg)"},
         {"body3d.total_height_m", "--block height (total height, m)"},
+        {"body3d.cg_x_m", "--block cgx (CG offset along x from the footprint's centre, m)"},
+        {"body3d.cg_y_m", "--block cgy (CG offset along y from the footprint's centre, m)"},
+        {"body3d.inertia_cg_kgm2", "--block ixx, iyy, izz (inertia about the CG, kg m^2)"},
         {"body3d.dt_s", "--dt"},
         // api::SlideRequest and api::RockRequest
         {"pgd_m", "--pgd-m"},

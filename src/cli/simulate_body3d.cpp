@@ -11,7 +11,9 @@
 namespace freestand::cli {
 
 api::Body3dSpec body3d_from_options(const std::string& block, double dt_s) {
-    const auto keys = parse_key_values(block, "--block", {"b", "d", "h", "m", "height"});
+    const auto keys = parse_key_values(block, "--block",
+                                       {"b", "d", "h", "m", "height", "cgx", "cgy", "ixx", "iyy",
+                                        "izz"});
     for (const char* k : {"b", "d", "h"})
         if (!keys.count(k))
             throw UsageError(fmt::format("--block: the 3D body needs b (half-width along x), d "
@@ -23,6 +25,15 @@ api::Body3dSpec body3d_from_options(const std::string& block, double dt_s) {
     spec.cg_height_m = keys.at("h");
     if (keys.count("m")) spec.mass_kg = keys.at("m");
     if (keys.count("height")) spec.total_height_m = keys.at("height");
+    if (keys.count("cgx")) spec.cg_x_m = keys.at("cgx");
+    if (keys.count("cgy")) spec.cg_y_m = keys.at("cgy");
+    const int inertia_keys =
+        static_cast<int>(keys.count("ixx") + keys.count("iyy") + keys.count("izz"));
+    if (inertia_keys == 3)
+        spec.inertia_cg_kgm2 = std::array<double, 3>{keys.at("ixx"), keys.at("iyy"), keys.at("izz")};
+    else if (inertia_keys != 0)
+        throw UsageError("--block: give the inertia about the CG as all three of ixx, iyy and izz "
+                         "(kg m^2), or none for the uniform box");
     spec.dt_s = dt_s;
     return spec;
 }

@@ -59,6 +59,43 @@ TEST_CASE("simulate --model 3d --restitution is the library's restitution on ang
     CHECK(nlohmann::json::parse(r.out).at("tilt_max_rad").get<double>() == lib.summary.tilt_max_rad);
 }
 
+TEST_CASE("simulate --model 3d --block takes the CG's offset and the inertia, as the library",
+          "[3d][cli]") {
+    const std::string body = "b=0.2,d=0.35,h=0.6,m=150,cgx=0.05,cgy=-0.1,ixx=30,iyy=25,izz=12";
+    const auto r = run_cli("simulate --model 3d --block " + body +
+                           " --mu 1 --sine 0.5g,2Hz,3s --json");
+    REQUIRE(r.exit_code == 0);
+    using namespace freestand;
+    auto b = dynamics::box_body(0.2, 0.35, 0.6, 150.0);
+    for (auto& v : b.footprint_m) v -= Eigen::Vector2d(0.05, -0.1);
+    b.inertia_cg_kgm2 = Eigen::Vector3d(30.0, 25.0, 12.0).asDiagonal();
+    auto e = dynamics::biaxial_sine_excitation(dynamics::SineSpec{0.5, 2.0, 3.0}, 0.0);
+    std::fill(e.y_mps2.begin(), e.y_mps2.end(), 0.0);
+    dynamics::Body3dOptions o;
+    o.record_series = false;
+    const auto lib = dynamics::simulate_body3d(dynamics::make_body3d_model(b, 1.0), e, o);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j.at("tilt_max_rad").get<double>() == lib.summary.tilt_max_rad);
+    CHECK(j.at("twist_max_rad").get<double>() == lib.summary.twist_max_rad);
+    // Off its middle the body twists under input along x; centred it does not.
+    const auto centred = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6,m=150 --mu 1 "
+                                 "--sine 0.5g,2Hz,3s --json");
+    CHECK(j.at("tilt_max_rad").get<double>() !=
+          nlohmann::json::parse(centred.out).at("tilt_max_rad").get<double>());
+    const auto outside = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6,cgx=0.2 --mu 1 "
+                                 "--sine 0.5g,2Hz,1s");
+    CHECK(outside.exit_code == 3);
+    CHECK_THAT(outside.err, Catch::Contains("--block cgx") && Catch::Contains("inside the footprint"));
+    const auto partial = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6,ixx=3 --mu 1 "
+                                 "--sine 0.5g,2Hz,1s");
+    CHECK(partial.exit_code == 2);
+    CHECK_THAT(partial.err, Catch::Contains("all three of ixx, iyy and izz"));
+    const auto negative = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6,ixx=3,iyy=-1,"
+                                  "izz=2 --mu 1 --sine 0.5g,2Hz,1s");
+    CHECK(negative.exit_code == 3);
+    CHECK_THAT(negative.err, Catch::Contains("--block ixx, iyy, izz"));
+}
+
 TEST_CASE("simulate --model 3d --sine-y --out writes the series", "[3d][cli]") {
     const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_body3d";
     std::filesystem::create_directories(dir);

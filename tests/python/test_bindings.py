@@ -519,3 +519,20 @@ def test_simulate_3d_restitution_is_on_angular_velocity():
     assert abs(r06["tilt_max_rad"] - housner["tilt_max_rad"]) > 0.005
     with pytest.raises(freestand.InputError, match="restitution"):
         freestand.simulate_3d(box, accel, 0.005, mu=1.0, restitution=1.5)
+
+
+def test_simulate_3d_takes_the_cg_offset_and_inertia():
+    g = freestand.g_mps2
+    t = np.arange(0.0, 3.0 + 1e-9, 0.005)
+    accel = 0.5 * g * np.sin(2.0 * math.pi * 2.0 * t)
+    box = {"b": 0.2, "d": 0.35, "h": 0.6, "m": 150.0, "cgx": 0.05, "cgy": -0.1, "ixx": 30.0,
+           "iyy": 25.0, "izz": 12.0}
+    got = freestand.simulate_3d(box, accel, 0.005, mu=1.0, series=False)
+    centred = freestand.simulate_3d({"b": 0.2, "d": 0.35, "h": 0.6, "m": 150.0}, accel, 0.005,
+                                    mu=1.0, series=False)
+    assert got["tilt_max_rad"] != centred["tilt_max_rad"]
+    assert got["twist_max_rad"] > 10.0 * centred["twist_max_rad"]  # off its middle it twists
+    with pytest.raises(freestand.InputError, match="block.ixx"):
+        freestand.simulate_3d({"b": 0.2, "d": 0.35, "h": 0.6, "ixx": 3.0}, accel, 0.005, mu=1.0)
+    with pytest.raises(freestand.InputError, match="cgx|cg_x_m"):
+        freestand.simulate_3d({"b": 0.2, "d": 0.35, "h": 0.6, "cgx": 0.3}, accel, 0.005, mu=1.0)
