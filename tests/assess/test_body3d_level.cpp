@@ -102,6 +102,12 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
     CHECK(x.trail.end() != std::find_if(x.trail.begin(), x.trail.end(), [](const std::string& t) {
               return t.find("step check on the governing history") != std::string::npos;
           }));
+    // simulations_run counts the planar runs of both rows and the shared 3D runs once, with the
+    // step check's.
+    const auto runs = [](const Simulation& sim) {
+        return sim.histories * (1 + (sim.bounds_differ ? 1 : 0) + (sim.rocking_other ? 1 : 0));
+    };
+    CHECK(r.simulations_run == runs(*x.simulation) + runs(*y.simulation) + runs(b.sim) + 1);
     double time_s = 0.0;
     for (double t : b.time_in_state_s) time_s += t;
     CHECK(time_s > 1.0);
