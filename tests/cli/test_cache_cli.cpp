@@ -123,6 +123,34 @@ TEST_CASE("fragility shards read the pool from a filled cache and merge to the s
     }
 }
 
+TEST_CASE("fragility --models case shards merge to the single run's bytes, and never with planar "
+          "shards",
+          "[cli][cache][reproducible]") {
+    const Dir d("case_models");
+    const std::string cache = " --cache '" + (d.path / "cache").string() + "'";
+    // TS2 at 0.4 g rocks: its samples run the 3D body.
+    const std::string run =
+        "fragility cases/block-ts2.toml --pga 0.4 --samples 4 --pool 2 --models case" + cache;
+    REQUIRE(run_cli(run + " --out " + (d / "single")).exit_code == 0);
+    for (int k = 1; k <= 2; ++k)
+        REQUIRE(run_cli(run + " --shard " + std::to_string(k) + "/2 --out " + (d / "shards"))
+                    .exit_code == 0);
+    REQUIRE(run_cli("merge " + (d / "shards") + " --out " + (d / "merged")).exit_code == 0);
+    for (const char* f : {"fragility.json", "samples.csv", "report.md"}) {
+        INFO(f);
+        CHECK(slurp(d.path / "single" / f) == slurp(d.path / "merged" / f));
+    }
+    CHECK_THAT(slurp(d.path / "merged" / "report.md"), Contains("runs the 3D rigid body"));
+    // A planar shard 2 of 2 beside the case-models shard 1 of 2: another run.
+    const std::string planar =
+        "fragility cases/block-ts2.toml --pga 0.4 --samples 4 --pool 2" + cache;
+    REQUIRE(run_cli(run + " --shard 1/2 --out " + (d / "mixed")).exit_code == 0);
+    REQUIRE(run_cli(planar + " --shard 2/2 --out " + (d / "mixed")).exit_code == 0);
+    const auto mixed = run_cli("merge " + (d / "mixed") + " --out " + (d / "bad"));
+    CHECK(mixed.exit_code == 3);
+    CHECK_THAT(mixed.err, Contains("belongs to another run"));
+}
+
 TEST_CASE("batch writes the same bytes with and without the cache", "[cli][cache][reproducible]") {
     const Dir d("batch");
     fs::create_directories(d.path / "cases");
