@@ -84,8 +84,7 @@ Simulation as_simulation(const SlotRuns& runs, const DirectionBounds& bounds, bo
     rock_slot = runs.slot[1].empty() ? 0 : 1;
     if (bounds.rocking_lower) {
         RockingRuns lower = rocking_of(*bounds.rocking_lower, runs.slot[2]);
-        if (lower.overturned != upper.overturned ? lower.overturned > upper.overturned
-                                                 : lower.over_alpha.p84 > upper.over_alpha.p84) {
+        if (worse(lower, upper)) {
             std::swap(lower, upper);
             rock_slot = 2;
         }
@@ -191,11 +190,15 @@ dynamics::Body3dOptions body3d_options(double g_mps2) {
 }
 
 dynamics::Body3d component_body3d(const Component& c) {
-    const block::Block bx = c.block(Direction::x);
-    const block::Block by = c.block(Direction::y);
+    return body3d_of_blocks(c.block(Direction::x), c.block(Direction::y), c.mass_kg,
+                            c.cg_height_m);
+}
+
+dynamics::Body3d body3d_of_blocks(const block::Block& bx, const block::Block& by, double mass_kg,
+                                  double cg_height_m) {
     dynamics::Body3d body;
-    body.mass_kg = c.mass_kg;
-    body.h_m = c.cg_height_m;
+    body.mass_kg = mass_kg;
+    body.h_m = cg_height_m;
     // Counter-clockwise from the corner at the left edges of both planar geometries.
     body.footprint_m = {{-bx.b_left_m, -by.b_left_m},
                         {bx.b_right_m, -by.b_left_m},
@@ -204,7 +207,7 @@ dynamics::Body3d component_body3d(const Component& c) {
     const double wx = bx.b_left_m + bx.b_right_m;
     const double wy = by.b_left_m + by.b_right_m;
     body.inertia_cg_kgm2 = Eigen::Vector3d(by.inertia_cg_kgm2, bx.inertia_cg_kgm2,
-                                           c.mass_kg * (wx * wx + wy * wy) / 12.0)
+                                           mass_kg * (wx * wx + wy * wy) / 12.0)
                                .asDiagonal();
     return body;
 }

@@ -21,6 +21,9 @@ inline constexpr const char* body3d_model_name =
 /// around the CG, the CG height, the mass, and the inertia about the CG from the planar blocks
 /// (I_xx from direction y's, I_yy from direction x's) and a uniform box's I_zz.
 dynamics::Body3d component_body3d(const Component& c);
+/// The same from two planar blocks (x's and y's geometry and inertia), the mass and CG height.
+dynamics::Body3d body3d_of_blocks(const block::Block& bx, const block::Block& by, double mass_kg,
+                                  double cg_height_m);
 
 /// The 3D body's options in assess: dt 1e-3 s, sweeps to 1e-8 g dt or 100 sweeps (a step that
 /// needs more is counted in unconverged_steps), no series.

@@ -424,14 +424,12 @@ RockingRuns rocking_runs(const ContactBound& bound, const std::vector<BoundRuns>
     return out;
 }
 
-// The worse of two restitution bounds' rocking: more overturned sets, then the larger governing
-// theta / alpha (near the overturning threshold the peak is not monotone in r).
+}  // namespace
+
 bool worse(const RockingRuns& a, const RockingRuns& b) {
     if (a.overturned != b.overturned) return a.overturned > b.overturned;
     return a.over_alpha.p84 > b.over_alpha.p84;
 }
-
-}  // namespace
 
 Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Direction d,
                           double pga_g, HistoryBank& bank, bool rocking_mode,

@@ -102,6 +102,10 @@ Simulation simulate_level(const Case& c, const DirectionBounds& bounds, Directio
                           double pga_g, HistoryBank& bank, bool rocking_mode,
                           const HistoryRunner& run = {});
 
+/// Whether restitution bound a's rocking is worse than b's: more overturned sets, then the larger
+/// 84th-percentile theta / alpha (near the overturning threshold the peak is not monotone in r).
+bool worse(const RockingRuns& a, const RockingRuns& b);
+
 /// Counts the sets beyond each limit state (docs/methods.md s.6 step 3): slides beyond the
 /// allowable; theta / alpha above 1 / FS_required, overturned sets included.
 void count_exceedances(Simulation& sim, double allowable_slide_m, double required_fs);

@@ -250,7 +250,7 @@ struct Body3dLevel {
     double dt_s = 0.0;    ///< the time step
     int unconverged_steps = 0;  ///< over every run: steps whose impulses hit the sweep cap
     /// The step's error, estimated on the governing history at the rocking bound: the same run
-    /// at check_dt_s (a quarter of dt_s), its peak tilt over critical and overturn beside the
+    /// at check_dt_s (a sixteenth of dt_s), its peak tilt over critical and overturn beside the
     /// level's run of that history.
     double check_dt_s = 0.0;
     double check_tilt_over_critical = 0.0;

@@ -47,8 +47,6 @@ struct Models {
     /// its r): its slide, tilt over critical and overturn replace the rigid planar runs' (a
     /// flexible run still counts: the worse governs, as at a level). Generated sets only.
     bool body3d = false;
-
-    bool operator==(const Models&) const = default;
 };
 
 /// The default models, in words.
@@ -164,7 +162,7 @@ struct Result {
 };
 
 /// The laws and source text for a case and config (mu_s_law, restitution_law, motion_source,
-/// models: the case's models' text when config.models are case_models', else the default's).
+/// models: describe_models of config.models).
 Meta make_meta(const assess::Case& c, const Config& config);
 
 /// Counts, intervals and fits from complete samples (every (level, sample) exactly once, in any

@@ -248,7 +248,7 @@ SampleResult Runner::run(std::size_t global_index) const {
         }
     }
     const bool body3d = whole && whole->model == WholeBody::Model::body3d;
-    SampleResult flexible;  // the flexible runs' peaks alone
+    double flexible_slide_m = 0.0;
     for (const assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
         const std::size_t dir = d == assess::Direction::x ? 0 : 1;
         const bool flexible_here = !models.flexible.empty() && models.flexible[level][dir];
@@ -266,13 +266,13 @@ SampleResult Runner::run(std::size_t global_index) const {
             throw where(fmt::format("direction {}", assess::to_string(d)), e);
         }
         add_peaks(out, s.slide_max_m, s.rock_max_over_alpha, s.overturned);
-        if (flexible_here) add_peaks(flexible, s.slide_max_m, s.rock_max_over_alpha, s.overturned);
+        if (flexible_here) flexible_slide_m = std::max(flexible_slide_m, s.slide_max_m);
     }
     if (body3d) {
         add_peaks(out, whole->slide_max_m, whole->rock_max_over_alpha, whole->overturned);
     } else if (whole) {
         // Biaxial sliding replaces the rigid blocks' slide; a flexible run's slip still counts.
-        out.slide_max_m = std::max(flexible.slide_max_m, whole->slide_max_m);
+        out.slide_max_m = std::max(flexible_slide_m, whole->slide_max_m);
     }
     return out;
 }

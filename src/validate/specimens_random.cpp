@@ -42,16 +42,10 @@ std::string standing_text(const std::vector<dynamics::Summary>& runs) {
 }
 
 // The specimen as a 3D body: a square footprint (the thesis gives no depth; the shipped TS cases
-// take it equal to the width), the planar block's I_c about both horizontal axes, a uniform
-// box's about the vertical.
+// take it equal to the width), built as the assessment builds a component's.
 dynamics::Body3d specimen_body3d(const Specimen& s) {
     const block::Block blk = specimen_block(s);
-    const double b = blk.b_left_m;
-    dynamics::Body3d body = dynamics::box_body(b, b, blk.h_m, s.mass_kg);
-    body.inertia_cg_kgm2 =
-        Eigen::Vector3d(blk.inertia_cg_kgm2, blk.inertia_cg_kgm2, s.mass_kg * 8.0 * b * b / 12.0)
-            .asDiagonal();
-    return body;
+    return assess::body3d_of_blocks(blk, blk, s.mass_kg, blk.h_m);
 }
 
 int overturned_count(const std::vector<dynamics::Body3dSummary>& runs) {
