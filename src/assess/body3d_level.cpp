@@ -16,9 +16,9 @@
 
 namespace freestand::assess {
 
-namespace {
-
 bool uplifts(Mode m) { return m == Mode::rock || m == Mode::slide_rock || m == Mode::flight; }
+
+namespace {
 
 // The 3D runs of every set in use at one friction bound (slot 0 sliding, 1 rocking), kept from
 // batch to batch of the settling like the planar runs.

@@ -32,6 +32,10 @@ dynamics::Body3d body3d_of_blocks(const block::Block& bx, const block::Block& by
 /// docs/methods.md s.11 its overturn counts were as high as or higher than the converged ones.
 dynamics::Body3dOptions body3d_options(double g_mps2);
 
+/// True for the classifications in which the block leaves the floor (rocking, sliding and
+/// rocking, flight).
+bool uplifts(Mode m);
+
 /// Why the body cannot uplift in any direction at the level's upper bounds (either direction's
 /// classification at the upper friction is rest or slide), or nullopt when it can: uplift along
 /// a plan direction needs one horizontal component past its own axis's g tan(alpha), so the

@@ -271,8 +271,13 @@ struct Settling {
     int n_sets = 0;                 ///< sets the decision rests on
     int resamples = 0;              ///< bootstrap resamples
     double settled_fraction = 1.0;  ///< resamples that agree with the decision
-    bool settled = true;            ///< settled_fraction >= settle_agreement
+    /// settled_fraction >= settle_agreement, and a pass of a level that can overturn bounds
+    /// the overturn rate (overturn_rate_upper <= settle_overturn_rate).
+    bool settled = true;
     int rounds = 1;                 ///< batches of sets it took
+    /// A passing level that can overturn: the Clopper-Pearson 95% upper bound of its overturn
+    /// fraction, 0 of n_sets (absent for a failing level or one that cannot uplift).
+    std::optional<double> overturn_rate_upper;
 };
 
 /// One PGA level in one direction.

@@ -10,6 +10,7 @@
 #include "assess/level_runs.hpp"
 #include "assess/verdict.hpp"
 #include "core/random.hpp"
+#include "core/statistics.hpp"
 
 namespace freestand::assess {
 
@@ -59,20 +60,40 @@ void fail_unsettled(LevelResult& l) {
                     passed ? "passes" : "fails", l.verdict.margin_basis);
 }
 
+// "; no overturn in N sets: the overturn rate is below U% (95%; 5% needed)", or "".
+std::string overturn_bound_text(const Settling& s) {
+    if (!s.overturn_rate_upper) return "";
+    return fmt::format("; no overturn in {} sets: the overturn rate is below {:.1f}% (Clopper-"
+                       "Pearson 95%; {:.0f}% or less needed to pass a level that can uplift)",
+                       s.n_sets, 100.0 * *s.overturn_rate_upper, 100.0 * settle_overturn_rate);
+}
+
 std::string settling_line(const Settling& s) {
     return fmt::format("settled {}: {:.1f}% of {} bootstrap resamples of the {} sets agree with "
-                       "the decision ({:.0f}% needed; {} batch{} of sets)",
+                       "the decision ({:.0f}% needed; {} batch{} of sets){}",
                        s.settled ? "yes" : "NO", 100.0 * s.settled_fraction, s.resamples,
-                       s.n_sets, 100.0 * settle_agreement, s.rounds, s.rounds == 1 ? "" : "es");
+                       s.n_sets, 100.0 * settle_agreement, s.rounds, s.rounds == 1 ? "" : "es",
+                       overturn_bound_text(s));
 }
 
 }  // namespace
 
 std::string not_settled_text(const Settling& s, bool passed) {
     const double pass_share = passed ? s.settled_fraction : 1.0 - s.settled_fraction;
+    if (passed && s.settled_fraction >= settle_agreement && s.overturn_rate_upper) {
+        return fmt::format("not settled: no overturn in N = {} sets (cap) bounds the overturn rate "
+                           "only below {:.1f}% (Clopper-Pearson 95%; {:.0f}% needed)",
+                           s.n_sets, 100.0 * *s.overturn_rate_upper,
+                           100.0 * settle_overturn_rate);
+    }
     return fmt::format("not settled: {:.0f}% of {} resamples pass at N = {} (cap; {:.0f}% needed "
                        "either way)",
                        100.0 * pass_share, s.resamples, s.n_sets, 100.0 * settle_agreement);
+}
+
+bool can_overturn(const LevelResult& level) {
+    return uplifts(level.initiation.mode) || (level.body3d && level.body3d->ran) ||
+           (level.flexible_simulation && level.flexible_simulation->uplifted > 0);
 }
 
 bool decided_by_sets(const LevelResult& level) {
@@ -121,6 +142,10 @@ Settling settle(const LevelResult& level, std::uint64_t seed, double allowable_s
             return passes_on(level, sets, allowable_slide_m, required_fs);
         });
     out.settled = out.settled_fraction >= settle_agreement;
+    if (decision && can_overturn(level)) {
+        out.overturn_rate_upper = core::clopper_pearson(0, sim.histories)[1];
+        out.settled = out.settled && *out.overturn_rate_upper <= settle_overturn_rate;
+    }
     return out;
 }
 

@@ -359,7 +359,9 @@ ordered_json settling_json(const Settling& s) {
             {"resamples", s.resamples},
             {"settled_fraction", num(s.settled_fraction)},
             {"settled", s.settled},
-            {"batches", s.rounds}};
+            {"batches", s.rounds},
+            {"overturn_rate_upper",
+             s.overturn_rate_upper ? num(*s.overturn_rate_upper) : ordered_json(nullptr)}};
 }
 
 std::vector<StampedInput> stamped_inputs(const Case& c) {

@@ -79,9 +79,11 @@ std::string restitution_note(const BaseContact& b, const DirectionBounds& bounds
 std::string statistic_rule(const Options& o) {
     return fmt::format(
         "the 84th percentile of the sets' peaks governs, with k/N beyond each limit beside it; a "
-        "decision the bootstrap does not settle gets {} more sets, up to {} (docs/methods.md s.6 "
-        "steps 3-4)",
-        assess::settle_batch_sets, o.max_histories_per_level);
+        "decision the bootstrap does not settle, or a pass of a level that can uplift whose sets "
+        "bound the overturn rate only above {:.0f}% (95%), gets {} more sets, up to {} "
+        "(docs/methods.md s.6 steps 3-4)",
+        100.0 * assess::settle_overturn_rate, assess::settle_batch_sets,
+        o.max_histories_per_level);
 }
 
 std::string energy_delta_d_text(const Site& site) {

@@ -104,6 +104,59 @@ TEST_CASE("an overturned set fails every resample that holds it", "[assess][sett
     CHECK_FALSE(s.settled);
 }
 
+TEST_CASE("a pass of a level that can uplift is settled only once its sets bound the overturn "
+          "rate at 5%",
+          "[assess][settle]") {
+    // No overturn in any set: every resample agrees, yet 0 of N bounds the rate only below
+    // 1 - 0.025^(1/N) (Clopper-Pearson 95%): 11.6% at 30, 5.06% at 71, 4.99% at 72.
+    auto rocking = [](std::size_t n) {
+        LevelResult l = sliding_level(std::vector<double>(n, 0.0));
+        l.initiation.mode = Mode::rock;
+        return l;
+    };
+    const Settling at30 = settle(rocking(30), 5, allowable, fs_required);
+    CHECK(at30.settled_fraction == 1.0);
+    REQUIRE(at30.overturn_rate_upper.has_value());
+    CHECK(*at30.overturn_rate_upper == Approx(1.0 - std::pow(0.025, 1.0 / 30.0)));
+    CHECK_FALSE(at30.settled);
+    CHECK_FALSE(settle(rocking(71), 5, allowable, fs_required).settled);
+    const Settling at72 = settle(rocking(72), 5, allowable, fs_required);
+    CHECK(at72.settled);
+    CHECK(*at72.overturn_rate_upper == Approx(0.04994).margin(1e-5));
+    CHECK(not_settled_text(at30, true) ==
+          "not settled: no overturn in N = 30 sets (cap) bounds the overturn rate only below "
+          "11.6% (Clopper-Pearson 95%; 5% needed)");
+    // A level that only slides cannot overturn: 30 sets settle it, with no bound.
+    const Settling sliding = settle(sliding_level(std::vector<double>(30, 0.0)), 5, allowable,
+                                    fs_required);
+    CHECK(sliding.settled);
+    CHECK_FALSE(sliding.overturn_rate_upper.has_value());
+    // A failing level is not bounded: its failure is what the bootstrap settles.
+    LevelResult failing = rocking(30);
+    failing.simulation->slide_m = stats_of(std::vector<double>(30, 0.08));
+    failing.verdict = decide_level(failing, allowable, fs_required);
+    REQUIRE_FALSE(passes(failing.verdict));
+    CHECK_FALSE(settle(failing, 5, allowable, fs_required).overturn_rate_upper.has_value());
+}
+
+TEST_CASE("a flexible body is held to the overturn bound once its base lifted in some set",
+          "[assess][settle]") {
+    LevelResult l = sliding_level(std::vector<double>(30, 0.0));
+    l.flexible_simulation = FlexibleSimulation{};
+    l.flexible_simulation->sim = *l.simulation;
+    CHECK_FALSE(can_overturn(l));
+    CHECK(settle(l, 5, allowable, fs_required).settled);
+    l.flexible_simulation->uplifted = 1;
+    CHECK(can_overturn(l));
+    CHECK_FALSE(settle(l, 5, allowable, fs_required).settled);
+    // The 3D body runs only where a direction can uplift: it holds the level to the bound too.
+    LevelResult b = sliding_level(std::vector<double>(30, 0.0));
+    b.body3d = Body3dLevel{};
+    CHECK_FALSE(can_overturn(b));
+    b.body3d->ran = true;
+    CHECK(can_overturn(b));
+}
+
 TEST_CASE("evaluate_settled grows an unsettled level by batches up to the cap, then fails it",
           "[assess][settle]") {
     Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" / "glovebox-single.toml");
@@ -207,6 +260,28 @@ TEST_CASE("the glove box's verdict and material do not follow the seed",
             CHECK(passes(r.upgrade.trials[i].governing.verdict) ==
                   passes(first->upgrade.trials[i].governing.verdict));
         }
+    }
+}
+
+TEST_CASE("the cabinet on steel fails at 0.3 g under a seed whose first 30 sets hold no "
+          "overturn",
+          "[assess][settle][seed]") {
+    // The 3D body overturns the cabinet in a few percent of the sets at 0.3 g. Seed 12's first
+    // 30 sets hold none, which the bootstrap alone settled as a pass (margin 8.19) while the
+    // shipped seed 1 fails (reports/cabinet-user-target); the overturn bound grows the sets
+    // until one shows.
+    Case c = read_case(fs::path(freestand::test::source_dir()) / "cases" /
+                       "cabinet-user-target.toml");
+    c = with_pga_levels(c, {0.3});
+    c.options.search_materials = false;
+    c.options.seed = 12;
+    {
+        const AssessmentResult r = assess(c);
+        const LevelResult& x = r.levels.at(0);
+        REQUIRE(x.body3d.has_value());
+        CHECK(x.body3d->ran);
+        CHECK(x.body3d->sim.overturned > 0);
+        CHECK_FALSE(passes(r.overall.verdict));
     }
 }
 

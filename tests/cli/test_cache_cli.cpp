@@ -64,7 +64,7 @@ TEST_CASE("assess writes the same bytes at any thread count, with or without the
           "[cli][cache][reproducible]") {
     const Dir d("assess");
     const std::string cache = (d.path / "cache").string();
-    const std::string base = "assess cases/glovebox-single.toml --pga 0.3 --out ";
+    const std::string base = "assess cases/glovebox-single.toml --pga 0.2 --out ";
     const auto reference = run_cli(base + (d / "none") + " --no-cache --threads 1");
     REQUIRE(reference.exit_code == 0);
     CHECK(entries(cache).empty());

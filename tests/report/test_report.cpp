@@ -413,7 +413,7 @@ TEST_CASE("How sure: N, the settled share and the sets beyond each limit by the 
     CHECK(render(r, stamp()).markdown.find("No level was decided by simulation") !=
           std::string::npos);
     assess::LevelResult& l = r.levels[1];
-    l.settling = assess::Settling{3, 2000, 0.973, true, 2};
+    l.settling = assess::Settling{3, 2000, 0.973, true, 2, std::nullopt};
     l.simulation->histories = 3;
     l.simulation->slide_m = assess::stats_of({0.010, 0.011, 0.012});
     l.simulation->rock_over_alpha = assess::stats_of({0.1, 0.2, 0.3});
