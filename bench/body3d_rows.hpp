@@ -8,6 +8,8 @@
 //   - both components (140 as x at 0.9 g, 230 as y on the same scale), on a block 0.3 x 0.4 m:
 //     the error of the peak tilt and slide against the 3D body at dt = 1e-5 s (its converged
 //     reference), and the peak tilt beside the planar runs of each component.
+//   - x alone with a mode (8 Hz, 0.4 M at 0.9 m): the peak tilt and |q| against the planar
+//     flexible body's event-driven run, and the time over it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +19,7 @@
 #include "core/readers.hpp"
 #include "dynamics/biaxial.hpp"
 #include "dynamics/body3d.hpp"
+#include "dynamics/flexible.hpp"
 #include "dynamics/simulate.hpp"
 #include "timing.hpp"
 
@@ -99,6 +102,47 @@ inline void body3d_rows(const core::Record& x140) {
                 "planar y %.4g rad\n",
                 conv.tilt_max_rad, conv.tilt_max_over_critical, conv.twist_max_rad, px.rock_max_rad,
                 py.rock_max_rad);
+
+    // The body carrying a mode (8 Hz, 0.4 M at 0.9 m) along x, against the planar flexible
+    // body's event-driven run of the same record (its converged reference).
+    std::printf("\n3D body with a mode (8 Hz, 0.4 M at 0.9 m), x alone, against the planar flexible "
+                "body\n%-22s %12s %12s %12s %10s\n", "run", "cpu_s", "tilt_error", "modal_error",
+                "x_planar");
+    const auto flex_planar = dynamics::make_flexible_model(planar_model, {8.0, 0.02, 0.4, 0.9});
+    double t_flex = 1e9;
+    dynamics::FlexibleSummary flex_ref;
+    for (int i = 0; i < 5; ++i) {
+        dynamics::Options o;
+        o.record_series = false;
+        const double t0 = thread_cpu_s();
+        flex_ref = dynamics::simulate_flexible(flex_planar, x, o).summary;
+        t_flex = std::min(t_flex, thread_cpu_s() - t0);
+    }
+    std::printf("%-22s %12.3e %12s %12s %10s   (peak rotation %.4g rad, |q| %.4g m)\n",
+                "planar flexible", t_flex, "-", "-", "1", flex_ref.base.rock_max_rad,
+                flex_ref.modal_max_m);
+    const auto body_mode = dynamics::with_mode(body_x, {8.0, 8.0, 0.02, 0.4, 0.9});
+    {
+        // The planar flexible body's other integrator at a fine step: on this record the peaks
+        // of both engines move by several percent as the step refines (docs/methods.md s.11).
+        dynamics::Options o;
+        o.record_series = false;
+        o.integrator = dynamics::Integrator::central_difference;
+        o.cd_dt_s = 2.5e-6;
+        const auto c = dynamics::simulate_flexible(flex_planar, x, o).summary;
+        std::printf("%-22s %12s %12.3e %12.3e %10s\n", "planar flexible cd 2.5e-6", "-",
+                    std::abs(c.base.rock_max_rad - flex_ref.base.rock_max_rad) /
+                        flex_ref.base.rock_max_rad,
+                    std::abs(c.modal_max_m - flex_ref.modal_max_m) / flex_ref.modal_max_m, "-");
+    }
+    for (double dt : {1e-3, 2.5e-4, 1e-4, 2.5e-5, 1e-5}) {
+        double t = 1e9;
+        const auto s = run_3d(body_mode, ex, dt, t, dt < 1e-4 ? 1 : 3);
+        std::printf("3D dt=%-16.3g %12.3e %12.3e %12.3e %9.0fx\n", dt, t,
+                    std::abs(s.tilt_max_rad - flex_ref.base.rock_max_rad) / flex_ref.base.rock_max_rad,
+                    std::abs(s.modal_max_m - flex_ref.modal_max_m) / flex_ref.modal_max_m,
+                    t / t_flex);
+    }
 }
 
 }  // namespace freestand::bench

@@ -51,6 +51,22 @@ struct Body3d {
 Body3d box_body(double half_x_m, double half_y_m, double cg_height_m, double mass_kg = 1.0,
                 std::optional<double> total_height_m = std::nullopt);
 
+/// One elastic mode per horizontal body axis, carried by the 3D body (docs/methods.md s.11,
+/// the planar flexible body of s.10 in three dimensions): a modal mass m_s at height h_s above
+/// the footprint's plane, on the body's vertical through the CG, that moves relative to the
+/// body along its own x and y (modal coordinates q_x, q_y) with the fixed-base frequencies f_x,
+/// f_y and the damping zeta. The rest of the body (mass M - m_s, with the first and second
+/// moments that keep the whole body's CG and inertia at q = 0) is rigid and carries the
+/// contacts. With the base held, q_x'' + 2 zeta omega_x q_x' + omega_x^2 q_x = -a_x (body
+/// axes), and so for y.
+struct Body3dMode {
+    double frequency_x_hz = 0.0;
+    double frequency_y_hz = 0.0;
+    double damping = 0.02;        ///< zeta, [0, 1)
+    double mass_fraction = 0.0;   ///< m_s / M, (0, 1)
+    double height_m = 0.0;        ///< h_s above the footprint's plane, m
+};
+
 /// The body and its contact with the base.
 struct Body3dModel {
     Body3d body;
@@ -70,6 +86,8 @@ struct Body3dModel {
     /// many landings the step resolves as impacts. Absent: the plastic impact's own. r = 1
     /// conserves the energy of free rocking; needs normal_restitution 0.
     std::optional<double> angular_restitution;
+    /// The elastic modes (with_mode); absent: the rigid body.
+    std::optional<Body3dMode> mode;
 };
 /// Housner's restitution for planar rocking about the footprint edge nearest the CG in plan
 /// (the critical edge, the smallest critical tilt): 1 - 2 M d^2 / I_e, with d the CG's plan
@@ -83,6 +101,20 @@ Body3dModel make_body3d_model(const Body3d& body, double mu_s,
                               std::optional<double> mu_k = std::nullopt,
                               double normal_restitution = 0.0,
                               std::optional<double> angular_restitution = std::nullopt);
+
+/// The model carrying the mode. Throws InputError naming flexible.f_x, flexible.f_y,
+/// flexible.zeta, flexible.mass or flexible.height when a frequency is not finite and > 0, zeta
+/// is outside [0, 1), the fraction outside (0, 1), the height not > 0, or the modal mass takes
+/// more of the body's second moment than it has (the rigid rest's inertia about its own CG
+/// would not be positive definite).
+Body3dModel with_mode(Body3dModel model, const Body3dMode& mode);
+
+/// Longest step, s, with which simulate_body3d integrates the model's modes stably:
+/// 2 (sqrt(1 + zeta_e^2) - zeta_e) / omega_e, the limit of its midpoint scheme on a damped
+/// oscillator (docs/methods.md s.11), at the highest frequency omega_e of the modes against the
+/// free rigid rest (the body in flight: contacts only lower it) and its damping zeta_e. Infinite
+/// for the rigid body.
+double body3d_modal_stable_step_s(const Body3dModel& model);
 
 /// Contact state at a sample, by the vertices on the floor: rest and slide (three or more; slide
 /// when any of them moves), edge (two), vertex (one), flight (none).
@@ -124,6 +156,7 @@ struct Body3dSample {
     double tilt_rad = 0.0;   ///< angle between the body's vertical axis and the vertical
     double tilt_over_critical = 0.0;  ///< tilt / critical tilt in the direction it leans
     double twist_rad = 0.0;  ///< rotation about the vertical
+    double modal_x_m = 0.0, modal_y_m = 0.0;  ///< q_x, q_y of the mode (0 for the rigid body)
     ContactState state = ContactState::rest;
 };
 
@@ -134,6 +167,7 @@ struct Body3dSummary {
     std::optional<double> overturn_time_s;
     double slide_max_m = 0.0;   ///< peak |u| of the footprint centre
     double twist_max_rad = 0.0; ///< peak |twist|
+    double modal_max_m = 0.0;   ///< peak |q| of the mode, m (0 for the rigid body)
     std::array<double, contact_state_count> time_in_state_s{};
     std::size_t steps = 0;
     std::size_t unconverged_steps = 0;  ///< steps whose impulses reached max_sweeps
@@ -151,7 +185,8 @@ struct Body3dResult {
 /// tail_s, or until it overturns (the tilt reaches pi/2). Throws InputError naming the option or
 /// the excitation's field that is not valid, and when dt_s is past the step's accuracy limit:
 /// dt_s p > max_step_p, with p = sqrt(M g R / I_O) the fastest rocking frequency parameter of
-/// an edge or vertex (docs/methods.md s.1), as a step of that size misses the rocking motion.
+/// an edge or vertex (docs/methods.md s.1), as a step of that size misses the rocking motion,
+/// or, with a mode, past body3d_modal_stable_step_s, where the step would amplify it.
 Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& excitation,
                              const Body3dOptions& options = {});
 

@@ -13,12 +13,6 @@ namespace freestand::dynamics::detail {
 
 namespace {
 
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
-    Eigen::Matrix3d m;
-    m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-    return m;
-}
-
 /// One contact's Gauss-Seidel update given the body's current velocities: the new impulse.
 Eigen::Vector3d updated_impulse(const VertexContact& c, const Eigen::Matrix3d& W, double eps,
                                 const Eigen::Vector3d& u) {
@@ -168,6 +162,15 @@ bool solved_sticking(std::vector<VertexContact>& contacts, const MassMatrix& mas
 
 Eigen::Matrix3d MassMatrix::delassus(const Eigen::Vector3d& r_i_m,
                                      const Eigen::Vector3d& r_j_m) const {
+    if (inverse_generalized) {
+        // [1, -[r_i]x] B [1; [r_j]x], B the inverse's (v, w) block: the impulses' Jacobians
+        // have no q' column.
+        Eigen::Matrix<double, 3, 6> H_i;
+        H_i << Eigen::Matrix3d::Identity(), -cross_matrix(r_i_m);
+        Eigen::Matrix<double, 6, 3> H_j_T;
+        H_j_T << Eigen::Matrix3d::Identity(), cross_matrix(r_j_m);
+        return H_i * inverse_generalized->topRows<6>() * H_j_T;
+    }
     return Eigen::Matrix3d::Identity() / mass_kg -
            cross_matrix(r_i_m) * inverse_inertia * cross_matrix(r_j_m);
 }

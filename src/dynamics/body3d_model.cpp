@@ -101,7 +101,7 @@ Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<dou
     if (!body.inertia_cg_kgm2.isApprox(body.inertia_cg_kgm2.transpose()) ||
         eig.eigenvalues().minCoeff() <= 0.0)
         throw InputError({"", 0, "inertia_cg_kgm2"}, "must be symmetric and positive definite");
-    return {body, mu_s, k, normal_restitution, angular_restitution};
+    return {body, mu_s, k, normal_restitution, angular_restitution, std::nullopt};
 }
 
 const char* to_string(ContactState state) {

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
+#include <optional>
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
@@ -62,6 +64,13 @@ void require_options(const Body3dModel& m, const BiaxialExcitation& e, const Bod
                                      "p = {:.4g} rad/s, and a step must keep dt p <= {} "
                                      "(dt <= {:.3g} s)",
                                      o.dt_s, p, o.max_step_p, o.max_step_p / p));
+    const double modal_step_s = body3d_modal_stable_step_s(m);
+    if (o.dt_s >= modal_step_s)
+        throw InputError({"", 0, "dt_s"},
+                         fmt::format("{} s would amplify the body's elastic mode: the scheme is "
+                                     "stable below {:.4g} s for these modes against the free "
+                                     "body (docs/methods.md s.11)",
+                                     o.dt_s, modal_step_s));
     const double steps = (e.duration_s() + o.tail_s) / o.dt_s;
     core::limits::require_within(steps, core::limits::max_fixed_steps, {"", 0, "dt_s"},
                                  "3D steps (duration / dt)");
@@ -85,10 +94,23 @@ struct Fixed {
     /// With a restitution r: the part of a plastic impact's energy loss an impact keeps,
     /// (1 - r^2) / (1 - r_H^2) (Body3dModel::angular_restitution).
     double impact_loss_ratio = 1.0;
+    /// With a mode: its split, and the largest modal force amplitude, N, at which a body at
+    /// rest after the excitation stays so (half of what slides it or tips it about the nearest
+    /// edge, from the modal mass's height).
+    std::optional<detail::ModalSplit> split;
+    double quiet_modal_force_N = 0.0;
 };
 
 Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o) {
-    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o, 1.0};
+    Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o, 1.0,
+            std::nullopt, 0.0};
+    if (m.mode) {
+        f.split = detail::modal_split(m);
+        double reach_m = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < 8; ++k) reach_m = std::min(reach_m, m.body.reach_m(k * units::pi / 4.0));
+        f.quiet_modal_force_N = 0.5 * m.body.mass_kg * o.g_mps2 *
+                                std::min(m.mu_s, reach_m / m.mode->height_m);
+    }
     if (m.angular_restitution) {
         const double r = *m.angular_restitution;
         const double r_housner = housner_restitution(m.body);
@@ -120,6 +142,7 @@ public:
     /// One Moreau-Jean step of dt_s from the state, under the base's a (horizontal) and
     /// G = g + yg'' at the step's midpoint.
     StepOutcome step(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) {
+        if (f_.split) return step_modal(s, a_mps2, G_mps2, dt_s);
         if (stays_at_rest(s, a_mps2, G_mps2)) {
             held_ = true;
             return {ContactState::rest, true};
@@ -132,7 +155,7 @@ public:
         const Eigen::Quaterniond q_mid = detail::turned(s.q, s.twist.w_radps, 0.5 * h);
         const Eigen::Matrix3d R = q_mid.toRotationMatrix();
         detail::MassMatrix mass{f_.model.body.mass_kg,
-                                R * f_.inverse_inertia_body * R.transpose()};
+                                R * f_.inverse_inertia_body * R.transpose(), std::nullopt};
         const Eigen::Matrix3d I_world = R * f_.model.body.inertia_cg_kgm2 * R.transpose();
         fill_contacts(p_mid, R, s.twist);
         auto& contacts = contacts_;
@@ -161,6 +184,169 @@ public:
     }
 
 private:
+    /// The step of a body with a mode: the same scheme over (v, w, q'), the generalised mass
+    /// and forces at the midpoint (body3d_modal.cpp), the impulses acting on the rigid rest's
+    /// vertices. The modal mass keeps its velocity through an impact (a mode slow against the
+    /// contact pulse, as body3d_modal_stable_step_s bounds it), and the restitution's loss is
+    /// taken from the rest's velocities.
+    StepOutcome step_modal(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
+                           double dt_s) {
+        if (stays_held_modal(s, a_mps2, G_mps2, dt_s)) {
+            held_ = true;
+            return {ContactState::rest, true};
+        }
+        if (held_) {
+            hold_warm_start_modal(s, a_mps2, G_mps2, dt_s);
+            held_ = false;
+        }
+        const double h = dt_s;
+        const Eigen::Vector3d p_mid = s.p_m + 0.5 * h * s.twist.v_mps;
+        const Eigen::Quaterniond q_mid = detail::turned(s.q, s.twist.w_radps, 0.5 * h);
+        const Eigen::Vector2d modal_mid = s.modal_m + 0.5 * h * s.twist.q_mps;
+        const Eigen::Matrix3d R = q_mid.toRotationMatrix();
+        const detail::Matrix8d M = detail::generalized_mass(*f_.split, R, modal_mid);
+        const detail::Matrix8d M_inv = M.ldlt().solve(detail::Matrix8d::Identity());
+        detail::MassMatrix mass{f_.model.body.mass_kg, Eigen::Matrix3d::Identity(),
+                                M_inv.leftCols<6>()};
+        fill_contacts(p_mid, R, s.twist);
+        detail::Twist t = detail::unpack(
+            detail::pack(s.twist) +
+            h * M_inv * detail::generalized_force(*f_.split, R, modal_mid, s.twist, a_mps2, G_mps2));
+        const detail::Twist arriving = t;
+        const auto solve = detail::solve_impulses(
+            contacts_, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
+            f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
+        if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
+            leave_modal_at(f_.impact_loss_ratio, arriving, t, M);
+        remember(contacts_, t);
+        const ContactState state = state_of(contacts_, t);
+        if (solve.sticking && state == ContactState::rest) {
+            t.v_mps.setZero();
+            t.w_radps.setZero();
+        }
+        s.twist = t;
+        s.p_m = p_mid + 0.5 * h * t.v_mps;
+        s.q = detail::turned(q_mid, t.w_radps, 0.5 * h);
+        s.modal_m = modal_mid + 0.5 * h * t.q_mps;
+        return {state, solve.converged};
+    }
+
+    /// The held body's modal step: the fixed-base oscillators of each axis, as the full step
+    /// gives them when the impulses hold the rest still (its q' row then carries no impulse),
+    /// q'' = -a_body - 2 zeta omega q' - omega^2 q_mid. Returns q'' over the step.
+    Eigen::Vector2d held_modal_rates(const BodyState& s, const Eigen::Matrix3d& R,
+                                     const Eigen::Vector2d& a_mps2, double dt_s,
+                                     Eigen::Vector2d& q_m, Eigen::Vector2d& q_mps) const {
+        const Eigen::Array2d omega = f_.split->omega_radps.array();
+        const Eigen::Vector2d a_body =
+            (R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0)).head<2>();
+        const Eigen::Vector2d mid = s.modal_m + 0.5 * dt_s * s.twist.q_mps;
+        const Eigen::Vector2d accel =
+            -a_body -
+            (2.0 * f_.split->zeta * omega * s.twist.q_mps.array() + omega.square() * mid.array())
+                .matrix();
+        q_mps = s.twist.q_mps + dt_s * accel;
+        q_m = mid + 0.5 * dt_s * q_mps;
+        return accel;
+    }
+
+    /// The floor's force on a held body with a mode and its moment about the footprint's
+    /// plane below the body's reference point (x, y), N and N m: the weight and the base's
+    /// inertia force on both masses and the modal mass's acceleration q'' relative to the rest.
+    void held_load(const BodyState& s, const Eigen::Matrix3d& R, const Eigen::Vector2d& a_mps2,
+                   double G_mps2, const Eigen::Vector2d& q_m, const Eigen::Vector2d& q_acc,
+                   Eigen::Vector3d& force_N, Eigen::Vector2d& moment_Nm) const {
+        const detail::ModalSplit& m = *f_.split;
+        const Eigen::Vector3d base(a_mps2.x(), a_mps2.y(), G_mps2);
+        const Eigen::Vector3d up(0.0, 0.0, s.p_m.z());
+        const Eigen::Vector3d rest_force = m.rest_kg * base;
+        const Eigen::Vector3d modal_force =
+            m.modal_kg * (base + R.leftCols<2>() * q_acc);
+        const Eigen::Vector3d rho_r = up + R * m.rest_cg_m;
+        const Eigen::Vector3d rho_s = up + R * (m.modal_rest_m + Eigen::Vector3d(q_m.x(), q_m.y(), 0.0));
+        force_N = rest_force + modal_force;
+        moment_Nm = (rho_r.cross(rest_force) + rho_s.cross(modal_force)).head<2>();
+    }
+
+    /// stays_at_rest for a body with a mode: held flat on its whole footprint, it stays so
+    /// through the step when the floor's force the step needs (held_load) lies within mu_s
+    /// and its centre of pressure inside the footprint; the step then moves only the modes.
+    bool stays_held_modal(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
+                          double dt_s) const {
+        if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0) || !(G_mps2 > 0.0))
+            return false;
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        for (const Eigen::Vector3d& v : f_.vertices_body)
+            if (s.p_m.z() + R.row(2).dot(v) > 0.0) return false;
+        Eigen::Vector2d q_m, q_mps;
+        const Eigen::Vector2d q_acc = held_modal_rates(s, R, a_mps2, dt_s, q_m, q_mps);
+        Eigen::Vector3d F;
+        Eigen::Vector2d tau;
+        held_load(s, R, a_mps2, G_mps2, 0.5 * (s.modal_m + q_m), q_acc, F, tau);
+        if (!(F.z() > 0.0) || F.head<2>().norm() > f_.model.mu_s * F.z()) return false;
+        const Eigen::Vector2d pressure(-tau.y() / F.z(), tau.x() / F.z());
+        const Eigen::Vector2d pressure_body =
+            (R.transpose() * Eigen::Vector3d(pressure.x(), pressure.y(), 0.0)).head<2>();
+        for (const Edge& e : f_.edges)
+            if (e.normal.dot(pressure_body) > e.distance_m) return false;
+        s.modal_m = q_m;
+        s.twist.q_mps = q_mps;
+        return true;
+    }
+
+    /// hold_warm_start for a body with a mode, from held_load.
+    void hold_warm_start_modal(const BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
+                               double dt_s) {
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        Eigen::Vector2d q_m, q_mps;
+        const Eigen::Vector2d q_acc = held_modal_rates(s, R, a_mps2, dt_s, q_m, q_mps);
+        Eigen::Vector3d F;
+        Eigen::Vector2d tau;
+        held_load(s, R, a_mps2, G_mps2, s.modal_m, q_acc, F, tau);
+        if (!(F.z() > 0.0)) return;
+        const auto n = static_cast<Eigen::Index>(f_.vertices_body.size());
+        Eigen::Matrix<double, 3, Eigen::Dynamic> A(3, n);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const Eigen::Vector3d r = R * f_.vertices_body[static_cast<std::size_t>(i)];
+            A.col(i) << 1.0, r.x(), r.y();
+        }
+        // Sum N_i = F_z, sum N_i x_i = -tau_y, sum N_i y_i = tau_x (the centre of pressure).
+        const Eigen::Vector3d load = dt_s * Eigen::Vector3d(F.z(), -tau.y(), tau.x());
+        const Eigen::VectorXd normal = A.transpose() * (A * A.transpose()).ldlt().solve(load);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const double share = normal(i) / load.x();
+            impulses_[static_cast<std::size_t>(i)] = Eigen::Vector3d(
+                F.x() * dt_s * share, F.y() * dt_s * share, normal(i));
+        }
+        std::fill(slipping_.begin(), slipping_.end(), false);
+    }
+
+    /// leave_at for a body with a mode: the rest's velocities (v, w) scale by the factor that
+    /// makes the impact lose loss_ratio times the plastic impact's loss of the whole kinetic
+    /// energy 1/2 u^T M u, the modal rates kept.
+    static void leave_modal_at(double loss_ratio, const detail::Twist& arriving, detail::Twist& t,
+                               const detail::Matrix8d& M) {
+        const auto energy = [&](const detail::Twist& x) {
+            const detail::Vector8d u = detail::pack(x);
+            return 0.5 * u.dot(M * u);
+        };
+        const double leaving_J = energy(t);
+        const double plastic_loss_J = energy(arriving) - leaving_J;
+        if (plastic_loss_J <= 0.0) return;
+        const double target_J = std::max(0.0, leaving_J + (1.0 - loss_ratio) * plastic_loss_J);
+        // E(k) = a k^2 + b k + c over the scale k of (v, w).
+        detail::Vector8d rigid = detail::pack(t), modal = rigid;
+        rigid.tail<2>().setZero();
+        modal.head<6>().setZero();
+        const double a = 0.5 * rigid.dot(M * rigid), b = rigid.dot(M * modal),
+                     c = 0.5 * modal.dot(M * modal);
+        if (a <= 0.0) return;
+        const double disc = b * b - 4.0 * a * (c - target_J);
+        const double k = std::max(0.0, (-b + std::sqrt(std::max(disc, 0.0))) / (2.0 * a));
+        t.v_mps *= k;
+        t.w_radps *= k;
+    }
+
     /// Whether a body at rest on its whole footprint stays so through the step, which then
     /// changes nothing: the base's force needs at most mu_s of the weight, and the line of the
     /// weight and the inertia force, from the CG, meets the floor inside the footprint (every
@@ -295,7 +481,21 @@ Body3dSample sample_of(const BodyState& s, const Fixed& f, double t_s, ContactSt
     const Eigen::Vector3d centre = s.p_m + R * f.footprint_centre_body;
     out.slide_x_m = centre.x() - f.footprint_centre_body.x();
     out.slide_y_m = centre.y() - f.footprint_centre_body.y();
+    out.modal_x_m = s.modal_m.x();
+    out.modal_y_m = s.modal_m.y();
     return out;
+}
+
+/// A body with a mode is quiet when the mode's force amplitude, m_s omega^2 sqrt(q^2 +
+/// (q' / omega)^2) per axis, is below Fixed::quiet_modal_force_N; a rigid body always is.
+bool mode_quiet(const BodyState& s, const Fixed& f) {
+    if (!f.split) return true;
+    for (int i = 0; i < 2; ++i) {
+        const double omega = f.split->omega_radps(i);
+        const double amplitude_m = std::hypot(s.modal_m(i), s.twist.q_mps(i) / omega);
+        if (f.split->modal_kg * omega * omega * amplitude_m > f.quiet_modal_force_N) return false;
+    }
+    return true;
 }
 
 /// Whether a body at rest, flat on its footprint, stays at rest under the base's a and
@@ -320,6 +520,7 @@ void take_peaks(Body3dSummary& sum, const Body3dSample& x) {
     sum.tilt_max_over_critical = std::max(sum.tilt_max_over_critical, x.tilt_over_critical);
     sum.twist_max_rad = std::max(sum.twist_max_rad, std::abs(x.twist_rad));
     sum.slide_max_m = std::max(sum.slide_max_m, std::hypot(x.slide_x_m, x.slide_y_m));
+    sum.modal_max_m = std::max(sum.modal_max_m, std::hypot(x.modal_x_m, x.modal_y_m));
 }
 
 // At rest, flat, or leaning by the initial tilt about the support line in the lean's direction:
@@ -366,7 +567,7 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
         const double t_end = seg.tk + excitation.dt_s;
         const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end);
-        const bool skip = state == ContactState::rest &&
+        const bool skip = state == ContactState::rest && !fixed.split &&
                           holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
                           holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end));
         if (skip) sum.time_in_state_s[0] += excitation.dt_s;
@@ -381,7 +582,10 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
         }
         // At rest (three or more contacts, every contact point still to stick_speed_mps): the
         // velocities are set to 0 so that the next segment may skip.
-        if (state == ContactState::rest) s.twist = {};
+        if (state == ContactState::rest) {
+            s.twist.v_mps.setZero();
+            s.twist.w_radps.setZero();
+        }
         const auto x = sample_of(s, fixed, t_end, state);
         take_peaks(sum, x);
         if (options.record_series) out.series.push_back(x);
@@ -391,7 +595,8 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
             sum.overturn_time_s = t_end;
         }
         // Once the base is quiet, a body at rest stays there.
-        if (t_end >= base.quiet_from_s() && state == ContactState::rest) break;
+        if (t_end >= base.quiet_from_s() && state == ContactState::rest && mode_quiet(s, fixed))
+            break;
     }
     sum.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     return out;

@@ -233,6 +233,7 @@ allowable_slide_m = 0.05
 pga_g = [0.3]
 [options]
 histories_per_level = 1
+max_histories_per_level = 1
 )",
                               (fs::path(freestand::test::source_dir()) / "cases" / "needle.toml").string());
     const AssessmentResult r = assess::assess(c);
