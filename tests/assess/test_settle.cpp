@@ -274,13 +274,16 @@ TEST_CASE("the cabinet on steel fails at 0.3 g under a seed whose first 30 sets 
                        "cabinet-user-target.toml");
     c = with_pga_levels(c, {0.3});
     c.options.search_materials = false;
+    // At 60 sets the level fails either way: an overturn shows, or 0 of 60 bounds the rate only
+    // below 6.0%.
+    c.options.max_histories_per_level = 60;
     c.options.seed = 12;
     {
         const AssessmentResult r = assess(c);
         const LevelResult& x = r.levels.at(0);
         REQUIRE(x.body3d.has_value());
         CHECK(x.body3d->ran);
-        CHECK(x.body3d->sim.overturned > 0);
+        CHECK(x.settling->n_sets > 30);
         CHECK_FALSE(passes(r.overall.verdict));
     }
 }
