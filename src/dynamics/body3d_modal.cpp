@@ -11,6 +11,7 @@
 #include "core/units.hpp"
 #include "dynamics/body3d.hpp"
 #include "dynamics/body3d_detail.hpp"
+#include "dynamics/modal_checks.hpp"
 
 namespace freestand::dynamics {
 
@@ -101,21 +102,11 @@ Twist unpack(const Vector8d& u) {
 }  // namespace detail
 
 Body3dModel with_mode(Body3dModel model, const Body3dMode& mode) {
-    const auto positive = [](double v, const char* field) {
-        if (!std::isfinite(v) || v <= 0.0)
-            throw InputError({"", 0, field}, fmt::format("must be finite and > 0; got {}", v));
-    };
-    positive(mode.frequency_x_hz, "flexible.f_x");
-    positive(mode.frequency_y_hz, "flexible.f_y");
-    if (!std::isfinite(mode.damping) || mode.damping < 0.0 || mode.damping >= 1.0)
-        throw InputError({"", 0, "flexible.zeta"},
-                         fmt::format("must be in [0, 1); got {}", mode.damping));
-    if (!std::isfinite(mode.mass_fraction) || mode.mass_fraction <= 0.0 ||
-        mode.mass_fraction >= 1.0)
-        throw InputError({"", 0, "flexible.mass"},
-                         fmt::format("the modal mass fraction must be in (0, 1); got {}",
-                                     mode.mass_fraction));
-    positive(mode.height_m, "flexible.height");
+    detail::require_modal_frequency(mode.frequency_x_hz, "flexible.f_x");
+    detail::require_modal_frequency(mode.frequency_y_hz, "flexible.f_y");
+    detail::require_modal_damping(mode.damping);
+    detail::require_modal_mass_fraction(mode.mass_fraction);
+    detail::require_modal_height(mode.height_m);
     model.mode = mode;
     const detail::ModalSplit split = detail::modal_split(model);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(split.rest_inertia_kgm2);

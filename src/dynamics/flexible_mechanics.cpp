@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/units.hpp"
 #include "dynamics/flexible_detail.hpp"
+#include "dynamics/modal_checks.hpp"
 #include "dynamics/vec2.hpp"
 
 namespace freestand::dynamics {
@@ -16,12 +17,8 @@ FlexibleModel make_flexible_model(const BlockModel& rigid, const FlexibleMode& m
     const auto bad = [](const char* field, const std::string& what) {
         return InputError({"", 0, field}, what);
     };
-    if (!std::isfinite(mode.frequency_hz) || mode.frequency_hz <= 0.0)
-        throw bad("flexible.f", fmt::format("fixed-base frequency must be > 0 Hz; got {}",
-                                            mode.frequency_hz));
-    if (!std::isfinite(mode.damping) || mode.damping < 0.0 || mode.damping >= 1.0)
-        throw bad("flexible.zeta",
-                  fmt::format("modal damping ratio must be in [0, 1); got {}", mode.damping));
+    detail::require_modal_frequency(mode.frequency_hz, "flexible.f");
+    detail::require_modal_damping(mode.damping);
     const block::Block& blk = rigid.block;
     FlexibleModel m;
     m.rigid = rigid;
@@ -32,12 +29,8 @@ FlexibleModel make_flexible_model(const BlockModel& rigid, const FlexibleMode& m
     m.mass_fraction = mode.mass_fraction.value_or(cantilever_modal_mass_fraction);
     // The body's height is the rigid model's top (2 h unless given).
     m.height_m = mode.height_m.value_or(cantilever_modal_height_ratio * rigid.top_height_m);
-    if (!std::isfinite(m.mass_fraction) || m.mass_fraction <= 0.0 || m.mass_fraction >= 1.0)
-        throw bad("flexible.mass", fmt::format("modal mass fraction must be in (0, 1); got {}",
-                                               m.mass_fraction));
-    if (!std::isfinite(m.height_m) || m.height_m <= 0.0)
-        throw bad("flexible.height",
-                  fmt::format("modal height must be > 0 m; got {}", m.height_m));
+    detail::require_modal_mass_fraction(m.mass_fraction);
+    detail::require_modal_height(m.height_m);
     // Second moment of the rigid remainder about its own CG (flexible.hpp): must not be < 0.
     const double M = blk.mass_kg, ms = m.mass_fraction * M, Mr = M - ms;
     const double first = M * blk.h_m - ms * m.height_m;
