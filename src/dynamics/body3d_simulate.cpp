@@ -151,14 +151,12 @@ public:
         if (held_) hold_warm_start(s, a_mps2, G_mps2, dt_s);
         held_ = false;
         const double h = dt_s;
-        const Eigen::Vector3d p_mid = s.p_m + 0.5 * h * s.twist.v_mps;
-        const Eigen::Quaterniond q_mid = detail::turned(s.q, s.twist.w_radps, 0.5 * h);
-        const Eigen::Matrix3d R = q_mid.toRotationMatrix();
+        const Midpoint mid = midpoint_of(s, h);
+        const Eigen::Matrix3d& R = mid.R;
         detail::MassMatrix mass{f_.model.body.mass_kg,
                                 R * f_.inverse_inertia_body * R.transpose(), std::nullopt};
         const Eigen::Matrix3d I_world = R * f_.model.body.inertia_cg_kgm2 * R.transpose();
-        fill_contacts(p_mid, R, s.twist);
-        auto& contacts = contacts_;
+        fill_contacts(mid.p_m, R, s.twist);
         // The free motion: gravity and the base's inertia force (the body's frame moves with the
         // base), and the gyroscopic moment.
         detail::Twist t = s.twist;
@@ -166,21 +164,10 @@ public:
         const Eigen::Vector3d& w = s.twist.w_radps;
         t.w_radps += h * (mass.inverse_inertia * (-w.cross(I_world * w)));
         const detail::Twist arriving = t;
-        const auto solve = detail::solve_impulses(
-            contacts, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
-            f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
-        if (f_.model.angular_restitution && detail::has_impact(contacts, f_.options.g_mps2 * h))
+        const auto solve = solve_contacts(mass, t, h);
+        if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
             leave_at(f_.impact_loss_ratio, arriving, t, mass.mass_kg, I_world);
-        remember(contacts, t);
-        const ContactState state = state_of(contacts, t);
-        // Three or more carrying contacts solved as sticking fix all six velocities at zero:
-        // what is left is the regularisation's creep, and exact zeros let the next steps take
-        // stays_at_rest.
-        if (solve.sticking && state == ContactState::rest) t = detail::Twist{};
-        s.twist = t;
-        s.p_m = p_mid + 0.5 * h * t.v_mps;
-        s.q = detail::turned(q_mid, t.w_radps, 0.5 * h);
-        return {state, solve.converged};
+        return close_step(s, t, mid, solve, h);
     }
 
 private:
@@ -196,80 +183,114 @@ private:
             return {ContactState::rest, true};
         }
         if (held_) {
-            hold_warm_start_modal(s, a_mps2, G_mps2, dt_s);
+            const HeldModal held = held_modal(s, s.q.toRotationMatrix(), a_mps2, G_mps2, dt_s);
+            if (held.force_N.z() > 0.0)
+                warm_start_from(s.q.toRotationMatrix(),
+                                dt_s * Eigen::Vector3d(held.force_N.z(), -held.moment_Nm.y(),
+                                                       held.moment_Nm.x()),
+                                dt_s * held.force_N.head<2>());
             held_ = false;
         }
         const double h = dt_s;
-        const Eigen::Vector3d p_mid = s.p_m + 0.5 * h * s.twist.v_mps;
-        const Eigen::Quaterniond q_mid = detail::turned(s.q, s.twist.w_radps, 0.5 * h);
-        const Eigen::Vector2d modal_mid = s.modal_m + 0.5 * h * s.twist.q_mps;
-        const Eigen::Matrix3d R = q_mid.toRotationMatrix();
-        const detail::Matrix8d M = detail::generalized_mass(*f_.split, R, modal_mid);
+        const Midpoint mid = midpoint_of(s, h);
+        const detail::Matrix8d M = detail::generalized_mass(*f_.split, mid.R, mid.modal_m);
         const detail::Matrix8d M_inv = M.ldlt().solve(detail::Matrix8d::Identity());
         detail::MassMatrix mass{f_.model.body.mass_kg, Eigen::Matrix3d::Identity(),
                                 M_inv.leftCols<6>()};
-        fill_contacts(p_mid, R, s.twist);
+        fill_contacts(mid.p_m, mid.R, s.twist);
         detail::Twist t = detail::unpack(
-            detail::pack(s.twist) +
-            h * M_inv * detail::generalized_force(*f_.split, R, modal_mid, s.twist, a_mps2, G_mps2));
+            detail::pack(s.twist) + h * M_inv * detail::generalized_force(*f_.split, mid.R,
+                                                                           mid.modal_m, s.twist,
+                                                                           a_mps2, G_mps2));
         const detail::Twist arriving = t;
-        const auto solve = detail::solve_impulses(
-            contacts_, mass, t, f_.options.solver_tol * f_.options.g_mps2 * h,
-            f_.options.g_mps2 * h, f_.options.max_sweeps, f_.options.regularization);
+        const auto solve = solve_contacts(mass, t, h);
         if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
             leave_modal_at(f_.impact_loss_ratio, arriving, t, M);
+        return close_step(s, t, mid, solve, h);
+    }
+
+    /// The positions at a step's midpoint, from the step's starting velocities.
+    struct Midpoint {
+        Eigen::Vector3d p_m;
+        Eigen::Quaterniond q;
+        Eigen::Vector2d modal_m;
+        Eigen::Matrix3d R;  ///< q's rotation
+    };
+    static Midpoint midpoint_of(const BodyState& s, double h) {
+        Midpoint m{s.p_m + 0.5 * h * s.twist.v_mps, detail::turned(s.q, s.twist.w_radps, 0.5 * h),
+                   s.modal_m + 0.5 * h * s.twist.q_mps, Eigen::Matrix3d::Identity()};
+        m.R = m.q.toRotationMatrix();
+        return m;
+    }
+
+    /// The step's impulse problem over contacts_, from the free velocities t to the final ones.
+    detail::ImpulseSolve solve_contacts(const detail::MassMatrix& mass, detail::Twist& t,
+                                        double h) {
+        return detail::solve_impulses(contacts_, mass, t,
+                                      f_.options.solver_tol * f_.options.g_mps2 * h,
+                                      f_.options.g_mps2 * h, f_.options.max_sweeps,
+                                      f_.options.regularization);
+    }
+
+    /// The end of a step: the contacts remembered for the next, the state, and the positions
+    /// advanced from the midpoint with the final velocities t.
+    StepOutcome close_step(BodyState& s, detail::Twist t, const Midpoint& mid,
+                           const detail::ImpulseSolve& solve, double h) {
         remember(contacts_, t);
         const ContactState state = state_of(contacts_, t);
+        // Three or more carrying contacts solved as sticking fix the rest's six velocities at
+        // zero: what is left is the regularisation's creep, and exact zeros let the next steps
+        // take stays_at_rest (the modal rates move on).
         if (solve.sticking && state == ContactState::rest) {
             t.v_mps.setZero();
             t.w_radps.setZero();
         }
         s.twist = t;
-        s.p_m = p_mid + 0.5 * h * t.v_mps;
-        s.q = detail::turned(q_mid, t.w_radps, 0.5 * h);
-        s.modal_m = modal_mid + 0.5 * h * t.q_mps;
+        s.p_m = mid.p_m + 0.5 * h * t.v_mps;
+        s.q = detail::turned(mid.q, t.w_radps, 0.5 * h);
+        s.modal_m = mid.modal_m + 0.5 * h * t.q_mps;
         return {state, solve.converged};
     }
 
-    /// The held body's modal step: the fixed-base oscillators of each axis, as the full step
-    /// gives them when the impulses hold the rest still (its q' row then carries no impulse),
-    /// q'' = -a_body - 2 zeta omega q' - omega^2 q_mid. Returns q'' over the step.
-    Eigen::Vector2d held_modal_rates(const BodyState& s, const Eigen::Matrix3d& R,
-                                     const Eigen::Vector2d& a_mps2, double dt_s,
-                                     Eigen::Vector2d& q_m, Eigen::Vector2d& q_mps) const {
-        const Eigen::Array2d omega = f_.split->omega_radps.array();
+    /// A held body with a mode through one step: its modal state at the step's end (the
+    /// fixed-base oscillators of each axis, as the full step gives them when the impulses hold
+    /// the rest still: its q' row then carries no impulse, q'' = -a_body - 2 zeta omega q' -
+    /// omega^2 q_mid), and the floor's force and its moment about the footprint's plane below
+    /// the body's reference point (x, y), N and N m, that hold it: the weight and the base's
+    /// inertia force on both masses and the modal mass's q'', at the step's mid modal position.
+    struct HeldModal {
+        Eigen::Vector2d q_m, q_mps;
+        Eigen::Vector3d force_N;
+        Eigen::Vector2d moment_Nm;
+    };
+    HeldModal held_modal(const BodyState& s, const Eigen::Matrix3d& R,
+                         const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) const {
+        const detail::ModalSplit& m = *f_.split;
+        const Eigen::Array2d omega = m.omega_radps.array();
         const Eigen::Vector2d a_body =
             (R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0)).head<2>();
         const Eigen::Vector2d mid = s.modal_m + 0.5 * dt_s * s.twist.q_mps;
-        const Eigen::Vector2d accel =
+        const Eigen::Vector2d q_acc =
             -a_body -
-            (2.0 * f_.split->zeta * omega * s.twist.q_mps.array() + omega.square() * mid.array())
-                .matrix();
-        q_mps = s.twist.q_mps + dt_s * accel;
-        q_m = mid + 0.5 * dt_s * q_mps;
-        return accel;
-    }
-
-    /// The floor's force on a held body with a mode and its moment about the footprint's
-    /// plane below the body's reference point (x, y), N and N m: the weight and the base's
-    /// inertia force on both masses and the modal mass's acceleration q'' relative to the rest.
-    void held_load(const BodyState& s, const Eigen::Matrix3d& R, const Eigen::Vector2d& a_mps2,
-                   double G_mps2, const Eigen::Vector2d& q_m, const Eigen::Vector2d& q_acc,
-                   Eigen::Vector3d& force_N, Eigen::Vector2d& moment_Nm) const {
-        const detail::ModalSplit& m = *f_.split;
+            (2.0 * m.zeta * omega * s.twist.q_mps.array() + omega.square() * mid.array()).matrix();
+        HeldModal out;
+        out.q_mps = s.twist.q_mps + dt_s * q_acc;
+        out.q_m = mid + 0.5 * dt_s * out.q_mps;
+        const Eigen::Vector2d q_load = 0.5 * (s.modal_m + out.q_m);
         const Eigen::Vector3d base(a_mps2.x(), a_mps2.y(), G_mps2);
         const Eigen::Vector3d up(0.0, 0.0, s.p_m.z());
         const Eigen::Vector3d rest_force = m.rest_kg * base;
-        const Eigen::Vector3d modal_force =
-            m.modal_kg * (base + R.leftCols<2>() * q_acc);
+        const Eigen::Vector3d modal_force = m.modal_kg * (base + R.leftCols<2>() * q_acc);
         const Eigen::Vector3d rho_r = up + R * m.rest_cg_m;
-        const Eigen::Vector3d rho_s = up + R * (m.modal_rest_m + Eigen::Vector3d(q_m.x(), q_m.y(), 0.0));
-        force_N = rest_force + modal_force;
-        moment_Nm = (rho_r.cross(rest_force) + rho_s.cross(modal_force)).head<2>();
+        const Eigen::Vector3d rho_s =
+            up + R * (m.modal_rest_m + Eigen::Vector3d(q_load.x(), q_load.y(), 0.0));
+        out.force_N = rest_force + modal_force;
+        out.moment_Nm = (rho_r.cross(rest_force) + rho_s.cross(modal_force)).head<2>();
+        return out;
     }
 
     /// stays_at_rest for a body with a mode: held flat on its whole footprint, it stays so
-    /// through the step when the floor's force the step needs (held_load) lies within mu_s
+    /// through the step when the floor's force the step needs (held_modal) lies within mu_s
     /// and its centre of pressure inside the footprint; the step then moves only the modes.
     bool stays_held_modal(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
                           double dt_s) const {
@@ -278,47 +299,17 @@ private:
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
         for (const Eigen::Vector3d& v : f_.vertices_body)
             if (s.p_m.z() + R.row(2).dot(v) > 0.0) return false;
-        Eigen::Vector2d q_m, q_mps;
-        const Eigen::Vector2d q_acc = held_modal_rates(s, R, a_mps2, dt_s, q_m, q_mps);
-        Eigen::Vector3d F;
-        Eigen::Vector2d tau;
-        held_load(s, R, a_mps2, G_mps2, 0.5 * (s.modal_m + q_m), q_acc, F, tau);
+        const HeldModal held = held_modal(s, R, a_mps2, G_mps2, dt_s);
+        const Eigen::Vector3d& F = held.force_N;
         if (!(F.z() > 0.0) || F.head<2>().norm() > f_.model.mu_s * F.z()) return false;
-        const Eigen::Vector2d pressure(-tau.y() / F.z(), tau.x() / F.z());
+        const Eigen::Vector2d pressure(-held.moment_Nm.y() / F.z(), held.moment_Nm.x() / F.z());
         const Eigen::Vector2d pressure_body =
             (R.transpose() * Eigen::Vector3d(pressure.x(), pressure.y(), 0.0)).head<2>();
         for (const Edge& e : f_.edges)
             if (e.normal.dot(pressure_body) > e.distance_m) return false;
-        s.modal_m = q_m;
-        s.twist.q_mps = q_mps;
+        s.modal_m = held.q_m;
+        s.twist.q_mps = held.q_mps;
         return true;
-    }
-
-    /// hold_warm_start for a body with a mode, from held_load.
-    void hold_warm_start_modal(const BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
-                               double dt_s) {
-        const Eigen::Matrix3d R = s.q.toRotationMatrix();
-        Eigen::Vector2d q_m, q_mps;
-        const Eigen::Vector2d q_acc = held_modal_rates(s, R, a_mps2, dt_s, q_m, q_mps);
-        Eigen::Vector3d F;
-        Eigen::Vector2d tau;
-        held_load(s, R, a_mps2, G_mps2, s.modal_m, q_acc, F, tau);
-        if (!(F.z() > 0.0)) return;
-        const auto n = static_cast<Eigen::Index>(f_.vertices_body.size());
-        Eigen::Matrix<double, 3, Eigen::Dynamic> A(3, n);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const Eigen::Vector3d r = R * f_.vertices_body[static_cast<std::size_t>(i)];
-            A.col(i) << 1.0, r.x(), r.y();
-        }
-        // Sum N_i = F_z, sum N_i x_i = -tau_y, sum N_i y_i = tau_x (the centre of pressure).
-        const Eigen::Vector3d load = dt_s * Eigen::Vector3d(F.z(), -tau.y(), tau.x());
-        const Eigen::VectorXd normal = A.transpose() * (A * A.transpose()).ldlt().solve(load);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const double share = normal(i) / load.x();
-            impulses_[static_cast<std::size_t>(i)] = Eigen::Vector3d(
-                F.x() * dt_s * share, F.y() * dt_s * share, normal(i));
-        }
-        std::fill(slipping_.begin(), slipping_.end(), false);
     }
 
     /// leave_at for a body with a mode: the rest's velocities (v, w) scale by the factor that
@@ -374,20 +365,30 @@ private:
     void hold_warm_start(const BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
                          double dt_s) {
         const double M_dt = f_.model.body.mass_kg * dt_s;
-        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        const double h_m = s.p_m.z();
+        warm_start_from(s.q.toRotationMatrix(),
+                        Eigen::Vector3d(G_mps2 * M_dt, -h_m * a_mps2.x() * M_dt,
+                                        -h_m * a_mps2.y() * M_dt),
+                        Eigen::Vector2d(a_mps2.x() * M_dt, a_mps2.y() * M_dt));
+    }
+
+    /// Impulses of a held body from the floor's load over the step: load = (sum N_i,
+    /// sum N_i x_i, sum N_i y_i) (the normal impulse and its centre of pressure, world plan
+    /// axes from the body's reference point), met by the least-norm normal impulses, and the
+    /// tangential impulse `friction` shared among the vertices as their normal ones.
+    void warm_start_from(const Eigen::Matrix3d& R, const Eigen::Vector3d& load,
+                         const Eigen::Vector2d& friction) {
         const auto n = static_cast<Eigen::Index>(f_.vertices_body.size());
         Eigen::Matrix<double, 3, Eigen::Dynamic> A(3, n);
         for (Eigen::Index i = 0; i < n; ++i) {
             const Eigen::Vector3d r = R * f_.vertices_body[static_cast<std::size_t>(i)];
             A.col(i) << 1.0, r.x(), r.y();
         }
-        const double h_m = s.p_m.z();
-        const Eigen::Vector3d load(G_mps2 * M_dt, -h_m * a_mps2.x() * M_dt, -h_m * a_mps2.y() * M_dt);
         const Eigen::VectorXd normal = A.transpose() * (A * A.transpose()).ldlt().solve(load);
         for (Eigen::Index i = 0; i < n; ++i) {
             const double share = normal(i) / load.x();
             impulses_[static_cast<std::size_t>(i)] =
-                Eigen::Vector3d(a_mps2.x() * M_dt * share, a_mps2.y() * M_dt * share, normal(i));
+                Eigen::Vector3d(friction.x() * share, friction.y() * share, normal(i));
         }
         std::fill(slipping_.begin(), slipping_.end(), false);
     }
