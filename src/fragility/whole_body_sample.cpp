@@ -10,11 +10,11 @@ std::optional<WholeBody> whole_body_sample(const assess::Case& c, const assess::
                                            double restitution, const Models& models) {
     const dynamics::BiaxialExcitation ex =
         dynamics::biaxial_excitation_from_records(set.h1, set.h2, pga_g, &set.v);
+    const dynamics::BiaxialModel sliding = dynamics::make_biaxial_model(mu_s, mu_k);
     bool rocks = false;
     for (const assess::Direction d : {assess::Direction::x, assess::Direction::y})
-        rocks = rocks || dynamics::biaxial_rocking_reason(
-                             c.component.block(d), dynamics::make_biaxial_model(mu_s, mu_k), ex,
-                             c.site.g_mps2)
+        rocks = rocks || dynamics::biaxial_rocking_reason(c.component.block(d), sliding, ex,
+                                                          c.site.g_mps2)
                              .has_value();
     WholeBody out;
     if (rocks) {
@@ -35,9 +35,7 @@ std::optional<WholeBody> whole_body_sample(const assess::Case& c, const assess::
     dynamics::Options opt = dynamics::biaxial_options();
     opt.record_series = false;
     opt.g_mps2 = c.site.g_mps2;
-    out.slide_max_m =
-        dynamics::simulate_biaxial(dynamics::make_biaxial_model(mu_s, mu_k), ex, opt)
-            .summary.slide_max_m;
+    out.slide_max_m = dynamics::simulate_biaxial(sliding, ex, opt).summary.slide_max_m;
     return out;
 }
 
