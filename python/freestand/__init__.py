@@ -101,6 +101,8 @@ _BOX_KEYS = {"b": "half_width_m", "h": "half_height_m", "m": "mass_kg"}
 _CG_KEYS = {"x": "cg_offset_m", "h": "cg_height_m"}
 #: simulate_3d's block keys, passed on under the same names.
 _BODY3D_KEYS = {key: key for key in ("b", "d", "h", "m", "height", "cgx", "cgy", "ixx", "iyy", "izz")}
+#: simulate_3d's flexible keys (`--flexible f=,zeta=,mass=,height=`).
+_MODE_KEYS = {key: key for key in ("f", "zeta", "mass", "height")}
 
 
 def _keyed_numbers(values: Mapping[str, Any], keys: Mapping[str, str], keyword: str) -> dict:
@@ -418,16 +420,20 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
                 dt_s: Optional[float] = None, *, mu: float, motion_y=None,
                 vertical_mps2: Optional[np.ndarray] = None, scale: float = 1.0,
                 series: bool = True, mu_k: Optional[float] = None,
-                restitution: Optional[float] = None, dt: float = 1e-4) -> dict:
+                restitution: Optional[float] = None, dt: float = 1e-4,
+                flexible: Optional[Mapping[str, float]] = None) -> dict:
     """Time history of the rigid body in three dimensions (`freestand simulate --model 3d
     --json`, docs/methods.md s.11) under x (a record, or an array of m/s^2 samples at dt_s),
     optionally y (motion_y, on the same samples) and the vertical, all times scale. block has
     b and d (half-widths along x and y, m), h (CG height, m), and optionally m (mass, kg),
     height (total height, m), cgx and cgy (the CG's offset from the footprint's centre, m) and
     ixx, iyy, izz (all three: the inertia about the CG, kg m^2); mu and mu_k the friction; restitution on angular velocity
-    (default: the plastic impact, Housner's rule generalised); dt the time step (s). Returns the
-    summary, and with series=True also "series": NumPy arrays time_s, slide_x_m, slide_y_m,
-    tilt_rad, tilt_over_critical, twist_rad, state (codes into state_names)."""
+    (default: the plastic impact, Housner's rule generalised); dt the time step (s); flexible
+    (`--flexible`) the elastic mode carried along x and y: f (Hz), and optionally zeta, mass (a
+    fraction of m) and height (m; defaults a uniform cantilever's 0.613 m at 0.726 of the
+    height). Returns the summary, and with series=True also "series": NumPy arrays time_s,
+    slide_x_m, slide_y_m, tilt_rad, tilt_over_critical, twist_rad, state (codes into
+    state_names), and with a mode modal_x_m and modal_y_m."""
     accel, dt_s, label = _motion(motion, dt_s, "simulate_3d")
     if isinstance(motion_y, Record):
         motion_y = motion_y.accel_mps2
@@ -435,7 +441,8 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     vertical = None if vertical_mps2 is None else _samples(vertical_mps2, "vertical_mps2")
     return _fs.simulate_3d(_keyed_numbers(block, _BODY3D_KEYS, "block"), _number(mu, "mu"), _optional_number(mu_k, "mu_k"),
                            _optional_number(restitution, "restitution"), _number(dt, "dt"), _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"),
-                           y, vertical, _number(scale, "scale"), label, bool(series))
+                           y, vertical, _number(scale, "scale"), label, bool(series),
+                           None if flexible is None else _keyed_numbers(flexible, _MODE_KEYS, "flexible"))
 
 
 def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:

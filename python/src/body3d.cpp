@@ -13,8 +13,9 @@ namespace freestand::python {
 
 namespace {
 
-/// One NumPy array per series column (dynamics::Body3dSample), the state as its code.
-py::dict body3d_series(const std::vector<dynamics::Body3dSample>& series) {
+/// One NumPy array per series column (dynamics::Body3dSample), the state as its code; the
+/// modal displacements with a mode.
+py::dict body3d_series(const std::vector<dynamics::Body3dSample>& series, bool with_mode) {
     const auto n = static_cast<py::ssize_t>(series.size());
     py::array_t<double> t(n), ux(n), uy(n), tilt(n), ratio(n), twist(n);
     py::array_t<std::int8_t> state(n);
@@ -36,6 +37,15 @@ py::dict body3d_series(const std::vector<dynamics::Body3dSample>& series) {
     d["tilt_over_critical"] = ratio;
     d["twist_rad"] = twist;
     d["state"] = state;
+    if (with_mode) {
+        py::array_t<double> qx(n), qy(n);
+        for (py::ssize_t i = 0; i < n; ++i) {
+            qx.mutable_data()[i] = series[static_cast<std::size_t>(i)].modal_x_m;
+            qy.mutable_data()[i] = series[static_cast<std::size_t>(i)].modal_y_m;
+        }
+        d["modal_x_m"] = qx;
+        d["modal_y_m"] = qy;
+    }
     return d;
 }
 
@@ -51,18 +61,30 @@ core::Record same_steps(const py::handle& samples, const core::Record& x, const 
     return r;
 }
 
-double number(const py::dict& d, const char* key) {
+double number(const py::dict& d, const char* key, const char* prefix = "block.") {
     if (!d.contains(key))
-        throw InputError(SourceLocation{"", 0, std::string("block.") + key}, "missing");
+        throw InputError(SourceLocation{"", 0, std::string(prefix) + key}, "missing");
     return d[key].cast<double>();
+}
+
+/// flexible = {f, zeta, mass, height} as the mode the 3D body carries (api::SimulateRequest).
+dynamics::FlexibleMode mode_of(const py::dict& flexible) {
+    dynamics::FlexibleMode mode;
+    mode.frequency_hz = number(flexible, "f", "flexible.");
+    mode.damping = optional_number(flexible, "zeta").value_or(mode.damping);
+    mode.mass_fraction = optional_number(flexible, "mass");
+    mode.height_m = optional_number(flexible, "height");
+    return mode;
 }
 
 api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::optional<double> mu_k,
                                     std::optional<double> restitution, double step_s,
                                     const py::handle& accel_x, double dt_s,
                                     const py::object& accel_y, const py::object& vertical,
-                                    double scale, const std::string& label, bool series) {
+                                    double scale, const std::string& label, bool series,
+                                    const py::object& flexible) {
     api::SimulateRequest r;
+    if (!flexible.is_none()) r.flexible = mode_of(flexible.cast<py::dict>());
     api::Body3dSpec spec;
     spec.half_x_m = number(block, "b");
     spec.half_y_m = number(block, "d");
@@ -109,10 +131,11 @@ void bind_body3d(py::module_& m) {
         [](const py::dict& block, double mu_s, std::optional<double> mu_k,
            std::optional<double> restitution, double step_s,
            const py::handle& accel_x, double dt_s, const py::object& accel_y,
-           const py::object& vertical, double scale, const std::string& label, bool series) {
+           const py::object& vertical, double scale, const std::string& label, bool series,
+           const py::object& flexible) {
             const api::SimulateRequest request = body3d_request(
                 block, mu_s, mu_k, restitution, step_s, accel_x, dt_s, accel_y, vertical, scale,
-                label, series);
+                label, series, flexible);
             api::SimulateResult result;
             {
                 py::gil_scoped_release unlocked;
@@ -120,13 +143,13 @@ void bind_body3d(py::module_& m) {
             }
             const auto& run = std::get<api::Body3dRun>(result.run);
             py::dict out(to_python(api::to_json(result), Arrays::lists));
-            if (series) out["series"] = body3d_series(run.result.series);
+            if (series) out["series"] = body3d_series(run.result.series, run.model.mode.has_value());
             return out;
         },
         py::arg("block"), py::arg("mu_s"), py::arg("mu_k"), py::arg("restitution"),
         py::arg("step_s"), py::arg("accel_x"),
         py::arg("dt_s"), py::arg("accel_y"), py::arg("vertical"), py::arg("scale"),
-        py::arg("label"), py::arg("series"));
+        py::arg("label"), py::arg("series"), py::arg("flexible"));
 }
 
 }  // namespace freestand::python

@@ -22,9 +22,10 @@ void require_consistent(const SimulateRequest& r) {
                          "expected exactly one of a horizontal record, sine and sine_y");
     if ((e.vertical || e.horizontal_y) && !e.horizontal)
         throw InputError(field("excitation"), "a vertical or y record needs the horizontal one");
-    if (r.flexible && (biaxial(e) || r.unit2))
+    if (r.flexible && ((biaxial(e) && !r.body3d) || r.unit2))
         throw InputError(field("flexible"),
-                         "the flexible body runs alone (no y component, no second unit)");
+                         "the planar flexible body runs alone (no y component, no second unit; "
+                         "the 3D body carries the mode under both)");
     if (r.unit2 && biaxial(e))
         throw InputError(field("unit2"), "the joined pair is planar (no y component)");
     if (r.unit2 && r.record_series)
@@ -155,8 +156,7 @@ void require_body3d_request(const SimulateRequest& r) {
     if (r.restitution)
         core::limits::require_in(*r.restitution, core::limits::restitution, field("restitution"));
     if (r.top_height_m) throw InputError(field("top_height_m"), "not used by the 3D body");
-    if (r.flexible || r.unit2)
-        throw InputError(field("body3d"), "the 3D body runs alone (no flexible mode, no second unit)");
+    if (r.unit2) throw InputError(field("body3d"), "the 3D body runs alone (no second unit)");
     if (r.integrator != dynamics::Integrator::event)
         throw InputError(field("integrator"), "the 3D body has one integrator (Moreau-Jean)");
 }
@@ -192,12 +192,31 @@ dynamics::Body3d body_of(const Body3dSpec& b) {
     return body;
 }
 
+// The flexible body's mode as the 3D body carries it (docs/methods.md s.11): the one fixed-base
+// frequency along x and y, and the planar model's defaults (the uniform cantilever's modal mass
+// 0.613 M at 0.726 of the body's height).
+dynamics::Body3dMode body3d_mode_of(const dynamics::FlexibleMode& f, const Body3dSpec& b) {
+    const double height_m = b.total_height_m.value_or(2.0 * b.cg_height_m);
+    return {f.frequency_hz, f.frequency_hz, f.damping,
+            f.mass_fraction.value_or(dynamics::cantilever_modal_mass_fraction),
+            f.height_m.value_or(dynamics::cantilever_modal_height_ratio * height_m)};
+}
+
 SimulateResult run_body3d(const SimulateRequest& r) {
     require_body3d_request(r);
     // Restitution on angular velocity, as the planar block takes it; absent: the plastic
     // impact (Housner's rule generalised, docs/methods.md s.11).
-    const dynamics::Body3dModel model =
+    dynamics::Body3dModel model =
         dynamics::make_body3d_model(body_of(*r.body3d), r.mu_s, r.mu_k, 0.0, r.restitution);
+    if (r.flexible) {
+        try {
+            model = dynamics::with_mode(model, body3d_mode_of(*r.flexible, *r.body3d));
+        } catch (const InputError& e) {
+            // The one frequency is the request's flexible.f, not a per-axis one.
+            if (e.where().field != "flexible.f_x") throw;
+            throw InputError(field("flexible.f"), e.message());
+        }
+    }
     dynamics::Body3dOptions options;
     options.dt_s = r.body3d->dt_s;
     options.record_series = r.record_series;

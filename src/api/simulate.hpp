@@ -69,10 +69,12 @@ struct SimulateRequest {
     dynamics::Integrator integrator = dynamics::Integrator::event;
     double cd_dt_s = 1e-4;                ///< central-difference step, s, > 0
     SimulateExcitation excitation;
-    std::optional<dynamics::FlexibleMode> flexible;  ///< the flexible body (planar, alone)
+    /// The flexible body (planar, alone), or with body3d the mode the 3D body carries along
+    /// x and y at the one frequency.
+    std::optional<dynamics::FlexibleMode> flexible;
     std::optional<JoinedUnit> unit2;                 ///< a second unit (planar, no series)
     /// The 3D body instead of `box`'s planar block: every component (x, y when given, vertical)
-    /// at once. Takes mu_s and mu_k; restitution, top_height_m, integrator, flexible and unit2
+    /// at once. Takes mu_s, mu_k, restitution and flexible; top_height_m, integrator and unit2
     /// do not apply to it.
     std::optional<Body3dSpec> body3d;
     bool record_series = false;                      ///< fill the run's series

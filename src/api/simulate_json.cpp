@@ -92,6 +92,17 @@ json body3d_json(const Body3dRun& run) {
     j["overturn_time_s"] = number_or_null(s.overturn_time_s);
     j["slide_max_m"] = s.slide_max_m;
     j["twist_max_rad"] = s.twist_max_rad;
+    if (const auto& mode = run.model.mode) {
+        j["mode"] = {{"frequency_x_hz", mode->frequency_x_hz},
+                     {"frequency_y_hz", mode->frequency_y_hz},
+                     {"damping", mode->damping},
+                     {"mass_fraction", mode->mass_fraction},
+                     {"height_m", mode->height_m}};
+        j["modal_max_m"] = s.modal_max_m;
+    } else {
+        j["mode"] = nullptr;
+        j["modal_max_m"] = nullptr;
+    }
     json t;
     for (std::size_t i = 0; i < dynamics::contact_state_count; ++i)
         t[dynamics::to_string(static_cast<dynamics::ContactState>(i))] = s.time_in_state_s[i];

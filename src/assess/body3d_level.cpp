@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "assess/flexible_level.hpp"
 #include "assess/level_runs.hpp"
 #include "assess/settle.hpp"
 #include "assess/verdict.hpp"
@@ -39,10 +40,13 @@ std::vector<dynamics::Body3dSummary> runs_at(const dynamics::Body3dModel& model,
 
 // The bound's friction and restitution: a measured r scales every impact's loss (Body3dModel::
 // angular_restitution); a bound at Housner's value is the plastic impact (his rule generalised).
-dynamics::Body3dModel model_at(const Component& c, const ContactBound& bound) {
+dynamics::Body3dModel model_at(const Component& c, const ContactBound& bound,
+                              const std::optional<dynamics::Body3dMode>& mode) {
     const std::optional<double> r =
         bound.housner ? std::nullopt : std::optional<double>(bound.restitution);
-    return dynamics::make_body3d_model(component_body3d(c), bound.mu_s, bound.mu_k, 0.0, r);
+    const auto rigid =
+        dynamics::make_body3d_model(component_body3d(c), bound.mu_s, bound.mu_k, 0.0, r);
+    return mode ? dynamics::with_mode(rigid, *mode) : rigid;
 }
 
 // One restitution bound's rocking, as the planar runs report it.
@@ -123,7 +127,8 @@ std::optional<double> ratio(double body3d, double planar) {
 
 // Every history with the 3D body at both bounds, with the planar governing demands beside.
 Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResult& x,
-                       const LevelResult& y, HistoryBank& bank) {
+                       const LevelResult& y, const std::optional<dynamics::Body3dMode>& mode,
+                       HistoryBank& bank) {
     std::vector<dynamics::BiaxialExcitation> ex;
     for (const HistorySet& set : bank.sets())
         ex.push_back(dynamics::biaxial_excitation_from_records(set.h1, set.h2, demand.pga_g,
@@ -133,8 +138,8 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     const bool differ = bounds.sliding.mu_s != bounds.rocking.mu_s ||
                         bounds.sliding.mu_k != bounds.rocking.mu_k;
     const std::array<dynamics::Body3dModel, 3> models{
-        model_at(c.component, bounds.sliding), model_at(c.component, bounds.rocking),
-        model_at(c.component, bounds.rocking_lower.value_or(bounds.rocking))};
+        model_at(c.component, bounds.sliding, mode), model_at(c.component, bounds.rocking, mode),
+        model_at(c.component, bounds.rocking_lower.value_or(bounds.rocking), mode)};
     SlotRuns runs;
     runs.slot[0] = runs_at(models[0], ex, options, 0, bank);
     if (differ) runs.slot[1] = runs_at(models[1], ex, options, 1, bank);
@@ -146,15 +151,24 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     b.sim = as_simulation(runs, bounds, differ, c.component, rock_slot);
     const auto& rock = runs.slot[rock_slot];
     const dynamics::Body3dModel& rocking_model = models[rock_slot];
-    std::vector<double> twist;
+    std::vector<double> twist, modal;
     for (const auto& s : rock) {
         twist.push_back(s.twist_max_rad);
+        modal.push_back(s.modal_max_m);
         for (std::size_t i = 0; i < b.time_in_state_s.size(); ++i)
             b.time_in_state_s[i] += s.time_in_state_s[i] / static_cast<double>(rock.size());
     }
     for (const auto& r : runs.slot)
         for (const auto& s : r) b.unconverged_steps += static_cast<int>(s.unconverged_steps);
     b.twist_rad = stats_of(twist);
+    if (mode) {
+        b.flexible = true;
+        b.modal_m = stats_of(modal);
+        b.mode_text = fmt::format("mode {:.3g} Hz along x and y, damping {:.3g}, modal mass "
+                                  "{:.3g} M at {:.3g} m",
+                                  mode->frequency_x_hz, mode->damping, mode->mass_fraction,
+                                  mode->height_m);
+    }
     // The step's error on the governing history: the same run at a sixteenth of the step, where
     // the overturn counts of docs/methods.md s.11's step study have converged.
     const auto k = static_cast<std::size_t>(b.sim.governing_history);
@@ -166,9 +180,14 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     b.check_overturned = check.overturned;
     b.run_tilt_over_critical = rock[k].tilt_max_over_critical;
     b.run_overturned = rock[k].overturned;
+    // The like-for-like planar model: the flexible body's runs where the 3D body carries the
+    // mode, else the rigid block's.
     for (const LevelResult* l : {&x, &y}) {
-        if (!l->simulation) continue;
-        const Simulation& p = *l->simulation;
+        const Simulation* planar = mode && l->flexible_simulation ? &l->flexible_simulation->sim
+                                   : l->simulation                 ? &*l->simulation
+                                                                   : nullptr;
+        if (!planar) continue;
+        const Simulation& p = *planar;
         b.planar_rock_over_alpha = std::max(b.planar_rock_over_alpha, p.governing(p.rock_over_alpha));
         b.planar_slide_m = std::max(b.planar_slide_m, p.governing(p.slide_m));
     }
@@ -219,10 +238,56 @@ std::optional<std::string> no_uplift_reason(const LevelResult& x, const LevelRes
                        to_string(x.initiation.mode), to_string(y.initiation.mode));
 }
 
+namespace {
+
+int flexible_uplifts(const LevelResult& l) {
+    return l.flexible_simulation ? l.flexible_simulation->uplifted : 0;
+}
+
+// Why the 3D body does not run at this PGA, or nullopt: the rigid body cannot uplift in any
+// direction. Where only the flexible body lifts its base, its planar runs decide: the 3D body
+// carrying the mode with the rigid classification at rest or sliding costs 10 to 20 times the
+// rigid 3D runs (every step solved; docs/methods.md s.11).
+std::optional<std::string> body3d_not_needed(const LevelResult& x, const LevelResult& y) {
+    auto why = no_uplift_reason(x, y);
+    if (why && (flexible_uplifts(x) > 0 || flexible_uplifts(y) > 0))
+        *why += fmt::format("; the flexible body lifted its base (x in {} sets, y in {}), and "
+                            "its planar runs decide",
+                            flexible_uplifts(x), flexible_uplifts(y));
+    return why;
+}
+
+std::string body3d_reason(const LevelResult& x, const LevelResult& y, const Body3dLevel& b) {
+    const std::string carrying =
+        b.flexible ? fmt::format(", carrying the flexible body's {}", b.mode_text) : "";
+    return fmt::format(
+        "the body can uplift at the upper bounds (x {}, y {}): rocking about edges and "
+        "corners, sliding and twisting at once, the 3D body decides (docs/methods.md "
+        "s.11), at the planar runs' friction and restitution bounds{}",
+        to_string(x.initiation.mode), to_string(y.initiation.mode), carrying);
+}
+
+}  // namespace
+
+dynamics::Body3dMode body3d_mode(const Component& c, const ContactBound& bound) {
+    // The planar flexible model resolves the modal mass and height (a uniform cantilever's
+    // when the case gives none); the one fixed-base frequency acts along both axes.
+    const dynamics::FlexibleModel planar = flexible_model(c, bound, Direction::x);
+    return dynamics::Body3dMode{planar.frequency_hz, planar.frequency_hz, planar.damping,
+                                planar.mass_fraction, planar.height_m};
+}
+
+std::optional<dynamics::Body3dMode> flexible_mode(const Case& c, const LevelResult& x,
+                                                  const LevelResult& y) {
+    if (!x.flexible_simulation && !y.flexible_simulation) return std::nullopt;
+    return body3d_mode(c.component, x.bounds.rocking);
+}
+
 void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelResult*> levels,
                   HistoryBank& bank) {
     if (levels.size() != 2 || (!levels[0]->simulation && !levels[1]->simulation)) return;
-    const auto why_not = no_uplift_reason(*levels[0], *levels[1]);
+    const std::optional<dynamics::Body3dMode> mode = flexible_mode(c, *levels[0], *levels[1]);
+    const auto why_not = body3d_not_needed(*levels[0], *levels[1]);
     std::optional<Body3dLevel> runs;
     for (LevelResult* l : levels) {
         if (!l->simulation) continue;
@@ -232,14 +297,14 @@ void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelRes
         } else if (!decided_by_sets(*l)) {
             b.reason = "the screen passed and decides this direction";
         } else {
-            if (!runs) runs = run_body3d(c, demand, *levels[0], *levels[1], bank);
+            if (!runs) runs = run_body3d(c, demand, *levels[0], *levels[1], mode, bank);
             b = *runs;
-            b.reason = fmt::format(
-                "the body can uplift at the upper bounds (x {}, y {}): rocking about edges and "
-                "corners, sliding and twisting at once, the 3D body decides (docs/methods.md "
-                "s.11), at the planar runs' friction and restitution bounds",
-                to_string(levels[0]->initiation.mode), to_string(levels[1]->initiation.mode));
-            if (l->flexible_simulation) {
+            b.reason = body3d_reason(*levels[0], *levels[1], b);
+            if (b.flexible) {
+                l->model = body3d_flexible_model_name;
+                l->model_reason = b.reason + "; the planar runs of each direction, the flexible "
+                                             "body's and the rigid block's, stay beside it";
+            } else if (l->flexible_simulation) {
                 l->model_reason += "; the 3D rigid body ran too (" + b.reason +
                                    "): the worse of the two verdicts governs";
             } else {

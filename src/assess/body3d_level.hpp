@@ -1,6 +1,8 @@
 #pragma once
 /// The rigid body in three dimensions at the simulated levels of one PGA (docs/methods.md s.11):
 /// where the body can uplift in some direction, every history's three components at once.
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "assess/case.hpp"
@@ -16,6 +18,11 @@ inline constexpr const char* body3d_model_name =
     "rigid body in three dimensions, every component at once: rocking about edges and corners, "
     "sliding and twisting (docs/methods.md s.11), beside the rigid planar block of each "
     "direction (docs/methods.md s.3)";
+/// The same for a flagged body, which the 3D body decides carrying the flexible body's mode.
+inline constexpr const char* body3d_flexible_model_name =
+    "body in three dimensions carrying the flexible body's mode along x and y, every component "
+    "at once (docs/methods.md s.11), beside the planar flexible body (docs/methods.md s.10) and "
+    "the rigid planar block (docs/methods.md s.3) of each direction";
 
 /// The 3D body of the component: the rectangle of its two planar geometries' edge distances
 /// around the CG, the CG height, the mass, and the inertia about the CG from the planar blocks
@@ -42,13 +49,24 @@ bool uplifts(Mode m);
 /// two directions' classifications settle every direction, the diagonal included.
 std::optional<std::string> no_uplift_reason(const LevelResult& x, const LevelResult& y);
 
+/// The case's mode as the 3D body carries it: the fixed-base frequency along both axes, the
+/// damping, modal mass and height as the planar flexible model resolves them.
+dynamics::Body3dMode body3d_mode(const Component& c, const ContactBound& bound);
+
+/// The flexible body's mode for the 3D body when a flexible-body flag is raised at this PGA
+/// (a flexible simulation ran in x or y): the case's fixed-base frequency along both axes, its
+/// damping, modal mass and height as the planar flexible model resolves them; else nullopt.
+std::optional<dynamics::Body3dMode> flexible_mode(const Case& c, const LevelResult& x,
+                                                  const LevelResult& y);
+
 /// For the levels of one PGA (directions x and y, as evaluate_level made them, biaxial applied):
 /// every simulated level gets LevelResult::body3d. Where the simulation decides the level (the
 /// screen failed, or the flexible body runs) and the body can uplift, every history runs with
 /// the 3D body at the sliding and the rocking bound (their friction and restitution; one run
 /// when they coincide) and at the lower restitution when it differs, as the planar runs, shared
 /// by both levels; their model, verdict and trail are then remade with the 3D body deciding.
-/// Elsewhere body3d says why not.
+/// With a raised flexible-body flag the 3D body carries the mode (flexible_mode). Elsewhere
+/// body3d says why not (where only the flexible body lifts its base, its planar runs decide).
 void apply_body3d(const Case& c, const LevelDemand& demand, std::vector<LevelResult*> levels,
                   HistoryBank& bank);
 

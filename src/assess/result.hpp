@@ -29,6 +29,7 @@ enum class Model {
     simulation_biaxial_slide,   ///< docs/methods.md s.10 biaxial sliding simulation, peak |u|
     simulation_flexible,        ///< docs/methods.md s.10 flexible-body simulation (a raised flag)
     simulation_3d,              ///< docs/methods.md s.11 rigid body in three dimensions
+    simulation_3d_flexible,     ///< docs/methods.md s.11 the same carrying one mode per axis
     fragility_goal,             ///< docs/methods.md s.6 step 5: the goal, from the fragility engine
 };
 const char* to_string(Model m);
@@ -244,6 +245,12 @@ struct Body3dLevel {
     std::string reason;   ///< why it ran, or why it does not apply
     Simulation sim;       ///< the 3D runs, as the planar statistics
     Stats twist_rad;      ///< peak |twist| about the vertical at the rocking bound, rad
+    /// The body carried the flexible model's mode along each horizontal axis (a raised
+    /// flexible-body flag), and the mode's description; modal_m its peak |q| at the rocking
+    /// bound, m.
+    bool flexible = false;
+    std::string mode_text;
+    Stats modal_m;
     /// Mean time per set in each contact state at the rocking bound, s (dynamics::ContactState
     /// order: rest, slide, edge, vertex, flight).
     std::array<double, dynamics::contact_state_count> time_in_state_s{};

@@ -115,6 +115,7 @@ bool passes_on(const LevelResult& level, const std::vector<std::size_t>& sets,
     if (level.body3d && level.body3d->ran) {
         r.body3d = Body3dLevel{};
         r.body3d->ran = true;
+        r.body3d->flexible = level.body3d->flexible;
         r.body3d->sim = resampled(level.body3d->sim, sets);
     }
     if (level.flexible_simulation) {

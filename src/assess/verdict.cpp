@@ -34,6 +34,10 @@ const char* to_string(Model m) {
         case Model::simulation_3d:
             return "time-history simulation of the rigid body in three dimensions, every "
                    "component at once (docs/methods.md s.11)";
+        case Model::simulation_3d_flexible:
+            return "time-history simulation of the body in three dimensions carrying the "
+                   "flexible body's mode along x and y, every component at once "
+                   "(docs/methods.md s.11)";
         case Model::fragility_goal:
             return "performance goal: fragility engine at multiples of the DBE, lognormal fit "
                    "(docs/methods.md s.6 step 5, s.9; ASCE 43-05 s.1.3)";
@@ -408,7 +412,10 @@ std::string body3d_trail_line(const Body3dLevel& b) {
         sim.sliding_bound.mu_s, ratio(b.slide_ratio), mm(b.planar_slide_m),
         sim.governing(b.twist_rad), sim.governing_history + 1, b.run_tilt_over_critical,
         b.run_overturned ? " (overturned)" : "", b.dt_s, b.check_tilt_over_critical,
-        b.check_overturned ? " (overturned)" : "", b.check_dt_s);
+        b.check_overturned ? " (overturned)" : "", b.check_dt_s) +
+           (b.flexible ? fmt::format("; carrying the flexible body's {}: peak |q| 84th {:.1f} mm",
+                                     b.mode_text, mm(b.modal_m.p84))
+                       : std::string());
 }
 
 std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
@@ -428,15 +435,21 @@ std::string biaxial_trail_line(const Simulation& sim, const BiaxialSlide& b) {
 // The 3D body's verdict: its runs under the planar rules, with its name.
 Verdict body3d_verdict(const Body3dLevel& b, double allowable_slide_m, double required_fs) {
     Verdict v = simulation_verdict(b.sim, allowable_slide_m, required_fs);
-    v.decided_by = Model::simulation_3d;
+    v.decided_by = b.flexible ? Model::simulation_3d_flexible : Model::simulation_3d;
     v.margin_basis = "3D body: " + v.margin_basis;
     return v;
 }
 
+bool body3d_decides(const LevelResult& level) {
+    return level.body3d && level.body3d->ran &&
+           (!level.flexible_simulation || level.body3d->flexible);
+}
+
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs) {
     const Body3dLevel* body3d = level.body3d && level.body3d->ran ? &*level.body3d : nullptr;
-    if (body3d && !level.flexible_simulation) {
-        // The body can uplift: the 3D body decides (docs/methods.md s.11), the planar runs beside.
+    if (body3d_decides(level)) {
+        // The body can uplift: the 3D body decides (docs/methods.md s.11), carrying the mode
+        // where the flag is raised; the planar runs, flexible ones included, stay beside.
         Verdict v = body3d_verdict(*body3d, allowable_slide_m, required_fs);
         if (level.flexible.raised && passes(v)) v.conditions.push_back(flexible_condition(level));
         return with_static_margin(v, level);
@@ -456,7 +469,8 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
                                fmt::format("simulated biaxial peak |u| of the rigid block ({})",
                                            stat_name(sim))));
         }
-        // Neither has both the mode and the third dimension: the worse of the two governs.
+        // A rigid 3D body beside the flexible one: neither has both the mode and the third
+        // dimension, and the worse of the two governs.
         if (body3d) v = combine(v, body3d_verdict(*body3d, allowable_slide_m, required_fs));
         return with_static_margin(v, level);
     }
@@ -490,14 +504,27 @@ std::vector<std::string> decision_trail(const LevelResult& level, double allowab
         out.push_back(simulation_trail_line(sim));
         if (level.biaxial) out.push_back(biaxial_trail_line(sim, *level.biaxial));
         if (level.body3d) out.push_back(body3d_trail_line(*level.body3d));
+        const bool by_3d = body3d_decides(level);
         if (level.flexible_simulation) {
             out.push_back(flexible_trail_line(*level.flexible_simulation));
             const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs);
-            out.push_back(fmt::format(
-                "the flexible-body model decides; the rigid planar simulation beside it gives {}, "
-                "margin {}",
-                passes(beside) ? "a pass" : "a FAILURE", margin_text(beside)));
-        } else if (level.body3d && level.body3d->ran) {
+            if (by_3d) {
+                const Verdict flexible = simulation_verdict(level.flexible_simulation->sim,
+                                                            allowable_slide_m, required_fs);
+                out.push_back(fmt::format(
+                    "the 3D body carrying the mode decides; beside it the planar flexible body "
+                    "of direction {} gives {}, margin {}, and the rigid planar simulation {}, "
+                    "margin {}",
+                    to_string(level.direction), passes(flexible) ? "a pass" : "a FAILURE",
+                    margin_text(flexible), passes(beside) ? "a pass" : "a FAILURE",
+                    margin_text(beside)));
+            } else {
+                out.push_back(fmt::format(
+                    "the flexible-body model decides; the rigid planar simulation beside it "
+                    "gives {}, margin {}",
+                    passes(beside) ? "a pass" : "a FAILURE", margin_text(beside)));
+            }
+        } else if (by_3d) {
             const Verdict beside = simulation_verdict(sim, allowable_slide_m, required_fs,
                                                       level.biaxial ? &*level.biaxial : nullptr);
             out.push_back(fmt::format(

@@ -44,6 +44,11 @@ Verdict simulation_verdict(const Simulation& sim, double allowable_slide_m, doub
 /// Carries the flexible-body open condition when the flag is raised at a passing level.
 Verdict decide_level(const LevelResult& level, double allowable_slide_m, double required_fs);
 
+/// Whether the 3D body decides the level (docs/methods.md s.11): it ran, and either no
+/// flexible body ran or the 3D body carried its mode (a rigid 3D body beside a flexible one
+/// shares the decision: the worse of the two governs).
+bool body3d_decides(const LevelResult& level);
+
 /// Screen result -> why simulated -> what governed, one line each.
 std::vector<std::string> decision_trail(const LevelResult& level, double allowable_slide_m,
                                         double required_fs);

@@ -63,7 +63,8 @@ po::options_description simulate_options() {
         ("flexible", po::value<std::string>(),
          "f=HZ[,zeta=RATIO][,mass=FRACTION][,height=M]: reduced-order flexible body (fixed-base "
          "frequency, modal damping, modal mass as a fraction of m, its height above the base; "
-         "defaults zeta 0.02 and a uniform cantilever's 0.613 m at 0.726 x 2 h)")
+         "defaults zeta 0.02 and a uniform cantilever's 0.613 m at 0.726 x 2 h); with --model "
+         "3d the mode along x and y at the one frequency, under every component")
         ("out", po::value<std::string>(), "write the time series CSV here")
         ("json", po::bool_switch(), "print the summary as JSON");
     add_pair_options(desc);
@@ -77,6 +78,13 @@ std::optional<double> opt_double(const po::variables_map& vm, const char* name) 
 
 // Which options go together, as the command line spells them; the request's own consistency
 // is api::simulate's to check.
+bool three_d(const po::variables_map& vm) {
+    const std::string model = vm["model"].as<std::string>();
+    if (model != "planar" && model != "3d")
+        throw UsageError(fmt::format("--model: expected planar or 3d; got \"{}\"", model));
+    return model == "3d";
+}
+
 void require_option_set(const po::variables_map& vm) {
     if (vm.count("motion") + vm.count("sine") + vm.count("sine-y") != 1)
         throw UsageError("simulate: give exactly one of --motion, --sine and --sine-y");
@@ -84,8 +92,9 @@ void require_option_set(const po::variables_map& vm) {
         throw UsageError("--motion-y: needs --motion (the x component)");
     const bool biaxial = vm.count("motion-y") || vm.count("sine-y");
     if (pair_requested(vm)) require_pair_options(vm);
-    if (vm.count("flexible") && (biaxial || pair_requested(vm)))
-        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit)");
+    if (vm.count("flexible") && (pair_requested(vm) || (biaxial && !three_d(vm))))
+        throw UsageError("--flexible: runs alone (no --motion-y, --sine-y or second unit; "
+                         "--model 3d takes both components)");
     if (biaxial)
         for (const char* flag : {"restitution", "top"})
             if (vm.count(flag))
@@ -120,17 +129,11 @@ api::SimulateExcitation excitation_of(const po::variables_map& vm) {
     return e;
 }
 
-bool three_d(const po::variables_map& vm) {
-    const std::string model = vm["model"].as<std::string>();
-    if (model != "planar" && model != "3d")
-        throw UsageError(fmt::format("--model: expected planar or 3d; got \"{}\"", model));
-    return model == "3d";
-}
 
 api::SimulateRequest simulate_request(const po::variables_map& vm) {
     api::SimulateRequest r;
     if (three_d(vm)) {
-        for (const char* flag : {"cg", "inertia", "top", "flexible"})
+        for (const char* flag : {"cg", "inertia", "top"})
             if (vm.count(flag))
                 throw UsageError(fmt::format("--{}: not used by --model 3d", flag));
         r.body3d = body3d_from_options(vm["block"].as<std::string>(), vm["dt"].as<double>());

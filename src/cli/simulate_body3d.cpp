@@ -42,19 +42,22 @@ std::string body3d_series_csv(const api::Body3dRun& run, const std::string& labe
     std::string out = fmt::format(
         "# freestand simulate (3D body): Moreau-Jean, dt {} s, excitation {}\n"
         "# units: time s, slide m (footprint centre relative to the base), angles rad\n"
-        "time_s,slide_x_m,slide_y_m,tilt_rad,tilt_over_critical,twist_rad,state\n",
-        run.options.dt_s, one_line_label(label));
+        "time_s,slide_x_m,slide_y_m,tilt_rad,tilt_over_critical,twist_rad,state{}\n",
+        run.options.dt_s, one_line_label(label), run.model.mode ? ",modal_x_m,modal_y_m" : "");
     for (const auto& s : run.result.series)
-        out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time_s, s.slide_x_m,
+        out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}{}\n", s.time_s, s.slide_x_m,
                            s.slide_y_m, s.tilt_rad, s.tilt_over_critical, s.twist_rad,
-                           dynamics::to_string(s.state));
+                           dynamics::to_string(s.state),
+                           run.model.mode ? fmt::format(",{:.9g},{:.9g}", s.modal_x_m, s.modal_y_m)
+                                          : std::string());
     return out;
 }
 
 void print_body3d(const api::Body3dRun& run) {
     const dynamics::Body3dSummary& s = run.result.summary;
+    const auto& mode = run.model.mode;
     std::cout << fmt::format(
-        "model                 3D rigid body (Moreau-Jean, dt {} s)\n"
+        "model                 3D {} (Moreau-Jean, dt {} s)\n"
         "peak tilt             {:.4g} rad = {:.3g} x critical\n"
         "overturned            {}\n"
         "peak slide |u|        {:.4g} m\n"
@@ -63,6 +66,11 @@ void print_body3d(const api::Body3dRun& run) {
         "friction mu_s/mu_k    {} / {}\n"
         "steps                 {} (unconverged {})\n"
         "wall time             {:.4g} s\n",
+        mode ? fmt::format("body with a mode along x and y: f {} / {} Hz, zeta {}, modal mass {} "
+                           "M at {:.4g} m; peak |q| {:.4g} m",
+                           mode->frequency_x_hz, mode->frequency_y_hz, mode->damping,
+                           mode->mass_fraction, mode->height_m, s.modal_max_m)
+             : std::string("rigid body"),
         run.options.dt_s, s.tilt_max_rad, s.tilt_max_over_critical,
         s.overturned ? fmt::format("yes, at {:.4f} s", *s.overturn_time_s) : std::string("no"),
         s.slide_max_m, s.twist_max_rad, s.pga_g, run.model.mu_s, run.model.mu_k, s.steps,

@@ -1,7 +1,9 @@
 // The 3D body's time stepping (docs/methods.md s.11): Moreau-Jean's midpoint scheme, the
 // contact states it passes through, the samples and the summary.
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -13,6 +15,7 @@
 #include "core/steps.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/body3d_detail.hpp"
+#include "dynamics/flexible_detail.hpp"
 
 namespace freestand::dynamics {
 
@@ -99,13 +102,19 @@ struct Fixed {
     /// edge, from the modal mass's height).
     std::optional<detail::ModalSplit> split;
     double quiet_modal_force_N = 0.0;
+    /// The input's sample step, s, and with a mode each axis's exact oscillator over it.
+    double segment_s = 0.0;
+    std::array<detail::OscillatorStep, 2> held_segment{};
 };
 
-Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o) {
+Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o, double segment_s) {
     Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o, 1.0,
-            std::nullopt, 0.0};
+            std::nullopt, 0.0, segment_s, {}};
     if (m.mode) {
         f.split = detail::modal_split(m);
+        for (std::size_t i = 0; i < 2; ++i)
+            f.held_segment[i] = detail::OscillatorStep(
+                {f.split->omega_radps(static_cast<Eigen::Index>(i)), f.split->zeta}, segment_s);
         double reach_m = std::numeric_limits<double>::infinity();
         for (int k = 0; k < 8; ++k) reach_m = std::min(reach_m, m.body.reach_m(k * units::pi / 4.0));
         f.quiet_modal_force_N = 0.5 * m.body.mass_kg * o.g_mps2 *
@@ -170,6 +179,37 @@ public:
         return close_step(s, t, mid, solve, h);
     }
 
+    /// A held body with a mode through a whole input segment, on which the base's acceleration
+    /// and G are linear: the modes advanced exactly over it (the fixed-base oscillators of
+    /// each axis, Nigam & Jennings 1969), kept when the body lies flat and still and the floor
+    /// holds it at the segment's start and end (floor_holds), as the planar flexible body's
+    /// rest phase checks its margin. False, with nothing changed, otherwise: the segment's
+    /// steps then run.
+    bool holds_modal_segment(BodyState& s, const detail::BiaxialSegment& seg) {
+        const double t_end = seg.tk + f_.segment_s;
+        if (!(seg.G(seg.tk) > 0.0) || !(seg.G(t_end) > 0.0)) return false;
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        if (!flat_and_still(s, R)) return false;
+        const auto holds_at = [&](double t, const Eigen::Vector2d& q_m, const Eigen::Vector2d& q_mps) {
+            const auto a = seg.a(t);
+            const Eigen::Vector2d a_mps2(a[0], a[1]);
+            const Eigen::Vector2d q_acc = held_modal_accel(in_body(R, a_mps2), q_m, q_mps);
+            return floor_holds(held_load(s, R, a_mps2, seg.G(t), q_acc, q_m), R);
+        };
+        if (!holds_at(seg.tk, s.modal_m, s.twist.q_mps)) return false;
+        const Eigen::Vector2d a0_body = in_body(R, {seg.a0[0], seg.a0[1]});
+        const Eigen::Vector2d a1_body = in_body(R, {seg.a1[0], seg.a1[1]});
+        Eigen::Vector2d q_m = s.modal_m, q_mps = s.twist.q_mps;
+        for (int i = 0; i < 2; ++i)
+            f_.held_segment[static_cast<std::size_t>(i)].apply(q_m(i), q_mps(i), a0_body(i),
+                                                               a1_body(i));
+        if (!holds_at(t_end, q_m, q_mps)) return false;
+        s.modal_m = q_m;
+        s.twist.q_mps = q_mps;
+        held_ = true;
+        return true;
+    }
+
 private:
     /// The step of a body with a mode: the same scheme over (v, w, q'), the generalised mass
     /// and forces at the midpoint (body3d_modal.cpp), the impulses acting on the rigid rest's
@@ -184,17 +224,20 @@ private:
         }
         if (held_) {
             const HeldModal held = held_modal(s, s.q.toRotationMatrix(), a_mps2, G_mps2, dt_s);
-            if (held.force_N.z() > 0.0)
+            const FloorLoad& load = held.load;
+            if (load.force_N.z() > 0.0)
                 warm_start_from(s.q.toRotationMatrix(),
-                                dt_s * Eigen::Vector3d(held.force_N.z(), -held.moment_Nm.y(),
-                                                       held.moment_Nm.x()),
-                                dt_s * held.force_N.head<2>());
+                                dt_s * Eigen::Vector3d(load.force_N.z(), -load.moment_Nm.y(),
+                                                       load.moment_Nm.x()),
+                                dt_s * load.force_N.head<2>());
             held_ = false;
         }
         const double h = dt_s;
         const Midpoint mid = midpoint_of(s, h);
         const detail::Matrix8d M = detail::generalized_mass(*f_.split, mid.R, mid.modal_m);
-        const detail::Matrix8d M_inv = M.ldlt().solve(detail::Matrix8d::Identity());
+        // The fixed-size inverse (partial-pivot LU) costs two thirds of an LDLT solve against
+        // the identity, whose blocked matrix path is slow at 8 x 8.
+        const detail::Matrix8d M_inv = M.inverse();
         detail::MassMatrix mass{f_.model.body.mass_kg, Eigen::Matrix3d::Identity(),
                                 M_inv.leftCols<6>()};
         fill_contacts(mid.p_m, mid.R, s.twist);
@@ -252,61 +295,92 @@ private:
         return {state, solve.converged};
     }
 
-    /// A held body with a mode through one step: its modal state at the step's end (the
-    /// fixed-base oscillators of each axis, as the full step gives them when the impulses hold
-    /// the rest still: its q' row then carries no impulse, q'' = -a_body - 2 zeta omega q' -
-    /// omega^2 q_mid), and the floor's force and its moment about the footprint's plane below
-    /// the body's reference point (x, y), N and N m, that hold it: the weight and the base's
-    /// inertia force on both masses and the modal mass's q'', at the step's mid modal position.
-    struct HeldModal {
-        Eigen::Vector2d q_m, q_mps;
+    /// The floor's force and its moment about the footprint's plane below the body's
+    /// reference point (x, y), N and N m, that hold a body with a mode still: the weight and
+    /// the base's inertia force on both masses and the modal mass's q'' (body axes), with the
+    /// modal mass at q.
+    struct FloorLoad {
         Eigen::Vector3d force_N;
         Eigen::Vector2d moment_Nm;
     };
-    HeldModal held_modal(const BodyState& s, const Eigen::Matrix3d& R,
-                         const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) const {
+    FloorLoad held_load(const BodyState& s, const Eigen::Matrix3d& R, const Eigen::Vector2d& a_mps2,
+                        double G_mps2, const Eigen::Vector2d& q_acc, const Eigen::Vector2d& q_m) const {
         const detail::ModalSplit& m = *f_.split;
-        const Eigen::Array2d omega = m.omega_radps.array();
-        const Eigen::Vector2d a_body =
-            (R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0)).head<2>();
-        const Eigen::Vector2d mid = s.modal_m + 0.5 * dt_s * s.twist.q_mps;
-        const Eigen::Vector2d q_acc =
-            -a_body -
-            (2.0 * m.zeta * omega * s.twist.q_mps.array() + omega.square() * mid.array()).matrix();
-        HeldModal out;
-        out.q_mps = s.twist.q_mps + dt_s * q_acc;
-        out.q_m = mid + 0.5 * dt_s * out.q_mps;
-        const Eigen::Vector2d q_load = 0.5 * (s.modal_m + out.q_m);
         const Eigen::Vector3d base(a_mps2.x(), a_mps2.y(), G_mps2);
         const Eigen::Vector3d up(0.0, 0.0, s.p_m.z());
         const Eigen::Vector3d rest_force = m.rest_kg * base;
         const Eigen::Vector3d modal_force = m.modal_kg * (base + R.leftCols<2>() * q_acc);
         const Eigen::Vector3d rho_r = up + R * m.rest_cg_m;
         const Eigen::Vector3d rho_s =
-            up + R * (m.modal_rest_m + Eigen::Vector3d(q_load.x(), q_load.y(), 0.0));
-        out.force_N = rest_force + modal_force;
-        out.moment_Nm = (rho_r.cross(rest_force) + rho_s.cross(modal_force)).head<2>();
+            up + R * (m.modal_rest_m + Eigen::Vector3d(q_m.x(), q_m.y(), 0.0));
+        return {rest_force + modal_force,
+                (rho_r.cross(rest_force) + rho_s.cross(modal_force)).head<2>()};
+    }
+
+    /// Whether the floor can carry a held load: the force within mu_s, the centre of pressure
+    /// inside the footprint.
+    bool floor_holds(const FloorLoad& load, const Eigen::Matrix3d& R) const {
+        const Eigen::Vector3d& F = load.force_N;
+        if (!(F.z() > 0.0) || F.head<2>().norm() > f_.model.mu_s * F.z()) return false;
+        const Eigen::Vector2d pressure(-load.moment_Nm.y() / F.z(), load.moment_Nm.x() / F.z());
+        const Eigen::Vector2d pressure_body =
+            (R.transpose() * Eigen::Vector3d(pressure.x(), pressure.y(), 0.0)).head<2>();
+        return std::all_of(f_.edges.begin(), f_.edges.end(), [&](const Edge& e) {
+            return e.normal.dot(pressure_body) <= e.distance_m;
+        });
+    }
+
+    /// The base's plan acceleration in body axes.
+    static Eigen::Vector2d in_body(const Eigen::Matrix3d& R, const Eigen::Vector2d& a_mps2) {
+        return (R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0)).head<2>();
+    }
+
+    /// The modes' accelerations on a held base, body axes: q'' = -a_body - 2 zeta omega q' -
+    /// omega^2 q.
+    Eigen::Vector2d held_modal_accel(const Eigen::Vector2d& a_body, const Eigen::Vector2d& q_m,
+                                     const Eigen::Vector2d& q_mps) const {
+        const detail::ModalSplit& m = *f_.split;
+        const Eigen::Array2d omega = m.omega_radps.array();
+        return -a_body -
+               (2.0 * m.zeta * omega * q_mps.array() + omega.square() * q_m.array()).matrix();
+    }
+
+    /// A held body with a mode through one step: its modal state at the step's end (the
+    /// fixed-base oscillators of each axis, as the full step gives them when the impulses hold
+    /// the rest still: its q' row then carries no impulse, q'' = -a_body - 2 zeta omega q' -
+    /// omega^2 q_mid), and the floor's load that holds it, at the step's mid modal position.
+    struct HeldModal {
+        Eigen::Vector2d q_m, q_mps;
+        FloorLoad load;
+    };
+    HeldModal held_modal(const BodyState& s, const Eigen::Matrix3d& R,
+                         const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) const {
+        const Eigen::Vector2d mid = s.modal_m + 0.5 * dt_s * s.twist.q_mps;
+        const Eigen::Vector2d q_acc = held_modal_accel(in_body(R, a_mps2), mid, s.twist.q_mps);
+        HeldModal out;
+        out.q_mps = s.twist.q_mps + dt_s * q_acc;
+        out.q_m = mid + 0.5 * dt_s * out.q_mps;
+        out.load = held_load(s, R, a_mps2, G_mps2, q_acc, 0.5 * (s.modal_m + out.q_m));
         return out;
     }
 
+    /// Whether the body with a mode lies flat and still on its whole footprint.
+    bool flat_and_still(const BodyState& s, const Eigen::Matrix3d& R) const {
+        if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0)) return false;
+        return std::none_of(f_.vertices_body.begin(), f_.vertices_body.end(),
+                            [&](const Eigen::Vector3d& v) { return s.p_m.z() + R.row(2).dot(v) > 0.0; });
+    }
+
     /// stays_at_rest for a body with a mode: held flat on its whole footprint, it stays so
-    /// through the step when the floor's force the step needs (held_modal) lies within mu_s
-    /// and its centre of pressure inside the footprint; the step then moves only the modes.
+    /// through the step when the floor's load the step needs (held_modal) is one the floor
+    /// can carry (floor_holds); the step then moves only the modes.
     bool stays_held_modal(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
                           double dt_s) const {
-        if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0) || !(G_mps2 > 0.0))
-            return false;
+        if (!(G_mps2 > 0.0)) return false;
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
-        for (const Eigen::Vector3d& v : f_.vertices_body)
-            if (s.p_m.z() + R.row(2).dot(v) > 0.0) return false;
+        if (!flat_and_still(s, R)) return false;
         const HeldModal held = held_modal(s, R, a_mps2, G_mps2, dt_s);
-        const Eigen::Vector3d& F = held.force_N;
-        if (!(F.z() > 0.0) || F.head<2>().norm() > f_.model.mu_s * F.z()) return false;
-        const Eigen::Vector2d pressure(-held.moment_Nm.y() / F.z(), held.moment_Nm.x() / F.z());
-        const Eigen::Vector2d pressure_body =
-            (R.transpose() * Eigen::Vector3d(pressure.x(), pressure.y(), 0.0)).head<2>();
-        for (const Edge& e : f_.edges)
-            if (e.normal.dot(pressure_body) > e.distance_m) return false;
+        if (!floor_holds(held.load, R)) return false;
         s.modal_m = held.q_m;
         s.twist.q_mps = held.q_mps;
         return true;
@@ -548,7 +622,7 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     const detail::BiaxialBase base(excitation, options.g_mps2);
     const double n_sub = std::max(1.0, core::steps_covering(excitation.dt_s / options.dt_s));
     const double h = excitation.dt_s / n_sub;
-    const Fixed fixed = fixed_of(model, options);
+    const Fixed fixed = fixed_of(model, options, excitation.dt_s);
     Stepper stepper(fixed);
     BodyState s = initial_state(model.body, options);
 
@@ -564,13 +638,15 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     for (std::size_t k = 0; k < segments && !sum.overturned; ++k) {
         const auto seg = base.segment(k);
         // A body at rest that the segment's load cannot move skips the segment's steps, as
-        // the planar engine's rest runs do.
+        // the planar engine's rest runs do; a body with a mode advances its modes exactly.
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
         const double t_end = seg.tk + excitation.dt_s;
         const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end);
-        const bool skip = state == ContactState::rest && !fixed.split &&
-                          holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
-                          holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end));
+        const bool skip =
+            state == ContactState::rest &&
+            (fixed.split ? stepper.holds_modal_segment(s, seg)
+                         : holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
+                               holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end)));
         if (skip) sum.time_in_state_s[0] += excitation.dt_s;
         for (std::size_t j = 0; j < n && !skip; ++j) {
             const double t_mid = seg.tk + (static_cast<double>(j) + 0.5) * h;

@@ -68,8 +68,14 @@ std::string describe_models(const Models& m, const std::vector<double>& pga_g) {
             "flag is raised, as at the case's levels: {}",
             where(pga_g, m.flexible));
     if (m.body3d)
-        text += "; a sample whose block rocks in x or y under its motion runs the 3D rigid body "
-                "instead of the rigid planar blocks (every component at once, s.11)";
+        text += std::string("; a sample whose block rocks in x or y under its motion runs the "
+                            "3D rigid body instead of the rigid planar blocks (every component "
+                            "at once, s.11)") +
+                (m.flexible.empty() ? ""
+                                    : ", carrying the flexible body's mode along x and y where "
+                                      "the flag is raised, in place of the planar flexible runs "
+                                      "(a sample whose rigid block rocks in neither direction "
+                                      "keeps them)");
     if (m.biaxial_slide)
         text += std::string(m.body3d ? ", and" : ";") +
                 " the slide of a sample whose block rocks in neither direction comes from "

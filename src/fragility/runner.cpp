@@ -238,11 +238,14 @@ SampleResult Runner::run(std::size_t global_index) const {
             out.restitution_y, direction, e.what()));
     };
     std::optional<WholeBody> whole;
+    const bool flagged = !models.flexible.empty() &&
+                         (models.flexible[level][0] || models.flexible[level][1]);
     if (!m.sets.empty() && (models.biaxial_slide || models.body3d)) {
         try {
             // One restitution for the body: the larger draw, the more energetic.
             whole = whole_body_sample(m.c, m.sets[dr.pick], pga_g, out.mu_s, mu_k,
-                                      std::max(dr.restitution[0], dr.restitution[1]), models);
+                                      std::max(dr.restitution[0], dr.restitution[1]), models,
+                                      flagged);
         } catch (const NumericalError& e) {
             throw where("the whole body", e);
         }
@@ -252,8 +255,9 @@ SampleResult Runner::run(std::size_t global_index) const {
     for (const assess::Direction d : {assess::Direction::x, assess::Direction::y}) {
         const std::size_t dir = d == assess::Direction::x ? 0 : 1;
         const bool flexible_here = !models.flexible.empty() && models.flexible[level][dir];
-        // The 3D body replaces the rigid planar runs; a flexible body still runs beside it.
-        if (body3d && !flexible_here) continue;
+        // The 3D body replaces the rigid planar runs, and at a flagged level, where it carries
+        // the mode, the planar flexible ones too.
+        if (body3d && (flagged || !flexible_here)) continue;
         const assess::ContactBound contact{out.mu_s, mu_k, dr.restitution[dir], false, ""};
         const dynamics::Excitation ex =
             m.sets.empty() ? dynamics::excitation_from_record(m.records[dr.pick],

@@ -37,8 +37,11 @@ struct WholeBody {
 /// (Body3dModel::angular_restitution; its slide 0 when it overturns), else biaxial sliding;
 /// nullopt when models does not turn the applicable model on. The rules, options and
 /// scaling are those of a simulated level (assess/biaxial_level.hpp, assess/body3d_level.hpp).
+/// `flexible`: the level's flag is raised, and the 3D body carries the case's mode
+/// (assess::body3d_mode).
 std::optional<WholeBody> whole_body_sample(const assess::Case& c, const assess::HistorySet& set,
                                            double pga_g, double mu_s, double mu_k,
-                                           double restitution, const Models& models);
+                                           double restitution, const Models& models,
+                                           bool flexible);
 
 }  // namespace freestand::fragility

@@ -7,7 +7,8 @@ namespace freestand::fragility {
 
 std::optional<WholeBody> whole_body_sample(const assess::Case& c, const assess::HistorySet& set,
                                            double pga_g, double mu_s, double mu_k,
-                                           double restitution, const Models& models) {
+                                           double restitution, const Models& models,
+                                           bool flexible) {
     const dynamics::BiaxialExcitation ex =
         dynamics::biaxial_excitation_from_records(set.h1, set.h2, pga_g, &set.v);
     const dynamics::BiaxialModel sliding = dynamics::make_biaxial_model(mu_s, mu_k);
@@ -19,9 +20,13 @@ std::optional<WholeBody> whole_body_sample(const assess::Case& c, const assess::
     WholeBody out;
     if (rocks) {
         if (!models.body3d) return std::nullopt;
-        const dynamics::Body3dModel model =
+        dynamics::Body3dModel model =
             dynamics::make_body3d_model(assess::component_body3d(c.component), mu_s, mu_k, 0.0,
                                         restitution);
+        if (flexible)
+            model = dynamics::with_mode(
+                model, assess::body3d_mode(c.component,
+                                           {mu_s, mu_k, restitution, false, ""}));
         const dynamics::Body3dSummary s =
             dynamics::simulate_body3d(model, ex, assess::body3d_options(c.site.g_mps2)).summary;
         out.model = WholeBody::Model::body3d;

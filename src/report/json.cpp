@@ -181,6 +181,9 @@ ordered_json body3d_json(const std::optional<Body3dLevel>& b) {
                        {"check_tilt_max_over_critical", num(b->check_tilt_over_critical)},
                        {"check_overturned", b->check_overturned}};
     j["twist_rad"] = stats_json(b->twist_rad);
+    j["flexible"] = b->flexible;
+    j["mode"] = b->flexible ? ordered_json(b->mode_text) : ordered_json(nullptr);
+    j["modal_m"] = b->flexible ? stats_json(b->modal_m) : ordered_json(nullptr);
     ordered_json states;
     for (std::size_t i = 0; i < b->time_in_state_s.size(); ++i)
         states[dynamics::to_string(static_cast<dynamics::ContactState>(i))] =

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "assess/verdict.hpp"
 #include "report/svg.hpp"
 
 namespace freestand::report {
@@ -137,12 +138,14 @@ const assess::Simulation* body3d_sim(const assess::LevelResult& l) {
 }
 
 // The sliding demand the level's verdict read, as decide_level reads it (assess/verdict.cpp):
-// the flexible body's slip, or the biaxial |u| where that is larger; else, where the simulation
+// the 3D body's where it decides; the flexible body's slip, or the biaxial |u| where that is
+// larger (or the rigid 3D body's beside it); else, where the simulation
 // decides, the biaxial |u| where it ran and the planar slip where not. None where the screen
 // decides.
 std::optional<double> deciding_slide_m(const assess::LevelResult& l) {
     if (!l.simulation) return std::nullopt;
     const assess::Simulation* body3d = body3d_sim(l);
+    if (body3d && assess::body3d_decides(l)) return governing_of(*body3d, body3d->slide_m);
     if (l.flexible_simulation) {
         const assess::Simulation& s = l.flexible_simulation->sim;
         double v = governing_of(s, s.slide_m);
@@ -166,6 +169,7 @@ std::optional<double> deciding_rock_over_alpha(const assess::LevelResult& l) {
         return governing_of(*s, s->rock_over_alpha);
     };
     const auto body3d = standing(body3d_sim(l));
+    if (assess::body3d_decides(l)) return body3d;
     const auto other = standing(l.flexible_simulation ? &l.flexible_simulation->sim
                                 : l.screen.passed || body3d_sim(l) ? nullptr
                                                                    : &*l.simulation);
@@ -256,7 +260,7 @@ std::optional<Figure> rock_demand_figure(const assess::AssessmentResult& r, asse
                        ? std::max(sim.overturned, l->flexible_simulation->sim.overturned)
                        : sim.overturned;
         if (const assess::Simulation* b = body3d_sim(*l)) {
-            over = std::max(over, b->overturned);
+            over = assess::body3d_decides(*l) ? b->overturned : std::max(over, b->overturned);
             if (b->overturned < b->histories)
                 add_finite(body3d, l->pga_g, governing_of(*b, b->rock_over_alpha));
         }

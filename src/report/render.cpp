@@ -225,12 +225,15 @@ std::string body3d_text(const LevelResult& l) {
     const auto ratio = [](const std::optional<double>& r) {
         return r ? fixed(*r, 2) + " x" : none;
     };
-    return fmt::format("tilt/critical {} ({}); slide {} mm ({}); {} overturned",
+    return fmt::format("tilt/critical {} ({}); slide {} mm ({}); {} overturned{}",
                        b.sim.overturned < b.sim.histories
                            ? stats_text(b.sim.rock_over_alpha, 1.0, 3)
                            : none,
                        ratio(b.rock_ratio), stats_text(b.sim.slide_m, 1000.0, 1),
-                       ratio(b.slide_ratio), overturned_text(b.sim));
+                       ratio(b.slide_ratio), overturned_text(b.sim),
+                       b.flexible ? "; with the flexible mode, |q| " +
+                                        stats_text(b.modal_m, 1000.0, 1) + " mm"
+                                  : std::string());
 }
 
 std::string level_verdict_text(const Verdict& v) {
@@ -252,6 +255,7 @@ std::string governing_bound(const LevelResult& l) {
                                                  : l.bounds.rocking.name;
         case Model::simulation_flexible:
         case Model::simulation_3d:
+        case Model::simulation_3d_flexible:
             return "slip at the lower friction bound, rocking at the upper bounds";
         case Model::fragility_goal:
             return "friction and restitution drawn between their bounds";
@@ -389,10 +393,15 @@ mstch::array flex_compare(const std::vector<LevelResult>& levels) {
         if (l.simulation) {
             out.push_back(row(l, *l.simulation, "rigid planar block (beside)", none, none));
         }
+        const bool by_3d = body3d_decides(l);
         out.push_back(row(l, f.sim,
-                          fmt::format("flexible body, {:.3g} Hz (decides)", f.frequency_hz),
+                          fmt::format("flexible body, {:.3g} Hz ({})", f.frequency_hz,
+                                      by_3d ? "beside" : "decides"),
                           fmt::format("{} / {}", f.uplifted, f.sim.histories),
                           stats_text(f.modal_m, 1000.0, 2)));
+        if (by_3d && l.body3d->flexible)
+            out.push_back(row(l, l.body3d->sim, "3D body carrying the mode (decides)", none,
+                              stats_text(l.body3d->modal_m, 1000.0, 2)));
     }
     return out;
 }

@@ -114,6 +114,39 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
     CHECK(b.time_in_state_s[2] + b.time_in_state_s[3] > 0.0);  // on an edge or a vertex
 }
 
+TEST_CASE("a flagged body that can uplift runs the 3D body carrying its mode",
+          "[assess][3d][flexible]") {
+    // The glove box on steel pads: its 7.5 Hz mode lifts the base at 0.3 g, where the rigid
+    // block rests, and the planar flexible runs decide; at 0.4 g the rigid block can rock, and
+    // the 3D body runs with the mode along x and y.
+    Case c = shipped_case("glovebox-steel-pads.toml", {0.3, 0.4}, 2);
+    c.site.dbe_pga_g.reset();  // the goal is not what this checks
+    const AssessmentResult r = assess::assess(c);
+    const LevelResult& low = r.levels.at(0);
+    REQUIRE(low.flexible_simulation.has_value());
+    CHECK(low.flexible_simulation->uplifted > 0);
+    REQUIRE(low.body3d.has_value());
+    CHECK_FALSE(low.body3d->ran);
+    CHECK(low.body3d->reason.find("; the flexible body lifted its base (x in ") !=
+          std::string::npos);
+    const LevelResult& x = r.levels.at(2);
+    REQUIRE(x.pga_g == 0.4);
+    REQUIRE(x.body3d.has_value());
+    CHECK(x.body3d->ran);
+    CHECK(x.body3d->flexible);
+    CHECK(x.body3d->mode_text.rfind("mode 7.5 Hz along x and y, damping 0.02", 0) == 0);
+    CHECK(x.body3d->modal_m.max > 0.0);
+    CHECK(x.body3d->reason.find(", carrying the flexible body's mode 7.5 Hz") !=
+          std::string::npos);
+    CHECK(trail_has(x, "3D body (h1 along x"));
+    // Carrying the mode, the 3D body decides; the planar flexible runs stay beside it.
+    CHECK(x.model == assess::body3d_flexible_model_name);
+    CHECK(x.verdict.decided_by == Model::simulation_3d_flexible);
+    CHECK(trail_has(x, "the 3D body carrying the mode decides; beside it the planar flexible "
+                       "body of direction x gives "));
+    REQUIRE(x.flexible_simulation.has_value());
+}
+
 TEST_CASE("a level that cannot uplift keeps its model and says why the 3D body does not run",
           "[assess][3d]") {
     // The glove box slides at 0.2 g at both friction bounds (tan(alpha) well above mu_s).

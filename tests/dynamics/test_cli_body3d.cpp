@@ -111,6 +111,53 @@ TEST_CASE("simulate --model 3d --sine-y --out writes the series", "[3d][cli]") {
     std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("simulate --model 3d --flexible carries the mode along x and y, as the library",
+          "[3d][cli][flexible]") {
+    const auto dir = std::filesystem::temp_directory_path() / "freestand_cli_body3d_mode";
+    std::filesystem::create_directories(dir);
+    const auto csv = dir / "series.csv";
+    const std::string run = "simulate --model 3d --block b=0.2,d=0.35,h=0.6,m=150 --mu 1 "
+                            "--sine-y 0.3g,2Hz,3s,phase=90 --dt 2.5e-4 "
+                            "--flexible f=8,mass=0.4,height=0.9 ";
+    const auto r = run_cli(run + "--json");
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j.at("mode").at("frequency_x_hz") == 8.0);
+    CHECK(j.at("mode").at("frequency_y_hz") == 8.0);
+    CHECK(j.at("mode").at("mass_fraction") == 0.4);
+    using namespace freestand;
+    const auto rigid = dynamics::make_body3d_model(dynamics::box_body(0.2, 0.35, 0.6, 150.0), 1.0);
+    const auto m = dynamics::with_mode(rigid, {8.0, 8.0, 0.02, 0.4, 0.9});
+    const auto e = dynamics::biaxial_sine_excitation(dynamics::SineSpec{0.3, 2.0, 3.0}, 90.0);
+    dynamics::Body3dOptions o;
+    o.dt_s = 2.5e-4;
+    o.record_series = false;
+    const auto lib = dynamics::simulate_body3d(m, e, o);
+    CHECK(j.at("modal_max_m").get<double>() == lib.summary.modal_max_m);
+    CHECK(j.at("tilt_max_rad").get<double>() == lib.summary.tilt_max_rad);
+    CHECK(lib.summary.modal_max_m > 1e-3);
+    // The defaults are the planar body's: 0.613 M at 0.726 of the height (2 h = 1.2 m).
+    const auto d = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6 --mu 1 "
+                           "--sine 0.1g,2Hz,1s --flexible f=8 --json");
+    REQUIRE(d.exit_code == 0);
+    const auto jd = nlohmann::json::parse(d.out).at("mode");
+    CHECK(jd.at("mass_fraction").get<double>() == 0.613);
+    CHECK(jd.at("height_m").get<double>() == Approx(0.726 * 1.2));
+    // Text and series name the mode and carry q.
+    const auto t = run_cli(run + "--out '" + csv.string() + "'");
+    REQUIRE(t.exit_code == 0);
+    CHECK_THAT(t.out, Catch::Contains("3D body with a mode along x and y: f 8 / 8 Hz"));
+    CHECK_THAT(freestand::test::slurp(csv),
+               Catch::Contains("twist_rad,state,modal_x_m,modal_y_m\n"));
+    const auto bad = run_cli(run + "--flexible f=-1");
+    CHECK(bad.exit_code != 0);
+    const auto named = run_cli("simulate --model 3d --block b=0.2,d=0.35,h=0.6 --mu 1 "
+                               "--sine 0.1g,2Hz,1s --flexible f=-1");
+    CHECK(named.exit_code == 3);
+    CHECK_THAT(named.err, Catch::Contains("--flexible f: "));
+    std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("simulate --model 3d names what it does not take", "[3d][cli]") {
     const std::string base = "simulate --model 3d --mu 1 --sine 0.5g,2Hz,1s ";
     const auto missing = run_cli(base + "--block b=0.2,h=0.6");

@@ -491,6 +491,29 @@ def test_simulate_3d_slides_as_coulomb_under_a_pulse():
     assert np.max(np.abs(s["slide_y_m"])) < 1e-9
 
 
+def test_simulate_3d_carries_a_flexible_mode():
+    # A held squat box under a small sine: its modes are the fixed-base oscillators; the body
+    # with the mode reports it, the series carries q, and the rigid body has none.
+    g = freestand.g_mps2
+    t = np.arange(0.0, 3.0, 0.005)
+    accel = 0.05 * g * np.sin(2.0 * np.pi * 3.0 * t)
+    block = {"b": 0.5, "d": 0.5, "h": 0.3, "m": 200.0}
+    r = freestand.simulate_3d(block, accel, 0.005, mu=1.0, motion_y=0.5 * accel,
+                              flexible={"f": 5.0, "zeta": 0.05, "mass": 0.3, "height": 0.45})
+    assert r["mode"]["frequency_x_hz"] == 5.0
+    assert r["modal_max_m"] > 1e-4
+    assert r["tilt_max_rad"] < 1e-9
+    s = r["series"]
+    assert np.max(np.abs(s["modal_x_m"])) > 1e-4
+    assert np.max(np.abs(s["modal_y_m"])) > 0.4 * np.max(np.abs(s["modal_x_m"]))
+    rigid = freestand.simulate_3d(block, accel, 0.005, mu=1.0)
+    assert rigid["mode"] is None and "modal_x_m" not in rigid["series"]
+    with pytest.raises(freestand.InputError, match="flexible.f"):
+        freestand.simulate_3d(block, accel, 0.005, mu=1.0, flexible={"zeta": 0.05})
+    with pytest.raises(TypeError, match="unknown key 'mode'"):
+        freestand.simulate_3d(block, accel, 0.005, mu=1.0, flexible={"f": 5.0, "mode": 1})
+
+
 def test_simulate_3d_names_its_arguments():
     with pytest.raises(freestand.InputError, match="block.d"):
         freestand.simulate_3d({"b": 0.5, "h": 0.2}, np.zeros(10), 0.01, mu=0.2)
