@@ -192,4 +192,47 @@ TEST_CASE("a sample that rocks runs the 3D body with its friction and restitutio
     fs::remove_all(dir);
 }
 
+TEST_CASE("at a flagged level a sample that rocks runs the 3D body carrying the case's mode, in "
+          "place of the planar flexible runs",
+          "[fragility][models][flexible]") {
+    const fs::path dir = scratch("body3d_mode");
+    const core::ContentStore cache(dir / "cache");
+    assess::RunSettings settings(1);
+    settings.cache = &cache;
+    fragility::Config cfg;
+    cfg.pga_g = {0.5};
+    cfg.samples = 3;
+    cfg.pool = 1;
+    cfg.models.biaxial_slide = true;
+    cfg.models.body3d = true;
+    cfg.models.flexible = {{true, true}};
+    const std::string toml =
+        std::string(rocker_toml).replace(std::string(rocker_toml).find("[site]"), 6,
+                                         "fixed_base_frequency_hz = 8.0\n[site]");
+    const assess::Case c = assess::parse_case(toml, (dir / "rocker.toml").string());
+    const auto samples = run(c, cfg, settings);
+    assess::HistoryBank bank(c, settings);
+    const assess::HistorySet& set = bank.sets().front();
+    const auto ex = dynamics::biaxial_excitation_from_records(set.h1, set.h2, 0.5, &set.v);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        INFO("sample " << i << ", mu_s " << samples[i].mu_s);
+        const double r = std::max(samples[i].restitution_x, samples[i].restitution_y);
+        const auto rigid = dynamics::make_body3d_model(assess::component_body3d(c.component),
+                                                       samples[i].mu_s, samples[i].mu_s, 0.0, r);
+        const auto mode =
+            assess::body3d_mode(c.component, {samples[i].mu_s, samples[i].mu_s, r, false, ""});
+        CHECK(mode.frequency_x_hz == 8.0);
+        const auto direct = dynamics::simulate_body3d(dynamics::with_mode(rigid, mode), ex,
+                                                      assess::body3d_options(9.81))
+                                .summary;
+        const auto without = dynamics::simulate_body3d(rigid, ex, assess::body3d_options(9.81))
+                                 .summary;
+        CHECK(samples[i].rock_max_over_alpha == direct.tilt_max_over_critical);
+        CHECK(samples[i].overturned == direct.overturned);
+        CHECK(samples[i].slide_max_m == (direct.overturned ? 0.0 : direct.slide_max_m));
+        CHECK(direct.tilt_max_over_critical != without.tilt_max_over_critical);
+    }
+    fs::remove_all(dir);
+}
+
 }  // namespace freestand_test_fragility_test_models
