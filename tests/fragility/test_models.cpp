@@ -71,6 +71,22 @@ std::vector<fragility::SampleResult> run(const assess::Case& c, const fragility:
     return fragility::run_samples(runner, all, 1);
 }
 
+// One thread, the history sets from `cache` (shared by the runs compared).
+assess::RunSettings cached(const core::ContentStore& cache) {
+    assess::RunSettings settings(1);
+    settings.cache = &cache;
+    return settings;
+}
+
+// Three samples at one level from a pool of one history set.
+fragility::Config three_samples_at(double pga_g) {
+    fragility::Config cfg;
+    cfg.pga_g = {pga_g};
+    cfg.samples = 3;
+    cfg.pool = 1;
+    return cfg;
+}
+
 }  // namespace
 
 TEST_CASE("the flexible body runs at the levels and directions asked for, and only there",
@@ -151,12 +167,8 @@ TEST_CASE("a sample that rocks runs the 3D body with its friction and restitutio
           "[fragility][models]") {
     const fs::path dir = scratch("body3d");
     const core::ContentStore cache(dir / "cache");
-    assess::RunSettings settings(1);
-    settings.cache = &cache;
-    fragility::Config cfg;
-    cfg.pga_g = {0.5};
-    cfg.samples = 3;
-    cfg.pool = 1;
+    const assess::RunSettings settings = cached(cache);
+    fragility::Config cfg = three_samples_at(0.5);
     const assess::Case rocker = assess::parse_case(rocker_toml, (dir / "rocker.toml").string());
     const auto planar = run(rocker, cfg, settings);
     cfg.models.biaxial_slide = true;
@@ -197,12 +209,8 @@ TEST_CASE("at a flagged level a sample that rocks runs the 3D body carrying the 
           "[fragility][models][flexible]") {
     const fs::path dir = scratch("body3d_mode");
     const core::ContentStore cache(dir / "cache");
-    assess::RunSettings settings(1);
-    settings.cache = &cache;
-    fragility::Config cfg;
-    cfg.pga_g = {0.5};
-    cfg.samples = 3;
-    cfg.pool = 1;
+    const assess::RunSettings settings = cached(cache);
+    fragility::Config cfg = three_samples_at(0.5);
     cfg.models.biaxial_slide = true;
     cfg.models.body3d = true;
     cfg.models.flexible = {{true, true}};
