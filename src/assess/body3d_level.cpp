@@ -10,6 +10,7 @@
 
 #include "assess/flexible_level.hpp"
 #include "assess/level_runs.hpp"
+#include "assess/run_cache.hpp"
 #include "assess/settle.hpp"
 #include "assess/verdict.hpp"
 #include "core/parallel.hpp"
@@ -25,14 +26,15 @@ namespace {
 // batch to batch of the settling like the planar runs.
 std::vector<dynamics::Body3dSummary> runs_at(const dynamics::Body3dModel& model,
                                              const std::vector<dynamics::BiaxialExcitation>& ex,
-                                             const dynamics::Body3dOptions& options, int slot,
-                                             HistoryBank& bank) {
+                                             double pga_g, const dynamics::Body3dOptions& options,
+                                             int slot, HistoryBank& bank) {
     std::vector<dynamics::Body3dSummary> out(ex.size());
     RunTable<dynamics::Body3dSummary>* kept =
         bank.level_runs() ? &bank.level_runs()->body3d(slot, ex.size()) : nullptr;
     core::parallel_for(ex.size(), bank.run().threads, [&](std::size_t k) {
         out[k] = remembered(kept, k, [&] {
-            return dynamics::simulate_body3d(model, ex[k], options).summary;
+            return body3d_run(bank.run().run_cache, model, ex[k],
+                              bank.excitation_key(k, 2, pga_g, ex[k]), options);
         });
     });
     return out;
@@ -141,9 +143,10 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
         model_at(c.component, bounds.sliding, mode), model_at(c.component, bounds.rocking, mode),
         model_at(c.component, bounds.rocking_lower.value_or(bounds.rocking), mode)};
     SlotRuns runs;
-    runs.slot[0] = runs_at(models[0], ex, options, 0, bank);
-    if (differ) runs.slot[1] = runs_at(models[1], ex, options, 1, bank);
-    if (bounds.rocking_lower) runs.slot[2] = runs_at(models[2], ex, options, 2, bank);
+    runs.slot[0] = runs_at(models[0], ex, demand.pga_g, options, 0, bank);
+    if (differ) runs.slot[1] = runs_at(models[1], ex, demand.pga_g, options, 1, bank);
+    if (bounds.rocking_lower)
+        runs.slot[2] = runs_at(models[2], ex, demand.pga_g, options, 2, bank);
     Body3dLevel b;
     b.ran = true;
     b.dt_s = options.dt_s;
@@ -174,7 +177,9 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     const auto k = static_cast<std::size_t>(b.sim.governing_history);
     dynamics::Body3dOptions fine = options;
     fine.dt_s = options.dt_s / 16.0;
-    const dynamics::Body3dSummary check = dynamics::simulate_body3d(rocking_model, ex[k], fine).summary;
+    const dynamics::Body3dSummary check =
+        body3d_run(bank.run().run_cache, rocking_model, ex[k],
+                   bank.excitation_key(k, 2, demand.pga_g, ex[k]), fine);
     b.check_dt_s = fine.dt_s;
     b.check_tilt_over_critical = check.tilt_max_over_critical;
     b.check_overturned = check.overturned;

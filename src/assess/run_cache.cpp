@@ -20,6 +20,11 @@ static_assert(sizeof(dynamics::Options) == 104, "dynamics::Options changed: upda
 static_assert(sizeof(dynamics::Summary) == 216, "Summary changed: update encode_summary");
 static_assert(sizeof(dynamics::FlexibleSummary) == 256,
               "FlexibleSummary changed: update encode_flexible_summary");
+static_assert(sizeof(dynamics::Body3d) == 112, "Body3d changed: update write_body3d_model");
+static_assert(sizeof(dynamics::Body3dModel) == 200, "Body3dModel changed: update its key");
+static_assert(sizeof(dynamics::Body3dOptions) == 80, "Body3dOptions changed: update its key");
+static_assert(sizeof(dynamics::Body3dSummary) == 144,
+              "Body3dSummary changed: update encode_body3d_summary");
 
 void write_head(core::ByteWriter& w, std::string_view kind) {
     w.text("freestand run");
@@ -76,6 +81,33 @@ dynamics::Summary read_summary(core::ByteReader& r) {
         *n = static_cast<std::size_t>(r.u64());
     for (double& t : s.time_in_mode_s) t = r.f64();
     return s;
+}
+
+void write_body3d_model(core::ByteWriter& w, const dynamics::Body3dModel& m) {
+    const dynamics::Body3d& b = m.body;
+    w.f64(b.mass_kg);
+    w.u64(b.footprint_m.size());
+    for (const Eigen::Vector2d& v : b.footprint_m) {
+        w.f64(v.x());
+        w.f64(v.y());
+    }
+    w.f64(b.h_m);
+    for (Eigen::Index i = 0; i < 9; ++i) w.f64(b.inertia_cg_kgm2(i));
+    for (double v : {m.mu_s, m.mu_k, m.normal_restitution}) w.f64(v);
+    w.opt_f64(m.angular_restitution);
+    w.flag(m.mode.has_value());
+    if (const auto& mode = m.mode)
+        for (double v : {mode->frequency_x_hz, mode->frequency_y_hz, mode->damping,
+                         mode->mass_fraction, mode->height_m})
+            w.f64(v);
+}
+
+void write_body3d_options(core::ByteWriter& w, const dynamics::Body3dOptions& o) {
+    for (double v : {o.dt_s, o.solver_tol, o.regularization, o.tail_s, o.initial_tilt_rad,
+                     o.initial_lean_rad, o.max_step_p, o.g_mps2})
+        w.f64(v);
+    w.u64(o.max_sweeps);
+    w.flag(o.record_series);
 }
 
 template <class T>
@@ -161,6 +193,16 @@ std::string biaxial_run_key(const dynamics::BiaxialModel& model, const std::stri
     return core::sha256_hex(w.bytes());
 }
 
+std::string body3d_run_key(const dynamics::Body3dModel& model, const std::string& ex_key,
+                           const dynamics::Body3dOptions& opt) {
+    core::ByteWriter w;
+    write_head(w, "3D body");
+    write_body3d_model(w, model);
+    write_body3d_options(w, opt);
+    w.text(ex_key);
+    return core::sha256_hex(w.bytes());
+}
+
 std::string encode_summary(const dynamics::Summary& s) {
     core::ByteWriter w;
     w.u64(format_version);
@@ -200,6 +242,36 @@ std::optional<dynamics::FlexibleSummary> decode_flexible_summary(std::string_vie
     return s;
 }
 
+std::string encode_body3d_summary(const dynamics::Body3dSummary& s) {
+    core::ByteWriter w;
+    w.u64(format_version);
+    for (double v : {s.tilt_max_rad, s.tilt_max_over_critical, s.slide_max_m, s.twist_max_rad,
+                     s.modal_max_m, s.end_time_s, s.pga_g, s.wall_s})
+        w.f64(v);
+    w.flag(s.overturned);
+    w.opt_f64(s.overturn_time_s);
+    for (double t : s.time_in_state_s) w.f64(t);
+    w.u64(s.steps);
+    w.u64(s.unconverged_steps);
+    return w.take();
+}
+
+std::optional<dynamics::Body3dSummary> decode_body3d_summary(std::string_view bytes) {
+    core::ByteReader r(bytes);
+    if (r.u64() != format_version) return std::nullopt;
+    dynamics::Body3dSummary s;
+    for (double* v : {&s.tilt_max_rad, &s.tilt_max_over_critical, &s.slide_max_m,
+                      &s.twist_max_rad, &s.modal_max_m, &s.end_time_s, &s.pga_g, &s.wall_s})
+        *v = r.f64();
+    s.overturned = r.flag();
+    s.overturn_time_s = r.opt_f64();
+    for (double& t : s.time_in_state_s) t = r.f64();
+    s.steps = static_cast<std::size_t>(r.u64());
+    s.unconverged_steps = static_cast<std::size_t>(r.u64());
+    if (r.failed() || !r.at_end()) return std::nullopt;
+    return s;
+}
+
 dynamics::Summary rigid_run(const core::ContentStore* store, const dynamics::BlockModel& model,
                             const dynamics::Excitation& ex, const std::string& ex_key,
                             const dynamics::Options& opt) {
@@ -229,6 +301,16 @@ double biaxial_peak_run(const core::ContentStore* store, const dynamics::Biaxial
     if (!store || opt.record_series) return make();
     return stored<double>(store, biaxial_run_key(model, ex_key, opt), decode_peak, encode_peak,
                           make);
+}
+
+dynamics::Body3dSummary body3d_run(const core::ContentStore* store,
+                                   const dynamics::Body3dModel& model,
+                                   const dynamics::BiaxialExcitation& ex,
+                                   const std::string& ex_key, const dynamics::Body3dOptions& opt) {
+    const auto make = [&] { return dynamics::simulate_body3d(model, ex, opt).summary; };
+    if (!store || opt.record_series) return make();
+    return stored<dynamics::Body3dSummary>(store, body3d_run_key(model, ex_key, opt),
+                                           decode_body3d_summary, encode_body3d_summary, make);
 }
 
 }  // namespace freestand::assess

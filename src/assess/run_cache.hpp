@@ -15,6 +15,7 @@
 #include "assess/histories.hpp"
 #include "core/content_store.hpp"
 #include "dynamics/biaxial.hpp"
+#include "dynamics/body3d.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/simulate.hpp"
 
@@ -51,6 +52,12 @@ double biaxial_peak_run(const core::ContentStore* store, const dynamics::Biaxial
                         const dynamics::BiaxialExcitation& ex, const std::string& ex_key,
                         const dynamics::Options& opt);
 
+/// As rigid_run, for the 3D body (dynamics::simulate_body3d), with or without a mode.
+dynamics::Body3dSummary body3d_run(const core::ContentStore* store,
+                                   const dynamics::Body3dModel& model,
+                                   const dynamics::BiaxialExcitation& ex,
+                                   const std::string& ex_key, const dynamics::Body3dOptions& opt);
+
 /// The keys (64 hex digits) and the encodings the functions above use.
 std::string rigid_run_key(const dynamics::BlockModel& model, const std::string& ex_key,
                           const dynamics::Options& opt);
@@ -58,11 +65,15 @@ std::string flexible_run_key(const dynamics::FlexibleModel& model, const std::st
                              const dynamics::Options& opt);
 std::string biaxial_run_key(const dynamics::BiaxialModel& model, const std::string& ex_key,
                             const dynamics::Options& opt);
+std::string body3d_run_key(const dynamics::Body3dModel& model, const std::string& ex_key,
+                           const dynamics::Body3dOptions& opt);
 std::string encode_summary(const dynamics::Summary& s);
 /// None when the bytes are not a whole summary of this format.
 std::optional<dynamics::Summary> decode_summary(std::string_view bytes);
 std::string encode_flexible_summary(const dynamics::FlexibleSummary& s);
 std::optional<dynamics::FlexibleSummary> decode_flexible_summary(std::string_view bytes);
+std::string encode_body3d_summary(const dynamics::Body3dSummary& s);
+std::optional<dynamics::Body3dSummary> decode_body3d_summary(std::string_view bytes);
 
 /// The excitation keys of a bank's sets, each computed once and shared by every run, model
 /// and material trial that uses the excitation. Safe to use from several threads.

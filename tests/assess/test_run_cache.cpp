@@ -11,6 +11,7 @@
 
 #include "assess/run_cache.hpp"
 #include "block/block.hpp"
+#include "dynamics/body3d.hpp"
 #include "core/sha256.hpp"
 #include "core/version.hpp"
 
@@ -64,6 +65,32 @@ std::string bits(dynamics::Summary s) {
     return encode_summary(s);
 }
 
+std::string bits(dynamics::Body3dSummary s) {
+    s.wall_s = 0.0;
+    return encode_body3d_summary(s);
+}
+
+// A slender box (it rocks under the diagonal sine) and the same body carrying an 8 Hz mode.
+dynamics::Body3dModel box3d() {
+    return dynamics::make_body3d_model(dynamics::box_body(0.2, 0.25, 0.6, 100.0), 0.5);
+}
+
+dynamics::Body3dModel box3d_with_mode(double frequency_hz = 8.0) {
+    return dynamics::with_mode(box3d(), {frequency_hz, frequency_hz, 0.02, 0.4, 0.9});
+}
+
+dynamics::BiaxialExcitation diagonal_sine(double amplitude_g) {
+    return dynamics::biaxial_sine_excitation(sine_spec(amplitude_g), 0.0);
+}
+
+dynamics::Body3dOptions quiet3d() {
+    dynamics::Body3dOptions o;
+    o.dt_s = 2.5e-4;
+    o.tail_s = 1.0;
+    o.record_series = false;
+    return o;
+}
+
 }  // namespace
 
 TEST_CASE("a run's summary encoded and decoded is the same summary, bit for bit",
@@ -86,6 +113,18 @@ TEST_CASE("a run's summary encoded and decoded is the same summary, bit for bit"
     REQUIRE(f_back);
     CHECK(encode_flexible_summary(*f_back) == encode_flexible_summary(f));
     CHECK_FALSE(decode_summary(encode_flexible_summary(f)));
+    const dynamics::Body3dSummary b =
+        dynamics::simulate_body3d(box3d_with_mode(), diagonal_sine(0.5), quiet3d()).summary;
+    REQUIRE(b.tilt_max_rad > 0.0);
+    REQUIRE(b.modal_max_m > 0.0);
+    const std::string b_bytes = encode_body3d_summary(b);
+    const auto b_back = decode_body3d_summary(b_bytes);
+    REQUIRE(b_back);
+    CHECK(encode_body3d_summary(*b_back) == b_bytes);
+    CHECK(std::memcmp(&b_back->slide_max_m, &b.slide_max_m, sizeof(double)) == 0);
+    CHECK(b_back->time_in_state_s == b.time_in_state_s);
+    CHECK_FALSE(decode_body3d_summary(b_bytes.substr(0, b_bytes.size() - 1)));
+    CHECK_FALSE(decode_body3d_summary(encode_flexible_summary(f)));
 }
 
 TEST_CASE("a run's key changes with anything the run depends on", "[assess][cache][runs]") {
@@ -118,6 +157,28 @@ TEST_CASE("a run's key changes with anything the run depends on", "[assess][cach
     stiffer.frequency_hz = 9.0;
     CHECK(flexible_run_key(stiffer, excitation_key(ex), o) !=
           flexible_run_key(flex, excitation_key(ex), o));
+    // The 3D body: its model, its mode, its options and its excitation.
+    const dynamics::BiaxialExcitation bi = diagonal_sine(0.5);
+    const dynamics::Body3dOptions o3 = quiet3d();
+    const std::string key3 = body3d_run_key(box3d(), excitation_key(bi), o3);
+    CHECK(key3.size() == 64);
+    CHECK(body3d_run_key(box3d(), excitation_key(bi), o3) == key3);
+    CHECK(body3d_run_key(box3d_with_mode(), excitation_key(bi), o3) != key3);
+    CHECK(body3d_run_key(box3d_with_mode(9.0), excitation_key(bi), o3) !=
+          body3d_run_key(box3d_with_mode(), excitation_key(bi), o3));
+    dynamics::Body3dModel restituted = box3d();
+    restituted.angular_restitution = 0.9;
+    CHECK(body3d_run_key(restituted, excitation_key(bi), o3) != key3);
+    dynamics::Body3dModel wider = box3d();
+    wider.body.footprint_m[0].x() -= 0.01;
+    CHECK(body3d_run_key(wider, excitation_key(bi), o3) != key3);
+    dynamics::Body3dOptions finer = o3;
+    finer.dt_s = 1.25e-4;
+    CHECK(body3d_run_key(box3d(), excitation_key(bi), finer) != key3);
+    dynamics::Body3dOptions fewer = o3;
+    fewer.max_sweeps = 100;
+    CHECK(body3d_run_key(box3d(), excitation_key(bi), fewer) != key3);
+    CHECK(body3d_run_key(box3d(), excitation_key(diagonal_sine(0.6)), o3) != key3);
 }
 
 TEST_CASE("runs are read from the store when it holds them, simulated and stored when not",
@@ -160,6 +221,19 @@ TEST_CASE("runs are read from the store when it holds them, simulated and stored
     CHECK(encode_flexible_summary(flexible_run(&store, flex, ex, excitation_key(ex), o)) ==
           encode_flexible_summary(f));
     CHECK(store.info().entries == 3);
+    // The 3D body alike, with its mode: stored once, then read.
+    const dynamics::BiaxialExcitation diagonal = diagonal_sine(0.5);
+    const dynamics::Body3dModel body = box3d_with_mode();
+    const dynamics::Body3dSummary b = dynamics::simulate_body3d(body, diagonal, quiet3d()).summary;
+    CHECK(bits(body3d_run(&store, body, diagonal, excitation_key(diagonal), quiet3d())) ==
+          bits(b));
+    CHECK(store.info().entries == 4);
+    dynamics::Body3dSummary planted3 = b;
+    planted3.slide_max_m = 7.0;
+    REQUIRE(store.put(body3d_run_key(body, excitation_key(diagonal), quiet3d()),
+                      encode_body3d_summary(planted3)));
+    CHECK(body3d_run(&store, body, diagonal, excitation_key(diagonal), quiet3d()).slide_max_m ==
+          7.0);
 }
 
 TEST_CASE("a bank keeps one key per excitation, the key of its numbers", "[assess][cache][runs]") {
@@ -201,6 +275,28 @@ TEST_CASE("the engines' runs of reference scenes are unchanged at this engine_ve
     const std::map<std::string, std::string> digests{
         {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "90904f95a648dffd66b82c1d81c3c84682599b9905a198a4f72a18b35669b08c"},
         {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "90904f95a648dffd66b82c1d81c3c84682599b9905a198a4f72a18b35669b08c"},
+    };
+    const std::string build = core::build_identity();
+    INFO("build " << build << ": digest " << digest);
+    REQUIRE(digests.count(build) == 1);  // a new build: add its digest above
+    CHECK(digest == digests.at(build));
+}
+
+TEST_CASE("the 3D body's runs of reference scenes are unchanged at this engine_version",
+          "[assess][cache][runs][3d]") {
+    // As above, for the 3D body, rigid and carrying a mode, under a diagonal sine.
+    CHECK(std::string(engine_version) == "2");
+    dynamics::Body3dSummary rigid =
+        dynamics::simulate_body3d(box3d(), diagonal_sine(0.5), quiet3d()).summary;
+    dynamics::Body3dSummary modal =
+        dynamics::simulate_body3d(box3d_with_mode(), diagonal_sine(0.5), quiet3d()).summary;
+    rigid.wall_s = 0.0;
+    modal.wall_s = 0.0;
+    const std::string digest =
+        core::sha256_hex(encode_body3d_summary(rigid) + encode_body3d_summary(modal));
+    const std::map<std::string, std::string> digests{
+        {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "60c158744838b43d5ac0233f48e1feb65e764e42985c14d58cc2a493777deec0"},
+        {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "60c158744838b43d5ac0233f48e1feb65e764e42985c14d58cc2a493777deec0"},
     };
     const std::string build = core::build_identity();
     INFO("build " << build << ": digest " << digest);
