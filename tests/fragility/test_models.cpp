@@ -87,6 +87,15 @@ fragility::Config three_samples_at(double pga_g) {
     return cfg;
 }
 
+// The pool's one history set (from the cache the runs filled) at pga_g, as the whole body
+// takes it.
+dynamics::BiaxialExcitation first_set(const assess::Case& c, const assess::RunSettings& settings,
+                                      double pga_g) {
+    assess::HistoryBank bank(c, settings);
+    const assess::HistorySet& set = bank.sets().front();
+    return dynamics::biaxial_excitation_from_records(set.h1, set.h2, pga_g, &set.v);
+}
+
 }  // namespace
 
 TEST_CASE("the flexible body runs at the levels and directions asked for, and only there",
@@ -175,9 +184,7 @@ TEST_CASE("a sample that rocks runs the 3D body with its friction and restitutio
     cfg.models.body3d = true;
     const auto whole = run(rocker, cfg, settings);
     // The same set (from the cache) run directly with the 3D body of the assessment.
-    assess::HistoryBank bank(rocker, settings);
-    const assess::HistorySet& set = bank.sets().front();
-    const auto ex = dynamics::biaxial_excitation_from_records(set.h1, set.h2, 0.5, &set.v);
+    const auto ex = first_set(rocker, settings, 0.5);
     for (std::size_t i = 0; i < whole.size(); ++i) {
         INFO("sample " << i << ", mu_s " << whole[i].mu_s << ", r " << whole[i].restitution_x);
         const double r = std::max(whole[i].restitution_x, whole[i].restitution_y);
@@ -219,9 +226,7 @@ TEST_CASE("at a flagged level a sample that rocks runs the 3D body carrying the 
                                          "fixed_base_frequency_hz = 8.0\n[site]");
     const assess::Case c = assess::parse_case(toml, (dir / "rocker.toml").string());
     const auto samples = run(c, cfg, settings);
-    assess::HistoryBank bank(c, settings);
-    const assess::HistorySet& set = bank.sets().front();
-    const auto ex = dynamics::biaxial_excitation_from_records(set.h1, set.h2, 0.5, &set.v);
+    const auto ex = first_set(c, settings, 0.5);
     for (std::size_t i = 0; i < samples.size(); ++i) {
         INFO("sample " << i << ", mu_s " << samples[i].mu_s);
         const double r = std::max(samples[i].restitution_x, samples[i].restitution_y);
