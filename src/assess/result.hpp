@@ -307,11 +307,12 @@ struct LevelResult {
     std::string model_reason;
     /// Biaxial sliding at this level: empty when the level was not simulated.
     std::optional<BiaxialSlide> biaxial;
-    /// The flexible-body simulation, run where the flag is raised; it then decides the level and
-    /// `simulation` (the rigid planar one) is reported beside it.
+    /// The flexible-body simulation, run where the flag is raised; it then decides the level
+    /// unless the 3D body carries the mode, and `simulation` (the rigid planar one) is reported
+    /// beside it.
     std::optional<FlexibleSimulation> flexible_simulation;
-    /// The rigid body in three dimensions, where the level can uplift in some direction; it then
-    /// decides the level (with the flexible body, the worse of the two).
+    /// The body in three dimensions, where the level can uplift in some direction, carrying the
+    /// mode where the flag is raised; it then decides the level (assess::body3d_decides).
     std::optional<Body3dLevel> body3d;
     /// How settled the decision of a simulated level is (docs/methods.md s.6 step 4).
     std::optional<Settling> settling;

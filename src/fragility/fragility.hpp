@@ -44,8 +44,9 @@ struct Models {
     /// A sample whose block would rock in x or y under its motion (the same rule) runs the 3D
     /// rigid body instead (every component at once, docs/methods.md s.11, with the options of a
     /// simulated level, assess/body3d_level.hpp, and the sample's larger restitution draw as
-    /// its r): its slide, tilt over critical and overturn replace the rigid planar runs' (a
-    /// flexible run still counts: the worse governs, as at a level). Generated sets only.
+    /// its r): its slide, tilt over critical and overturn replace the rigid planar runs', and at
+    /// a flagged level, where it carries the case's mode, the planar flexible runs' too, as at
+    /// a level. Generated sets only.
     bool body3d = false;
 };
 
