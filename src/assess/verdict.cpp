@@ -451,7 +451,9 @@ Verdict decide_level(const LevelResult& level, double allowable_slide_m, double 
         // The body can uplift: the 3D body decides (docs/methods.md s.11), carrying the mode
         // where the flag is raised; the planar runs, flexible ones included, stay beside.
         Verdict v = body3d_verdict(*body3d, allowable_slide_m, required_fs);
-        if (level.flexible.raised && passes(v)) v.conditions.push_back(flexible_condition(level));
+        // Carrying the mode, the 3D body resolves the flag, as the flexible model does.
+        if (level.flexible.raised && !body3d->flexible && passes(v))
+            v.conditions.push_back(flexible_condition(level));
         return with_static_margin(v, level);
     }
     if (level.flexible_simulation) {

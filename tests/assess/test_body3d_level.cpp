@@ -142,6 +142,13 @@ TEST_CASE("a flagged body that can uplift runs the 3D body carrying its mode",
     // Carrying the mode, the 3D body decides; the planar flexible runs stay beside it.
     CHECK(x.model == assess::body3d_flexible_model_name);
     CHECK(x.verdict.decided_by == Model::simulation_3d_flexible);
+    // The 3D body carrying the mode resolves the flag: its passing decision (on these two sets,
+    // before the settling's overturn bound asks for more) carries no open flexible-body
+    // condition.
+    const Verdict decided = decide_level(x, c.component.allowable_slide_m,
+                                         c.component.required_overturn_fs);
+    REQUIRE(passes(decided));
+    CHECK(decided.conditions.empty());
     CHECK(trail_has(x, "the 3D body carrying the mode decides; beside it the planar flexible "
                        "body of direction x gives "));
     REQUIRE(x.flexible_simulation.has_value());
