@@ -364,7 +364,7 @@ private:
         return out;
     }
 
-    /// Whether the body with a mode lies flat and still on its whole footprint.
+    /// Whether the body lies flat on its whole footprint with its rest's velocities at zero.
     bool flat_and_still(const BodyState& s, const Eigen::Matrix3d& R) const {
         if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0)) return false;
         return std::none_of(f_.vertices_body.begin(), f_.vertices_body.end(),
@@ -418,15 +418,11 @@ private:
     /// vertex then carries a non-negative share). The step's sticking solve gives the same
     /// zero velocities; this skips it for the long still stretches of a standing body.
     bool stays_at_rest(const BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2) const {
-        if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0) || !(G_mps2 > 0.0))
-            return false;
-        if (a_mps2.norm() > f_.model.mu_s * G_mps2) return false;
+        if (!(G_mps2 > 0.0) || a_mps2.norm() > f_.model.mu_s * G_mps2) return false;
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
-        for (const Eigen::Vector3d& v : f_.vertices_body)
-            if (s.p_m.z() + R.row(2).dot(v) > 0.0) return false;
+        if (!flat_and_still(s, R)) return false;
         // Where the resultant's line meets the floor, from the CG's plan position, body axes.
-        const Eigen::Vector3d a_body = R.transpose() * Eigen::Vector3d(a_mps2.x(), a_mps2.y(), 0.0);
-        const Eigen::Vector2d meets = -s.p_m.z() / G_mps2 * a_body.head<2>();
+        const Eigen::Vector2d meets = -s.p_m.z() / G_mps2 * in_body(R, a_mps2);
         for (const Edge& e : f_.edges)
             if (e.normal.dot(meets) > e.distance_m) return false;
         return true;
@@ -590,6 +586,19 @@ bool holds_at_rest(const Fixed& f, const Eigen::Matrix3d& R, const Eigen::Vector
     });
 }
 
+/// Whether a body at rest stays so through the whole input segment: for the rigid body,
+/// holds_at_rest at both ends (linear in the load, so throughout); with a mode,
+/// Stepper::holds_modal_segment, which then advances the modes over it.
+bool rests_through(const Fixed& f, Stepper& stepper, BodyState& s,
+                   const detail::BiaxialSegment& seg) {
+    if (f.split) return stepper.holds_modal_segment(s, seg);
+    const Eigen::Matrix3d R = s.q.toRotationMatrix();
+    const double t_end = seg.tk + f.segment_s;
+    const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end);
+    return holds_at_rest(f, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
+           holds_at_rest(f, R, {a1[0], a1[1]}, seg.G(t_end));
+}
+
 void take_peaks(Body3dSummary& sum, const Body3dSample& x) {
     sum.tilt_max_rad = std::max(sum.tilt_max_rad, x.tilt_rad);
     sum.tilt_max_over_critical = std::max(sum.tilt_max_over_critical, x.tilt_over_critical);
@@ -639,14 +648,8 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
         const auto seg = base.segment(k);
         // A body at rest that the segment's load cannot move skips the segment's steps, as
         // the planar engine's rest runs do; a body with a mode advances its modes exactly.
-        const Eigen::Matrix3d R = s.q.toRotationMatrix();
         const double t_end = seg.tk + excitation.dt_s;
-        const auto a0 = seg.a(seg.tk), a1 = seg.a(t_end);
-        const bool skip =
-            state == ContactState::rest &&
-            (fixed.split ? stepper.holds_modal_segment(s, seg)
-                         : holds_at_rest(fixed, R, {a0[0], a0[1]}, seg.G(seg.tk)) &&
-                               holds_at_rest(fixed, R, {a1[0], a1[1]}, seg.G(t_end)));
+        const bool skip = state == ContactState::rest && rests_through(fixed, stepper, s, seg);
         if (skip) sum.time_in_state_s[0] += excitation.dt_s;
         for (std::size_t j = 0; j < n && !skip; ++j) {
             const double t_mid = seg.tk + (static_cast<double>(j) + 0.5) * h;

@@ -145,7 +145,7 @@ const assess::Simulation* body3d_sim(const assess::LevelResult& l) {
 std::optional<double> deciding_slide_m(const assess::LevelResult& l) {
     if (!l.simulation) return std::nullopt;
     const assess::Simulation* body3d = body3d_sim(l);
-    if (body3d && assess::body3d_decides(l)) return governing_of(*body3d, body3d->slide_m);
+    if (assess::body3d_decides(l)) return governing_of(*body3d, body3d->slide_m);
     if (l.flexible_simulation) {
         const assess::Simulation& s = l.flexible_simulation->sim;
         double v = governing_of(s, s.slide_m);

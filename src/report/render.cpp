@@ -399,7 +399,7 @@ mstch::array flex_compare(const std::vector<LevelResult>& levels) {
                                       by_3d ? "beside" : "decides"),
                           fmt::format("{} / {}", f.uplifted, f.sim.histories),
                           stats_text(f.modal_m, 1000.0, 2)));
-        if (by_3d && l.body3d->flexible)
+        if (by_3d)  // beside a flexible run, the 3D body decides only carrying the mode
             out.push_back(row(l, l.body3d->sim, "3D body carrying the mode (decides)", none,
                               stats_text(l.body3d->modal_m, 1000.0, 2)));
     }

@@ -15,31 +15,18 @@
 #include "dynamics/biaxial.hpp"
 #include "dynamics/body3d.hpp"
 #include "dynamics/simulate.hpp"
+#include "support/body3d_inputs.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_dynamics_test_body3d {
 
 using namespace freestand;
 using Catch::Matchers::WithinRel;
+using test::along;
 
 namespace {
 
-constexpr double g = 9.81;
-
-/// Samples at dt_s of the base acceleration along plan direction phi_rad with magnitude a(t).
-template <class F>
-dynamics::BiaxialExcitation along(double phi_rad, double seconds, double dt_s, F a_mps2) {
-    dynamics::BiaxialExcitation e;
-    e.label = "test";
-    e.dt_s = dt_s;
-    const auto n = static_cast<std::size_t>(std::lround(seconds / dt_s)) + 1;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double a = a_mps2(dt_s * static_cast<double>(i));
-        e.x_mps2.push_back(a * std::cos(phi_rad));
-        e.y_mps2.push_back(a * std::sin(phi_rad));
-    }
-    return e;
-}
+constexpr double g = test::body3d_g_mps2;
 
 dynamics::Excitation planar(const dynamics::BiaxialExcitation& e, double scale) {
     dynamics::Excitation p;
@@ -52,7 +39,7 @@ dynamics::Excitation planar(const dynamics::BiaxialExcitation& e, double scale) 
 }
 
 double sine(double amplitude_g, double f_hz, double t_s) {
-    return amplitude_g * g * std::sin(2.0 * std::numbers::pi * f_hz * t_s);
+    return test::sine_mps2(amplitude_g, f_hz, t_s);
 }
 
 dynamics::Options planar_options(double tail_s = 2.0) {
@@ -62,12 +49,7 @@ dynamics::Options planar_options(double tail_s = 2.0) {
     return o;
 }
 
-dynamics::Body3dOptions quick(double tail_s = 2.0) {
-    dynamics::Body3dOptions o;
-    o.tail_s = tail_s;
-    o.g_mps2 = g;
-    return o;
-}
+dynamics::Body3dOptions quick(double tail_s = 2.0) { return test::body3d_options(tail_s); }
 
 }  // namespace
 

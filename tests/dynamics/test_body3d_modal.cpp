@@ -15,6 +15,7 @@
 #include "dynamics/body3d.hpp"
 #include "dynamics/flexible.hpp"
 #include "dynamics/simulate.hpp"
+#include "support/body3d_inputs.hpp"
 
 // The file's own namespace: the test files of a stage compile in unity batches.
 namespace freestand_test_dynamics_test_body3d_modal {
@@ -24,29 +25,15 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-constexpr double g = 9.81;
+constexpr double g = test::body3d_g_mps2;
 
 dynamics::BiaxialExcitation sine_along(double phi_rad, double amplitude_g, double f_hz,
                                        double seconds, double dt_s) {
-    dynamics::BiaxialExcitation e;
-    e.label = "test";
-    e.dt_s = dt_s;
-    const auto n = static_cast<std::size_t>(std::lround(seconds / dt_s)) + 1;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double a =
-            amplitude_g * g * std::sin(2.0 * std::numbers::pi * f_hz * dt_s * static_cast<double>(i));
-        e.x_mps2.push_back(a * std::cos(phi_rad));
-        e.y_mps2.push_back(a * std::sin(phi_rad));
-    }
-    return e;
+    return test::along(phi_rad, seconds, dt_s,
+                       [&](double t) { return test::sine_mps2(amplitude_g, f_hz, t); });
 }
 
-dynamics::Body3dOptions options(double tail_s = 1.0) {
-    dynamics::Body3dOptions o;
-    o.tail_s = tail_s;
-    o.g_mps2 = g;
-    return o;
-}
+dynamics::Body3dOptions options(double tail_s = 1.0) { return test::body3d_options(tail_s); }
 
 // q'' + 2 zeta omega q' + omega^2 q = -a(t), a linear between the samples, by classical
 // Runge-Kutta at steps of dt_e / 200: the converged reference at the sample times.
