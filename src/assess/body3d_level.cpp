@@ -183,8 +183,10 @@ Body3dLevel run_body3d(const Case& c, const LevelDemand& demand, const LevelResu
     b.check_dt_s = fine.dt_s;
     b.check_tilt_over_critical = check.tilt_max_over_critical;
     b.check_overturned = check.overturned;
+    b.check_slide_m = check.slide_max_m;
     b.run_tilt_over_critical = rock[k].tilt_max_over_critical;
     b.run_overturned = rock[k].overturned;
+    b.run_slide_m = rock[k].slide_max_m;
     // The like-for-like planar model: the flexible body's runs where the 3D body carries the
     // mode, else the rigid block's.
     for (const LevelResult* l : {&x, &y}) {

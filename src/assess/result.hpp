@@ -257,13 +257,15 @@ struct Body3dLevel {
     double dt_s = 0.0;    ///< the time step
     int unconverged_steps = 0;  ///< over every run: steps whose impulses hit the sweep cap
     /// The step's error, estimated on the governing history at the rocking bound: the same run
-    /// at check_dt_s (a sixteenth of dt_s), its peak tilt over critical and overturn beside the
-    /// level's run of that history.
+    /// at check_dt_s (a sixteenth of dt_s), its peak tilt over critical, overturn and peak |u|
+    /// of the footprint centre, m, beside the level's run of that history.
     double check_dt_s = 0.0;
     double check_tilt_over_critical = 0.0;
     bool check_overturned = false;
+    double check_slide_m = 0.0;
     double run_tilt_over_critical = 0.0;
     bool run_overturned = false;
+    double run_slide_m = 0.0;
     /// Governing 84th percentiles of the planar runs of the level's two directions (the larger),
     /// and 3D over planar (absent when the planar one is 0).
     double planar_rock_over_alpha = 0.0;

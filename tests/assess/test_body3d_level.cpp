@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fmt/format.h>
 
 #include "support/shipped_case.hpp"
 #include "assess/body3d_level.hpp"
@@ -99,8 +100,15 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
         CHECK(b.run_tilt_over_critical == b.sim.rock_over_alpha.values.at(k));
     if (b.run_overturned) CHECK(b.sim.overturned_sets.at(k) == 1);
     CHECK(b.check_tilt_over_critical > 0.0);
-    CHECK(x.trail.end() != std::find_if(x.trail.begin(), x.trail.end(), [](const std::string& t) {
-              return t.find("step check on the governing history") != std::string::npos;
+    // It checks the slide of that run too: with one friction bound the run is the slide's.
+    if (!b.sim.bounds_differ && b.sim.overturned_sets.at(k) == 0)
+        CHECK(b.run_slide_m == b.sim.slide_m.values.at(k));
+    CHECK(b.run_slide_m > 0.0);
+    CHECK(b.check_slide_m > 0.0);
+    CHECK(x.trail.end() != std::find_if(x.trail.begin(), x.trail.end(), [&b](const std::string& t) {
+              return t.find("step check on the governing history") != std::string::npos &&
+                     t.find(fmt::format("and {:.1f} mm at {:g} s", 1e3 * b.check_slide_m,
+                                        b.check_dt_s)) != std::string::npos;
           }));
     // simulations_run counts the planar runs of both rows and the shared 3D runs once, with the
     // step check's.
