@@ -22,7 +22,7 @@ static_assert(sizeof(dynamics::FlexibleSummary) == 256,
               "FlexibleSummary changed: update encode_flexible_summary");
 static_assert(sizeof(dynamics::Body3d) == 112, "Body3d changed: update write_body3d_model");
 static_assert(sizeof(dynamics::Body3dModel) == 200, "Body3dModel changed: update its key");
-static_assert(sizeof(dynamics::Body3dOptions) == 80, "Body3dOptions changed: update its key");
+static_assert(sizeof(dynamics::Body3dOptions) == 88, "Body3dOptions changed: update its key");
 static_assert(sizeof(dynamics::Body3dSummary) == 144,
               "Body3dSummary changed: update encode_body3d_summary");
 
@@ -107,6 +107,7 @@ void write_body3d_options(core::ByteWriter& w, const dynamics::Body3dOptions& o)
                      o.initial_lean_rad, o.max_step_p, o.g_mps2})
         w.f64(v);
     w.u64(o.max_sweeps);
+    w.u64(o.arrival_substeps);
     w.flag(o.record_series);
 }
 

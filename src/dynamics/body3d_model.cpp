@@ -91,6 +91,19 @@ Body3dModel make_body3d_model(const Body3d& body, double mu_s, std::optional<dou
     if (body.footprint_m.size() < 3)
         throw InputError({"", 0, "footprint_m"},
                          fmt::format("expected at least 3 vertices; got {}", body.footprint_m.size()));
+    // The edges' outward normals, the rest test and the arrival speed take the vertices
+    // counter-clockwise around a convex polygon: each turn is to the left.
+    const auto& f = body.footprint_m;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        const Eigen::Vector2d in = f[(i + 1) % f.size()] - f[i];
+        const Eigen::Vector2d out = f[(i + 2) % f.size()] - f[(i + 1) % f.size()];
+        if (!(in.x() * out.y() - in.y() * out.x() > 0.0))
+            throw InputError({"", 0, "footprint_m"},
+                             fmt::format("expected a convex polygon with its vertices "
+                                         "counter-clockwise; the turn at vertex {} is not to the "
+                                         "left",
+                                         (i + 1) % f.size()));
+    }
     require_length(body.h_m, "h_m");
     core::limits::require_in(body.mass_kg, core::limits::mass_kg, {"", 0, "mass_kg"});
     // The CG must stand over the footprint: every direction has a vertex beyond it.

@@ -52,6 +52,9 @@ void require_options(const Body3dModel& m, const BiaxialExcitation& e, const Bod
     require_positive(o.regularization, {"", 0, "regularization"});
     require_positive(o.max_step_p, {"", 0, "max_step_p"});
     if (o.max_sweeps == 0) throw InputError({"", 0, "max_sweeps"}, "must be at least 1");
+    if (o.arrival_substeps == 0 || o.arrival_substeps > 1024)
+        throw InputError({"", 0, "arrival_substeps"},
+                         fmt::format("must be in [1, 1024]; got {}", o.arrival_substeps));
     if (!std::isfinite(o.initial_tilt_rad) || o.initial_tilt_rad < 0.0 ||
         o.initial_tilt_rad >= 0.5 * units::pi)
         throw InputError({"", 0, "initial_tilt_rad"},
@@ -86,6 +89,9 @@ struct Edge {
     double distance_m = 0.0;
 };
 
+/// The planar engine's settling tilt (docs/methods.md s.3), rad.
+constexpr double settle_tilt_rad = 1e-7;
+
 /// What a step needs from the body that does not change.
 struct Fixed {
     const Body3dModel& model;
@@ -104,12 +110,19 @@ struct Fixed {
     double quiet_modal_force_N = 0.0;
     /// The input's sample step, s, and with a mode each axis's exact oscillator over it.
     double segment_s = 0.0;
+    /// The step, s (a split step's substeps keep its sweep tolerance, solver_tol g step_s).
+    double step_s = 0.0;
+    /// The slowest arrival a step is split for, m/s: a vertex landing slower than this would
+    /// rebound the body by less than settle_tilt_rad about its nearest edge (sqrt(2 g c
+    /// settle_tilt_rad), c the least distance from the CG's plan position to an edge), the
+    /// tilt below which the planar engine settles a block (docs/methods.md s.3).
+    double arrival_mps = 0.0;
     std::array<detail::OscillatorStep, 2> held_segment{};
 };
 
-Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o, double segment_s) {
+Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o, double segment_s, double step_s) {
     Fixed f{m, m.body.inertia_cg_kgm2.inverse(), {}, {}, Eigen::Vector3d::Zero(), o, 1.0,
-            std::nullopt, 0.0, segment_s, {}};
+            std::nullopt, 0.0, segment_s, step_s, {}};
     if (m.mode) {
         f.split = detail::modal_split(m);
         for (std::size_t i = 0; i < 2; ++i)
@@ -134,6 +147,9 @@ Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o, double segment_s) {
         f.edges.push_back({n, n.dot(v[i])});
     }
     f.footprint_centre_body /= static_cast<double>(f.vertices_body.size());
+    double nearest_edge_m = std::numeric_limits<double>::infinity();
+    for (const Edge& e : f.edges) nearest_edge_m = std::min(nearest_edge_m, e.distance_m);
+    f.arrival_mps = std::sqrt(2.0 * o.g_mps2 * nearest_edge_m * settle_tilt_rad);
     return f;
 }
 
@@ -141,17 +157,32 @@ Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o, double segment_s) {
 struct StepOutcome {
     ContactState state = ContactState::rest;
     bool converged = true;
+    /// Not taken, the state unchanged: a vertex reaches the floor (Stepper::arrives) and the
+    /// caller asked for such a step to be split.
+    bool split = false;
+    /// Taken, with a vertex reaching the floor in it.
+    bool landed = false;
 };
 
 class Stepper {
 public:
     explicit Stepper(const Fixed& f) : f_(f), impulses_(f.vertices_body.size(), Eigen::Vector3d::Zero()),
-                                       slipping_(f.vertices_body.size(), false) {}
+                                       slipping_(f.vertices_body.size(), false),
+                                       touching_(f.vertices_body.size(), false) {}
+
+    /// The vertices on the floor in the initial state (touching_ before the first step).
+    void start(const BodyState& s) {
+        const Eigen::Matrix3d R = s.q.toRotationMatrix();
+        for (std::size_t i = 0; i < f_.vertices_body.size(); ++i)
+            touching_[i] = s.p_m.z() + R.row(2).dot(f_.vertices_body[i]) <= 0.0;
+    }
 
     /// One Moreau-Jean step of dt_s from the state, under the base's a (horizontal) and
-    /// G = g + yg'' at the step's midpoint.
-    StepOutcome step(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s) {
-        if (f_.split) return step_modal(s, a_mps2, G_mps2, dt_s);
+    /// G = g + yg'' at the step's midpoint; with split_arrivals, a step in which a vertex
+    /// reaches the floor is left for the caller to split.
+    StepOutcome step(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2, double dt_s,
+                     bool split_arrivals) {
+        if (f_.split) return step_modal(s, a_mps2, G_mps2, dt_s, split_arrivals);
         if (stays_at_rest(s, a_mps2, G_mps2)) {
             held_ = true;
             return {ContactState::rest, true};
@@ -166,6 +197,8 @@ public:
                                 R * f_.inverse_inertia_body * R.transpose(), std::nullopt};
         const Eigen::Matrix3d I_world = R * f_.model.body.inertia_cg_kgm2 * R.transpose();
         fill_contacts(mid.p_m, R, s.twist);
+        const bool landed = arrives();
+        if (split_arrivals && landed) return {ContactState::rest, true, true, false};
         // The free motion: gravity and the base's inertia force (the body's frame moves with the
         // base), and the gyroscopic moment.
         detail::Twist t = s.twist;
@@ -176,7 +209,7 @@ public:
         const auto solve = solve_contacts(mass, t, h);
         if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
             leave_at(f_.impact_loss_ratio, arriving, t, mass.mass_kg, I_world);
-        return close_step(s, t, mid, solve, h);
+        return close_step(s, t, mid, solve, h, landed);
     }
 
     /// A held body with a mode through a whole input segment, on which the base's acceleration
@@ -217,7 +250,7 @@ private:
     /// contact pulse, as body3d_modal_stable_step_s bounds it), and the restitution's loss is
     /// taken from the rest's velocities.
     StepOutcome step_modal(BodyState& s, const Eigen::Vector2d& a_mps2, double G_mps2,
-                           double dt_s) {
+                           double dt_s, bool split_arrivals) {
         if (stays_held_modal(s, a_mps2, G_mps2, dt_s)) {
             held_ = true;
             return {ContactState::rest, true};
@@ -241,6 +274,8 @@ private:
         detail::MassMatrix mass{f_.model.body.mass_kg, Eigen::Matrix3d::Identity(),
                                 M_inv.leftCols<6>()};
         fill_contacts(mid.p_m, mid.R, s.twist);
+        const bool landed = arrives();
+        if (split_arrivals && landed) return {ContactState::rest, true, true, false};
         detail::Twist t = detail::unpack(
             detail::pack(s.twist) + h * M_inv * detail::generalized_force(*f_.split, mid.R,
                                                                            mid.modal_m, s.twist,
@@ -249,7 +284,7 @@ private:
         const auto solve = solve_contacts(mass, t, h);
         if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
             leave_modal_at(f_.impact_loss_ratio, arriving, t, M);
-        return close_step(s, t, mid, solve, h);
+        return close_step(s, t, mid, solve, h, landed);
     }
 
     /// The positions at a step's midpoint, from the step's starting velocities.
@@ -270,7 +305,7 @@ private:
     detail::ImpulseSolve solve_contacts(const detail::MassMatrix& mass, detail::Twist& t,
                                         double h) {
         return detail::solve_impulses(contacts_, mass, t,
-                                      f_.options.solver_tol * f_.options.g_mps2 * h,
+                                      f_.options.solver_tol * f_.options.g_mps2 * f_.step_s,
                                       f_.options.g_mps2 * h, f_.options.max_sweeps,
                                       f_.options.regularization);
     }
@@ -278,7 +313,7 @@ private:
     /// The end of a step: the contacts remembered for the next, the state, and the positions
     /// advanced from the midpoint with the final velocities t.
     StepOutcome close_step(BodyState& s, detail::Twist t, const Midpoint& mid,
-                           const detail::ImpulseSolve& solve, double h) {
+                           const detail::ImpulseSolve& solve, double h, bool landed) {
         remember(contacts_, t);
         const ContactState state = state_of(contacts_, t);
         // Three or more carrying contacts solved as sticking fix the rest's six velocities at
@@ -292,7 +327,7 @@ private:
         s.p_m = mid.p_m + 0.5 * h * t.v_mps;
         s.q = detail::turned(mid.q, t.w_radps, 0.5 * h);
         s.modal_m = mid.modal_m + 0.5 * h * t.q_mps;
-        return {state, solve.converged};
+        return {state, solve.converged, false, landed};
     }
 
     /// The floor's force and its moment about the footprint's plane below the body's
@@ -461,6 +496,15 @@ private:
                 Eigen::Vector3d(friction.x() * share, friction.y() * share, normal(i));
         }
         std::fill(slipping_.begin(), slipping_.end(), false);
+        std::fill(touching_.begin(), touching_.end(), true);
+    }
+
+    /// A vertex reaches the floor: a contact of this step that was none of the last step's,
+    /// approaching faster than Fixed::arrival_mps.
+    bool arrives() const {
+        return std::any_of(contacts_.begin(), contacts_.end(), [&](const VertexContact& c) {
+            return !touching_[c.vertex] && c.approach_mps < -f_.arrival_mps;
+        });
     }
 
     /// The vertices on or below the floor at the step's midpoint, into contacts_ (reused from
@@ -505,6 +549,8 @@ private:
     void remember(const std::vector<VertexContact>& contacts, const detail::Twist& t) {
         std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
         std::fill(slipping_.begin(), slipping_.end(), false);
+        std::fill(touching_.begin(), touching_.end(), false);
+        for (const auto& c : contacts) touching_[c.vertex] = true;
         for (const auto& c : contacts) {
             impulses_[c.vertex] = c.impulse_Ns;
             slipping_[c.vertex] = t.at(c.r_m).head<2>().norm() > detail::stick_speed_mps;
@@ -528,6 +574,7 @@ private:
     const Fixed& f_;
     std::vector<Eigen::Vector3d> impulses_;  ///< last step's, per vertex (the warm start)
     std::vector<bool> slipping_;             ///< per vertex, at the last step's end
+    std::vector<bool> touching_;             ///< per vertex, a contact of the last step
     bool held_ = false;                      ///< the last step was stays_at_rest's
     std::vector<VertexContact> contacts_;    ///< this step's
 };
@@ -631,9 +678,10 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     const detail::BiaxialBase base(excitation, options.g_mps2);
     const double n_sub = std::max(1.0, core::steps_covering(excitation.dt_s / options.dt_s));
     const double h = excitation.dt_s / n_sub;
-    const Fixed fixed = fixed_of(model, options, excitation.dt_s);
+    const Fixed fixed = fixed_of(model, options, excitation.dt_s, h);
     Stepper stepper(fixed);
     BodyState s = initial_state(model.body, options);
+    stepper.start(s);
 
     Body3dResult out;
     auto& sum = out.summary;
@@ -651,14 +699,31 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
         const double t_end = seg.tk + excitation.dt_s;
         const bool skip = state == ContactState::rest && rests_through(fixed, stepper, s, seg);
         if (skip) sum.time_in_state_s[0] += excitation.dt_s;
-        for (std::size_t j = 0; j < n && !skip; ++j) {
-            const double t_mid = seg.tk + (static_cast<double>(j) + 0.5) * h;
+        // One step from t0_s, and what it did (split: not taken).
+        const auto take = [&](double t0_s, double dt_s, bool split_arrivals) {
+            const double t_mid = t0_s + 0.5 * dt_s;
             const auto a = seg.a(t_mid);
-            const auto step = stepper.step(s, {a[0], a[1]}, seg.G(t_mid), h);
+            const auto step = stepper.step(s, {a[0], a[1]}, seg.G(t_mid), dt_s, split_arrivals);
+            if (step.split) return step;
             state = step.state;
             ++sum.steps;
             if (!step.converged) ++sum.unconverged_steps;
-            sum.time_in_state_s[static_cast<std::size_t>(state)] += h;
+            sum.time_in_state_s[static_cast<std::size_t>(state)] += dt_s;
+            return step;
+        };
+        const std::size_t m = options.arrival_substeps;
+        const double h_sub = h / static_cast<double>(m);
+        for (std::size_t j = 0; j < n && !skip; ++j) {
+            const double t0 = seg.tk + static_cast<double>(j) * h;
+            if (!take(t0, h, m > 1).split) continue;
+            // Substeps up to the one the vertex lands in, then the rest of the step as one.
+            for (std::size_t i = 0; i < m; ++i) {
+                if (!take(t0 + static_cast<double>(i) * h_sub, h_sub, false).landed) continue;
+                if (i + 1 < m)
+                    take(t0 + static_cast<double>(i + 1) * h_sub,
+                         h - static_cast<double>(i + 1) * h_sub, false);
+                break;
+            }
         }
         // At rest (three or more contacts, every contact point still to stick_speed_mps): the
         // velocities are set to 0 so that the next segment may skip.

@@ -2,6 +2,8 @@
 // failing it and one surely meeting it, the headline it decides, the configuration it speaks
 // for, and the models its samples run.
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -151,11 +153,18 @@ TEST_CASE("a slender block at a high DBE fails the goal, a squat one at a low DB
         assess::parse_case(test::slender_goal_toml, "slender.toml"), settings(0));
     INFO(goal::goal_basis(slender));
     CHECK_FALSE(slender.passes);
-    const goal::LimitState& s = slender.governing_state();
-    CHECK(s.at_dbe.p > goal::target_dbe);
-    CHECK(s.at_dbe.ci95[0] > goal::target_dbe);  // not a near miss
-    // On steel it rocks and tips over; it does not slide away.
-    CHECK((s.event == fragility::Event::rock || s.event == fragility::Event::overturn));
+    const goal::LimitState& governing = slender.governing_state();
+    CHECK(governing.at_dbe.p > goal::target_dbe);
+    CHECK(governing.at_dbe.ci95[0] > goal::target_dbe);  // not a near miss
+    // On steel it rocks and tips over; it does not slide away: overturning alone fails the goal
+    // on a fitted curve (26% at the DBE; any failure 30%), and sliding is a small part of it.
+    const auto state = [&](fragility::Event e) -> const goal::LimitState& {
+        return *std::find_if(slender.limit_states.begin(), slender.limit_states.end(),
+                             [&](const goal::LimitState& l) { return l.event == e; });
+    };
+    const goal::LimitState& s = state(fragility::Event::overturn);
+    CHECK(s.at_dbe.ci95[0] > goal::target_dbe);
+    CHECK(state(fragility::Event::slide).at_dbe.p < 0.2 * s.at_dbe.p);
     CHECK(slender.meta.config.pga_g.size() == 8);
     CHECK(slender.meta.config.pga_g[2] == 0.33);
     REQUIRE(s.fit.fit.has_value());
