@@ -170,6 +170,9 @@ struct Options {
     /// false skips the base-material search of a failing case (no case key: `validate` reads
     /// the own base's levels only and sets it).
     bool search_materials = true;
+    /// false skips the 3D body's step check (Body3dLevel::step_checked; no case key: it only
+    /// reports, and the tests that compare verdicts across policies set it).
+    bool step_check = true;
 };
 
 /// The transfer tunnel joining two units ([tunnel], docs/methods.md s.10).

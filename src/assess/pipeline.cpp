@@ -357,7 +357,7 @@ AssessmentResult assess(const Case& c, const RunSettings& run) {
         if (l.flexible_simulation) res.simulations_run += runs_of(l.flexible_simulation->sim);
         // The 3D runs of a PGA serve its x and y rows: counted once, with the step check's run.
         if (l.body3d && l.body3d->ran && counted_3d_pga_g != l.pga_g) {
-            res.simulations_run += runs_of(l.body3d->sim) + 1;
+            res.simulations_run += runs_of(l.body3d->sim) + (l.body3d->step_checked ? 1 : 0);
             counted_3d_pga_g = l.pga_g;
         }
     }

@@ -259,6 +259,7 @@ struct Body3dLevel {
     /// The step's error, estimated on the governing history at the rocking bound: the same run
     /// at check_dt_s (a sixteenth of dt_s), its peak tilt over critical, overturn and peak |u|
     /// of the footprint centre, m, beside the level's run of that history.
+    bool step_checked = false;  ///< the check ran (Options::step_check)
     double check_dt_s = 0.0;
     double check_tilt_over_critical = 0.0;
     bool check_overturned = false;

@@ -402,19 +402,24 @@ std::string body3d_trail_line(const Body3dLevel& b) {
     const auto ratio = [](const std::optional<double>& r) {
         return r ? fmt::format("{:.2f} x the planar", *r) : std::string("the planar is nil");
     };
+    const std::string step_check =
+        b.step_checked
+            ? fmt::format("step check on the governing history {}: peak tilt over critical "
+                          "{:.4f}{} and peak |u| {:.1f} mm at dt {:g} s, {:.4f}{} and {:.1f} mm "
+                          "at {:g} s",
+                          sim.governing_history + 1, b.run_tilt_over_critical,
+                          b.run_overturned ? " (overturned)" : "", mm(b.run_slide_m), b.dt_s,
+                          b.check_tilt_over_critical, b.check_overturned ? " (overturned)" : "",
+                          mm(b.check_slide_m), b.check_dt_s)
+            : std::string("step check not run");
     return fmt::format(
         "3D body (h1 along x, h2 along y, the vertical; dt {:g} s): {} of {} overturned; peak tilt "
         "over critical 84th {:.3f} ({}, {:.3f}); peak |u| 84th {:.1f} mm at mu_s {:.3f} ({}, "
-        "{:.1f} mm); peak twist 84th {:.4f} rad; step check on the governing history {}: peak "
-        "tilt over critical {:.4f}{} and peak |u| {:.1f} mm at dt {:g} s, {:.4f}{} and {:.1f} mm "
-        "at {:g} s",
+        "{:.1f} mm); peak twist 84th {:.4f} rad; {}",
         b.dt_s, sim.overturned, sim.histories, sim.governing(sim.rock_over_alpha),
         ratio(b.rock_ratio), b.planar_rock_over_alpha, mm(sim.governing(sim.slide_m)),
         sim.sliding_bound.mu_s, ratio(b.slide_ratio), mm(b.planar_slide_m),
-        sim.governing(b.twist_rad), sim.governing_history + 1, b.run_tilt_over_critical,
-        b.run_overturned ? " (overturned)" : "", mm(b.run_slide_m), b.dt_s,
-        b.check_tilt_over_critical, b.check_overturned ? " (overturned)" : "",
-        mm(b.check_slide_m), b.check_dt_s) +
+        sim.governing(b.twist_rad), step_check) +
            (b.flexible ? fmt::format("; carrying the flexible body's {}: peak |q| 84th {:.1f} mm",
                                      b.mode_text, mm(b.modal_m.p84))
                        : std::string());

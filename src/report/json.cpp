@@ -173,15 +173,17 @@ ordered_json body3d_json(const std::optional<Body3dLevel>& b) {
     if (!b->ran) return j;
     j["dt_s"] = num(b->dt_s);
     j["unconverged_steps"] = b->unconverged_steps;
-    j["step_check"] = {{"history", b->sim.governing_history + 1},
-                       {"dt_s", num(b->dt_s)},
-                       {"tilt_max_over_critical", num(b->run_tilt_over_critical)},
-                       {"overturned", b->run_overturned},
-                       {"slide_max_m", num(b->run_slide_m)},
-                       {"check_dt_s", num(b->check_dt_s)},
-                       {"check_tilt_max_over_critical", num(b->check_tilt_over_critical)},
-                       {"check_overturned", b->check_overturned},
-                       {"check_slide_max_m", num(b->check_slide_m)}};
+    j["step_check"] = nullptr;
+    if (b->step_checked)
+        j["step_check"] = {{"history", b->sim.governing_history + 1},
+                           {"dt_s", num(b->dt_s)},
+                           {"tilt_max_over_critical", num(b->run_tilt_over_critical)},
+                           {"overturned", b->run_overturned},
+                           {"slide_max_m", num(b->run_slide_m)},
+                           {"check_dt_s", num(b->check_dt_s)},
+                           {"check_tilt_max_over_critical", num(b->check_tilt_over_critical)},
+                           {"check_overturned", b->check_overturned},
+                           {"check_slide_max_m", num(b->check_slide_m)}};
     j["twist_rad"] = stats_json(b->twist_rad);
     j["flexible"] = b->flexible;
     j["mode"] = b->flexible ? ordered_json(b->mode_text) : ordered_json(nullptr);

@@ -94,6 +94,7 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
           Approx(bounds.rocking.restitution + bounds.rocking_lower->restitution));
     CHECK(b.sim.rocking_bound.restitution != b.sim.rocking_other->bound.restitution);
     // The step check reruns the governing history at a sixteenth of the step, beside its own run.
+    CHECK(b.step_checked);
     CHECK(b.check_dt_s == Approx(b.dt_s / 16.0));
     const auto k = static_cast<std::size_t>(b.sim.governing_history);
     if (b.sim.overturned_sets.at(k) == 0)
@@ -116,6 +117,20 @@ TEST_CASE("a level that can uplift is decided by the 3D body, the planar runs be
         return sim.histories * (1 + (sim.bounds_differ ? 1 : 0) + (sim.rocking_other ? 1 : 0));
     };
     CHECK(r.simulations_run == runs(*x.simulation) + runs(*y.simulation) + runs(b.sim) + 1);
+    // Without the step check (no case key; the policy tests skip it) the decision is the same
+    // and the trail says the check did not run.
+    Case unchecked = c;
+    unchecked.options.step_check = false;
+    const AssessmentResult u = assess::assess(unchecked);
+    const LevelResult& ux = u.levels.at(0);
+    REQUIRE(ux.body3d.has_value());
+    CHECK_FALSE(ux.body3d->step_checked);
+    CHECK(ux.verdict.margin == x.verdict.margin);
+    CHECK(ux.body3d->sim.overturned_sets == b.sim.overturned_sets);
+    CHECK(std::any_of(ux.trail.begin(), ux.trail.end(), [](const std::string& t) {
+        return t.rfind("3D body (", 0) == 0 && t.find("; step check not run") != std::string::npos;
+    }));
+    CHECK(u.simulations_run == r.simulations_run - 1);
     double time_s = 0.0;
     for (double t : b.time_in_state_s) time_s += t;
     CHECK(time_s > 1.0);

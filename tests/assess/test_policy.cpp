@@ -76,12 +76,14 @@ void check_material_trials(const std::string& name) {
     Case c = read_case(file);
     c.options.histories_per_level = 3;
     c.options.max_histories_per_level = c.options.histories_per_level;
+    c.options.step_check = false;  // it only reports, at half these tests' time
     const Upgrade search = search_materials(c);
     for (const Material& m : materials()) {
         INFO(file.filename().string() << " with " << m.name);
         Case edited = parse_case(edited_case_text(file, m.name), file.string());
         edited.options.histories_per_level = 3;
         edited.options.max_histories_per_level = edited.options.histories_per_level;
+        edited.options.step_check = false;
         const AssessmentResult direct = assess::assess(edited);
         const auto trial =
             std::find_if(search.trials.begin(), search.trials.end(),
@@ -125,6 +127,7 @@ TEST_CASE("every material trial equals a direct assessment: each unit of glovebo
         Case c = unit_case(pair, i);
         c.options.histories_per_level = 3;  // any number must agree: 3 keep it quick
         c.options.max_histories_per_level = c.options.histories_per_level;
+        c.options.step_check = false;
         const Upgrade search = search_materials(c);
         REQUIRE(search.trials.size() == materials().size());
         for (const MaterialTrial& t : search.trials) {
@@ -142,6 +145,7 @@ void check_auto_equals_always(const std::string& name) {
     // The rule holds for any number of sets: 7, without growth, keep it quick.
     c.options.histories_per_level = 7;
     c.options.max_histories_per_level = c.options.histories_per_level;
+    c.options.step_check = false;  // it only reports, at half these tests' time
     c.options.simulate = SimulatePolicy::automatic;
     const AssessmentResult automatic = assess::assess(c);
     c.options.simulate = SimulatePolicy::always;
@@ -164,6 +168,7 @@ TEST_CASE("simulate = \"auto\" and \"always\" give the same verdict: glovebox-pa
     // As check_auto_equals_always: any number of sets, 7 without growth.
     c.options.histories_per_level = 7;
     c.options.max_histories_per_level = c.options.histories_per_level;
+    c.options.step_check = false;  // it only reports, at half these tests' time
     c.options.simulate = SimulatePolicy::automatic;
     const AssessmentResult automatic = assess::assess(c);
     c.options.simulate = SimulatePolicy::always;
