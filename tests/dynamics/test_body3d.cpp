@@ -426,9 +426,14 @@ TEST_CASE("3D: a step past the accuracy limit and bad models are refused, naming
     dented.footprint_m.insert(dented.footprint_m.begin() + 1, Eigen::Vector2d(0.01, 0.0));
     CHECK_THROWS_WITH(dynamics::make_body3d_model(dented, 0.5),
                       Catch::Contains("convex") && Catch::Contains("vertex 1"));
-    o = quick();
-    o.arrival_substeps = 0;
-    CHECK_THROWS_WITH(dynamics::simulate_body3d(m, e, o), Catch::Contains("arrival_substeps"));
+    auto not_a_number = body;
+    not_a_number.footprint_m[2].x() = std::nan("");
+    CHECK_THROWS_WITH(dynamics::make_body3d_model(not_a_number, 0.5), Catch::Contains("footprint_m"));
+    for (const std::size_t substeps : {std::size_t{0}, std::size_t{1025}}) {
+        o = quick();
+        o.arrival_substeps = substeps;
+        CHECK_THROWS_WITH(dynamics::simulate_body3d(m, e, o), Catch::Contains("arrival_substeps"));
+    }
 }
 
 }  // namespace freestand_test_dynamics_test_body3d
