@@ -174,7 +174,7 @@ public:
     void start(const BodyState& s) {
         const Eigen::Matrix3d R = s.q.toRotationMatrix();
         for (std::size_t i = 0; i < f_.vertices_body.size(); ++i)
-            touching_[i] = s.p_m.z() + R.row(2).dot(f_.vertices_body[i]) <= 0.0;
+            touching_[i] = height_m(s, R, f_.vertices_body[i]) <= 0.0;
     }
 
     /// One Moreau-Jean step of dt_s from the state, under the base's a (horizontal) and
@@ -399,11 +399,16 @@ private:
         return out;
     }
 
+    /// The height above the floor of the body point v (body axes, from the CG), m.
+    static double height_m(const BodyState& s, const Eigen::Matrix3d& R, const Eigen::Vector3d& v) {
+        return s.p_m.z() + R.row(2).dot(v);
+    }
+
     /// Whether the body lies flat on its whole footprint with its rest's velocities at zero.
     bool flat_and_still(const BodyState& s, const Eigen::Matrix3d& R) const {
         if (!s.twist.v_mps.isZero(0.0) || !s.twist.w_radps.isZero(0.0)) return false;
         return std::none_of(f_.vertices_body.begin(), f_.vertices_body.end(),
-                            [&](const Eigen::Vector3d& v) { return s.p_m.z() + R.row(2).dot(v) > 0.0; });
+                            [&](const Eigen::Vector3d& v) { return height_m(s, R, v) > 0.0; });
     }
 
     /// stays_at_rest for a body with a mode: held flat on its whole footprint, it stays so
@@ -550,8 +555,8 @@ private:
         std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
         std::fill(slipping_.begin(), slipping_.end(), false);
         std::fill(touching_.begin(), touching_.end(), false);
-        for (const auto& c : contacts) touching_[c.vertex] = true;
         for (const auto& c : contacts) {
+            touching_[c.vertex] = true;
             impulses_[c.vertex] = c.impulse_Ns;
             slipping_[c.vertex] = t.at(c.r_m).head<2>().norm() > detail::stick_speed_mps;
         }
