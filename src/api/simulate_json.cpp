@@ -110,6 +110,10 @@ json body3d_json(const Body3dRun& run) {
     j["pga_g"] = s.pga_g;
     j["steps"] = s.steps;
     j["unconverged_steps"] = s.unconverged_steps;
+    json phases;
+    for (std::size_t i = 0; i < dynamics::phase_kind_count; ++i)
+        phases[dynamics::to_string(static_cast<dynamics::Phase>(i))] = s.phase_time_s[i];
+    j["phase_time_s"] = phases;
     j["end_time_s"] = s.end_time_s;
     j["wall_s"] = s.wall_s;
     j["friction"] = {{"mu_s", run.model.mu_s}, {"mu_k", run.model.mu_k}};

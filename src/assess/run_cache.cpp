@@ -9,7 +9,7 @@ namespace freestand::assess {
 namespace {
 
 // Raised when a key's or an encoding's layout below changes (old entries are then unused).
-constexpr std::uint64_t format_version = 2;
+constexpr std::uint64_t format_version = 3;
 
 // A field added to one of these must join its key or its encoding below: the sizes catch it.
 static_assert(sizeof(block::Block) == 40, "block::Block changed: update write_model");
@@ -23,7 +23,7 @@ static_assert(sizeof(dynamics::FlexibleSummary) == 256,
 static_assert(sizeof(dynamics::Body3d) == 112, "Body3d changed: update write_body3d_model");
 static_assert(sizeof(dynamics::Body3dModel) == 200, "Body3dModel changed: update its key");
 static_assert(sizeof(dynamics::Body3dOptions) == 88, "Body3dOptions changed: update its key");
-static_assert(sizeof(dynamics::Body3dSummary) == 144,
+static_assert(sizeof(dynamics::Body3dSummary) == 168,
               "Body3dSummary changed: update encode_body3d_summary");
 
 void write_head(core::ByteWriter& w, std::string_view kind) {
@@ -108,6 +108,7 @@ void write_body3d_options(core::ByteWriter& w, const dynamics::Body3dOptions& o)
         w.f64(v);
     w.u64(o.max_sweeps);
     w.u64(o.arrival_substeps);
+    w.flag(o.phases);
     w.flag(o.record_series);
 }
 
@@ -252,6 +253,7 @@ std::string encode_body3d_summary(const dynamics::Body3dSummary& s) {
     w.flag(s.overturned);
     w.opt_f64(s.overturn_time_s);
     for (double t : s.time_in_state_s) w.f64(t);
+    for (double t : s.phase_time_s) w.f64(t);
     w.u64(s.steps);
     w.u64(s.unconverged_steps);
     return w.take();
@@ -267,6 +269,7 @@ std::optional<dynamics::Body3dSummary> decode_body3d_summary(std::string_view by
     s.overturned = r.flag();
     s.overturn_time_s = r.opt_f64();
     for (double& t : s.time_in_state_s) t = r.f64();
+    for (double& t : s.phase_time_s) t = r.f64();
     s.steps = static_cast<std::size_t>(r.u64());
     s.unconverged_steps = static_cast<std::size_t>(r.u64());
     if (r.failed() || !r.at_end()) return std::nullopt;

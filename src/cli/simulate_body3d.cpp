@@ -75,6 +75,11 @@ void print_body3d(const api::Body3dRun& run) {
         s.overturned ? fmt::format("yes, at {:.4f} s", *s.overturn_time_s) : std::string("no"),
         s.slide_max_m, s.twist_max_rad, s.pga_g, run.model.mu_s, run.model.mu_k, s.steps,
         s.unconverged_steps, s.wall_s);
+    std::cout << "phases taken whole   ";
+    for (std::size_t i = 0; i < dynamics::phase_kind_count; ++i)
+        std::cout << fmt::format(" {} {:.3f} s", dynamics::to_string(static_cast<dynamics::Phase>(i)),
+                                 s.phase_time_s[i]);
+    std::cout << "\n";
     std::cout << "time in state        ";
     for (std::size_t i = 0; i < dynamics::contact_state_count; ++i)
         std::cout << fmt::format(" {} {:.3f} s",

@@ -123,6 +123,13 @@ inline constexpr std::size_t contact_state_count = 5;
 /// "rest", "slide", "edge", "vertex", "flight".
 const char* to_string(ContactState state);
 
+/// The phases a rigid body may be taken through whole (docs/methods.md s.11): rocking on an
+/// edge whose vertices stick, rocking on an edge whose vertices slip, sliding flat.
+enum class Phase { edge_sticking, edge_slipping, flat_slide };
+inline constexpr std::size_t phase_kind_count = 3;
+/// "edge_sticking", "edge_slipping", "flat_slide".
+const char* to_string(Phase phase);
+
 struct Body3dOptions {
     /// Time step, s, rounded down to divide the excitation's sample step. First order: the
     /// error of the peaks falls in proportion to it (bench_dynamics, docs/methods.md s.11).
@@ -149,6 +156,11 @@ struct Body3dOptions {
     /// is taken as this many steps of dt_s / arrival_substeps: the impact, the scheme's first-
     /// order error, falls within a sixteenth of the step (docs/methods.md s.11). 1: no split.
     std::size_t arrival_substeps = 16;
+    /// A rigid body's smooth phases are taken as the few degrees of freedom they have
+    /// (Dormand-Prince, their ends located), not by steps: rocking about a footprint edge whose
+    /// two vertices stick, and sliding flat without turning (docs/methods.md s.11). false:
+    /// every phase by steps (the scheme's own order).
+    bool phases = true;
     bool record_series = true;
     double g_mps2 = units::g_mps2;
 };
@@ -173,8 +185,11 @@ struct Body3dSummary {
     double twist_max_rad = 0.0; ///< peak |twist|
     double modal_max_m = 0.0;   ///< peak |q| of the mode, m (0 for the rigid body)
     std::array<double, contact_state_count> time_in_state_s{};
-    std::size_t steps = 0;
+    std::size_t steps = 0;  ///< Moreau-Jean steps and the phases' Dormand-Prince steps
     std::size_t unconverged_steps = 0;  ///< steps whose impulses reached max_sweeps
+    /// Time the rigid body spent in each kind of phase taken whole (Body3dOptions::phases), s,
+    /// by Phase: the rest of its moving time went by steps.
+    std::array<double, phase_kind_count> phase_time_s{};
     double end_time_s = 0.0;
     double pga_g = 0.0;  ///< peak |a_g| of the horizontal vector, g
     double wall_s = 0.0;

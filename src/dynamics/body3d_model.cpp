@@ -128,4 +128,13 @@ const char* to_string(ContactState state) {
     return "?";
 }
 
+const char* to_string(Phase phase) {
+    switch (phase) {
+        case Phase::edge_sticking: return "edge_sticking";
+        case Phase::edge_slipping: return "edge_slipping";
+        case Phase::flat_slide: return "flat_slide";
+    }
+    return "?";
+}
+
 }  // namespace freestand::dynamics

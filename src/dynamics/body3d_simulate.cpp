@@ -9,12 +9,14 @@
 #include <fmt/format.h>
 #include <limits>
 #include <optional>
+#include <variant>
 
 #include "core/errors.hpp"
 #include "core/limits.hpp"
 #include "core/steps.hpp"
 #include "dynamics/biaxial_detail.hpp"
 #include "dynamics/body3d_detail.hpp"
+#include "dynamics/body3d_phases_detail.hpp"
 #include "dynamics/flexible_detail.hpp"
 
 namespace freestand::dynamics {
@@ -205,11 +207,79 @@ public:
         t.v_mps += h * Eigen::Vector3d(-a_mps2.x(), -a_mps2.y(), -G_mps2);
         const Eigen::Vector3d& w = s.twist.w_radps;
         t.w_radps += h * (mass.inverse_inertia * (-w.cross(I_world * w)));
-        const detail::Twist arriving = t;
+        const detail::Twist arriving = s.twist;
         const auto solve = solve_contacts(mass, t, h);
         if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
             leave_at(f_.impact_loss_ratio, arriving, t, mass.mass_kg, I_world);
         return close_step(s, t, mid, solve, h, landed);
+    }
+
+    /// The footprint edge a rigid body rocks on at the end of the last step: exactly two
+    /// contacts carry and they are neighbours. Its vertices counter-clockwise, and whether
+    /// both stick, both slip or one of each (at the step's midpoint, as remember() finds).
+    enum class EdgeSlip { sticking, slipping, mixed };
+    struct EdgeContacts {
+        std::array<std::size_t, 2> vertices{};
+        EdgeSlip slip = EdgeSlip::mixed;
+    };
+    std::optional<EdgeContacts> edge_contacts() const {
+        if (f_.split) return std::nullopt;
+        std::array<std::size_t, 2> v{};
+        std::size_t carrying = 0;
+        for (const auto& c : contacts_) {
+            if (c.impulse_Ns.z() <= 0.0) continue;
+            if (carrying == 2) return std::nullopt;
+            v[carrying++] = c.vertex;
+        }
+        if (carrying != 2) return std::nullopt;
+        const std::size_t n = f_.vertices_body.size();
+        if ((v[1] + 1) % n == v[0]) std::swap(v[0], v[1]);
+        if ((v[0] + 1) % n != v[1]) return std::nullopt;
+        const bool a = slipping_[v[0]], b = slipping_[v[1]];
+        return EdgeContacts{v, a != b ? EdgeSlip::mixed : a ? EdgeSlip::slipping : EdgeSlip::sticking};
+    }
+
+    /// The steps go on from an edge phase's end: its two vertices on the floor, sticking or
+    /// slipping, with the impulses of its forces over a step as the warm start.
+    void resume_from(const std::array<std::size_t, 2>& vertices,
+                     const std::array<Eigen::Vector3d, 2>& forces_N, bool slipping) {
+        std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
+        std::fill(slipping_.begin(), slipping_.end(), false);
+        std::fill(touching_.begin(), touching_.end(), false);
+        for (std::size_t k = 0; k < 2; ++k) {
+            touching_[vertices[k]] = true;
+            slipping_[vertices[k]] = slipping;
+            impulses_[vertices[k]] = f_.step_s * forces_N[k];
+        }
+        held_ = false;
+    }
+
+    /// Whether a rigid body slides flat at the end of the last step: every vertex a carrying
+    /// contact, every one slipping, and no contact point moving off the body's translation by
+    /// more than stick_speed_mps (no turning).
+    bool sliding_flat(const BodyState& s) const {
+        if (f_.split || contacts_.size() != f_.vertices_body.size()) return false;
+        return std::all_of(contacts_.begin(), contacts_.end(), [&](const VertexContact& c) {
+            return c.impulse_Ns.z() > 0.0 && slipping_[c.vertex] &&
+                   (s.twist.at(c.r_m) - s.twist.v_mps).norm() <= detail::stick_speed_mps &&
+                   std::abs(s.twist.v_mps.z()) <= detail::stick_speed_mps;
+        });
+    }
+
+    /// The steps go on from a flat slide's end: every vertex on the floor, slipping along
+    /// `slip` (world plan axes), with the impulses over a step of the weight under G, its
+    /// centre of pressure mu_k h ahead along the slip, and the friction as the warm start.
+    void resume_sliding(const BodyState& s, const Eigen::Vector2d& slip, double G_mps2) {
+        const double N_dt = f_.model.body.mass_kg * std::max(G_mps2, 0.0) * f_.step_s;
+        if (N_dt > 0.0) {
+            const Eigen::Vector2d ahead = f_.model.mu_k * s.p_m.z() * slip;
+            warm_start_from(s.q.toRotationMatrix(),
+                            Eigen::Vector3d(N_dt, N_dt * ahead.x(), N_dt * ahead.y()),
+                            -f_.model.mu_k * N_dt * slip);
+        }
+        std::fill(slipping_.begin(), slipping_.end(), true);
+        std::fill(touching_.begin(), touching_.end(), true);
+        held_ = false;
     }
 
     /// A held body with a mode through a whole input segment, on which the base's acceleration
@@ -280,7 +350,7 @@ private:
             detail::pack(s.twist) + h * M_inv * detail::generalized_force(*f_.split, mid.R,
                                                                            mid.modal_m, s.twist,
                                                                            a_mps2, G_mps2));
-        const detail::Twist arriving = t;
+        const detail::Twist arriving = s.twist;
         const auto solve = solve_contacts(mass, t, h);
         if (f_.model.angular_restitution && detail::has_impact(contacts_, f_.options.g_mps2 * h))
             leave_modal_at(f_.impact_loss_ratio, arriving, t, M);
@@ -584,6 +654,49 @@ private:
     std::vector<VertexContact> contacts_;    ///< this step's
 };
 
+/// A rigid body's smooth phase taken whole (body3d_phases_detail.hpp).
+/// Its alternatives in the order of Phase.
+using WholePhase = std::variant<detail::EdgePivot, detail::EdgeSlide, detail::FlatSlide>;
+
+ContactState state_in(const WholePhase& p) {
+    return std::holds_alternative<detail::FlatSlide>(p) ? ContactState::slide : ContactState::edge;
+}
+
+/// The phase a step's end starts, if its contacts make one and its margins hold there: an
+/// edge whose two vertices stick or slip, or the whole footprint slipping without turning.
+std::optional<WholePhase> phase_after_step(const Body3dModel& model, const Stepper& stepper,
+                                      const BodyState& s, ContactState state,
+                                      const detail::BiaxialSegment& seg, double t_s,
+                                      double g_mps2, double slow_mps) {
+    std::optional<WholePhase> out;
+    if (state == ContactState::edge) {
+        const auto edge = stepper.edge_contacts();
+        if (!edge) return out;
+        const auto [from, to] = edge->vertices;
+        if (edge->slip == Stepper::EdgeSlip::sticking) {
+            if (auto p = detail::EdgePivot::start(model, s, from, to, seg, t_s, g_mps2)) out = *p;
+        } else if (edge->slip == Stepper::EdgeSlip::slipping) {
+            if (auto p = detail::EdgeSlide::start(model, s, from, to, seg, t_s, g_mps2, slow_mps))
+                out = *p;
+        }
+    } else if (state == ContactState::slide && stepper.sliding_flat(s)) {
+        if (auto p = detail::FlatSlide::start(model, s, seg, t_s, g_mps2, slow_mps)) out = *p;
+    }
+    return out;
+}
+
+/// The steps' contact memory at a phase's end (their warm start).
+void resume_after(Stepper& stepper, const WholePhase& phase, const BodyState& s,
+                  const detail::BiaxialSegment& seg, double t_s) {
+    if (const auto* p = std::get_if<detail::EdgePivot>(&phase))
+        stepper.resume_from(p->vertices(), p->vertex_forces_N(seg), false);
+    else if (const auto* e = std::get_if<detail::EdgeSlide>(&phase))
+        stepper.resume_from(e->vertices(), e->vertex_forces_N(seg), true);
+    else
+        stepper.resume_sliding(s, std::get<detail::FlatSlide>(phase).slip_direction(),
+                               seg.G(t_s));
+}
+
 /// Tilt, tilt over the critical tilt in the direction of the lean, twist and slide of a state.
 Body3dSample sample_of(const BodyState& s, const Fixed& f, double t_s, ContactState state) {
     const Eigen::Matrix3d R = s.q.toRotationMatrix();
@@ -694,9 +807,12 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
     const auto first = sample_of(s, fixed, 0.0, ContactState::rest);
     if (options.record_series) out.series.push_back(first);
     const std::size_t segments = base.segments(options.tail_s);
-    const auto n = static_cast<std::size_t>(n_sub);
     // The state at the last segment's end (a body released leaning is on its support line).
     ContactState state = options.initial_tilt_rad > 0.0 ? ContactState::edge : ContactState::rest;
+    // The phase the body is in, if any (it may run on through several segments), and the
+    // slip below which a flat slide is left to the steps: what gravity adds in a step.
+    std::optional<WholePhase> phase;
+    const double slow_mps = options.g_mps2 * h;
     for (std::size_t k = 0; k < segments && !sum.overturned; ++k) {
         const auto seg = base.segment(k);
         // A body at rest that the segment's load cannot move skips the segment's steps, as
@@ -716,19 +832,46 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
             sum.time_in_state_s[static_cast<std::size_t>(state)] += dt_s;
             return step;
         };
+        // Steps over [t0, t0 + dt]: one, or with a vertex landing in it, substeps up to the one
+        // it lands in and the rest of the step as one.
         const std::size_t m = options.arrival_substeps;
-        const double h_sub = h / static_cast<double>(m);
-        for (std::size_t j = 0; j < n && !skip; ++j) {
-            const double t0 = seg.tk + static_cast<double>(j) * h;
-            if (!take(t0, h, m > 1).split) continue;
-            // Substeps up to the one the vertex lands in, then the rest of the step as one.
+        const auto steps_over = [&](double t0, double dt) {
+            if (!take(t0, dt, m > 1).split) return;
+            const double sub = dt / static_cast<double>(m);
             for (std::size_t i = 0; i < m; ++i) {
-                if (!take(t0 + static_cast<double>(i) * h_sub, h_sub, false).landed) continue;
+                if (!take(t0 + static_cast<double>(i) * sub, sub, false).landed) continue;
                 if (i + 1 < m)
-                    take(t0 + static_cast<double>(i + 1) * h_sub,
-                         h - static_cast<double>(i + 1) * h_sub, false);
+                    take(t0 + static_cast<double>(i + 1) * sub,
+                         dt - static_cast<double>(i + 1) * sub, false);
                 break;
             }
+        };
+        double t = seg.tk;
+        while (!skip && t < t_end) {
+            if (phase) {
+                const detail::PhaseRun run = std::visit(
+                    [&](auto& p) { return p.advance(seg, t_end); }, *phase);
+                const ContactState phase_state = state_in(*phase);
+                sum.steps += run.steps;
+                sum.time_in_state_s[static_cast<std::size_t>(phase_state)] += run.t_s - t;
+                sum.phase_time_s[phase->index()] += run.t_s - t;
+                s = std::visit([](const auto& p) { return p.state(); }, *phase);
+                state = phase_state;
+                t = run.t_s;
+                if (!run.ended) break;
+                resume_after(stepper, *phase, s, seg, t);
+                phase.reset();
+                if (t >= t_end) break;
+            }
+            // Steps end on the grid of h from the segment's start; after a phase, a remainder
+            // below a hundredth of h joins the next step.
+            double t_next = seg.tk + h * (std::floor((t - seg.tk) / h + 1e-9) + 1.0);
+            if (t_next - t < 0.01 * h) t_next += h;
+            if (t_end - t_next < 0.01 * h) t_next = t_end;
+            steps_over(t, t_next - t);
+            t = t_next;
+            if (options.phases) phase = phase_after_step(model, stepper, s, state, seg, t,
+                                                         options.g_mps2, slow_mps);
         }
         // At rest (three or more contacts, every contact point still to stick_speed_mps): the
         // velocities are set to 0 so that the next segment may skip.

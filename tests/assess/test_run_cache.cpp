@@ -123,6 +123,7 @@ TEST_CASE("a run's summary encoded and decoded is the same summary, bit for bit"
     CHECK(encode_body3d_summary(*b_back) == b_bytes);
     CHECK(std::memcmp(&b_back->slide_max_m, &b.slide_max_m, sizeof(double)) == 0);
     CHECK(b_back->time_in_state_s == b.time_in_state_s);
+    CHECK(b_back->phase_time_s == b.phase_time_s);
     CHECK_FALSE(decode_body3d_summary(b_bytes.substr(0, b_bytes.size() - 1)));
     CHECK_FALSE(decode_body3d_summary(encode_flexible_summary(f)));
 }
@@ -178,6 +179,9 @@ TEST_CASE("a run's key changes with anything the run depends on", "[assess][cach
     dynamics::Body3dOptions fewer = o3;
     fewer.max_sweeps = 100;
     CHECK(body3d_run_key(box3d(), excitation_key(bi), fewer) != key3);
+    dynamics::Body3dOptions stepped = o3;
+    stepped.phases = false;
+    CHECK(body3d_run_key(box3d(), excitation_key(bi), stepped) != key3);
     CHECK(body3d_run_key(box3d(), excitation_key(diagonal_sine(0.6)), o3) != key3);
 }
 
@@ -254,7 +258,7 @@ TEST_CASE("the engines' runs of reference scenes are unchanged at this engine_ve
     // A change of the digest means a run's summary changed: raise engine_version (so no cache
     // serves an old engine's run) and update the version and the digests here. One digest per
     // preset that runs the tests (another compiler rounds differently; the key holds the build).
-    CHECK(std::string(engine_version) == "4");
+    CHECK(std::string(engine_version) == "5");
     const dynamics::Options o = quiet();
     const dynamics::Excitation ex = sine(0.5);
     dynamics::Summary rigid = dynamics::simulate(slender(), ex, o).summary;
@@ -273,8 +277,8 @@ TEST_CASE("the engines' runs of reference scenes are unchanged at this engine_ve
         core::sha256_hex(encode_summary(rigid) + encode_flexible_summary(flex) +
                          std::string(reinterpret_cast<const char*>(&peak), sizeof peak));
     const std::map<std::string, std::string> digests{
-        {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "90904f95a648dffd66b82c1d81c3c84682599b9905a198a4f72a18b35669b08c"},
-        {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "90904f95a648dffd66b82c1d81c3c84682599b9905a198a4f72a18b35669b08c"},
+        {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "ca8d9f4072fbbf9c04a427b91856c6a443aeaac9561cc24461208d1a7863a739"},
+        {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "ca8d9f4072fbbf9c04a427b91856c6a443aeaac9561cc24461208d1a7863a739"},
     };
     const std::string build = core::build_identity();
     INFO("build " << build << ": digest " << digest);
@@ -284,19 +288,26 @@ TEST_CASE("the engines' runs of reference scenes are unchanged at this engine_ve
 
 TEST_CASE("the 3D body's runs of reference scenes are unchanged at this engine_version",
           "[assess][cache][runs][3d]") {
-    // As above, for the 3D body, rigid and carrying a mode, under a diagonal sine.
-    CHECK(std::string(engine_version) == "4");
+    // As above, for the 3D body, rigid, carrying a mode and with a restitution, under a sine.
+    CHECK(std::string(engine_version) == "5");
     dynamics::Body3dSummary rigid =
         dynamics::simulate_body3d(box3d(), diagonal_sine(0.5), quiet3d()).summary;
     dynamics::Body3dSummary modal =
         dynamics::simulate_body3d(box3d_with_mode(), diagonal_sine(0.5), quiet3d()).summary;
+    dynamics::Body3dModel restituted_model = box3d();
+    restituted_model.angular_restitution = 0.98;
+    dynamics::Body3dSummary restituted =
+        dynamics::simulate_body3d(restituted_model, diagonal_sine(0.5), quiet3d()).summary;
+    REQUIRE(rigid.phase_time_s[0] > 0.0);  // the digest covers the phases taken whole
     rigid.wall_s = 0.0;
     modal.wall_s = 0.0;
+    restituted.wall_s = 0.0;
     const std::string digest =
-        core::sha256_hex(encode_body3d_summary(rigid) + encode_body3d_summary(modal));
+        core::sha256_hex(encode_body3d_summary(rigid) + encode_body3d_summary(modal) +
+                         encode_body3d_summary(restituted));
     const std::map<std::string, std::string> digests{
-        {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "c8dded71e9abe494c1803821ad8249c4433b8f499971e249395e3bb4b9e0e291"},
-        {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "c8dded71e9abe494c1803821ad8249c4433b8f499971e249395e3bb4b9e0e291"},
+        {"GNU 12.2.0 x86_64; Release -O3 -DNDEBUG; sanitizers OFF", "de60d81516919c7e7bd3fcf23896ec1137fe525834c58c91a7a0f6c22afb1b58"},
+        {"Clang 14.0.6 x86_64; RelWithDebInfo -O1 -g1 -DNDEBUG; sanitizers ON", "de60d81516919c7e7bd3fcf23896ec1137fe525834c58c91a7a0f6c22afb1b58"},
     };
     const std::string build = core::build_identity();
     INFO("build " << build << ": digest " << digest);
