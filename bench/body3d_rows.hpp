@@ -1,17 +1,20 @@
 #pragma once
 // The 3D body's rows of bench_dynamics (docs/methods.md s.11): speed against error of the
-// Moreau-Jean step, next to the planar event-driven engine, on the rock case (b = 0.3 m,
-// h = 0.6 m, mu = 0.6) under the first 20 s of El Centro #12.
+// Moreau-Jean steps with the rigid body's smooth phases taken whole (the default), and of the
+// steps alone, next to the planar event-driven engine, on the rock case (b = 0.3 m, h = 0.6 m,
+// mu = 0.6) under the first 20 s of El Centro #12.
 //   - x alone (140 scaled to 0.9 g): the planar engine is the exact reference; the 3D body's
 //     peak tilt error and time at dt = 1e-3, 2.5e-4, 1e-4 and 2.5e-5 s, and its time over the
-//     planar run's (the aim is at most 30x); and at 1e-3 and 2.5e-4 s with every step whole
-//     (landings not split).
+//     planar run's (the aim is at most 30x); then by steps alone at 1e-3 and 2.5e-4 s, with
+//     landings split ("steps") and every step whole ("whole").
 //   - both components (140 as x at 0.9 g, 230 as y on the same scale), on a block 0.3 x 0.4 m:
-//     the error of the peak tilt and slide against the 3D body at dt = 1e-5 s (its converged
-//     reference), and the peak tilt beside the planar runs of each component.
-//   - x alone with a mode (8 Hz, 0.4 M at 0.9 m): the peak tilt and |q| against the planar
-//     flexible body's event-driven run, and the time over it.
-//   - the speed goal's case (goal_rows): the whole record, both components, at assess's step.
+//     the error of the peak tilt and slide against the steps alone at dt = 1e-5 s (the
+//     scheme's converged reference, sharing no code with the phases), with and without the
+//     phases, and the peak tilt beside the planar runs of each component.
+//   - x alone with a mode (8 Hz, 0.4 M at 0.9 m; no phase is taken whole): the peak tilt and
+//     |q| against the planar flexible body's event-driven run, and the time over it.
+//   - the speed goal's case (goal_rows): the whole record, both components, at assess's step,
+//     with and without the phases.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -92,13 +95,16 @@ inline void goal_rows() {
         const char* label;
         double tol;
         std::size_t sweeps;
+        bool phases;
     };
-    for (const Setting& k : {Setting{"3D 1e-3, sweeps 1e-12/500", 1e-12, 500},
-                             Setting{"3D 1e-3, sweeps 1e-8/100", 1e-8, 100}}) {
+    for (const Setting& k : {Setting{"3D 1e-3, sweeps 1e-12/500", 1e-12, 500, true},
+                             Setting{"3D 1e-3, sweeps 1e-8/100", 1e-8, 100, true},
+                             Setting{"  the same, steps alone", 1e-8, 100, false}}) {
         dynamics::Body3dOptions o;
         o.dt_s = 1e-3;
         o.solver_tol = k.tol;
         o.max_sweeps = k.sweeps;
+        o.phases = k.phases;
         double t = 1e9;
         const auto s = run_3d(body, exy, o, t, 3);
         std::printf("%-26s %12.3e %10zu %10zu %9.0fx %11.0fx   (peak tilt %.4g rad)\n", k.label, t,
@@ -131,32 +137,45 @@ inline void body3d_rows(const core::Record& x140) {
                     std::abs(s.tilt_max_rad - ref.rock_max_rad) / ref.rock_max_rad, s.steps,
                     t / t_planar);
     }
-    // The same steps whole (no landing split into sixteen), for the split's gain.
-    for (double dt : {1e-3, 2.5e-4}) {
-        dynamics::Body3dOptions o;
-        o.dt_s = dt;
-        o.arrival_substeps = 1;
-        double t = 1e9;
-        const auto s = run_3d(body_x, ex, o, t, 3);
-        std::printf("3D dt=%-9.3g whole %12.3e %12.3e %10zu %9.0fx\n", dt, t,
-                    std::abs(s.tilt_max_rad - ref.rock_max_rad) / ref.rock_max_rad, s.steps,
-                    t / t_planar);
-    }
+    // Every phase by steps (the phases' gain), and every step whole besides (the split's).
+    for (const std::size_t substeps : {std::size_t{16}, std::size_t{1}})
+        for (double dt : {1e-3, 2.5e-4}) {
+            dynamics::Body3dOptions o;
+            o.dt_s = dt;
+            o.phases = false;
+            o.arrival_substeps = substeps;
+            double t = 1e9;
+            const auto s = run_3d(body_x, ex, o, t, 3);
+            std::printf("3D dt=%-9.3g %-5s %12.3e %12.3e %10zu %9.0fx\n", dt,
+                        substeps == 1 ? "whole" : "steps", t,
+                        std::abs(s.tilt_max_rad - ref.rock_max_rad) / ref.rock_max_rad, s.steps,
+                        t / t_planar);
+        }
 
-    std::printf("\n3D body, both components (140 x, 230 y): error against dt = 1e-5 s\n"
+    // The reference takes every phase by steps, so that it does not share the phases' code.
+    std::printf("\n3D body, both components (140 x, 230 y): error against steps alone at 1e-5 s\n"
                 "%-22s %12s %12s %12s %10s\n", "run", "cpu_s", "tilt_error", "slide_error", "x_planar");
     const auto body = dynamics::make_body3d_model(dynamics::box_body(0.3, 0.4, 0.6, 100.0), 0.6);
     const auto exy = dynamics::biaxial_excitation(x, y.horizontal_mps2);
+    const auto with = [](double dt, bool phases) {
+        dynamics::Body3dOptions o;
+        o.dt_s = dt;
+        o.phases = phases;
+        return o;
+    };
     double t_ref = 1e9;
-    const auto conv = run_3d(body, exy, 1e-5, t_ref, 1);
-    for (double dt : {1e-3, 2.5e-4, 1e-4}) {
-        double t = 1e9;
-        const auto s = run_3d(body, exy, dt, t, 3);
-        std::printf("3D dt=%-16.3g %12.3e %12.3e %12.3e %9.0fx\n", dt, t,
-                    std::abs(s.tilt_max_rad - conv.tilt_max_rad) / conv.tilt_max_rad,
-                    std::abs(s.slide_max_m - conv.slide_max_m) / std::max(conv.slide_max_m, 1e-12),
-                    t / t_planar);
-    }
+    const auto conv = run_3d(body, exy, with(1e-5, false), t_ref, 1);
+    for (const bool phases : {true, false})
+        for (double dt : {1e-3, 2.5e-4, 1e-4}) {
+            double t = 1e9;
+            const auto s = run_3d(body, exy, with(dt, phases), t, 3);
+            std::printf("3D dt=%-9.3g %-6s %12.3e %12.3e %12.3e %9.0fx\n", dt,
+                        phases ? "" : "steps", t,
+                        std::abs(s.tilt_max_rad - conv.tilt_max_rad) / conv.tilt_max_rad,
+                        std::abs(s.slide_max_m - conv.slide_max_m) /
+                            std::max(conv.slide_max_m, 1e-12),
+                        t / t_planar);
+        }
     double t_px = 1e9, t_py = 1e9;
     const auto px = run_planar(dynamics::make_block_model(block::Block::uniform(0.3, 0.6, 100.0), 0.6),
                                x, t_px, 5);
