@@ -25,7 +25,7 @@ namespace freestand::assess {
 /// summary: the build's identity names the compiler and flags, not the sources, so this is what
 /// keeps a cache from serving an old engine's run. A test holds the digest of reference runs
 /// and fails until it is raised.
-inline constexpr const char* engine_version = "5";
+inline constexpr const char* engine_version = "6";
 
 /// The part of a run's key that names its excitation: the SHA-256 of its numbers (its label
 /// names it only). Computing it reads every sample, so a bank keeps one per excitation

@@ -157,9 +157,9 @@ struct Body3dOptions {
     /// order error, falls within a sixteenth of the step (docs/methods.md s.11). 1: no split.
     std::size_t arrival_substeps = 16;
     /// A rigid body's smooth phases are taken as the few degrees of freedom they have
-    /// (Dormand-Prince, their ends located), not by steps: rocking about a footprint edge whose
-    /// two vertices stick, and sliding flat without turning (docs/methods.md s.11). false:
-    /// every phase by steps (the scheme's own order).
+    /// (Dormand-Prince, their ends located), not by steps: rocking on a footprint edge whose
+    /// two vertices stick or both slip, and sliding flat without turning (docs/methods.md
+    /// s.11). false: every phase by steps (the scheme's own order).
     bool phases = true;
     bool record_series = true;
     double g_mps2 = units::g_mps2;

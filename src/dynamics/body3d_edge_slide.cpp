@@ -2,8 +2,9 @@
 // rigid body's Newton-Euler equations with the floor's force n_i (z - mu_k s_i) at each vertex
 // (s_i the unit direction of its slip), the two normal forces fixed by the vertices' vertical
 // accelerations being zero (a 2 x 2 system: the sliding block's, Shenton & Jones 1991, on
-// each vertex of the edge). The system loses its solution where its determinant falls to zero
-// (Painleve's paradox): that ends the phase, as a normal force falling to zero does.
+// each vertex of the edge). With friction the system is not symmetric, and it may lose its one
+// non-negative solution (Painleve's paradox) where a diagonal entry or the determinant falls to
+// zero: that ends the phase, as a normal force falling to zero does.
 #include <algorithm>
 #include <cmath>
 
@@ -49,8 +50,7 @@ std::optional<EdgeSlide> EdgeSlide::start(const Body3dModel& model, const BodySt
     p.x_ = {s.p_m.x(),        s.p_m.y(),        s.p_m.z(),        q.w(), q.x(), q.y(), q.z(),
             s.twist.v_mps.x(), s.twist.v_mps.y(), s.twist.v_mps.z(),
             s.twist.w_radps.x(), s.twist.w_radps.y(), s.twist.w_radps.z()};
-    const auto m = p.margins(seg, t_s, p.x_);
-    if (std::any_of(m.begin(), m.end(), [](double x) { return !(x > 0.0); })) return std::nullopt;
+    if (!all_hold(p.margins(seg, t_s, p.x_))) return std::nullopt;
     return p;
 }
 
@@ -82,7 +82,8 @@ EdgeSlide::Derivatives EdgeSlide::derivatives(const BiaxialSegment& seg, double 
     }
     Derivatives out;
     const double det = A.determinant();
-    out.determinant = det / std::abs(A(0, 0) * A(1, 1));
+    // A's entries are of the order of 1 / M: scaled by M they are of the order of 1.
+    out.well_posed = {A(0, 0) * mass_kg_, A(1, 1) * mass_kg_, det * mass_kg_ * mass_kg_};
     const Eigen::Vector2d n = det != 0.0 ? Eigen::Vector2d(A.inverse() * -b) : Eigen::Vector2d::Zero();
     out.normal_N = {n(0), n(1)};
     Eigen::Vector3d force_N = mass_kg_ * load_per_kg, moment_Nm = Eigen::Vector3d::Zero();
@@ -101,11 +102,11 @@ EdgeSlide::Derivatives EdgeSlide::derivatives(const BiaxialSegment& seg, double 
     return out;
 }
 
-std::array<double, 6> EdgeSlide::margins(const BiaxialSegment& seg, double t, const X& x) const {
+std::array<double, 8> EdgeSlide::margins(const BiaxialSegment& seg, double t, const X& x) const {
     const Derivatives d = derivatives(seg, t, x);
     const Eigen::Matrix3d R = orientation(x).toRotationMatrix();
     const Eigen::Vector3d p(x[0], x[1], x[2]), v(x[7], x[8], x[9]), w(x[10], x[11], x[12]);
-    std::array<double, 6> out{};
+    std::array<double, 8> out{};
     const double weight_N = mass_kg_ * g_mps2_;
     out[0] = d.normal_N[0] / weight_N;
     out[1] = d.normal_N[1] / weight_N;
@@ -114,13 +115,15 @@ std::array<double, 6> EdgeSlide::margins(const BiaxialSegment& seg, double t, co
         const Eigen::Vector3d u = v + w.cross(R * vertices_body_[edge[i]]);
         out[2 + i] = (std::hypot(u.x(), u.y()) - slow_mps_) / slow_mps_;
     }
-    out[4] = d.determinant;
+    out[4] = d.well_posed[0];
+    out[5] = d.well_posed[1];
+    out[6] = d.well_posed[2];
     // The other vertices' least height over the footprint's reach.
     double lowest_m = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < vertices_body_.size(); ++k)
         if (k != from_ && k != to_)
             lowest_m = std::min(lowest_m, p.z() + R.row(2).dot(vertices_body_[k]));
-    out[5] = lowest_m / reach_m_;
+    out[7] = lowest_m / reach_m_;
     return out;
 }
 

@@ -12,6 +12,7 @@
 /// margins (positive while the phase holds) crosses zero, located on the dense output.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -34,9 +35,16 @@ struct PhaseRun {
     std::size_t steps = 0;   ///< Dormand-Prince steps taken (rejected ones included)
 };
 
-/// The Dormand-Prince tolerances of a phase: each component to 1e-10 of itself or 1e-12.
+/// The Dormand-Prince tolerances of a phase: each component to 1e-8 of itself or 1e-8 (a tighter
+/// 1e-10 / 1e-12 gave the same peaks in the tests at several times the steps).
 inline constexpr double phase_rel_tol = 1e-8;
 inline constexpr double phase_abs_tol = 1e-8;
+
+/// Whether every margin of a phase holds (is positive): a phase starts only where they do.
+template <std::size_t K>
+bool all_hold(const std::array<double, K>& margins) {
+    return std::all_of(margins.begin(), margins.end(), [](double m) { return m > 0.0; });
+}
 
 /// Steps x from t_s to t_end_s by Dormand-Prince (rhs(x, k, t) fills k = x'), stopping where
 /// the first of margins(t, x) (an array, each positive while the phase holds) crosses zero.
@@ -53,6 +61,11 @@ PhaseRun advance_phase(double& t_s, std::array<double, N>& x, double& h_try_s, d
     typename Dopri::State k1;
     rhs(x, k1, t_s);
     while (t_s < t_end_s) {
+        // Within rounding of the asked end: it is reached (the phase goes on).
+        if (t_end_s - t_s < least_step_s) {
+            t_s = t_end_s;
+            break;
+        }
         const bool clipped = t_end_s - t_s < h_try_s;
         const double h = std::min(h_try_s, t_end_s - t_s);
         if (h < least_step_s) {
@@ -75,6 +88,11 @@ PhaseRun advance_phase(double& t_s, std::array<double, N>& x, double& h_try_s, d
             const double theta = static_cast<double>(j) / probes;
             const auto now = at(theta);
             for (std::size_t i = 0; i < now.size(); ++i) {
+                // A margin that is no number ends the phase at the last probe that held.
+                if (std::isnan(now[i])) {
+                    end_theta = end_theta ? std::min(*end_theta, theta_before) : theta_before;
+                    continue;
+                }
                 if (!(now[i] < 0.0)) continue;
                 const double root =
                     toms748_root([&](double th) { return at(th)[i]; }, theta_before, theta,
@@ -133,6 +151,9 @@ private:
     std::array<Eigen::Vector3d, 2> forces_at(const BiaxialSegment& seg, double t, const X& x) const;
     /// The tilt of the footprint about the edge, rad (0: flat on the floor).
     double lift(const X& x) const { return lift0_rad_ + x[0]; }
+    std::array<double, 2> margins(const BiaxialSegment& seg, double t, const X& x) const {
+        return {lift(x), hold(seg, t, x)};
+    }
 
     std::size_t from_ = 0, to_ = 0;
     double mass_kg_ = 0.0, mu_s_ = 0.0, g_mps2_ = 0.0;
@@ -178,12 +199,14 @@ private:
     struct Derivatives {
         X dx{};
         std::array<double, 2> normal_N{};
-        double determinant = 0.0;  ///< of the normal forces' system, over its scale
+        /// The normal forces' system's diagonal entries and determinant, scaled by M and M^2:
+        /// positive while it has one solution that the phase can follow.
+        std::array<double, 3> well_posed{};
     };
 
     EdgeSlide() = default;
     Derivatives derivatives(const BiaxialSegment& seg, double t, const X& x) const;
-    std::array<double, 6> margins(const BiaxialSegment& seg, double t, const X& x) const;
+    std::array<double, 8> margins(const BiaxialSegment& seg, double t, const X& x) const;
 
     std::size_t from_ = 0, to_ = 0;
     double mass_kg_ = 0.0, mu_k_ = 0.0, g_mps2_ = 0.0, slow_mps_ = 0.0, reach_m_ = 0.0;

@@ -61,7 +61,7 @@ std::optional<EdgePivot> EdgePivot::start(const Body3dModel& model, const BodySt
     p.inertia_axis_kgm2_ = p.axis_.dot(p.inertia0_) + body.mass_kg * p.arm0_m_.squaredNorm();
     p.t_s_ = t_s;
     p.x_ = {0.0, s.twist.w_radps.dot(p.axis_)};
-    if (!(p.lift(p.x_) > 0.0) || !(p.hold(seg, t_s, p.x_) > 0.0)) return std::nullopt;
+    if (!all_hold(p.margins(seg, t_s, p.x_))) return std::nullopt;
     return p;
 }
 
@@ -137,10 +137,8 @@ PhaseRun EdgePivot::advance(const BiaxialSegment& seg, double t_end_s) {
         k[0] = x[1];
         k[1] = accel(seg, t, x[0]);
     };
-    const auto margins = [&](double t, const X& x) {
-        return std::array<double, 2>{lift(x), hold(seg, t, x)};
-    };
-    return advance_phase(t_s_, x_, h_try_s_, t_end_s, rhs, margins);
+    const auto margins_at = [&](double t, const X& x) { return margins(seg, t, x); };
+    return advance_phase(t_s_, x_, h_try_s_, t_end_s, rhs, margins_at);
 }
 
 }  // namespace freestand::dynamics::detail

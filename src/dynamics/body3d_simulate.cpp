@@ -271,6 +271,7 @@ public:
     /// centre of pressure mu_k h ahead along the slip, and the friction as the warm start.
     void resume_sliding(const BodyState& s, const Eigen::Vector2d& slip, double G_mps2) {
         const double N_dt = f_.model.body.mass_kg * std::max(G_mps2, 0.0) * f_.step_s;
+        std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
         if (N_dt > 0.0) {
             const Eigen::Vector2d ahead = f_.model.mu_k * s.p_m.z() * slip;
             warm_start_from(s.q.toRotationMatrix(),
@@ -863,12 +864,22 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
                 phase.reset();
                 if (t >= t_end) break;
             }
-            // Steps end on the grid of h from the segment's start; after a phase, a remainder
-            // below a hundredth of h joins the next step.
-            double t_next = seg.tk + h * (std::floor((t - seg.tk) / h + 1e-9) + 1.0);
-            if (t_next - t < 0.01 * h) t_next += h;
-            if (t_end - t_next < 0.01 * h) t_next = t_end;
-            steps_over(t, t_next - t);
+            // Steps of h on the grid from the segment's start. After a phase, a step up to the
+            // grid, a remainder below a hundredth of h joining the next step (or, at the
+            // segment's end, taken as it is; within rounding of the end there is none).
+            if (t_end - t < 1e-9 * h) break;
+            const double j = std::floor((t - seg.tk) / h + 1e-9);
+            double t_next = seg.tk + (j + 1.0) * h;
+            double dt = h;
+            if (std::abs(t - (seg.tk + j * h)) > 1e-9 * h) {
+                if (t_next - t < 0.01 * h) t_next += h;
+                dt = t_next - t;
+            }
+            if (j + 1.0 >= n_sub || t_end - t_next < 0.01 * h) {
+                t_next = t_end;
+                if (dt != h) dt = t_end - t;
+            }
+            steps_over(t, dt);
             t = t_next;
             if (options.phases) phase = phase_after_step(model, stepper, s, state, seg, t,
                                                          options.g_mps2, slow_mps);

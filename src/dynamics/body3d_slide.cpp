@@ -29,8 +29,7 @@ std::optional<FlatSlide> FlatSlide::start(const Body3dModel& model, const BodySt
     }
     p.t_s_ = t_s;
     p.x_ = {s.p_m.x(), s.p_m.y(), s.twist.v_mps.x(), s.twist.v_mps.y()};
-    const auto m = p.margins(seg, t_s, p.x_);
-    if (std::any_of(m.begin(), m.end(), [](double x) { return !(x > 0.0); })) return std::nullopt;
+    if (!all_hold(p.margins(seg, t_s, p.x_))) return std::nullopt;
     return p;
 }
 
