@@ -421,7 +421,7 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
                 vertical_mps2: Optional[np.ndarray] = None, scale: float = 1.0,
                 series: bool = True, mu_k: Optional[float] = None,
                 restitution: Optional[float] = None, dt: float = 1e-4,
-                flexible: Optional[Mapping[str, float]] = None) -> dict:
+                flexible: Optional[Mapping[str, float]] = None, phases: bool = True) -> dict:
     """Time history of the rigid body in three dimensions (`freestand simulate --model 3d
     --json`, docs/methods.md s.11) under x (a record, or an array of m/s^2 samples at dt_s),
     optionally y (motion_y, on the same samples) and the vertical, all times scale. block has
@@ -431,7 +431,8 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     (default: the plastic impact, Housner's rule generalised); dt the time step (s); flexible
     (`--flexible`) the elastic mode carried along x and y: f (Hz), and optionally zeta, mass (a
     fraction of m) and height (m; defaults a uniform cantilever's 0.613 m at 0.726 of the
-    height). Returns the summary, and with series=True also "series": NumPy arrays time_s,
+    height); phases=False takes every phase by steps (`--steps-only`: the scheme alone, to
+    check it). Returns the summary, and with series=True also "series": NumPy arrays time_s,
     slide_x_m, slide_y_m, tilt_rad, tilt_over_critical, twist_rad, state (codes into
     state_names), and with a mode modal_x_m and modal_y_m."""
     accel, dt_s, label = _motion(motion, dt_s, "simulate_3d")
@@ -442,7 +443,8 @@ def simulate_3d(block: Mapping[str, float], motion: Union[Record, np.ndarray],
     return _fs.simulate_3d(_keyed_numbers(block, _BODY3D_KEYS, "block"), _number(mu, "mu"), _optional_number(mu_k, "mu_k"),
                            _optional_number(restitution, "restitution"), _number(dt, "dt"), _samples(accel, "accel_mps2"), _number(dt_s, "dt_s"),
                            y, vertical, _number(scale, "scale"), label, bool(series),
-                           None if flexible is None else _keyed_numbers(flexible, _MODE_KEYS, "flexible"))
+                           None if flexible is None else _keyed_numbers(flexible, _MODE_KEYS, "flexible"),
+                           bool(phases))
 
 
 def assess(case_file: PathLike, pga_g: Optional[Iterable[float]] = None) -> dict:

@@ -82,7 +82,7 @@ api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::opt
                                     const py::handle& accel_x, double dt_s,
                                     const py::object& accel_y, const py::object& vertical,
                                     double scale, const std::string& label, bool series,
-                                    const py::object& flexible) {
+                                    const py::object& flexible, bool phases) {
     api::SimulateRequest r;
     if (!flexible.is_none()) r.flexible = mode_of(flexible.cast<py::dict>());
     api::Body3dSpec spec;
@@ -102,6 +102,7 @@ api::SimulateRequest body3d_request(const py::dict& block, double mu_s, std::opt
         spec.inertia_cg_kgm2 = std::array<double, 3>{*ixx, *iyy, *izz};
     }
     spec.dt_s = step_s;
+    spec.phases = phases;
     r.body3d = spec;
     r.mu_s = mu_s;
     r.mu_k = mu_k;
@@ -132,10 +133,10 @@ void bind_body3d(py::module_& m) {
            std::optional<double> restitution, double step_s,
            const py::handle& accel_x, double dt_s, const py::object& accel_y,
            const py::object& vertical, double scale, const std::string& label, bool series,
-           const py::object& flexible) {
+           const py::object& flexible, bool phases) {
             const api::SimulateRequest request = body3d_request(
                 block, mu_s, mu_k, restitution, step_s, accel_x, dt_s, accel_y, vertical, scale,
-                label, series, flexible);
+                label, series, flexible, phases);
             api::SimulateResult result;
             {
                 py::gil_scoped_release unlocked;
@@ -149,7 +150,7 @@ void bind_body3d(py::module_& m) {
         py::arg("block"), py::arg("mu_s"), py::arg("mu_k"), py::arg("restitution"),
         py::arg("step_s"), py::arg("accel_x"),
         py::arg("dt_s"), py::arg("accel_y"), py::arg("vertical"), py::arg("scale"),
-        py::arg("label"), py::arg("series"), py::arg("flexible"));
+        py::arg("label"), py::arg("series"), py::arg("flexible"), py::arg("phases"));
 }
 
 }  // namespace freestand::python

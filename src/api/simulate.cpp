@@ -219,6 +219,7 @@ SimulateResult run_body3d(const SimulateRequest& r) {
     }
     dynamics::Body3dOptions options;
     options.dt_s = r.body3d->dt_s;
+    options.phases = r.body3d->phases;
     options.record_series = r.record_series;
     const dynamics::BiaxialExcitation exc = body3d_excitation(r.excitation);
     try {

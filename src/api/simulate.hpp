@@ -56,6 +56,9 @@ struct Body3dSpec {
     /// default: the uniform box of the footprint and the total height.
     std::optional<std::array<double, 3>> inertia_cg_kgm2;
     double dt_s = 1e-4;                    ///< time step, s
+    /// A rigid body's smooth phases taken whole between the steps (Body3dOptions::phases);
+    /// false: every phase by steps, the scheme alone, to check it.
+    bool phases = true;
 };
 
 /// An InputError about a request names its field (`mu_s`, `box.half_width_m`, `flexible.f`,

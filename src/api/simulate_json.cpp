@@ -86,6 +86,7 @@ json body3d_json(const Body3dRun& run) {
     j["model"] = "3d";
     j["integrator"] = "moreau-jean";
     j["dt_s"] = run.options.dt_s;
+    j["phases"] = run.options.phases;
     j["tilt_max_rad"] = s.tilt_max_rad;
     j["tilt_max_over_critical"] = s.tilt_max_over_critical;
     j["overturned"] = s.overturned;

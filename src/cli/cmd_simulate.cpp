@@ -52,6 +52,8 @@ po::options_description simulate_options() {
         ("integrator", po::value<std::string>()->default_value("event"), "event | cd")
         ("dt", po::value<double>()->default_value(1e-4),
          "central-difference step, or the 3D body's step (s)")
+        ("steps-only", "with --model 3d: every phase by steps (no phase taken whole), to check "
+                       "the scheme alone")
         ("motion", po::value<std::string>(), "FILE[,VERTICAL_FILE] (.AT2, .V2, .csv)")
         ("scale", po::value<double>()->default_value(1.0), "factor on the --motion accelerations")
         ("sine", po::value<std::string>(), "A g,f Hz,T s[,ramp=t s]")
@@ -137,7 +139,9 @@ api::SimulateRequest simulate_request(const po::variables_map& vm) {
             if (vm.count(flag))
                 throw UsageError(fmt::format("--{}: not used by --model 3d", flag));
         r.body3d = body3d_from_options(vm["block"].as<std::string>(), vm["dt"].as<double>());
+        r.body3d->phases = vm.count("steps-only") == 0;
     } else {
+        if (vm.count("steps-only")) throw UsageError("--steps-only: only with --model 3d");
         r.box = box_from_options(vm["block"].as<std::string>(), opt_string(vm, "cg"),
                                  opt_double(vm, "inertia"));
     }

@@ -158,6 +158,31 @@ TEST_CASE("simulate --model 3d --flexible carries the mode along x and y, as the
     std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("simulate --model 3d --steps-only takes every phase by steps, and the JSON says which",
+          "[3d][cli]") {
+    const std::string base = "simulate --model 3d --block b=0.2,d=0.35,h=0.6,m=150 --mu 1 "
+                             "--sine 0.5g,2Hz,3s --dt 1e-3 --json";
+    const auto phased = run_cli(base);
+    const auto stepped = run_cli(base + " --steps-only");
+    REQUIRE(phased.exit_code == 0);
+    REQUIRE(stepped.exit_code == 0);
+    const auto a = nlohmann::json::parse(phased.out);
+    const auto b = nlohmann::json::parse(stepped.out);
+    CHECK(a.at("phases") == true);
+    CHECK(b.at("phases") == false);
+    // Rocking on a sticking edge: taken whole by default, by steps with --steps-only.
+    CHECK(a.at("phase_time_s").at("edge_sticking").get<double>() > 1.0);
+    for (const char* phase : {"edge_sticking", "edge_slipping", "flat_slide"})
+        CHECK(b.at("phase_time_s").at(phase).get<double>() == 0.0);
+    CHECK(b.at("steps").get<double>() > 1.5 * a.at("steps").get<double>());
+    CHECK(a.at("tilt_max_rad").get<double>() ==
+          Approx(b.at("tilt_max_rad").get<double>()).epsilon(0.01));
+    const auto planar = run_cli("simulate --block b=0.2,h=0.6 --mu 1 --sine 0.5g,2Hz,1s "
+                                "--steps-only");
+    CHECK(planar.exit_code == 2);
+    CHECK_THAT(planar.err, Catch::Contains("--steps-only: only with --model 3d"));
+}
+
 TEST_CASE("simulate --model 3d names what it does not take", "[3d][cli]") {
     const std::string base = "simulate --model 3d --mu 1 --sine 0.5g,2Hz,1s ";
     const auto missing = run_cli(base + "--block b=0.2,h=0.6");

@@ -544,6 +544,21 @@ def test_simulate_3d_restitution_is_on_angular_velocity():
         freestand.simulate_3d(box, accel, 0.005, mu=1.0, restitution=1.5)
 
 
+def test_simulate_3d_phases_false_takes_every_phase_by_steps():
+    g = freestand.g_mps2
+    t = np.arange(0.0, 3.0 + 1e-9, 0.005)
+    accel = 0.5 * g * np.sin(2.0 * math.pi * 2.0 * t)
+    box = {"b": 0.2, "d": 0.35, "h": 0.6, "m": 150.0}
+    phased = freestand.simulate_3d(box, accel, 0.005, mu=1.0, dt=1e-3, series=False)
+    stepped = freestand.simulate_3d(box, accel, 0.005, mu=1.0, dt=1e-3, series=False,
+                                    phases=False)
+    assert phased["phases"] is True and stepped["phases"] is False
+    assert phased["phase_time_s"]["edge_sticking"] > 1.0
+    assert all(v == 0.0 for v in stepped["phase_time_s"].values())
+    assert stepped["steps"] > 1.5 * phased["steps"]
+    assert phased["tilt_max_rad"] == pytest.approx(stepped["tilt_max_rad"], rel=0.01)
+
+
 def test_simulate_3d_takes_the_cg_offset_and_inertia():
     g = freestand.g_mps2
     t = np.arange(0.0, 3.0 + 1e-9, 0.005)
