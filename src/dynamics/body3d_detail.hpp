@@ -154,6 +154,20 @@ Vector8d generalized_force(const ModalSplit& split, const Eigen::Matrix3d& R,
 Vector8d pack(const Twist& t);
 Twist unpack(const Vector8d& u);
 
+/// Footprint vertex i in body axes from the CG (z = -h).
+inline Eigen::Vector3d vertex_body(const Body3d& body, std::size_t i) {
+    return {body.footprint_m[i].x(), body.footprint_m[i].y(), -body.h_m};
+}
+/// Every footprint vertex in body axes from the CG, counter-clockwise.
+std::vector<Eigen::Vector3d> vertices_body(const Body3d& body);
+/// A footprint edge, from vertex i to i + 1, in plan, body axes: its outward unit normal and its
+/// distance from the CG's plan position.
+struct FootprintEdge {
+    Eigen::Vector2d normal;
+    double distance_m = 0.0;
+};
+std::vector<FootprintEdge> footprint_edges(const Body3d& body);
+
 /// The orientation turned by the world angular velocity w over dt_s.
 Eigen::Quaterniond turned(const Eigen::Quaterniond& q, const Eigen::Vector3d& w_radps, double dt_s);
 

@@ -41,10 +41,8 @@ std::optional<EdgeSlide> EdgeSlide::start(const Body3dModel& model, const BodySt
     p.slow_mps_ = slow_mps;
     p.inertia_body_ = body.inertia_cg_kgm2;
     p.inverse_inertia_body_ = body.inertia_cg_kgm2.inverse();
-    for (const Eigen::Vector2d& v : body.footprint_m) {
-        p.vertices_body_.emplace_back(v.x(), v.y(), -body.h_m);
-        p.reach_m_ = std::max(p.reach_m_, p.vertices_body_.back().norm());
-    }
+    p.vertices_body_ = vertices_body(body);
+    for (const Eigen::Vector3d& v : p.vertices_body_) p.reach_m_ = std::max(p.reach_m_, v.norm());
     p.t_s_ = t_s;
     const auto& q = s.q;
     p.x_ = {s.p_m.x(),        s.p_m.y(),        s.p_m.z(),        q.w(), q.x(), q.y(), q.z(),

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/limits.hpp"
 #include "dynamics/body3d.hpp"
+#include "dynamics/body3d_detail.hpp"
 
 namespace freestand::dynamics {
 
@@ -127,6 +128,27 @@ const char* to_string(ContactState state) {
     }
     return "?";
 }
+
+namespace detail {
+
+std::vector<Eigen::Vector3d> vertices_body(const Body3d& body) {
+    std::vector<Eigen::Vector3d> out;
+    for (std::size_t i = 0; i < body.footprint_m.size(); ++i) out.push_back(vertex_body(body, i));
+    return out;
+}
+
+std::vector<FootprintEdge> footprint_edges(const Body3d& body) {
+    const auto& v = body.footprint_m;
+    std::vector<FootprintEdge> out;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Eigen::Vector2d edge = v[(i + 1) % v.size()] - v[i];
+        const Eigen::Vector2d n = Eigen::Vector2d(edge.y(), -edge.x()).normalized();  // outward (ccw)
+        out.push_back({n, n.dot(v[i])});
+    }
+    return out;
+}
+
+}  // namespace detail
 
 const char* to_string(Phase phase) {
     switch (phase) {

@@ -35,10 +35,7 @@ std::optional<EdgePivot> EdgePivot::start(const Body3dModel& model, const BodySt
                                           const BiaxialSegment& seg, double t_s, double g_mps2) {
     const Body3d& body = model.body;
     const Eigen::Matrix3d R = s.q.toRotationMatrix();
-    const auto vertex = [&](std::size_t i) {
-        const Eigen::Vector2d& v = body.footprint_m[i];
-        return Eigen::Vector3d(v.x(), v.y(), -body.h_m);
-    };
+    const auto vertex = [&](std::size_t i) { return vertex_body(body, i); };
     EdgePivot p;
     p.from_ = from;
     p.to_ = to;

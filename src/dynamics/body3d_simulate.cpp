@@ -84,12 +84,7 @@ void require_options(const Body3dModel& m, const BiaxialExcitation& e, const Bod
                                  "3D steps (duration / dt)");
 }
 
-/// A footprint edge in plan, body axes: its outward unit normal and its distance from the CG's
-/// plan position.
-struct Edge {
-    Eigen::Vector2d normal;
-    double distance_m = 0.0;
-};
+using Edge = detail::FootprintEdge;
 
 /// The planar engine's settling tilt (docs/methods.md s.3), rad.
 constexpr double settle_tilt_rad = 1e-7;
@@ -140,14 +135,9 @@ Fixed fixed_of(const Body3dModel& m, const Body3dOptions& o, double segment_s, d
         const double r_housner = housner_restitution(m.body);
         f.impact_loss_ratio = (1.0 - r * r) / (1.0 - r_housner * r_housner);
     }
-    const auto& v = m.body.footprint_m;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        f.vertices_body.emplace_back(v[i].x(), v[i].y(), -m.body.h_m);
-        f.footprint_centre_body += f.vertices_body.back();
-        const Eigen::Vector2d edge = v[(i + 1) % v.size()] - v[i];
-        const Eigen::Vector2d n = Eigen::Vector2d(edge.y(), -edge.x()).normalized();  // outward (ccw)
-        f.edges.push_back({n, n.dot(v[i])});
-    }
+    f.vertices_body = detail::vertices_body(m.body);
+    f.edges = detail::footprint_edges(m.body);
+    for (const Eigen::Vector3d& v : f.vertices_body) f.footprint_centre_body += v;
     f.footprint_centre_body /= static_cast<double>(f.vertices_body.size());
     double nearest_edge_m = std::numeric_limits<double>::infinity();
     for (const Edge& e : f.edges) nearest_edge_m = std::min(nearest_edge_m, e.distance_m);
@@ -243,9 +233,7 @@ public:
     /// slipping, with the impulses of its forces over a step as the warm start.
     void resume_from(const std::array<std::size_t, 2>& vertices,
                      const std::array<Eigen::Vector3d, 2>& forces_N, bool slipping) {
-        std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
-        std::fill(slipping_.begin(), slipping_.end(), false);
-        std::fill(touching_.begin(), touching_.end(), false);
+        forget_contacts();
         for (std::size_t k = 0; k < 2; ++k) {
             touching_[vertices[k]] = true;
             slipping_[vertices[k]] = slipping;
@@ -258,11 +246,12 @@ public:
     /// contact, every one slipping, and no contact point moving off the body's translation by
     /// more than stick_speed_mps (no turning).
     bool sliding_flat(const BodyState& s) const {
-        if (f_.split || contacts_.size() != f_.vertices_body.size()) return false;
+        if (f_.split || contacts_.size() != f_.vertices_body.size() ||
+            std::abs(s.twist.v_mps.z()) > detail::stick_speed_mps)
+            return false;
         return std::all_of(contacts_.begin(), contacts_.end(), [&](const VertexContact& c) {
             return c.impulse_Ns.z() > 0.0 && slipping_[c.vertex] &&
-                   (s.twist.at(c.r_m) - s.twist.v_mps).norm() <= detail::stick_speed_mps &&
-                   std::abs(s.twist.v_mps.z()) <= detail::stick_speed_mps;
+                   (s.twist.at(c.r_m) - s.twist.v_mps).norm() <= detail::stick_speed_mps;
         });
     }
 
@@ -622,10 +611,15 @@ private:
         t.w_radps *= scale;
     }
 
-    void remember(const std::vector<VertexContact>& contacts, const detail::Twist& t) {
+    /// No vertex on the floor, none slipping, no impulse to start from.
+    void forget_contacts() {
         std::fill(impulses_.begin(), impulses_.end(), Eigen::Vector3d::Zero());
         std::fill(slipping_.begin(), slipping_.end(), false);
         std::fill(touching_.begin(), touching_.end(), false);
+    }
+
+    void remember(const std::vector<VertexContact>& contacts, const detail::Twist& t) {
+        forget_contacts();
         for (const auto& c : contacts) {
             touching_[c.vertex] = true;
             impulses_[c.vertex] = c.impulse_Ns;
@@ -862,7 +856,6 @@ Body3dResult simulate_body3d(const Body3dModel& model, const BiaxialExcitation& 
                 if (!run.ended) break;
                 resume_after(stepper, *phase, s, seg, t);
                 phase.reset();
-                if (t >= t_end) break;
             }
             // Steps of h on the grid from the segment's start. After a phase, a step up to the
             // grid, a remainder below a hundredth of h joining the next step (or, at the

@@ -20,12 +20,10 @@ std::optional<FlatSlide> FlatSlide::start(const Body3dModel& model, const BodySt
     p.q_ = s.q;
     p.height_m_ = s.p_m.z();
     const Eigen::Matrix3d R = s.q.toRotationMatrix();
-    const auto& v = model.body.footprint_m;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const Eigen::Vector2d edge = v[(i + 1) % v.size()] - v[i];
-        const Eigen::Vector2d n = Eigen::Vector2d(edge.y(), -edge.x()).normalized();  // outward
-        const Eigen::Vector2d n_world = (R * Eigen::Vector3d(n.x(), n.y(), 0.0)).head<2>();
-        p.edges_.emplace_back(n_world.normalized(), n.dot(v[i]));
+    for (const FootprintEdge& e : footprint_edges(model.body)) {
+        const Eigen::Vector2d n_world =
+            (R * Eigen::Vector3d(e.normal.x(), e.normal.y(), 0.0)).head<2>();
+        p.edges_.emplace_back(n_world.normalized(), e.distance_m);
     }
     p.t_s_ = t_s;
     p.x_ = {s.p_m.x(), s.p_m.y(), s.twist.v_mps.x(), s.twist.v_mps.y()};
